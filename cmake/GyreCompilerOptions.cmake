@@ -1,0 +1,14 @@
+# Warnings and sanitizers for every Gyre target: call gyre_target_options(target) on each.
+function(gyre_target_options target)
+    target_compile_options(${target} PRIVATE
+        -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Woverloaded-virtual
+        -Wcast-align -Wdouble-promotion -Wformat=2 -Wimplicit-fallthrough)
+    if(GYRE_WERROR)
+        target_compile_options(${target} PRIVATE -Werror)
+    endif()
+    if(GYRE_SANITIZE)
+        target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer
+                                                 -fno-sanitize-recover=undefined)
+        target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+    endif()
+endfunction()

@@ -1,0 +1,129 @@
+#include "cli/command_line.h"
+
+#include "io/number_text.h"
+
+#include <cstdio>
+#include <utility>
+
+namespace gyre::cli {
+
+namespace {
+
+const QString kOutputOption = QStringLiteral("o");
+const QString kOrderOption = QStringLiteral("order");
+const QString kIntrinsicOption = QStringLiteral("intrinsic");
+const QString kExtrinsicOption = QStringLiteral("extrinsic");
+
+QString dashed(const QString& name) { return (name.size() == 1 ? "-" : "--") + name; }
+
+std::string quoted(const QString& text) { return "'" + text.toStdString() + "'"; }
+
+} // namespace
+
+VerbCommandLine::VerbCommandLine(QString verb, const QStringList& arguments,
+                                 const QList<QCommandLineOption>& verbOptions)
+    : verb_(std::move(verb))
+{
+    QList<QCommandLineOption> options = verbOptions;
+    options.append(QCommandLineOption({kOutputOption, QStringLiteral("output")}, {}, QStringLiteral("file")));
+    parser_.addOptions(options);
+    // QCommandLineParser::parse skips the first argument, the program's name.
+    if (!parser_.parse(QStringList{QStringLiteral("gyre-cli")} + arguments)) {
+        const QStringList unknown = parser_.unknownOptionNames();
+        if (!unknown.isEmpty())
+            throw error("unknown option " + dashed(unknown.front()).toStdString());
+        throw error(parser_.errorText().toStdString());
+    }
+    checkSingleValues(options);
+    const QStringList inputs = parser_.positionalArguments();
+    if (inputs.isEmpty())
+        throw error("no input file");
+    if (inputs.size() > 1)
+        throw error("one input file expected, got " + std::to_string(inputs.size()) + ": " +
+                    inputs.join(QStringLiteral(", ")).toStdString());
+    inputPath_ = inputs.front();
+    outputPath_ = requiredValue(kOutputOption);
+}
+
+void VerbCommandLine::checkSingleValues(const QList<QCommandLineOption>& options) const
+{
+    for (const QCommandLineOption& option : options) {
+        const QString name = option.names().front();
+        if (!option.valueName().isEmpty() && parser_.values(name).size() > 1)
+            throw error("option " + dashed(name).toStdString() + " given more than once");
+    }
+}
+
+QString VerbCommandLine::requiredValue(const QString& option) const
+{
+    if (!parser_.isSet(option))
+        throw error("missing option " + dashed(option).toStdString());
+    return parser_.value(option);
+}
+
+double VerbCommandLine::positiveNumber(const QString& option) const
+{
+    const QString text = requiredValue(option);
+    double value = 0.0;
+    try {
+        value = parseFiniteNumber(text.toStdString());
+    } catch (const std::invalid_argument& problem) {
+        throw error(dashed(option).toStdString() + ": " + problem.what());
+    }
+    if (!(value > 0.0))
+        throw error(dashed(option).toStdString() + ": " + quoted(text) + " is not positive");
+    return value;
+}
+
+int VerbCommandLine::nonNegativeInteger(const QString& option) const
+{
+    const QString text = requiredValue(option);
+    bool ok = false;
+    const int value = text.toInt(&ok);
+    if (!ok || value < 0)
+        throw error(dashed(option).toStdString() + ": " + quoted(text) + " is not a whole number ≥ 0");
+    return value;
+}
+
+EulerConvention VerbCommandLine::eulerConvention() const
+{
+    if (parser_.isSet(kIntrinsicOption) && parser_.isSet(kExtrinsicOption))
+        throw error("--intrinsic and --extrinsic exclude each other");
+    const AngleFrame frame = parser_.isSet(kIntrinsicOption) ? AngleFrame::Intrinsic : AngleFrame::Extrinsic;
+    const QString order = parser_.isSet(kOrderOption) ? parser_.value(kOrderOption) : QStringLiteral("xyz");
+    const auto convention = EulerConvention::parse(order.toStdString(), frame);
+    if (!convention)
+        throw error("--order: " + quoted(order) +
+                    " is not an axis order; give three of x, y, z with no axis twice in a row, such as xyz or zxz");
+    return *convention;
+}
+
+UsageError VerbCommandLine::error(std::string_view message) const
+{
+    return UsageError(verb_.toStdString() + ": " + std::string(message) + " (see gyre-cli help " +
+                      verb_.toStdString() + ")");
+}
+
+QList<QCommandLineOption> eulerOptions()
+{
+    return {QCommandLineOption(kOrderOption, {}, QStringLiteral("axes")), QCommandLineOption(kIntrinsicOption),
+            QCommandLineOption(kExtrinsicOption)};
+}
+
+std::string alternatives(const std::vector<std::string_view>& names)
+{
+    std::string text;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0)
+            text += i + 1 == names.size() ? " or " : ", ";
+        text += names[i];
+    }
+    return text;
+}
+
+void warn(std::string_view message)
+{
+    std::fprintf(stderr, "gyre-cli: warning: %.*s\n", static_cast<int>(message.size()), message.data());
+}
+
+} // namespace gyre::cli

@@ -1,0 +1,89 @@
+#pragma once
+// The command line of one verb: an input file, `-o FILE`, and the verb's own options, in any order.
+// Everything wrong with it is a UsageError whose message names the verb and the option.
+
+#include "core/euler_angles.h"
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+#include <QList>
+#include <QString>
+#include <QStringList>
+
+#include <array>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gyre::cli {
+
+// A command line that cannot be run as given; gyre-cli exits with status 2.
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class VerbCommandLine {
+public:
+    // Parses the arguments after the verb. Throws UsageError for an unknown option, a missing
+    // value, a value option given twice, no -o, or not exactly one input file.
+    VerbCommandLine(QString verb, const QStringList& arguments, const QList<QCommandLineOption>& verbOptions);
+    VerbCommandLine(const VerbCommandLine&) = delete;
+    VerbCommandLine& operator=(const VerbCommandLine&) = delete;
+
+    const QString& inputPath() const { return inputPath_; }
+    const QString& outputPath() const { return outputPath_; }
+    bool isSet(const QString& option) const { return parser_.isSet(option); }
+
+    // The value of an option that must be given.
+    QString requiredValue(const QString& option) const;
+    // A required option's value as one of `choices`, each known by nameOf(choice).
+    template <class Choice, std::size_t Count>
+    Choice choice(const QString& option, const std::array<Choice, Count>& choices,
+                  std::string_view (*nameOf)(Choice)) const;
+    // A required option's value as a finite number > 0.
+    double positiveNumber(const QString& option) const;
+    // A required option's value as an integer ≥ 0.
+    int nonNegativeInteger(const QString& option) const;
+    // The convention of --order (default xyz) and --intrinsic or --extrinsic (default extrinsic),
+    // for a verb that has eulerOptions().
+    EulerConvention eulerConvention() const;
+
+    // A UsageError that names the verb, for the caller to throw.
+    UsageError error(std::string_view message) const;
+
+private:
+    void checkSingleValues(const QList<QCommandLineOption>& options) const;
+
+    QString verb_;
+    QCommandLineParser parser_;
+    QString inputPath_;
+    QString outputPath_;
+};
+
+// --order, --intrinsic and --extrinsic.
+QList<QCommandLineOption> eulerOptions();
+
+// "a, b or c", for messages that list the accepted values.
+std::string alternatives(const std::vector<std::string_view>& names);
+
+// Prints `gyre-cli: warning: message` to standard error.
+void warn(std::string_view message);
+
+template <class Choice, std::size_t Count>
+Choice VerbCommandLine::choice(const QString& option, const std::array<Choice, Count>& choices,
+                               std::string_view (*nameOf)(Choice)) const
+{
+    const std::string value = requiredValue(option).toStdString();
+    std::vector<std::string_view> names;
+    for (const Choice candidate : choices) {
+        if (nameOf(candidate) == value)
+            return candidate;
+        names.push_back(nameOf(candidate));
+    }
+    throw error("--" + option.toStdString() + ": unknown value '" + value + "'; expected " + alternatives(names));
+}
+
+} // namespace gyre::cli

@@ -1,0 +1,66 @@
+// gyre-cli convert: the same poses with their rotation in another column set.
+
+#include "cli/command_line.h"
+#include "cli/verbs.h"
+#include "io/pose_csv.h"
+
+#include <cstdio>
+#include <numbers>
+
+namespace gyre::cli {
+
+namespace {
+
+// Within this of gimbal lock the Euler angles e1 and e3 are ill-conditioned, and the user is told.
+constexpr double kGimbalWarningDegrees = 1.0;
+// Enough warnings to see where the trouble is without burying the terminal.
+constexpr int kMaxGimbalWarnings = 10;
+
+QList<QCommandLineOption> convertOptions()
+{
+    return QList<QCommandLineOption>{QCommandLineOption(QStringLiteral("to"), {}, QStringLiteral("set"))} +
+           eulerOptions();
+}
+
+// An angle for people to read, not to read back: "0.03°".
+std::string roundedDegrees(double degrees)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f°", degrees);
+    return text;
+}
+
+// Gimbal lock is shown, not hidden: each row near it is named on standard error.
+void warnNearGimbalLock(const QString& inputPath, const PoseTable& table, const EulerConvention& convention)
+{
+    int nearRows = 0;
+    for (const PoseRow& row : table.rows) {
+        const double degrees =
+            eulerAnglesFromQuaternion(row.pose.orientation, convention).gimbalLockDistance * 180.0 / std::numbers::pi;
+        if (!(degrees < kGimbalWarningDegrees))
+            continue;
+        if (++nearRows <= kMaxGimbalWarnings)
+            warn(inputPath.toStdString() + ":" + std::to_string(row.line) + ": rotation " + roundedDegrees(degrees) +
+                 " from gimbal lock in " + convention.name() +
+                 "; only the sum or difference of e1 and e3 is well defined there");
+    }
+    if (nearRows > kMaxGimbalWarnings)
+        warn(std::to_string(nearRows - kMaxGimbalWarnings) + " more rows of " + inputPath.toStdString() +
+             " are within " + roundedDegrees(kGimbalWarningDegrees) + " of gimbal lock");
+}
+
+} // namespace
+
+void runConvert(const QStringList& arguments)
+{
+    const VerbCommandLine commandLine(QStringLiteral("convert"), arguments, convertOptions());
+    const RotationColumns target = commandLine.choice(QStringLiteral("to"), kAllRotationColumns, rotationColumnsName);
+    const EulerConvention convention = commandLine.eulerConvention();
+    PoseTable table = readPoseCsv(commandLine.inputPath(), convention);
+    table.rotationColumns = target;
+    if (target == RotationColumns::Euler)
+        warnNearGimbalLock(commandLine.inputPath(), table, convention);
+    writePoseCsv(commandLine.outputPath(), table, convention);
+}
+
+} // namespace gyre::cli

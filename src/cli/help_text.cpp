@@ -1,0 +1,79 @@
+#include "cli/help_text.h"
+
+namespace gyre::cli {
+
+namespace {
+
+const char* const kGeneral = R"(Usage: gyre-cli VERB INPUT -o OUTPUT [options]
+
+Batch verbs over pose CSV files (docs/pose-csv.md):
+  convert      rewrite the rotation columns in another representation
+  interpolate  sample a motion through timed keys at a frame rate
+  subdivide    smooth a sequence of poses by polyscrew subdivision
+
+  gyre-cli help VERB     usage of one verb (also: gyre-cli VERB --help)
+  gyre-cli --version     the version
+
+Options may come in any order. The output file appears only when the verb succeeds.
+Exit status: 0 success, 1 bad input or output file, 2 bad command line.
+)";
+
+const char* const kCommonOptions = R"(
+Options of every verb:
+  -o, --output FILE  the output file; it may be the input file
+  --order AXES       axis order of Euler angle columns, e.g. xyz, zyx, zxz (default xyz);
+                     e1 turns about the first axis named
+  --intrinsic        angles about moving axes: intrinsic xyz is R = Rx(e1) Ry(e2) Rz(e3)
+  --extrinsic        angles about fixed axes: extrinsic xyz is R = Rz(e3) Ry(e2) Rx(e1) (default)
+)";
+
+const char* const kConvert = R"(Usage: gyre-cli convert IN.csv -o OUT.csv --to SET [--order AXES] [--intrinsic|--extrinsic]
+
+Rewrites the rotation columns of a pose file in another column set; time and position columns
+pass through unchanged. The input may hold any one column set.
+
+  --to SET   quat        qw,qx,qy,qz
+             matrix      m00,m01,m02,m10,...,m22 (row-major, v' = M v)
+             axis-angle  ax,ay,az,angle (angle in degrees)
+             rotvec      rx,ry,rz (radians)
+             euler       e1,e2,e3 (degrees; unwrapped along the file, no 360 degree jumps)
+
+The Euler options say how to read Euler input and how to write Euler output. Rows within 1 degree
+of gimbal lock are reported on standard error.)";
+
+const char* const kInterpolate = R"(Usage: gyre-cli interpolate KEYS.csv -o FRAMES.csv --method METHOD --fps F [--order AXES] [--intrinsic|--extrinsic]
+
+Samples the motion through timed keys (a time column is required, at least two keys) at
+t0 + k/F up to the last key, plus a sample at every key time. Writes time,qw,qx,qy,qz,x,y,z.
+
+  --method   slerp, nlerp, euler    orientation by that curve, position linear
+             squad, hermite         orientation by that curve, position cubic Hermite
+             screw                  the polyscrew through the key poses
+  --fps F    samples per second, > 0
+
+The Euler options say how to read Euler input, and the angles the euler method interpolates.)";
+
+const char* const kSubdivide = R"(Usage: gyre-cli subdivide POSES.csv -o OUT.csv --scheme SCHEME --levels L [--open] [--decoupled] [--order AXES] [--intrinsic|--extrinsic]
+
+Smooths a sequence of poses by ScrewBender's Split&Tweak subdivision. A cycle of n poses gives
+n*2^L poses, an open sequence (n-1)*2^L+1; output pose i*2^L is the image of input pose i.
+Times, where the input has them, are spread evenly within each input span; the span that closes a
+cycle lasts the mean of the others. Writes time (if the input has it),qw,qx,qy,qz,x,y,z.
+
+  --scheme     four-point, four-point-b, bspline or jarek
+  --levels L   subdivision steps, each doubling the poses (at most 16777216 poses out)
+  --open       an open sequence (default: a closed cycle)
+  --decoupled  positions by the linear scheme and rotations separately, for comparison
+
+The Euler options say how to read Euler input.)";
+
+QString withCommonOptions(const char* verbHelp) { return QString::fromUtf8(verbHelp) + '\n' + kCommonOptions; }
+
+} // namespace
+
+QString generalHelp() { return QString::fromUtf8(kGeneral); }
+QString convertHelp() { return withCommonOptions(kConvert); }
+QString interpolateHelp() { return withCommonOptions(kInterpolate); }
+QString subdivideHelp() { return withCommonOptions(kSubdivide); }
+
+} // namespace gyre::cli

@@ -1,0 +1,198 @@
+#include "core/euler_angles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace gyre {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Below this norm of the quaternion pair that fixes e1 − e3 (or e1 + e3), the rotation is at gimbal
+// lock to within about 1e-12 rad: the split between e1 and e3 is then a convention, and e3 = 0.
+constexpr double kLockPairNorm = 1e-12;
+
+Eigen::Quaterniond axisRotation(int axis, double angle)
+{
+    Eigen::Quaterniond q(std::cos(0.5 * angle), 0.0, 0.0, 0.0);
+    q.vec()[axis] = std::sin(0.5 * angle);
+    return q;
+}
+
+double component(const Eigen::Quaterniond& q, int axis)
+{
+    return q.vec()[axis];
+}
+
+// +1 if (i, j, k) is a cyclic permutation of (x, y, z), −1 otherwise: eᵢeⱼ = parity·eₖ.
+double parity(int i, int j)
+{
+    return (j - i + 3) % 3 == 1 ? 1.0 : -1.0;
+}
+
+// Which angle takes the whole turn about the locked axis at exact gimbal lock; the other is 0.
+enum class LockedTurn { First, Last };
+
+// The half-sum and half-difference of e1 and e3, from the two quaternion pairs that carry them. At
+// exact lock one of them is undetermined and is chosen so that the angle that does not take the turn
+// is 0: e3 = 0 means sum = difference, e1 = 0 means sum = −difference.
+struct HalfAngles {
+    double sum;
+    double difference;
+};
+
+HalfAngles halfAngles(double sumY, double sumX, double diffY, double diffX, LockedTurn lockedTurn)
+{
+    double sum = std::atan2(sumY, sumX);
+    double difference = std::atan2(diffY, diffX);
+    const double sign = lockedTurn == LockedTurn::First ? 1.0 : -1.0;
+    if (std::hypot(diffX, diffY) < kLockPairNorm)
+        difference = sign * sum;
+    else if (std::hypot(sumX, sumY) < kLockPairNorm)
+        sum = sign * difference;
+    return {sum, difference};
+}
+
+// Intrinsic decomposition q = q_i(e1)·q_j(e2)·q_k(e3). With half angles A, B, C:
+//   proper (k = i, m the third axis, ε = parity(i, j)):
+//     q = (cos B cos(A+C), cos B sin(A+C)·e_i, sin B cos(A−C)·e_j, ε sin B sin(A−C)·e_m)
+//   Tait-Bryan (ε = parity(i, j), C′ = εC), with w, x = q_i, y = q_j, z = ε q_k:
+//     w + y = (cos B + sin B) cos(A+C′),  x + z = (cos B + sin B) sin(A+C′)
+//     w − y = (cos B − sin B) cos(A−C′),  x − z = (cos B − sin B) sin(A−C′)
+EulerAngles intrinsicAngles(const Eigen::Quaterniond& q, int i, int j, int k, LockedTurn lockedTurn)
+{
+    const double epsilon = parity(i, j);
+    const double w = q.w();
+    const double x = component(q, i);
+    const double y = component(q, j);
+    EulerAngles result;
+    if (i == k) {
+        const int m = 3 - i - j;
+        const double z = epsilon * component(q, m);
+        const HalfAngles h = halfAngles(x, w, z, y, lockedTurn);
+        const double middle = 2.0 * std::atan2(std::hypot(y, z), std::hypot(w, x));
+        result.angles = {wrapAngle(h.sum + h.difference), middle, wrapAngle(h.sum - h.difference)};
+        result.gimbalLockDistance = std::min(middle, kPi - middle);
+    } else {
+        const double z = epsilon * component(q, k);
+        const HalfAngles h = halfAngles(x + z, w + y, x - z, w - y, lockedTurn);
+        const double middle = 0.5 * kPi - 2.0 * std::atan2(std::hypot(w - y, x - z), std::hypot(w + y, x + z));
+        result.angles = {wrapAngle(h.sum + h.difference), middle, wrapAngle(epsilon * (h.sum - h.difference))};
+        result.gimbalLockDistance = 0.5 * kPi - std::abs(middle);
+    }
+    return result;
+}
+
+} // namespace
+
+std::optional<EulerConvention> EulerConvention::parse(std::string_view order, AngleFrame frame)
+{
+    if (order.size() != 3)
+        return std::nullopt;
+    EulerConvention convention;
+    convention.frame = frame;
+    for (std::size_t n = 0; n < 3; ++n) {
+        const char c = order[n];
+        if (c == 'x' || c == 'X')
+            convention.axes[n] = 0;
+        else if (c == 'y' || c == 'Y')
+            convention.axes[n] = 1;
+        else if (c == 'z' || c == 'Z')
+            convention.axes[n] = 2;
+        else
+            return std::nullopt;
+    }
+    if (convention.axes[0] == convention.axes[1] || convention.axes[1] == convention.axes[2])
+        return std::nullopt;
+    return convention;
+}
+
+std::vector<EulerConvention> EulerConvention::all()
+{
+    std::vector<EulerConvention> conventions;
+    for (AngleFrame frame : {AngleFrame::Intrinsic, AngleFrame::Extrinsic})
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                for (int k = 0; k < 3; ++k)
+                    if (i != j && j != k)
+                        conventions.push_back({{i, j, k}, frame});
+    return conventions;
+}
+
+std::string EulerConvention::order() const
+{
+    std::string text;
+    for (int axis : axes)
+        text += static_cast<char>('x' + axis);
+    return text;
+}
+
+std::string EulerConvention::name() const
+{
+    return (frame == AngleFrame::Intrinsic ? "intrinsic " : "extrinsic ") + order();
+}
+
+Eigen::Quaterniond quaternionFromEulerAngles(const Eigen::Vector3d& angles, const EulerConvention& convention)
+{
+    const Eigen::Quaterniond q1 = axisRotation(convention.axes[0], angles[0]);
+    const Eigen::Quaterniond q2 = axisRotation(convention.axes[1], angles[1]);
+    const Eigen::Quaterniond q3 = axisRotation(convention.axes[2], angles[2]);
+    return convention.frame == AngleFrame::Intrinsic ? q1 * q2 * q3 : q3 * q2 * q1;
+}
+
+EulerAngles eulerAnglesFromQuaternion(const Eigen::Quaterniond& q, const EulerConvention& convention)
+{
+    const Eigen::Quaterniond unit = q.normalized();
+    const auto& a = convention.axes;
+    if (convention.frame == AngleFrame::Intrinsic)
+        return intrinsicAngles(unit, a[0], a[1], a[2], LockedTurn::First);
+    // Extrinsic ijk with (e1, e2, e3) is intrinsic kji with (e3, e2, e1).
+    EulerAngles reversed = intrinsicAngles(unit, a[2], a[1], a[0], LockedTurn::Last);
+    std::swap(reversed.angles[0], reversed.angles[2]);
+    return reversed;
+}
+
+Eigen::Vector3d nearestEquivalentAngles(const Eigen::Vector3d& angles, const Eigen::Vector3d& previous,
+                                        const EulerConvention& convention)
+{
+    // The second solution: R_i(e1+π)·R_j(π−e2)·R_k(e3+π) for Tait-Bryan, R_i(e1+π)·R_j(−e2)·R_i(e3+π)
+    // for proper Euler (the π turns about i and k conjugate R_j into its mirror).
+    const double mirroredMiddle = convention.isProperEuler() ? -angles[1] : kPi - angles[1];
+    const Eigen::Vector3d candidates[2] = {angles, {angles[0] + kPi, mirroredMiddle, angles[2] + kPi}};
+    Eigen::Vector3d best = angles;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& candidate : candidates) {
+        Eigen::Vector3d shifted;
+        for (int n = 0; n < 3; ++n)
+            shifted[n] = previous[n] + wrapAngle(candidate[n] - previous[n]);
+        const double distance = (shifted - previous).squaredNorm();
+        if (distance < bestDistance) {
+            bestDistance = distance;
+            best = shifted;
+        }
+    }
+    return best;
+}
+
+std::vector<Eigen::Vector3d> unwrappedEulerAngles(const std::vector<Eigen::Quaterniond>& rotations,
+                                                  const EulerConvention& convention)
+{
+    std::vector<Eigen::Vector3d> result;
+    result.reserve(rotations.size());
+    for (const Eigen::Quaterniond& q : rotations) {
+        const Eigen::Vector3d angles = eulerAnglesFromQuaternion(q, convention).angles;
+        result.push_back(result.empty() ? angles : nearestEquivalentAngles(angles, result.back(), convention));
+    }
+    return result;
+}
+
+double wrapAngle(double e)
+{
+    const double wrapped = std::remainder(e, 2.0 * kPi);
+    return wrapped <= -kPi ? wrapped + 2.0 * kPi : wrapped;
+}
+
+} // namespace gyre

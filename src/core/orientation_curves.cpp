@@ -1,0 +1,315 @@
+#include "core/orientation_curves.h"
+
+#include "core/position_curve.h"
+#include "core/quaternion_math.h"
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+#include <utility>
+
+namespace gyre {
+
+namespace {
+
+// Flips each quaternion into the hemisphere of the one before, so that consecutive keys are joined
+// along the short arc.
+void alignSigns(std::vector<OrientationKey>& keys)
+{
+    for (std::size_t i = 1; i < keys.size(); ++i)
+        keys[i].rotation = alignedWith(keys[i].rotation, keys[i - 1].rotation);
+}
+
+OrientationSample sampleOfRaw(const Eigen::Quaterniond& q, const Eigen::Quaterniond& dq)
+{
+    return {q.normalized(), normalizedDerivative(q, dq), angularVelocity(q, dq)};
+}
+
+const Eigen::Quaterniond kZeroQuaternion(0.0, 0.0, 0.0, 0.0);
+
+} // namespace
+
+OrientationCurve::OrientationCurve(std::vector<OrientationKey> keys)
+    : keys_(std::move(keys))
+{
+    if (keys_.empty())
+        throw std::invalid_argument("an orientation curve needs at least one key");
+    for (std::size_t i = 1; i < keys_.size(); ++i)
+        if (!(keys_[i].time > keys_[i - 1].time))
+            throw std::invalid_argument("key times must strictly increase");
+    for (OrientationKey& key : keys_)
+        key.rotation.normalize();
+    alignSigns(keys_);
+}
+
+OrientationSample OrientationCurve::sample(double time) const
+{
+    if (keys_.size() == 1 || time < startTime() || time > endTime()) {
+        const Eigen::Quaterniond& held = time < startTime() ? keys_.front().rotation : keys_.back().rotation;
+        return {held, kZeroQuaternion, Eigen::Vector3d::Zero()};
+    }
+    const auto after = std::upper_bound(keys_.begin(), keys_.end(), time,
+                                        [](double t, const OrientationKey& key) { return t < key.time; });
+    const std::size_t segment = std::min<std::size_t>(static_cast<std::size_t>(after - keys_.begin()) - 1,
+                                                      keys_.size() - 2);
+    const double duration = keys_[segment + 1].time - keys_[segment].time;
+    return sampleSegment(segment, (time - keys_[segment].time) / duration, duration);
+}
+
+// --- slerp ------------------------------------------------------------------------------------------
+
+SlerpCurve::SlerpCurve(std::vector<OrientationKey> keys)
+    : OrientationCurve(std::move(keys))
+{
+}
+
+OrientationSample SlerpCurve::sampleSegment(std::size_t segment, double u, double duration) const
+{
+    // q(u) = q₀·exp(u·v), v = log(q₀⁻¹q₁); dq/dt = q(u)·v / duration.
+    const Eigen::Quaterniond& q0 = keys_[segment].rotation;
+    const Eigen::Vector3d v = quatLog(q0.conjugate() * keys_[segment + 1].rotation);
+    const Eigen::Quaterniond q = q0 * quatExp(u * v);
+    const Eigen::Quaterniond dq = q * pureQuaternion(v / duration);
+    return {q, dq, angularVelocity(q, dq)};
+}
+
+// --- nlerp ------------------------------------------------------------------------------------------
+
+NlerpCurve::NlerpCurve(std::vector<OrientationKey> keys)
+    : OrientationCurve(std::move(keys))
+{
+}
+
+OrientationSample NlerpCurve::sampleSegment(std::size_t segment, double u, double duration) const
+{
+    const Eigen::Quaterniond& q0 = keys_[segment].rotation;
+    const Eigen::Quaterniond& q1 = keys_[segment + 1].rotation;
+    const Eigen::Quaterniond p = linearCombination(1.0 - u, q0, u, q1);
+    const Eigen::Quaterniond dp = linearCombination(1.0 / duration, q1, -1.0 / duration, q0);
+    return sampleOfRaw(p, dp);
+}
+
+// --- squad ------------------------------------------------------------------------------------------
+
+SquadCurve::SquadCurve(std::vector<OrientationKey> keys)
+    : OrientationCurve(std::move(keys))
+{
+    inner_.reserve(keys_.size());
+    for (std::size_t i = 0; i < keys_.size(); ++i) {
+        const Eigen::Quaterniond& q = keys_[i].rotation;
+        if (i == 0 || i + 1 == keys_.size()) {
+            inner_.push_back(q);
+            continue;
+        }
+        const Eigen::Vector3d toNext = quatLog(q.conjugate() * keys_[i + 1].rotation);
+        const Eigen::Vector3d toPrevious = quatLog(q.conjugate() * keys_[i - 1].rotation);
+        inner_.push_back(q * quatExp(-0.25 * (toNext + toPrevious)));
+    }
+}
+
+OrientationSample SquadCurve::sampleSegment(std::size_t segment, double u, double duration) const
+{
+    // Q = slerp(A, B, h) = A·exp(h·L) with A = slerp(qᵢ, qᵢ₊₁, u), B = slerp(sᵢ, sᵢ₊₁, u),
+    // h = 2u(1−u), L = log(A⁻¹B). By the chain rule, with ′ = d/du:
+    //   A′ = A·vₐ, B′ = B·v_b, C = A⁻¹B, C′ = A′*·B + A*·B′, L′ = dlog_C(C′),
+    //   Q′ = A′·exp(hL) + A·dexp_{hL}(h′L + hL′).
+    const Eigen::Quaterniond& qa = keys_[segment].rotation;
+    const Eigen::Quaterniond& sa = inner_[segment];
+    const Eigen::Vector3d va = quatLog(qa.conjugate() * keys_[segment + 1].rotation);
+    const Eigen::Vector3d vb = quatLog(sa.conjugate() * alignedWith(inner_[segment + 1], sa));
+    const Eigen::Quaterniond a = qa * quatExp(u * va);
+    const Eigen::Quaterniond b = sa * quatExp(u * vb);
+    const Eigen::Quaterniond da = a * pureQuaternion(va);
+    const Eigen::Quaterniond db = b * pureQuaternion(vb);
+
+    const double h = 2.0 * u * (1.0 - u);
+    const double dh = 2.0 - 4.0 * u;
+    const Eigen::Quaterniond c = a.conjugate() * b;
+    const Eigen::Quaterniond dc = linearCombination(1.0, da.conjugate() * b, 1.0, a.conjugate() * db);
+    const Eigen::Vector3d l = quatLog(c);
+    const Eigen::Vector3d dl = quatLogDerivative(c, dc);
+
+    const Eigen::Quaterniond e = quatExp(h * l);
+    const Eigen::Quaterniond de = quatExpDerivative(h * l, dh * l + h * dl);
+    const Eigen::Quaterniond q = (a * e).normalized();
+    const Eigen::Quaterniond dq = linearCombination(1.0 / duration, da * e, 1.0 / duration, a * de);
+    return {q, dq, angularVelocity(q, dq)};
+}
+
+// --- Hermite ----------------------------------------------------------------------------------------
+
+HermiteQuaternionSpline::HermiteQuaternionSpline(std::vector<HermiteControlPoint> points)
+    : OrientationCurve(keysOf(points))
+    , points_(std::move(points))
+{
+}
+
+std::vector<OrientationKey> HermiteQuaternionSpline::keysOf(const std::vector<HermiteControlPoint>& points)
+{
+    std::vector<OrientationKey> keys;
+    keys.reserve(points.size());
+    for (const HermiteControlPoint& point : points) {
+        if (point.value.squaredNorm() == 0.0)
+            throw std::invalid_argument("a Hermite control point needs a nonzero quaternion");
+        keys.push_back({point.time, point.value});
+    }
+    return keys;
+}
+
+HermiteQuaternionSpline HermiteQuaternionSpline::throughKeys(std::vector<OrientationKey> keys)
+{
+    for (OrientationKey& key : keys)
+        key.rotation.normalize();
+    alignSigns(keys);
+    std::vector<HermiteControlPoint> points(keys.size());
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        points[i].time = keys[i].time;
+        points[i].value = keys[i].rotation;
+        if (keys.size() < 2)
+            continue;
+        const std::size_t before = i == 0 ? 0 : i - 1;
+        const std::size_t after = i + 1 == keys.size() ? i : i + 1;
+        const double span = keys[after].time - keys[before].time;
+        points[i].derivative = linearCombination(1.0 / span, keys[after].rotation, -1.0 / span, keys[before].rotation);
+    }
+    return HermiteQuaternionSpline(std::move(points));
+}
+
+HermiteQuaternionSpline::RawSample HermiteQuaternionSpline::raw(double time) const
+{
+    if (points_.size() == 1 || time < startTime() || time > endTime()) {
+        const Eigen::Quaterniond& held = time < startTime() ? points_.front().value : points_.back().value;
+        return {held, kZeroQuaternion, kZeroQuaternion};
+    }
+    const auto after = std::upper_bound(points_.begin(), points_.end(), time,
+                                        [](double t, const HermiteControlPoint& p) { return t < p.time; });
+    const std::size_t segment = std::min<std::size_t>(static_cast<std::size_t>(after - points_.begin()) - 1,
+                                                      points_.size() - 2);
+    const double duration = points_[segment + 1].time - points_[segment].time;
+    return rawSegment(segment, (time - points_[segment].time) / duration, duration);
+}
+
+HermiteQuaternionSpline::RawSample HermiteQuaternionSpline::rawSegment(std::size_t segment, double u,
+                                                                       double duration) const
+{
+    // p(u) = h₀₀q₀ + h₁₀Δm₀ + h₀₁q₁ + h₁₁Δm₁ with the cubic Hermite basis, and d/dt = (1/Δ) d/du.
+    const HermiteControlPoint& p0 = points_[segment];
+    const HermiteControlPoint& p1 = points_[segment + 1];
+    const HermiteBasis basis = hermiteBasis(u);
+    const auto combine = [&](const std::array<double, 4>& w, double scale) {
+        Eigen::Quaterniond r;
+        r.coeffs() = scale * (w[0] * p0.value.coeffs() + w[1] * duration * p0.derivative.coeffs() +
+                              w[2] * p1.value.coeffs() + w[3] * duration * p1.derivative.coeffs());
+        return r;
+    };
+    return {combine(basis.value, 1.0), combine(basis.first, 1.0 / duration),
+            combine(basis.second, 1.0 / (duration * duration))};
+}
+
+OrientationSample HermiteQuaternionSpline::sampleSegment(std::size_t segment, double u, double duration) const
+{
+    const RawSample r = rawSegment(segment, u, duration);
+    return sampleOfRaw(r.value, r.derivative);
+}
+
+// --- Euler angles -----------------------------------------------------------------------------------
+
+namespace {
+
+std::vector<Eigen::Quaterniond> rotationsOf(const std::vector<OrientationKey>& keys)
+{
+    std::vector<Eigen::Quaterniond> rotations;
+    rotations.reserve(keys.size());
+    for (const OrientationKey& key : keys)
+        rotations.push_back(key.rotation);
+    return rotations;
+}
+
+} // namespace
+
+EulerAngleCurve::EulerAngleCurve(std::vector<OrientationKey> keys, const EulerConvention& convention)
+    : OrientationCurve(std::move(keys))
+    , convention_(convention)
+    , angles_(unwrappedEulerAngles(rotationsOf(keys_), convention))
+{
+}
+
+OrientationSample EulerAngleCurve::sampleSegment(std::size_t segment, double u, double duration) const
+{
+    // q = f₁·f₂·f₃ with fₙ = (cos(eₙ/2), sin(eₙ/2)·axisₙ) in multiplication order; each angle is linear
+    // in time, so dfₙ/dt = fₙ·(0, axisₙ/2)·ėₙ and dq/dt follows by the product rule.
+    const Eigen::Vector3d angles = (1.0 - u) * angles_[segment] + u * angles_[segment + 1];
+    const Eigen::Vector3d rates = (angles_[segment + 1] - angles_[segment]) / duration;
+    std::array<int, 3> order{0, 1, 2};
+    if (convention_.frame == AngleFrame::Extrinsic)
+        order = {2, 1, 0};
+    std::array<Eigen::Quaterniond, 3> factors;
+    std::array<Eigen::Quaterniond, 3> derivatives;
+    for (int n = 0; n < 3; ++n) {
+        const int which = order[static_cast<std::size_t>(n)];
+        Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+        axis[convention_.axes[static_cast<std::size_t>(which)]] = 1.0;
+        factors[static_cast<std::size_t>(n)] = quatExp(0.5 * angles[which] * axis);
+        derivatives[static_cast<std::size_t>(n)] =
+            factors[static_cast<std::size_t>(n)] * pureQuaternion(0.5 * rates[which] * axis);
+    }
+    const Eigen::Quaterniond q = factors[0] * factors[1] * factors[2];
+    Eigen::Quaterniond dq;
+    dq.coeffs() = (derivatives[0] * factors[1] * factors[2]).coeffs() +
+                  (factors[0] * derivatives[1] * factors[2]).coeffs() +
+                  (factors[0] * factors[1] * derivatives[2]).coeffs();
+    return {q, dq, angularVelocity(q, dq)};
+}
+
+// --- factory ----------------------------------------------------------------------------------------
+
+namespace {
+
+constexpr std::array<std::pair<InterpolationMethod, std::string_view>, 6> kMethodNames{{
+    {InterpolationMethod::Slerp, "slerp"},
+    {InterpolationMethod::Nlerp, "nlerp"},
+    {InterpolationMethod::Squad, "squad"},
+    {InterpolationMethod::Hermite, "hermite"},
+    {InterpolationMethod::Euler, "euler"},
+    {InterpolationMethod::Screw, "screw"},
+}};
+
+} // namespace
+
+std::optional<InterpolationMethod> parseInterpolationMethod(std::string_view name)
+{
+    for (const auto& [method, text] : kMethodNames)
+        if (text == name)
+            return method;
+    return std::nullopt;
+}
+
+std::string_view interpolationMethodName(InterpolationMethod method)
+{
+    for (const auto& [candidate, text] : kMethodNames)
+        if (candidate == method)
+            return text;
+    return {};
+}
+
+std::unique_ptr<OrientationCurve> makeOrientationCurve(InterpolationMethod method, std::vector<OrientationKey> keys,
+                                                       const EulerConvention& convention)
+{
+    switch (method) {
+    case InterpolationMethod::Slerp:
+        return std::make_unique<SlerpCurve>(std::move(keys));
+    case InterpolationMethod::Nlerp:
+        return std::make_unique<NlerpCurve>(std::move(keys));
+    case InterpolationMethod::Squad:
+        return std::make_unique<SquadCurve>(std::move(keys));
+    case InterpolationMethod::Hermite:
+        return std::make_unique<HermiteQuaternionSpline>(HermiteQuaternionSpline::throughKeys(std::move(keys)));
+    case InterpolationMethod::Euler:
+        return std::make_unique<EulerAngleCurve>(std::move(keys), convention);
+    case InterpolationMethod::Screw:
+        break;
+    }
+    throw std::invalid_argument("screw interpolation moves poses, not orientations: use Polyscrew");
+}
+
+} // namespace gyre

@@ -1,0 +1,145 @@
+#pragma once
+// Orientation curves through timed keys: slerp, nlerp, Shoemake's squad, the Hermite quaternion
+// spline of the sketch-editing paper, and linear interpolation of Euler angles (kept on purpose, to
+// show why it misbehaves). Each gives its value, its time derivative and its world angular velocity
+// ω = 2q′q⁻¹, all analytically.
+//
+// Keys are made sign-consistent on construction (each key flipped to the hemisphere of the one
+// before), so every curve takes the short arc between consecutive keys. Outside the key span a curve
+// holds the end orientation with zero derivative.
+
+#include "core/euler_angles.h"
+
+#include <Eigen/Geometry>
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace gyre {
+
+struct OrientationKey {
+    double time = 0.0;
+    Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+};
+
+struct OrientationSample {
+    Eigen::Quaterniond value;           // unit
+    Eigen::Quaterniond derivative;      // dq/dt
+    Eigen::Vector3d angularVelocity;    // world frame, rad/s
+};
+
+class OrientationCurve {
+public:
+    virtual ~OrientationCurve() = default;
+
+    OrientationSample sample(double time) const;
+    double startTime() const { return keys_.front().time; }
+    double endTime() const { return keys_.back().time; }
+    const std::vector<OrientationKey>& keys() const { return keys_; }
+
+protected:
+    // Throws std::invalid_argument unless there is at least one key and times strictly increase.
+    explicit OrientationCurve(std::vector<OrientationKey> keys);
+    // Copied and moved only as part of a concrete curve, never sliced through the base.
+    OrientationCurve(const OrientationCurve&) = default;
+    OrientationCurve(OrientationCurve&&) = default;
+    OrientationCurve& operator=(const OrientationCurve&) = default;
+    OrientationCurve& operator=(OrientationCurve&&) = default;
+
+    // The sample inside segment `segment` (keys[segment] to keys[segment + 1]) at local parameter
+    // u ∈ [0, 1]; `duration` is the segment's length in seconds.
+    virtual OrientationSample sampleSegment(std::size_t segment, double u, double duration) const = 0;
+
+    std::vector<OrientationKey> keys_;
+};
+
+class SlerpCurve final : public OrientationCurve {
+public:
+    explicit SlerpCurve(std::vector<OrientationKey> keys);
+
+private:
+    OrientationSample sampleSegment(std::size_t segment, double u, double duration) const override;
+};
+
+class NlerpCurve final : public OrientationCurve {
+public:
+    explicit NlerpCurve(std::vector<OrientationKey> keys);
+
+private:
+    OrientationSample sampleSegment(std::size_t segment, double u, double duration) const override;
+};
+
+// Shoemake's squad: squad(qᵢ, qᵢ₊₁, sᵢ, sᵢ₊₁, u) = slerp(slerp(qᵢ, qᵢ₊₁, u), slerp(sᵢ, sᵢ₊₁, u), 2u(1−u))
+// with inner quadrangle points sᵢ = qᵢ·exp(−(log(qᵢ⁻¹qᵢ₊₁) + log(qᵢ⁻¹qᵢ₋₁))/4), and s = q at the ends.
+class SquadCurve final : public OrientationCurve {
+public:
+    explicit SquadCurve(std::vector<OrientationKey> keys);
+
+private:
+    OrientationSample sampleSegment(std::size_t segment, double u, double duration) const override;
+    std::vector<Eigen::Quaterniond> inner_;
+};
+
+// A control point of a Hermite quaternion spline: a quaternion and its time derivative, both as
+// unconstrained 4-vectors.
+struct HermiteControlPoint {
+    double time = 0.0;
+    Eigen::Quaterniond value = Eigen::Quaterniond::Identity();
+    Eigen::Quaterniond derivative = Eigen::Quaterniond(0.0, 0.0, 0.0, 0.0);
+};
+
+// A cubic Hermite spline in R⁴ through quaternions with given derivatives (Ramamoorthi and Barr, as
+// the sketch-editing paper uses it). The raw curve need not stay unit; sample() reports the
+// normalised curve, whose angular velocity equals that of the raw one (see angularVelocity()).
+class HermiteQuaternionSpline final : public OrientationCurve {
+public:
+    // Control points with strictly increasing times; values need not be sign-aligned.
+    explicit HermiteQuaternionSpline(std::vector<HermiteControlPoint> points);
+
+    // InitCurve of the paper: the spline through the keys with derivatives
+    // q′(tᵢ) = (qᵢ₊₁ − qᵢ₋₁)/(tᵢ₊₁ − tᵢ₋₁), one-sided at the first and last key.
+    static HermiteQuaternionSpline throughKeys(std::vector<OrientationKey> keys);
+
+    struct RawSample {
+        Eigen::Quaterniond value;
+        Eigen::Quaterniond derivative;
+        Eigen::Quaterniond secondDerivative;
+    };
+    // The unnormalised cubic and its first two time derivatives; held constant outside the span.
+    RawSample raw(double time) const;
+
+    const std::vector<HermiteControlPoint>& controlPoints() const { return points_; }
+
+private:
+    static std::vector<OrientationKey> keysOf(const std::vector<HermiteControlPoint>& points);
+    RawSample rawSegment(std::size_t segment, double u, double duration) const;
+    OrientationSample sampleSegment(std::size_t segment, double u, double duration) const override;
+    std::vector<HermiteControlPoint> points_;
+};
+
+// Linear interpolation of three-angle sequences: each key converted to angles in the convention,
+// unwrapped by the Euler filter, and the three angles interpolated linearly.
+class EulerAngleCurve final : public OrientationCurve {
+public:
+    EulerAngleCurve(std::vector<OrientationKey> keys, const EulerConvention& convention);
+
+private:
+    OrientationSample sampleSegment(std::size_t segment, double u, double duration) const override;
+    EulerConvention convention_;
+    std::vector<Eigen::Vector3d> angles_;
+};
+
+enum class InterpolationMethod { Slerp, Nlerp, Squad, Hermite, Euler, Screw };
+
+std::optional<InterpolationMethod> parseInterpolationMethod(std::string_view name);
+std::string_view interpolationMethodName(InterpolationMethod method);
+
+// The orientation curve of a method; `Screw` is not an orientation curve (see polyscrew.h) and
+// throws std::invalid_argument. The convention is used by `Euler` only.
+std::unique_ptr<OrientationCurve> makeOrientationCurve(InterpolationMethod method, std::vector<OrientationKey> keys,
+                                                       const EulerConvention& convention = {});
+
+} // namespace gyre

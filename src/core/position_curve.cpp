@@ -1,0 +1,55 @@
+#include "core/position_curve.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+namespace gyre {
+
+HermiteBasis hermiteBasis(double u)
+{
+    const double u2 = u * u;
+    const double u3 = u2 * u;
+    return {{2 * u3 - 3 * u2 + 1, u3 - 2 * u2 + u, -2 * u3 + 3 * u2, u3 - u2},
+            {6 * u2 - 6 * u, 3 * u2 - 4 * u + 1, -6 * u2 + 6 * u, 3 * u2 - 2 * u},
+            {12 * u - 6, 6 * u - 4, -12 * u + 6, 6 * u - 2}};
+}
+
+PositionCurve::PositionCurve(std::vector<PositionKey> keys, Shape shape)
+    : keys_(std::move(keys))
+{
+    if (keys_.empty())
+        throw std::invalid_argument("a position curve needs at least one key");
+    for (std::size_t i = 1; i < keys_.size(); ++i)
+        if (!(keys_[i].time > keys_[i - 1].time))
+            throw std::invalid_argument("key times must strictly increase");
+    if (shape == Shape::Linear || keys_.size() < 2)
+        return;
+    slopes_.reserve(keys_.size());
+    for (std::size_t i = 0; i < keys_.size(); ++i) {
+        const PositionKey& before = keys_[i == 0 ? 0 : i - 1];
+        const PositionKey& after = keys_[i + 1 == keys_.size() ? i : i + 1];
+        slopes_.push_back((after.position - before.position) / (after.time - before.time));
+    }
+}
+
+Eigen::Vector3d PositionCurve::at(double time) const
+{
+    if (time <= keys_.front().time)
+        return keys_.front().position;
+    if (time >= keys_.back().time)
+        return keys_.back().position;
+    const auto after = std::upper_bound(keys_.begin(), keys_.end(), time,
+                                        [](double t, const PositionKey& key) { return t < key.time; });
+    const auto i = static_cast<std::size_t>(after - keys_.begin()) - 1;
+    const PositionKey& start = keys_[i];
+    const PositionKey& end = keys_[i + 1];
+    const double duration = end.time - start.time;
+    const double u = (time - start.time) / duration;
+    if (slopes_.empty())
+        return (1.0 - u) * start.position + u * end.position;
+    const std::array<double, 4>& h = hermiteBasis(u).value;
+    return h[0] * start.position + h[1] * duration * slopes_[i] + h[2] * end.position + h[3] * duration * slopes_[i + 1];
+}
+
+} // namespace gyre

@@ -1,0 +1,71 @@
+#pragma once
+// The screw motion between two poses, s(La, t, Lb) of ScrewBender: a rotation by t·angle about an
+// axis of direction S through a point P, combined with a slide t·d along S, applied to La. It is the
+// SE(3) geodesic La·exp(t·log(La⁻¹Lb)) with the rotation angle in [0, π] (the short arc).
+//
+// The parameters are computed once in the constructor; at(t) is cheap and valid for any t, so t
+// outside [0, 1] extrapolates along the same screw.
+
+#include "core/pose.h"
+
+#include <Eigen/Geometry>
+
+#include <optional>
+
+namespace gyre {
+
+class Screw {
+public:
+    Screw(const Pose& from, const Pose& to);
+
+    // The pose a fraction t of the way along the screw: at(0) = from, at(1) = to.
+    Pose at(double t) const;
+
+    // s(from, 1/2, to), equal to Screw(from, to).at(0.5) but without trigonometry: the half-angle
+    // formulas give cos(a/2) = √((1 + cos a)/2) and sin(a/2) = sin a / (2 cos(a/2)). Subdivision
+    // spends most of its screws on midpoints.
+    static Pose midpoint(const Pose& from, const Pose& to);
+
+    // Unit direction S of the axis. For a pure translation, the direction of travel; for identical
+    // poses, x.
+    Eigen::Vector3d axisDirection() const { return axis_; }
+    // Rotation angle r ∈ [0, π] about S, right-handed.
+    double angle() const { return 2.0 * halfAngle_; }
+    // Signed translation d along S.
+    double slide() const { return slide_; }
+    // The point of the axis nearest the world origin; none when the motion has no rotation.
+    std::optional<Eigen::Vector3d> axisPoint() const;
+
+private:
+    struct WithoutAngle {};
+    // Everything but the angle itself, which only at() needs.
+    Screw(const Pose& from, const Pose& to, WithoutAngle);
+    // The pose at the t with sin(ta) = sinT, cos(ta) = cosT, sin²(ta) = sinSquared and
+    // sin(ta)·cos(ta) = sinCos.
+    Pose pose(double t, double sinT, double cosT, double sinSquared, double sinCos) const;
+
+    // With M = Lb·La⁻¹ = (R, c), R = (cos a, sin a·S) and c = c⊥ + d·S, the screw at time t moves La
+    // by R_t = (cos ta, sin ta·S) and c_t = (sin ta / sin a)·Rot(S, (t−1)a)·c⊥ + t·d·S. With
+    // s = sin ta, k = cos ta, and the angle-sum formulas, everything is linear in s, k, s², s·k and t:
+    //   orientation(t) = k·qa + s·(S·qa)
+    //   position(t)    = pa + t·d·S + s²·V₁ + s·k·V₂
+    //   V₁ = c⊥ − 2pa⊥ + cot a·S×c⊥,   V₂ = 2S×pa⊥ − S×c⊥ + cot a·c⊥
+    // where pa⊥ is the part of pa across S. As a → 0 the cot a terms grow like 1/a while s² and s·k
+    // shrink like a², so their products, and their rounding errors, stay small.
+    Eigen::Quaterniond fromOrientation_;   // qa
+    Eigen::Quaterniond turnedOrientation_; // (0, S)·qa
+    Eigen::Vector3d fromPosition_;         // pa
+    Eigen::Vector3d axis_;                 // S
+    Eigen::Vector3d sinSquaredTerm_;       // V₁
+    Eigen::Vector3d sinCosTerm_;           // V₂
+    Eigen::Vector3d perpendicular_;        // c⊥
+    double halfAngle_ = 0.0;               // a = r/2
+    double cosHalfAngle_ = 1.0;
+    double sinHalfAngle_ = 0.0;
+    double slide_ = 0.0;                   // d
+};
+
+// s(La, t, Lb): the pose of Screw(from, to).at(t), computed for this one t at about half the cost.
+Pose screwInterpolate(const Pose& from, double t, const Pose& to);
+
+} // namespace gyre

@@ -1,0 +1,67 @@
+#pragma once
+// ScrewBender's Split&Tweak subdivision of polyscrews. Each level doubles the control poses: a pose is
+// inserted between each pair of neighbours and the poses are tweaked, every step built from the screw
+// primitive s(La, t, Lb) alone, so that a pure translation reproduces the linear masks of the paper
+//   B-spline  q₂ᵢ = (pᵢ₋₁ + 6pᵢ + pᵢ₊₁)/8,          q₂ᵢ₊₁ = (pᵢ + pᵢ₊₁)/2
+//   4-point   q₂ᵢ = pᵢ,                           q₂ᵢ₊₁ = (−pᵢ₋₁ + 9pᵢ + 9pᵢ₊₁ − pᵢ₊₂)/16
+//   Jarek     q₂ᵢ = (2pᵢ₋₁ + 28pᵢ + 2pᵢ₊₁)/32,      q₂ᵢ₊₁ = (−pᵢ₋₁ + 17pᵢ + 17pᵢ₊₁ − pᵢ₊₂)/32
+// and poses sampled along one screw stay on it.
+//
+// Open sequences are extended at each level by a dummy screw at each end: a ghost pose s(L₁, 2, L₀)
+// before the first pose and s(Lₙ₋₂, 2, Lₙ₋₁) after the last, continuing the end screws. With these
+// ghosts every scheme maps the end poses to themselves (for a translation (2p₀ − p₁ + 6p₀ + p₁)/8 = p₀),
+// so the endpoints are kept.
+
+#include "core/pose.h"
+#include "core/screw.h"
+
+#include <cstddef>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace gyre {
+
+enum class SubdivisionScheme {
+    FourPoint,  // formulation A: s(s(La, 9/8, Lb), 1/2, s(Ld, 9/8, Lc)) between Lb and Lc
+    FourPointB, // formulation B: s(s(La, 1/2, Ld), 9/8, s(Lb, 1/2, Lc))
+    BSpline,
+    Jarek,
+};
+
+std::optional<SubdivisionScheme> parseSubdivisionScheme(std::string_view name);
+std::string_view subdivisionSchemeName(SubdivisionScheme scheme);
+
+struct SubdivisionSettings {
+    SubdivisionScheme scheme = SubdivisionScheme::FourPoint;
+    int levels = 4;
+    bool cyclic = true;
+    // The decoupled alternative the paper compares against: positions by the linear scheme,
+    // orientations by the same Split&Tweak on rotations alone (slerp in place of the screw).
+    bool decoupled = false;
+};
+
+// How many poses `levels` subdivisions of `controlPoses` poses give: n·2^L for a cycle,
+// (n − 1)·2^L + 1 for an open sequence. nullopt if that does not fit in std::size_t.
+std::optional<std::size_t> subdividedPoseCount(std::size_t controlPoses, int levels, bool cyclic);
+
+// Subdivides repeatedly into buffers it keeps, so that re-subdividing while the artist drags a pose
+// allocates nothing once the buffers have grown. Output pose i·2^L is the image of control pose i.
+class PolyscrewSubdivider {
+public:
+    // Throws std::invalid_argument for negative levels or a result too large to hold.
+    const std::vector<Pose>& subdivide(const std::vector<Pose>& controlPoses, const SubdivisionSettings& settings);
+
+private:
+    template <class Segment>
+    void subdivideOnce(const std::vector<Pose>& in, std::vector<Pose>& out, const SubdivisionSettings& settings);
+
+    std::vector<Pose> current_;
+    std::vector<Pose> next_;
+    std::vector<Pose> extended_;
+};
+
+// One-shot convenience over PolyscrewSubdivider.
+std::vector<Pose> subdividePolyscrew(const std::vector<Pose>& controlPoses, const SubdivisionSettings& settings);
+
+} // namespace gyre

@@ -1,0 +1,20 @@
+#include "io/input_error.h"
+
+namespace gyre {
+
+InputError::InputError(const QString& path, std::string_view message)
+    : std::runtime_error(path.toStdString() + ": " + std::string(message))
+{
+}
+
+InputError::InputError(const QString& path, std::int64_t line, std::string_view message)
+    : std::runtime_error(path.toStdString() + ':' + std::to_string(line) + ": " + std::string(message))
+{
+}
+
+OutputError::OutputError(const QString& path, std::string_view message)
+    : std::runtime_error(path.toStdString() + ": " + std::string(message))
+{
+}
+
+} // namespace gyre

@@ -1,0 +1,27 @@
+#pragma once
+// The errors that reading and writing files report. Their messages are meant for the user as they
+// stand: each names the file, and where there is one the 1-based line, as `path:line: what`.
+
+#include <QString>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace gyre {
+
+// A file that cannot be read, or whose contents are not what the format allows.
+class InputError : public std::runtime_error {
+public:
+    InputError(const QString& path, std::string_view message);
+    InputError(const QString& path, std::int64_t line, std::string_view message);
+};
+
+// A file that cannot be written. The file named keeps its old contents, or stays absent.
+class OutputError : public std::runtime_error {
+public:
+    OutputError(const QString& path, std::string_view message);
+};
+
+} // namespace gyre

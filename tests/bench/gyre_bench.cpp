@@ -1,0 +1,166 @@
+// gyre-bench: the speed figures of the motion core. Run a Release build on an idle machine:
+//   build/tests/bench/gyre-bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// Targets on one core (issue 2): a screw under 35 ns, Jarek to 5 levels on 64 poses under 0.5 ms.
+
+#include "core/euler_angles.h"
+#include "core/orientation_curves.h"
+#include "core/quaternion_math.h"
+#include "core/screw.h"
+#include "core/subdivision.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+namespace {
+
+using gyre::Pose;
+
+constexpr std::size_t kPairs = 1024; // a power of two, so the index wraps with a mask
+
+Eigen::Quaterniond randomRotation(std::mt19937_64& rng)
+{
+    std::normal_distribution<double> normal;
+    return Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng)).normalized();
+}
+
+Pose randomPose(std::mt19937_64& rng)
+{
+    std::uniform_real_distribution<double> coordinate(-5.0, 5.0);
+    return {randomRotation(rng), {coordinate(rng), coordinate(rng), coordinate(rng)}};
+}
+
+struct PosePairs {
+    std::vector<Pose> from;
+    std::vector<Pose> to;
+    std::vector<double> t;
+};
+
+PosePairs randomPairs()
+{
+    std::mt19937_64 rng(20261121);
+    std::uniform_real_distribution<double> fraction(-0.25, 1.25);
+    PosePairs pairs;
+    for (std::size_t i = 0; i < kPairs; ++i) {
+        pairs.from.push_back(randomPose(rng));
+        pairs.to.push_back(randomPose(rng));
+        pairs.t.push_back(fraction(rng));
+    }
+    return pairs;
+}
+
+// 64 control poses on a wobbling loop: each turns a little further about a tilting axis.
+std::vector<Pose> cyclicControlPoses(std::size_t count)
+{
+    std::vector<Pose> poses;
+    for (std::size_t i = 0; i < count; ++i) {
+        const double phase = 2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(count);
+        const Eigen::Vector3d axis(std::cos(3.0 * phase), std::sin(3.0 * phase), 2.0);
+        const Eigen::Quaterniond orientation(Eigen::AngleAxisd(phase, axis.normalized()));
+        poses.push_back({orientation, {3.0 * std::cos(phase), 2.0 * std::sin(phase), std::sin(2.0 * phase)}});
+    }
+    return poses;
+}
+
+// One iteration computes exactly one s(La, t, Lb), screw parameters included, for a pair that
+// changes from one iteration to the next.
+void BM_Screw(benchmark::State& state)
+{
+    const PosePairs pairs = randomPairs();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        Pose pose = gyre::screwInterpolate(pairs.from[i], pairs.t[i], pairs.to[i]);
+        benchmark::DoNotOptimize(pose);
+        i = (i + 1) & (kPairs - 1);
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_Screw);
+
+// The screw of one pair computed once, then evaluated at a different t every iteration.
+void BM_ScrewEvaluate(benchmark::State& state)
+{
+    const PosePairs pairs = randomPairs();
+    const gyre::Screw screw(pairs.from[0], pairs.to[0]);
+    std::size_t i = 0;
+    for (auto _ : state) {
+        Pose pose = screw.at(pairs.t[i]);
+        benchmark::DoNotOptimize(pose);
+        i = (i + 1) & (kPairs - 1);
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ScrewEvaluate);
+
+void BM_Slerp(benchmark::State& state)
+{
+    const PosePairs pairs = randomPairs();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        Eigen::Quaterniond q = gyre::slerp(pairs.from[i].orientation, pairs.to[i].orientation, pairs.t[i]);
+        benchmark::DoNotOptimize(q);
+        i = (i + 1) & (kPairs - 1);
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_Slerp);
+
+void BM_EulerAnglesFromQuaternion(benchmark::State& state)
+{
+    const PosePairs pairs = randomPairs();
+    const auto convention = *gyre::EulerConvention::parse("zxz", gyre::AngleFrame::Intrinsic);
+    std::size_t i = 0;
+    for (auto _ : state) {
+        gyre::EulerAngles angles = gyre::eulerAnglesFromQuaternion(pairs.from[i].orientation, convention);
+        benchmark::DoNotOptimize(angles);
+        i = (i + 1) & (kPairs - 1);
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_EulerAnglesFromQuaternion);
+
+// One sample (value, derivative, angular velocity) of a squad curve through 64 keys.
+void BM_SquadSample(benchmark::State& state)
+{
+    std::vector<gyre::OrientationKey> keys;
+    for (const Pose& pose : cyclicControlPoses(64))
+        keys.push_back({static_cast<double>(keys.size()) / 24.0, pose.orientation});
+    const gyre::SquadCurve curve(keys);
+    const double end = curve.endTime();
+    double t = 0.0;
+    for (auto _ : state) {
+        gyre::OrientationSample sample = curve.sample(t);
+        benchmark::DoNotOptimize(sample);
+        t += 0.01;
+        if (t > end)
+            t = 0.0;
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_SquadSample);
+
+// Each scheme on 64 cyclic control poses to 5 levels (2048 poses), reusing the subdivider's buffers
+// as the app does while a pose is dragged.
+void BM_Subdivide(benchmark::State& state, gyre::SubdivisionScheme scheme, bool decoupled)
+{
+    const std::vector<Pose> control = cyclicControlPoses(64);
+    gyre::PolyscrewSubdivider subdivider;
+    const gyre::SubdivisionSettings settings{scheme, 5, true, decoupled};
+    for (auto _ : state) {
+        const std::vector<Pose>& poses = subdivider.subdivide(control, settings);
+        benchmark::DoNotOptimize(poses.data());
+    }
+    state.SetItemsProcessed(state.iterations() * 64 * 32);
+}
+BENCHMARK_CAPTURE(BM_Subdivide, four_point, gyre::SubdivisionScheme::FourPoint, false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Subdivide, four_point_b, gyre::SubdivisionScheme::FourPointB, false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Subdivide, bspline, gyre::SubdivisionScheme::BSpline, false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Subdivide, jarek, gyre::SubdivisionScheme::Jarek, false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Subdivide, jarek_decoupled, gyre::SubdivisionScheme::Jarek, true)->Unit(benchmark::kMicrosecond);
+
+} // namespace
+
+BENCHMARK_MAIN();

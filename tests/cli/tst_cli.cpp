@@ -1,0 +1,708 @@
+// gyre-cli as a pipeline sees it: the real binary run by QProcess on fixtures written here. The
+// files it writes are read back with a parser of this test's own, and every expected value is built
+// here from Eigen (AngleAxis products, slerp), the closed-form SE(3) exponential, or the formulas in
+// docs/pose-csv.md, never from gyre-cli's own output.
+
+#include "core/quaternion_math.h"
+
+#include <Eigen/Dense>
+
+#include <QDir>
+#include <QFile>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDegree = kPi / 180.0;
+constexpr double kTolerance = 1e-12;
+
+struct CliRun {
+    bool exitedNormally = false; // no crash, no hang
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+CliRun runCli(const QStringList& arguments)
+{
+    QProcess process;
+    process.start(QStringLiteral(GYRE_CLI_PATH), arguments);
+    CliRun run;
+    if (!process.waitForFinished(120'000)) {
+        process.kill();
+        process.waitForFinished();
+        return run;
+    }
+    run.exitedNormally = process.exitStatus() == QProcess::NormalExit;
+    run.exitCode = process.exitCode();
+    run.out = QString::fromUtf8(process.readAllStandardOutput());
+    run.err = QString::fromUtf8(process.readAllStandardError());
+    return run;
+}
+
+// A CSV file as this test reads it: header names and rows of numbers, no comments.
+struct Csv {
+    QStringList header;
+    std::vector<std::vector<double>> rows;
+    QString problem; // empty if the file read cleanly
+
+    double at(std::size_t row, const QString& column) const
+    {
+        return rows[row][static_cast<std::size_t>(header.indexOf(column))];
+    }
+    Eigen::Quaterniond quaternion(std::size_t row) const
+    {
+        return {at(row, "qw"), at(row, "qx"), at(row, "qy"), at(row, "qz")};
+    }
+    Eigen::Vector3d vector(std::size_t row, const char* a, const char* b, const char* c) const
+    {
+        return {at(row, a), at(row, b), at(row, c)};
+    }
+    Eigen::Vector3d position(std::size_t row) const { return vector(row, "x", "y", "z"); }
+    std::vector<double> times() const
+    {
+        std::vector<double> result;
+        for (std::size_t row = 0; row < rows.size(); ++row)
+            result.push_back(at(row, "time"));
+        return result;
+    }
+};
+
+Csv readCsv(const QString& path)
+{
+    Csv csv;
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        csv.problem = "cannot open " + path;
+        return csv;
+    }
+    const QStringList lines = QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
+    if (lines.isEmpty()) {
+        csv.problem = path + " is empty";
+        return csv;
+    }
+    csv.header = lines.front().split(',');
+    for (qsizetype i = 1; i < lines.size(); ++i) {
+        const QStringList fields = lines[i].split(',');
+        if (fields.size() != csv.header.size())
+            csv.problem = QStringLiteral("%1:%2: wrong field count").arg(path).arg(i + 1);
+        std::vector<double> row;
+        for (const QString& field : fields) {
+            bool ok = false;
+            row.push_back(field.toDouble(&ok));
+            if (!ok)
+                csv.problem = QStringLiteral("%1:%2: '%3' is not a number").arg(path).arg(i + 1).arg(field);
+        }
+        csv.rows.push_back(row);
+    }
+    return csv;
+}
+
+QString number(double value) { return QString::number(value, 'g', 17); }
+
+struct Key {
+    double time = 0.0;
+    Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();
+};
+
+QByteArray keysCsv(const std::vector<Key>& keys)
+{
+    QString text = QStringLiteral("time,qw,qx,qy,qz,x,y,z\n");
+    for (const Key& key : keys) {
+        const Eigen::Quaterniond& q = key.rotation;
+        const Eigen::Vector3d& p = key.position;
+        text += QStringList{number(key.time), number(q.w()), number(q.x()), number(q.y()), number(q.z()),
+                            number(p.x()), number(p.y()), number(p.z())}
+                    .join(',') +
+                '\n';
+    }
+    return text.toUtf8();
+}
+
+double rotationDistance(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b)
+{
+    return std::min((a.coeffs() - b.coeffs()).norm(), (a.coeffs() + b.coeffs()).norm());
+}
+
+Eigen::Quaterniond about(const Eigen::Vector3d& axis, double radians)
+{
+    return Eigen::Quaterniond(Eigen::AngleAxisd(radians, axis.normalized()));
+}
+
+Eigen::Vector3d axisVector(QChar axis)
+{
+    return axis == 'x' ? Eigen::Vector3d::UnitX() : axis == 'y' ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitZ();
+}
+
+// DESIGN.md: intrinsic ijk is R = Ri(e1)·Rj(e2)·Rk(e3); extrinsic ijk is R = Rk(e3)·Rj(e2)·Ri(e1).
+Eigen::Quaterniond fromEulerDegrees(const QString& order, bool intrinsic, const Eigen::Vector3d& degrees)
+{
+    const Eigen::Quaterniond r1 = about(axisVector(order[0]), degrees[0] * kDegree);
+    const Eigen::Quaterniond r2 = about(axisVector(order[1]), degrees[1] * kDegree);
+    const Eigen::Quaterniond r3 = about(axisVector(order[2]), degrees[2] * kDegree);
+    return intrinsic ? r1 * r2 * r3 : r3 * r2 * r1;
+}
+
+Eigen::Matrix3d hat(const Eigen::Vector3d& w)
+{
+    Eigen::Matrix3d m;
+    m << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
+    return m;
+}
+
+// V(ω) = I + (1 − cos θ)/θ²·[ω]× + (θ − sin θ)/θ³·[ω]×², θ = |ω| > 0: the translation of the SE(3)
+// exponential of (ω, v) is V(ω)·v.
+Eigen::Matrix3d translationJacobian(const Eigen::Vector3d& w)
+{
+    const double theta = w.norm();
+    const Eigen::Matrix3d skew = hat(w);
+    return Eigen::Matrix3d::Identity() + (1 - std::cos(theta)) / (theta * theta) * skew +
+           (theta - std::sin(theta)) / (theta * theta * theta) * skew * skew;
+}
+
+// The SE(3) geodesic La·exp(t·log(La⁻¹·Lb)), which a screw motion is; the relative rotation turns
+// by less than π.
+Key geodesic(const Key& a, const Key& b, double t)
+{
+    const Eigen::AngleAxisd relativeRotation(a.rotation.conjugate() * b.rotation); // angle in [0, π]
+    const Eigen::Vector3d relativePosition = a.rotation.conjugate() * (b.position - a.position);
+    const Eigen::Vector3d w = relativeRotation.angle() * relativeRotation.axis();
+    const Eigen::Vector3d v = translationJacobian(w).inverse() * relativePosition;
+    const Eigen::Quaterniond stepRotation(Eigen::AngleAxisd(t * relativeRotation.angle(), relativeRotation.axis()));
+    const Eigen::Vector3d stepPosition = translationJacobian(t * w) * (t * v);
+    return {0.0, a.rotation * stepRotation, a.rotation * stepPosition + a.position};
+}
+
+std::vector<Key> randomKeys(int count, unsigned seed)
+{
+    std::mt19937 random(seed);
+    std::normal_distribution<double> normal;
+    std::vector<Key> keys;
+    double time = 0.0;
+    for (int i = 0; i < count; ++i) {
+        time += 0.25 + std::abs(normal(random));
+        keys.push_back({time, Eigen::Quaterniond(normal(random), normal(random), normal(random), normal(random)).normalized(),
+                        {normal(random), normal(random), normal(random)}});
+    }
+    return keys;
+}
+
+const QStringList kMethods{"slerp", "nlerp", "squad", "hermite", "euler", "screw"};
+
+class TstCli : public QObject {
+    Q_OBJECT
+
+private:
+    QTemporaryDir dir_;
+
+    QString path(const QString& name) const { return dir_.filePath(name); }
+
+    QString writeFile(const QString& name, const QByteArray& contents)
+    {
+        const QString filePath = path(name);
+        QFile file(filePath);
+        if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(contents) != contents.size())
+            qFatal("cannot write the fixture %s", qPrintable(filePath));
+        return filePath;
+    }
+
+    static QByteArray contentsOf(const QString& filePath)
+    {
+        QFile file(filePath);
+        return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray("<cannot open>");
+    }
+
+    // Runs gyre-cli and checks that it succeeded.
+    static bool succeeds(const QStringList& arguments)
+    {
+        const CliRun run = runCli(arguments);
+        if (run.exitedNormally && run.exitCode == 0)
+            return true;
+        qWarning("gyre-cli %s: exit %d: %s", qPrintable(arguments.join(' ')), run.exitCode, qPrintable(run.err));
+        return false;
+    }
+
+private slots:
+    void convertRoundTrips_data();
+    void convertRoundTrips();
+    void convertWarnsNearGimbalLock();
+    void inputMayBeTheOutput();
+
+    void interpolateSamplesFramesAndKeys_data();
+    void interpolateSamplesFramesAndKeys();
+    void slerpMidpoint();
+    void cubicAndLinearPositions_data();
+    void cubicAndLinearPositions();
+    void screwFollowsTheGeodesicPerSpan();
+
+    void subdivideCycle();
+    void subdivideOpen_data();
+    void subdivideOpen();
+    void subdivideWithoutTimes();
+
+    void badInput_data();
+    void badInput();
+    void missingOutputFolder();
+    void helpAndVersion();
+};
+
+void TstCli::convertRoundTrips_data()
+{
+    QTest::addColumn<QString>("order");
+    QTest::addColumn<bool>("intrinsic");
+    QTest::newRow("extrinsic xyz") << "xyz" << false;
+    QTest::newRow("intrinsic xyz") << "xyz" << true;
+    QTest::newRow("intrinsic zyx") << "zyx" << true;
+    QTest::newRow("extrinsic yzx") << "yzx" << false;
+    QTest::newRow("extrinsic zxz") << "zxz" << false;
+    QTest::newRow("intrinsic yxy") << "yxy" << true;
+}
+
+// quat → matrix → euler → axis-angle → rotvec → quat, each file checked against the original
+// rotations by its own definition.
+void TstCli::convertRoundTrips()
+{
+    QFETCH(QString, order);
+    QFETCH(bool, intrinsic);
+    std::vector<Key> keys = randomKeys(30, 11);
+    keys[3].rotation = about({0, 1, 0}, kPi / 2); // gimbal lock of xyz
+    keys[4].rotation = Eigen::Quaterniond::Identity(); // gimbal lock of proper orders
+    keys[5].rotation = about({1, 1, 0}, kPi);          // half turn
+    const QString in = writeFile("chain.csv", keysCsv(keys));
+    const QStringList euler{"--order", order, intrinsic ? "--intrinsic" : "--extrinsic"};
+    const QString matrix = path("chain-matrix.csv");
+    const QString angles = path("chain-euler.csv");
+    const QString axisAngle = path("chain-axis-angle.csv");
+    const QString rotvec = path("chain-rotvec.csv");
+    const QString back = path("chain-back.csv");
+    QVERIFY(succeeds({"convert", in, "-o", matrix, "--to", "matrix"}));
+    QVERIFY(succeeds(QStringList{"convert", matrix, "--to", "euler", "-o", angles} + euler));
+    QVERIFY(succeeds(QStringList{"convert"} + euler + QStringList{angles, "-o", axisAngle, "--to", "axis-angle"}));
+    QVERIFY(succeeds({"convert", "--to", "rotvec", axisAngle, "-o", rotvec}));
+    QVERIFY(succeeds({"convert", rotvec, "-o", back, "--to", "quat"}));
+
+    const Csv m = readCsv(matrix), e = readCsv(angles), a = readCsv(axisAngle), r = readCsv(rotvec), q = readCsv(back);
+    for (const Csv* csv : {&m, &e, &a, &r, &q}) {
+        QVERIFY2(csv->problem.isEmpty(), qPrintable(csv->problem));
+        QCOMPARE(csv->rows.size(), keys.size());
+    }
+    QCOMPARE(m.header.join(','), QStringLiteral("time,m00,m01,m02,m10,m11,m12,m20,m21,m22,x,y,z"));
+    QCOMPARE(e.header.join(','), QStringLiteral("time,e1,e2,e3,x,y,z"));
+    QCOMPARE(a.header.join(','), QStringLiteral("time,ax,ay,az,angle,x,y,z"));
+    QCOMPARE(r.header.join(','), QStringLiteral("time,rx,ry,rz,x,y,z"));
+    QCOMPARE(q.header.join(','), QStringLiteral("time,qw,qx,qy,qz,x,y,z"));
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        const Eigen::Quaterniond& expected = keys[i].rotation;
+        const Eigen::Matrix3d rotation = expected.toRotationMatrix();
+        for (int row = 0; row < 3; ++row)
+            for (int col = 0; col < 3; ++col)
+                QVERIFY(std::abs(m.at(i, QStringLiteral("m%1%2").arg(row).arg(col)) - rotation(row, col)) < kTolerance);
+        const Eigen::Quaterniond fromEuler = fromEulerDegrees(order, intrinsic, e.vector(i, "e1", "e2", "e3"));
+        QVERIFY2(rotationDistance(fromEuler, expected) < kTolerance, qPrintable(QString::number(i)));
+        const Eigen::Vector3d axis = a.vector(i, "ax", "ay", "az");
+        QVERIFY(std::abs(axis.norm() - 1.0) < kTolerance);
+        QVERIFY(rotationDistance(about(axis, a.at(i, "angle") * kDegree), expected) < kTolerance);
+        const Eigen::Vector3d vector = r.vector(i, "rx", "ry", "rz");
+        QVERIFY(rotationDistance(about(vector, vector.norm()), expected) < kTolerance);
+        QVERIFY(rotationDistance(q.quaternion(i), expected) < kTolerance);
+        // Time and position pass through every step unchanged.
+        QCOMPARE(q.at(i, "time"), keys[i].time);
+        QCOMPARE(q.position(i), keys[i].position);
+    }
+}
+
+void TstCli::convertWarnsNearGimbalLock()
+{
+    const Eigen::Quaterniond nearLock = about({0, 1, 0}, 89.5 * kDegree) * about({1, 0, 0}, 0.3);
+    const QString in = writeFile("gimbal.csv", keysCsv({{0, about({1, 0, 0}, 0.3), {0, 0, 0}}, {1, nearLock, {0, 0, 0}}}));
+    const CliRun run = runCli({"convert", in, "-o", path("gimbal-euler.csv"), "--to", "euler"});
+    QVERIFY(run.exitedNormally);
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.err.contains(in + ":3: rotation 0.50° from gimbal lock in extrinsic xyz"), qPrintable(run.err));
+    QVERIFY(!run.err.contains(in + ":2:"));
+    // Rows far from lock in zyx are not reported.
+    const CliRun zyx = runCli({"convert", in, "-o", path("gimbal-zyx.csv"), "--to", "euler", "--order", "zyx"});
+    QCOMPARE(zyx.exitCode, 0);
+    QCOMPARE(zyx.err, QString());
+}
+
+void TstCli::inputMayBeTheOutput()
+{
+    const std::vector<Key> keys = randomKeys(4, 3);
+    const QString file = writeFile("in-place.csv", keysCsv(keys));
+    QVERIFY(succeeds({"convert", file, "-o", file, "--to", "rotvec"}));
+    const Csv csv = readCsv(file);
+    QCOMPARE(csv.header.join(','), QStringLiteral("time,rx,ry,rz,x,y,z"));
+    QCOMPARE(csv.rows.size(), keys.size());
+}
+
+void TstCli::interpolateSamplesFramesAndKeys_data()
+{
+    QTest::addColumn<QString>("method");
+    for (const QString& method : kMethods)
+        QTest::newRow(qPrintable(method)) << method;
+}
+
+// Samples at t0 + k/F and at every key time; a frame within 1e-9 s of a key gives way to it; at a
+// key time the pose is the key.
+void TstCli::interpolateSamplesFramesAndKeys()
+{
+    QFETCH(QString, method);
+    const double fps = 10;
+    std::vector<Key> keys = randomKeys(5, 5);
+    const std::vector<double> keyTimes{0.25, 0.6, 1.2500000004, 1.95, 2.3};
+    for (std::size_t i = 0; i < keys.size(); ++i)
+        keys[i].time = keyTimes[i];
+    const QString in = writeFile("keys.csv", keysCsv(keys));
+    const QString out = path("frames-" + method + ".csv");
+    QVERIFY(succeeds({"interpolate", in, "-o", out, "--method", method, "--fps", "10"}));
+
+    std::vector<double> expectedTimes = keyTimes;
+    for (int k = 0; 0.25 + k / fps <= 2.3; ++k) {
+        const double frame = 0.25 + k / fps;
+        if (std::ranges::none_of(keyTimes, [frame](double key) { return std::abs(key - frame) <= 1e-9; }))
+            expectedTimes.push_back(frame);
+    }
+    std::ranges::sort(expectedTimes);
+    // 21 frames from 0.25 to 2.25, less the three at keys 0.25, 1.2500000004 and 1.95, plus 5 keys.
+    QCOMPARE(expectedTimes.size(), std::size_t{23});
+
+    const Csv csv = readCsv(out);
+    QVERIFY2(csv.problem.isEmpty(), qPrintable(csv.problem));
+    QCOMPARE(csv.header.join(','), QStringLiteral("time,qw,qx,qy,qz,x,y,z"));
+    QCOMPARE(csv.times(), expectedTimes);
+    for (const Key& key : keys) {
+        const auto row = static_cast<std::size_t>(std::ranges::find(expectedTimes, key.time) - expectedTimes.begin());
+        QVERIFY(rotationDistance(csv.quaternion(row), key.rotation) < kTolerance);
+        QVERIFY((csv.position(row) - key.position).norm() < kTolerance);
+    }
+}
+
+void TstCli::slerpMidpoint()
+{
+    const Key a{0.0, about({1, 2, 3}, 0.4), {1, 2, 3}};
+    // In the other hemisphere: the short arc needs −b.
+    const Key b{1.0, Eigen::Quaterniond(-about({-2, 1, 0.5}, 2.0).coeffs()), {-3, 0, 7}};
+    QVERIFY(a.rotation.dot(b.rotation) < 0);
+    const QString in = writeFile("two-keys.csv", keysCsv({a, b}));
+    const QString out = path("two-keys-slerp.csv");
+    QVERIFY(succeeds({"interpolate", in, "-o", out, "--method", "slerp", "--fps", "2"}));
+    const Csv csv = readCsv(out);
+    QCOMPARE(csv.times(), (std::vector<double>{0.0, 0.5, 1.0}));
+    const Eigen::Quaterniond eigenSlerp = a.rotation.slerp(0.5, b.rotation);
+    QVERIFY(rotationDistance(csv.quaternion(1), eigenSlerp) < kTolerance);
+    QVERIFY(rotationDistance(csv.quaternion(1), gyre::slerp(a.rotation, b.rotation, 0.5)) < kTolerance);
+    QVERIFY((csv.position(1) - Eigen::Vector3d(-1, 1, 5)).norm() < kTolerance);
+}
+
+void TstCli::cubicAndLinearPositions_data()
+{
+    QTest::addColumn<QString>("method");
+    QTest::addColumn<bool>("cubic");
+    QTest::newRow("slerp") << "slerp" << false;
+    QTest::newRow("nlerp") << "nlerp" << false;
+    QTest::newRow("euler") << "euler" << false;
+    QTest::newRow("squad") << "squad" << true;
+    QTest::newRow("hermite") << "hermite" << true;
+}
+
+void TstCli::cubicAndLinearPositions()
+{
+    QFETCH(QString, method);
+    QFETCH(bool, cubic);
+    const std::vector<Eigen::Vector3d> p{{0, 0, 0}, {1, 2, 0}, {5, -1, 3}};
+    const std::vector<double> t{0, 1, 3};
+    const Eigen::Quaterniond identity = Eigen::Quaterniond::Identity();
+    const QString in =
+        writeFile("positions.csv", keysCsv({{t[0], identity, p[0]}, {t[1], identity, p[1]}, {t[2], identity, p[2]}}));
+    const QString out = path("positions-" + method + ".csv");
+    QVERIFY(succeeds({"interpolate", in, "-o", out, "--method", method, "--fps", "2"}));
+    const Csv csv = readCsv(out);
+    QCOMPARE(csv.times(), (std::vector<double>{0, 0.5, 1, 1.5, 2, 2.5, 3}));
+    // At t = 2: the middle of the span from key 1 to key 2, which lasts h = 2.
+    Eigen::Vector3d expected = (p[1] + p[2]) / 2;
+    if (cubic) {
+        const Eigen::Vector3d m1 = (p[2] - p[0]) / (t[2] - t[0]);
+        const Eigen::Vector3d m2 = (p[2] - p[1]) / (t[2] - t[1]); // one-sided at the last key
+        const double h = 2;
+        // Cubic Hermite basis at u = 1/2: h00 = h01 = 1/2, h10 = 1/8, h11 = −1/8.
+        expected += h / 8 * (m1 - m2);
+    }
+    QVERIFY((csv.position(4) - expected).norm() < kTolerance);
+    QVERIFY(csv.quaternion(4).isApprox(Eigen::Quaterniond::Identity(), kTolerance));
+}
+
+// Between keys i and i+1 the screw parameter is (t − tᵢ)/(tᵢ₊₁ − tᵢ), whatever the spans' lengths.
+void TstCli::screwFollowsTheGeodesicPerSpan()
+{
+    const std::vector<Key> keys{{0.0, about({0, 0, 1}, 0.3), {1, 0, 0}},
+                                {2.0, about({1, 1, 0}, 1.7), {0, 2, 1}},
+                                {3.0, about({0, 1, 1}, -0.9), {-2, 1, 4}}};
+    const QString in = writeFile("screw.csv", keysCsv(keys));
+    const QString out = path("screw-frames.csv");
+    QVERIFY(succeeds({"interpolate", in, "-o", out, "--method", "screw", "--fps", "4"}));
+    const Csv csv = readCsv(out);
+    QCOMPARE(csv.rows.size(), std::size_t{13});
+    const struct {
+        std::size_t row;
+        std::size_t span;
+        double u;
+    } checks[] = {{1, 0, 0.125}, {4, 0, 0.5}, {9, 1, 0.25}, {10, 1, 0.5}};
+    for (const auto& check : checks) {
+        const Key expected = geodesic(keys[check.span], keys[check.span + 1], check.u);
+        QVERIFY(rotationDistance(csv.quaternion(check.row), expected.rotation) < kTolerance);
+        QVERIFY((csv.position(check.row) - expected.position).norm() < kTolerance);
+    }
+}
+
+// A cycle of n poses becomes n·2^L; four-point interpolates, so pose i·2^L is input pose i. The
+// closing span lasts the mean of the others.
+void TstCli::subdivideCycle()
+{
+    const std::vector<Key> keys = randomKeys(5, 9);
+    const QString in = writeFile("cycle.csv", keysCsv(keys));
+    const QString out = path("cycle-subdivided.csv");
+    QVERIFY(succeeds({"subdivide", in, "-o", out, "--scheme", "four-point", "--levels", "3"}));
+    const Csv csv = readCsv(out);
+    QVERIFY2(csv.problem.isEmpty(), qPrintable(csv.problem));
+    QCOMPARE(csv.header.join(','), QStringLiteral("time,qw,qx,qy,qz,x,y,z"));
+    QCOMPARE(csv.rows.size(), std::size_t{5 * 8});
+    const double closingSpan = (keys[4].time - keys[0].time) / 4;
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        QVERIFY(rotationDistance(csv.quaternion(8 * i), keys[i].rotation) < kTolerance);
+        QVERIFY((csv.position(8 * i) - keys[i].position).norm() < kTolerance);
+        const double start = keys[i].time;
+        const double span = i + 1 < keys.size() ? keys[i + 1].time - start : closingSpan;
+        for (std::size_t j = 0; j < 8; ++j)
+            QVERIFY(std::abs(csv.at(8 * i + j, "time") - (start + span * static_cast<double>(j) / 8)) < kTolerance);
+    }
+}
+
+void TstCli::subdivideOpen_data()
+{
+    QTest::addColumn<QString>("scheme");
+    QTest::addColumn<bool>("decoupled");
+    for (const char* scheme : {"four-point", "four-point-b", "bspline", "jarek"}) {
+        QTest::addRow("%s", scheme) << scheme << false;
+        QTest::addRow("%s decoupled", scheme) << scheme << true;
+    }
+}
+
+// An open sequence of n poses becomes (n−1)·2^L + 1 and keeps its end poses and times.
+void TstCli::subdivideOpen()
+{
+    QFETCH(QString, scheme);
+    QFETCH(bool, decoupled);
+    const std::vector<Key> keys = randomKeys(4, 13);
+    const QString in = writeFile("open.csv", keysCsv(keys));
+    const QString out = path("open-subdivided.csv");
+    QStringList arguments{"subdivide", "--open", in, "--levels", "2", "-o", out, "--scheme", scheme};
+    if (decoupled)
+        arguments << "--decoupled";
+    QVERIFY(succeeds(arguments));
+    const Csv csv = readCsv(out);
+    QCOMPARE(csv.rows.size(), std::size_t{3 * 4 + 1});
+    const std::size_t last = csv.rows.size() - 1;
+    QVERIFY(rotationDistance(csv.quaternion(0), keys.front().rotation) < kTolerance);
+    QVERIFY(rotationDistance(csv.quaternion(last), keys.back().rotation) < kTolerance);
+    QVERIFY((csv.position(last) - keys.back().position).norm() < kTolerance);
+    QCOMPARE(csv.at(0, "time"), keys.front().time);
+    QCOMPARE(csv.at(last, "time"), keys.back().time);
+    QCOMPARE(csv.at(4, "time"), keys[1].time);
+}
+
+void TstCli::subdivideWithoutTimes()
+{
+    const QString in = writeFile("untimed.csv", "rx,ry,rz\n0,0,0\n0,0,1\n0,1,1\n");
+    const QString out = path("untimed-subdivided.csv");
+    QVERIFY(succeeds({"subdivide", in, "-o", out, "--scheme", "bspline", "--levels", "0"}));
+    const Csv csv = readCsv(out);
+    QCOMPARE(csv.header.join(','), QStringLiteral("qw,qx,qy,qz,x,y,z"));
+    QCOMPARE(csv.rows.size(), std::size_t{3});
+    QVERIFY(rotationDistance(csv.quaternion(2), about({0, 1, 1}, std::sqrt(2.0))) < kTolerance);
+}
+
+void TstCli::badInput_data()
+{
+    QTest::addColumn<QStringList>("arguments"); // IN and OUT stand for the files
+    QTest::addColumn<QByteArray>("input");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("message"); // a part of standard error; IN stands for the input path
+
+    const QStringList convert{"convert", "IN", "-o", "OUT", "--to", "quat"};
+    const QStringList interpolate{"interpolate", "IN", "-o", "OUT", "--method", "slerp", "--fps", "24"};
+    const QStringList subdivide{"subdivide", "IN", "-o", "OUT", "--scheme", "four-point", "--levels", "2"};
+    const QByteArray keys = "time,qw,qx,qy,qz\n0,1,0,0,0\n1,0,1,0,0\n2,0,0,1,0\n";
+
+    QTest::newRow("empty file") << convert << QByteArray() << 1 << "IN:1: no header row";
+    QTest::newRow("header only") << convert << QByteArray("time,qw,qx,qy,qz\n") << 1
+                                 << "IN:1: no poses after the header on line 1";
+    QTest::newRow("missing column") << interpolate << QByteArray("time,qw,qx,qy\n0,1,0,0\n") << 1
+                                    << "IN:1: missing column qz";
+    QTest::newRow("text in a number") << convert << QByteArray("qw,qx,qy,qz\n1,0,0,0\n# c\n1,zero,0,0\n") << 1
+                                      << "IN:4: column qx: 'zero' is not a number";
+    QTest::newRow("NaN") << subdivide << QByteArray("qw,qx,qy,qz\n1,0,0,0\n1,0,NaN,0\n") << 1
+                         << "IN:3: column qy: 'NaN' is not a finite number";
+    QTest::newRow("infinity") << interpolate << QByteArray(keys + "3,1,0,0,inf\n") << 1
+                              << "IN:5: column qz: 'inf' is not a finite number";
+    QTest::newRow("zero quaternion") << convert << QByteArray("qw,qx,qy,qz\n0,0,0,0\n") << 1
+                                     << "IN:2: columns qw,qx,qy,qz: the quaternion is zero";
+    QTest::newRow("times that do not increase") << interpolate << QByteArray(keys + "1.5,1,0,0,0\n") << 1
+                                                << "IN:5: column time: 1.5 does not come after 2 on line 4";
+    QTest::newRow("short row") << subdivide << QByteArray(keys + "3,1,0\n") << 1
+                               << "IN:5: 3 fields, but the header on line 1 has 5";
+    QTest::newRow("binary garbage") << convert << QByteArray("\x7f" "ELF\x02\x01\x01\0\0\0\0", 12) << 1
+                                    << "IN:1: control character 0x7F at byte 1";
+    QTest::newRow("huge line") << interpolate << QByteArray(200'000, '7') << 1 << "IN:1: line longer than 65536 bytes";
+    QTest::newRow("interpolate without times") << interpolate << QByteArray("qw,qx,qy,qz\n1,0,0,0\n1,0,0,0\n") << 1
+                                               << "IN:1: missing column time";
+    QTest::newRow("interpolate one key") << interpolate << QByteArray("time,qw,qx,qy,qz\n# one\n0,1,0,0,0\n") << 1
+                                         << "IN:3: interpolate needs at least two keys";
+    QTest::newRow("subdivide one pose") << subdivide << QByteArray("qw,qx,qy,qz\n1,0,0,0\n") << 1
+                                        << "IN:2: subdivide needs at least two poses";
+    QTest::newRow("input is missing") << convert << QByteArray("<missing>") << 1
+                                      << "IN: cannot open: No such file or directory";
+    QTest::newRow("input is a folder") << convert << QByteArray("<folder>") << 1 << "IN: is a directory";
+
+    QTest::newRow("unknown method") << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "cubic", "--fps", "24"}
+                                    << keys << 2
+                                    << "interpolate: --method: unknown value 'cubic'; expected slerp, nlerp, squad, "
+                                       "hermite, euler or screw";
+    QTest::newRow("unknown scheme") << QStringList{"subdivide", "IN", "-o", "OUT", "--scheme", "loop", "--levels", "2"}
+                                    << keys << 2
+                                    << "subdivide: --scheme: unknown value 'loop'; expected four-point, four-point-b, "
+                                       "bspline or jarek";
+    QTest::newRow("unknown column set") << QStringList{"convert", "IN", "-o", "OUT", "--to", "quaternion"} << keys << 2
+                                        << "convert: --to: unknown value 'quaternion'; expected quat, matrix, "
+                                           "axis-angle, rotvec or euler";
+    for (const char* fps : {"0", "-24"})
+        QTest::addRow("fps %s", fps) << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "slerp", "--fps", fps}
+                                     << keys << 2 << QStringLiteral("interpolate: --fps: '%1' is not positive").arg(fps);
+    QTest::newRow("fps text") << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "slerp", "--fps", "fast"}
+                              << keys << 2 << "interpolate: --fps: 'fast' is not a number";
+    QTest::newRow("fps nan") << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "slerp", "--fps", "nan"}
+                             << keys << 2 << "interpolate: --fps: 'nan' is not a finite number";
+    QTest::newRow("too many frames") << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "slerp", "--fps", "1e7"}
+                                     << keys << 2 << "interpolate: --fps 1e+07 over 2 s of keys gives more than 16777216";
+    QTest::newRow("too deep") << QStringList{"subdivide", "IN", "-o", "OUT", "--scheme", "bspline", "--levels", "23"}
+                              << keys << 2 << "subdivide: --levels 23 would turn 3 poses into more than 16777216";
+    QTest::newRow("far too deep") << QStringList{"subdivide", "IN", "-o", "OUT", "--scheme", "bspline", "--levels", "2000"}
+                                  << keys << 2 << "subdivide: --levels 2000 would turn 3 poses into more than 16777216";
+    QTest::newRow("negative levels") << QStringList{"subdivide", "IN", "-o", "OUT", "--scheme", "jarek", "--levels", "-1"}
+                                     << keys << 2 << "subdivide: --levels: '-1' is not a whole number ≥ 0";
+    QTest::newRow("fractional levels") << QStringList{"subdivide", "IN", "-o", "OUT", "--scheme", "jarek", "--levels", "1.5"}
+                                       << keys << 2 << "subdivide: --levels: '1.5' is not a whole number ≥ 0";
+    QTest::newRow("unknown verb") << QStringList{"smooth", "IN", "-o", "OUT"} << keys << 2 << "unknown verb 'smooth'";
+    QTest::newRow("unknown option") << convert + QStringList{"--colour", "red"} << keys << 2
+                                    << "convert: unknown option --colour";
+    QTest::newRow("missing -o") << QStringList{"convert", "IN", "--to", "quat"} << keys << 2
+                                << "convert: missing option -o";
+    QTest::newRow("missing --to") << QStringList{"convert", "IN", "-o", "OUT"} << keys << 2
+                                  << "convert: missing option --to";
+    QTest::newRow("missing --fps") << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "slerp"} << keys << 2
+                                   << "interpolate: missing option --fps";
+    QTest::newRow("missing value") << QStringList{"subdivide", "IN", "-o", "OUT", "--scheme", "jarek", "--levels"} << keys
+                                   << 2 << "subdivide: Missing value after '--levels'";
+    QTest::newRow("no input file") << QStringList{"convert", "-o", "OUT", "--to", "quat"} << keys << 2
+                                   << "convert: no input file";
+    QTest::newRow("two input files") << QStringList{"convert", "IN", "IN", "-o", "OUT", "--to", "quat"} << keys << 2
+                                     << "convert: one input file expected, got 2";
+    QTest::newRow("-o twice") << convert + QStringList{"-o", "OUT"} << keys << 2
+                              << "convert: option -o given more than once";
+    QTest::newRow("both frames") << convert + QStringList{"--intrinsic", "--extrinsic"} << keys << 2
+                                 << "convert: --intrinsic and --extrinsic exclude each other";
+    QTest::newRow("bad order") << convert + QStringList{"--order", "xxz"} << keys << 2 << "convert: --order: 'xxz'";
+}
+
+// Every bad input ends with a message naming the file and line or the option, a non-zero status,
+// and no output: none where there was none, the old contents where there was a file.
+void TstCli::badInput()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QByteArray, input);
+    QFETCH(int, exitCode);
+    QFETCH(QString, message);
+    QString in = path("bad-input.csv");
+    if (input == "<folder>")
+        in = dir_.path();
+    else if (input == "<missing>")
+        QFile::remove(in);
+    else
+        writeFile("bad-input.csv", input);
+    const QString out = path("bad-output.csv");
+    arguments.replaceInStrings(QRegularExpression("^IN$"), in);
+    arguments.replaceInStrings(QRegularExpression("^OUT$"), out);
+    message.replace(QStringLiteral("IN"), in);
+
+    for (const bool outputExists : {false, true}) {
+        QFile::remove(out);
+        if (outputExists)
+            writeFile("bad-output.csv", "precious\n");
+        const CliRun run = runCli(arguments);
+        QVERIFY(run.exitedNormally);
+        QCOMPARE(run.exitCode, exitCode);
+        // One line, so a sanitizer report or a second message cannot pass for the expected one.
+        QVERIFY2(run.err.startsWith("gyre-cli: ") && run.err.count('\n') == 1 && run.err.endsWith('\n'),
+                 qPrintable(run.err));
+        QVERIFY2(run.err.contains(message), qPrintable(run.err));
+        QCOMPARE(run.out, QString());
+        if (outputExists)
+            QCOMPARE(contentsOf(out), QByteArray("precious\n"));
+        else
+            QVERIFY(!QFile::exists(out));
+    }
+    // QSaveFile's temporary files do not linger either.
+    QCOMPARE(QDir(dir_.path()).entryList({"bad-output*"}, QDir::Files), QStringList{"bad-output.csv"});
+}
+
+void TstCli::missingOutputFolder()
+{
+    const QString in = writeFile("good.csv", keysCsv(randomKeys(3, 1)));
+    const QString out = path("no-such-folder/out.csv");
+    const CliRun run = runCli({"convert", in, "-o", out, "--to", "matrix"});
+    QVERIFY(run.exitedNormally);
+    QCOMPARE(run.exitCode, 1);
+    QVERIFY2(run.err.startsWith("gyre-cli: " + out + ": cannot write: "), qPrintable(run.err));
+    QVERIFY(!QFileInfo::exists(path("no-such-folder")));
+}
+
+void TstCli::helpAndVersion()
+{
+    const CliRun help = runCli({"--help"});
+    QCOMPARE(help.exitCode, 0);
+    for (const char* verb : {"convert", "interpolate", "subdivide"}) {
+        QVERIFY(help.out.contains(verb));
+        const CliRun verbHelp = runCli({"help", verb});
+        QCOMPARE(verbHelp.exitCode, 0);
+        QVERIFY(verbHelp.out.startsWith(QStringLiteral("Usage: gyre-cli ") + verb));
+        QCOMPARE(runCli({verb, "--help"}).out, verbHelp.out);
+        QCOMPARE(runCli({verb, "-o", "x.csv", "-h"}).out, verbHelp.out);
+    }
+    QVERIFY(runCli({"help", "convert"}).out.contains("--to SET"));
+    QVERIFY(runCli({"help", "interpolate"}).out.contains("--fps F"));
+    QVERIFY(runCli({"help", "subdivide"}).out.contains("--levels L"));
+    const CliRun version = runCli({"--version"});
+    QCOMPARE(version.exitCode, 0);
+    QCOMPARE(version.out, QStringLiteral("gyre-cli " GYRE_VERSION "\n"));
+    const CliRun nothing = runCli({});
+    QCOMPARE(nothing.exitCode, 2);
+    QCOMPARE(nothing.err, QStringLiteral("gyre-cli: no verb given (see gyre-cli --help)\n"));
+    const CliRun unknownHelp = runCli({"help", "smooth"});
+    QCOMPARE(unknownHelp.exitCode, 2);
+    QVERIFY(unknownHelp.err.contains("unknown verb 'smooth'"));
+}
+
+} // namespace
+
+QTEST_GUILESS_MAIN(TstCli)
+#include "tst_cli.moc"

@@ -1,0 +1,156 @@
+// The screw's fast sine, cosine and arctangent (fast_trig.h) against the correctly rounded standard
+// library. The header promises an absolute error of a few units of 2⁻⁵³ for sin and cos with
+// |x| ≤ 1024, and a few ulp for the first-quadrant arctangent. Relative precision is checked where
+// the screw relies on it: sin x for tiny x (a tiny rotation), whose ratio to sin a sets the motion.
+
+#include "core/fast_trig.h"
+
+#include "core_test_support.h"
+
+#include <QObject>
+#include <QTest>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+using namespace gyre;
+using namespace gyre::test;
+
+namespace {
+
+constexpr double kFewUlp = 4.0;
+
+// Distance between two doubles in units in the last place of the reference value b (at least the
+// smallest subnormal).
+double ulpError(double a, double b)
+{
+    if (a == b)
+        return 0.0;
+    if (!std::isfinite(a) || !std::isfinite(b))
+        return std::numeric_limits<double>::infinity();
+    const double ulp = std::max(std::nextafter(std::abs(b), std::numeric_limits<double>::infinity()) - std::abs(b),
+                                std::numeric_limits<double>::denorm_min());
+    return std::abs(a - b) / ulp;
+}
+
+std::vector<double> sinCosArguments()
+{
+    Random random(300);
+    std::vector<double> xs = {0.0, -0.0, 1e-300, 1e-20, 1e-10, 1e-5, 0.1, 0.5, 1.0, 2.0, 3.0, 10.0, 100.0, 1e4, 1e6, 1048576.0};
+    for (int k = -16; k <= 16; ++k) {
+        const double multiple = k * (kPi / 4.0);
+        xs.push_back(multiple);
+        xs.push_back(std::nextafter(multiple, 1e300));
+        xs.push_back(std::nextafter(multiple, -1e300));
+        xs.push_back(multiple + 1e-9);
+        xs.push_back(multiple - 1e-7);
+    }
+    for (int i = 0; i < 20000; ++i)
+        xs.push_back(random.uniform(-2.0 * kPi, 2.0 * kPi));
+    for (int i = 0; i < 5000; ++i)
+        xs.push_back(random.uniform(-1048576.0, 1048576.0));
+    for (int i = 0; i < 2000; ++i)
+        xs.push_back(std::pow(10.0, random.uniform(-12.0, 0.0)) * (random.uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0));
+    const std::size_t count = xs.size();
+    for (std::size_t i = 0; i < count; ++i)
+        xs.push_back(-xs[i]);
+    return xs;
+}
+
+} // namespace
+
+class TestFastTrig : public QObject {
+    Q_OBJECT
+
+private slots:
+    void sinCosAbsoluteErrorIsRounding();
+    void sinCosWithinAFewUlpNearZero();
+    void sinCosBeyondTheTableRange();
+    void atan2WithinAFewUlp();
+};
+
+void TestFastTrig::sinCosAbsoluteErrorIsRounding()
+{
+    // What the screw needs: sin and cos of half-angles within a few rounding errors of 1.
+    double worst = 0.0;
+    double worstAt = 0.0;
+    for (double x : sinCosArguments()) {
+        const SinCos sc = fastSinCos(x);
+        const double error = std::max(std::abs(sc.sin - std::sin(x)), std::abs(sc.cos - std::cos(x)));
+        if (error > worst) {
+            worst = error;
+            worstAt = x;
+        }
+    }
+    qInfo("worst absolute error %.3g at x = %.17g", worst, worstAt);
+    QVERIFY2(worst <= kFewUlp * std::numeric_limits<double>::epsilon() / 2.0, qPrintable(QStringLiteral("x = %1: error %2").arg(str(worstAt), str(worst))));
+}
+
+void TestFastTrig::sinCosWithinAFewUlpNearZero()
+{
+    // Below π/256 no table entry is involved, so sin x keeps its relative precision as x → 0.
+    double worstSin = 0.0;
+    double worstCos = 0.0;
+    double worstAt = 0.0;
+    for (double x : sinCosArguments()) {
+        if (!(std::abs(x) < kPi / 256.0))
+            continue;
+        const SinCos sc = fastSinCos(x);
+        const double es = ulpError(sc.sin, std::sin(x));
+        const double ec = ulpError(sc.cos, std::cos(x));
+        if (std::max(es, ec) > std::max(worstSin, worstCos))
+            worstAt = x;
+        worstSin = std::max(worstSin, es);
+        worstCos = std::max(worstCos, ec);
+    }
+    qInfo("near zero: worst sin error %.3g ulp, worst cos error %.3g ulp, at x = %.17g", worstSin, worstCos, worstAt);
+    QVERIFY2(worstSin <= kFewUlp && worstCos <= kFewUlp,
+             qPrintable(QStringLiteral("x = %1: sin %2 ulp, cos %3 ulp").arg(str(worstAt), str(worstSin), str(worstCos))));
+}
+
+void TestFastTrig::sinCosBeyondTheTableRange()
+{
+    // Beyond 1024 it defers to the standard library.
+    for (double x : {1024.5, -1100.0, 1048577.5, 3e6, -7.25e9, 1e15, 1e300}) {
+        const SinCos sc = fastSinCos(x);
+        QVERIFY2(ulpError(sc.sin, std::sin(x)) <= kFewUlp && ulpError(sc.cos, std::cos(x)) <= kFewUlp, qPrintable(str(x)));
+    }
+}
+
+void TestFastTrig::atan2WithinAFewUlp()
+{
+    Random random(301);
+    std::vector<std::pair<double, double>> args = {{0.0, 1.0}, {1.0, 0.0}, {1.0, 1.0}, {1e-300, 1.0}, {1.0, 1e-300},
+                                                   {std::numeric_limits<double>::denorm_min(), 1.0}, {3.0, 4.0}, {1e-8, 1.0},
+                                                   {1.0, 1e-8}, {1e300, 1e300}, {5e-324, 5e-324}, {0.0, 5e-324}};
+    for (int i = 0; i < 20000; ++i)
+        args.emplace_back(random.uniform(0.0, 1.0), random.uniform(0.0, 1.0));
+    for (int i = 0; i < 5000; ++i)
+        args.emplace_back(std::pow(10.0, random.uniform(-15.0, 15.0)), std::pow(10.0, random.uniform(-15.0, 15.0)));
+    for (int i = 0; i < 2000; ++i) {
+        // Near the diagonal and the axes, where table-driven reductions switch branches.
+        const double x = random.uniform(0.1, 10.0);
+        args.emplace_back(x * (1.0 + random.uniform(-1e-6, 1e-6)), x);
+        args.emplace_back(x * random.uniform(0.0, 1e-6), x);
+        args.emplace_back(x, x * random.uniform(0.0, 1e-6));
+    }
+    double worst = 0.0;
+    std::pair<double, double> worstAt{0.0, 0.0};
+    for (const auto& [y, x] : args) {
+        const double e = ulpError(fastAtan2FirstQuadrant(y, x), std::atan2(y, x));
+        if (e > worst) {
+            worst = e;
+            worstAt = {y, x};
+        }
+    }
+    qInfo("worst atan2 error %.3g ulp at (y, x) = (%.17g, %.17g)", worst, worstAt.first, worstAt.second);
+    QVERIFY2(worst <= kFewUlp, qPrintable(QStringLiteral("atan2(%1, %2): fast %3, std %4 (%5 ulp)")
+                                              .arg(str(worstAt.first), str(worstAt.second), str(fastAtan2FirstQuadrant(worstAt.first, worstAt.second)),
+                                                   str(std::atan2(worstAt.first, worstAt.second)), str(worst))));
+}
+
+QTEST_APPLESS_MAIN(TestFastTrig)
+#include "tst_fast_trig.moc"
