@@ -1,7 +1,9 @@
 #include "core/orientation_curves.h"
 
+#include "core/name_table.h"
 #include "core/position_curve.h"
 #include "core/quaternion_math.h"
+#include "core/timed_keys.h"
 
 #include <algorithm>
 #include <array>
@@ -32,11 +34,7 @@ const Eigen::Quaterniond kZeroQuaternion(0.0, 0.0, 0.0, 0.0);
 OrientationCurve::OrientationCurve(std::vector<OrientationKey> keys)
     : keys_(std::move(keys))
 {
-    if (keys_.empty())
-        throw std::invalid_argument("an orientation curve needs at least one key");
-    for (std::size_t i = 1; i < keys_.size(); ++i)
-        if (!(keys_[i].time > keys_[i - 1].time))
-            throw std::invalid_argument("key times must strictly increase");
+    requireIncreasingTimes(keys_);
     for (OrientationKey& key : keys_)
         key.rotation.normalize();
     alignSigns(keys_);
@@ -48,10 +46,7 @@ OrientationSample OrientationCurve::sample(double time) const
         const Eigen::Quaterniond& held = time < startTime() ? keys_.front().rotation : keys_.back().rotation;
         return {held, kZeroQuaternion, Eigen::Vector3d::Zero()};
     }
-    const auto after = std::upper_bound(keys_.begin(), keys_.end(), time,
-                                        [](double t, const OrientationKey& key) { return t < key.time; });
-    const std::size_t segment = std::min<std::size_t>(static_cast<std::size_t>(after - keys_.begin()) - 1,
-                                                      keys_.size() - 2);
+    const std::size_t segment = segmentAt(keys_, time);
     const double duration = keys_[segment + 1].time - keys_[segment].time;
     return sampleSegment(segment, (time - keys_[segment].time) / duration, duration);
 }
@@ -181,10 +176,7 @@ HermiteQuaternionSpline::RawSample HermiteQuaternionSpline::raw(double time) con
         const Eigen::Quaterniond& held = time < startTime() ? points_.front().value : points_.back().value;
         return {held, kZeroQuaternion, kZeroQuaternion};
     }
-    const auto after = std::upper_bound(points_.begin(), points_.end(), time,
-                                        [](double t, const HermiteControlPoint& p) { return t < p.time; });
-    const std::size_t segment = std::min<std::size_t>(static_cast<std::size_t>(after - points_.begin()) - 1,
-                                                      points_.size() - 2);
+    const std::size_t segment = segmentAt(points_, time);
     const double duration = points_[segment + 1].time - points_[segment].time;
     return rawSegment(segment, (time - points_[segment].time) / duration, duration);
 }
@@ -265,7 +257,7 @@ OrientationSample EulerAngleCurve::sampleSegment(std::size_t segment, double u, 
 
 namespace {
 
-constexpr std::array<std::pair<InterpolationMethod, std::string_view>, 6> kMethodNames{{
+constexpr NameTable<InterpolationMethod, 6> kMethodNames{{
     {InterpolationMethod::Slerp, "slerp"},
     {InterpolationMethod::Nlerp, "nlerp"},
     {InterpolationMethod::Squad, "squad"},
@@ -278,18 +270,12 @@ constexpr std::array<std::pair<InterpolationMethod, std::string_view>, 6> kMetho
 
 std::optional<InterpolationMethod> parseInterpolationMethod(std::string_view name)
 {
-    for (const auto& [method, text] : kMethodNames)
-        if (text == name)
-            return method;
-    return std::nullopt;
+    return valueNamed(kMethodNames, name);
 }
 
 std::string_view interpolationMethodName(InterpolationMethod method)
 {
-    for (const auto& [candidate, text] : kMethodNames)
-        if (candidate == method)
-            return text;
-    return {};
+    return nameOf(kMethodNames, method);
 }
 
 std::unique_ptr<OrientationCurve> makeOrientationCurve(InterpolationMethod method, std::vector<OrientationKey> keys,

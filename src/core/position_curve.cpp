@@ -1,7 +1,7 @@
 #include "core/position_curve.h"
 
-#include <algorithm>
-#include <stdexcept>
+#include "core/timed_keys.h"
+
 #include <utility>
 
 namespace gyre {
@@ -18,11 +18,7 @@ HermiteBasis hermiteBasis(double u)
 PositionCurve::PositionCurve(std::vector<PositionKey> keys, Shape shape)
     : keys_(std::move(keys))
 {
-    if (keys_.empty())
-        throw std::invalid_argument("a position curve needs at least one key");
-    for (std::size_t i = 1; i < keys_.size(); ++i)
-        if (!(keys_[i].time > keys_[i - 1].time))
-            throw std::invalid_argument("key times must strictly increase");
+    requireIncreasingTimes(keys_);
     if (shape == Shape::Linear || keys_.size() < 2)
         return;
     slopes_.reserve(keys_.size());
@@ -39,9 +35,7 @@ Eigen::Vector3d PositionCurve::at(double time) const
         return keys_.front().position;
     if (time >= keys_.back().time)
         return keys_.back().position;
-    const auto after = std::upper_bound(keys_.begin(), keys_.end(), time,
-                                        [](double t, const PositionKey& key) { return t < key.time; });
-    const auto i = static_cast<std::size_t>(after - keys_.begin()) - 1;
+    const std::size_t i = segmentAt(keys_, time);
     const PositionKey& start = keys_[i];
     const PositionKey& end = keys_[i + 1];
     const double duration = end.time - start.time;

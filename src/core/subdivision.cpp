@@ -1,5 +1,6 @@
 #include "core/subdivision.h"
 
+#include "core/name_table.h"
 #include "core/quaternion_math.h"
 
 #include <array>
@@ -35,7 +36,7 @@ private:
     Eigen::Vector3d log_;
 };
 
-constexpr std::array<std::pair<SubdivisionScheme, std::string_view>, 4> kSchemeNames{{
+constexpr NameTable<SubdivisionScheme, 4> kSchemeNames{{
     {SubdivisionScheme::FourPoint, "four-point"},
     {SubdivisionScheme::FourPointB, "four-point-b"},
     {SubdivisionScheme::BSpline, "bspline"},
@@ -46,18 +47,12 @@ constexpr std::array<std::pair<SubdivisionScheme, std::string_view>, 4> kSchemeN
 
 std::optional<SubdivisionScheme> parseSubdivisionScheme(std::string_view name)
 {
-    for (const auto& [scheme, text] : kSchemeNames)
-        if (text == name)
-            return scheme;
-    return std::nullopt;
+    return valueNamed(kSchemeNames, name);
 }
 
 std::string_view subdivisionSchemeName(SubdivisionScheme scheme)
 {
-    for (const auto& [candidate, text] : kSchemeNames)
-        if (candidate == scheme)
-            return text;
-    return {};
+    return nameOf(kSchemeNames, scheme);
 }
 
 std::optional<std::size_t> subdividedPoseCount(std::size_t controlPoses, int levels, bool cyclic)
