@@ -1,5 +1,8 @@
 #include "core/fast_trig.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace gyre::fast_trig_detail {
 
 namespace {
@@ -17,10 +20,12 @@ const SinCosTable kSinCosTable = [] {
     return table;
 }();
 
-const std::array<double, kAtanSteps + 1> kAtanTable = [] {
-    std::array<double, kAtanSteps + 1> table{};
-    for (std::size_t m = 0; m <= kAtanSteps; ++m)
-        table[m] = static_cast<double>(std::atan(static_cast<long double>(m) / kAtanSteps));
+const std::array<std::uint8_t, kAngleBins * 3 / 4> kAngleIndex = [] {
+    std::array<std::uint8_t, kAngleBins * 3 / 4> table{};
+    for (std::size_t b = 0; b < table.size(); ++b) {
+        const long double lowest = std::min(static_cast<long double>(b) / kAngleBins, 1.0L);
+        table[b] = static_cast<std::uint8_t>(std::floor(std::asin(lowest) / kStepLong));
+    }
     return table;
 }();
 

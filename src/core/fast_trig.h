@@ -1,10 +1,10 @@
 #pragma once
-// Sine, cosine and arctangent for the screw's hot path. glibc's versions are correctly rounded but
-// cost about 30 ns (atan2) and 16 ns (sin and cos together) on the target machine, most of the 35 ns
-// budget of one screw. These reduce the argument against a table of exactly rounded values (filled by
-// the standard library at start-up) and finish with a short Taylor series. Their absolute error is a
-// few units of 2⁻⁵³, which is what a pose needs; unlike glibc's they do not keep the relative
-// precision of sin x at its zeros far from 0.
+// Sine, cosine and the angle of a point on the unit circle, for the screw's hot path. glibc's
+// versions are correctly rounded but cost about 30 ns (atan2) and 16 ns (sin and cos together) on the
+// target machine, most of the 35 ns budget of one screw. These reduce the argument against a table of
+// exactly rounded values (filled from the long double functions at start-up) and finish with a short
+// Taylor series, with no division. Their absolute error is a few units of 2⁻⁵³, which is what a pose
+// needs; unlike glibc's, sin does not keep its relative precision at its zeros far from 0.
 // Inline, so that the screw's code keeps its values in registers.
 
 #include <array>
@@ -22,14 +22,15 @@ struct SinCos {
 namespace fast_trig_detail {
 
 constexpr int kStepsPerTurn = 256; // sin and cos tabulated at k·π/128
-constexpr int kAtanSteps = 64;     // atan tabulated at m/64, m = 0 … 64
+constexpr int kAngleBins = 256;    // the angle table's bins in sin α, α ≤ π/4
 
 struct SinCosTable {
     std::array<double, kStepsPerTurn> sin;
     std::array<double, kStepsPerTurn> cos;
 };
 extern const SinCosTable kSinCosTable;
-extern const std::array<double, kAtanSteps + 1> kAtanTable;
+// For sin α in [b/256, (b+1)/256), the largest j with j·π/128 ≤ α.
+extern const std::array<std::uint8_t, kAngleBins * 3 / 4> kAngleIndex;
 
 constexpr double kStepsPerRadian = 128.0 / std::numbers::pi;
 constexpr double kLargestReduced = 1024.0; // beyond, k·(error of π) exceeds 1e-16
@@ -40,20 +41,6 @@ constexpr double kStepHead = static_cast<float>(kStepLong);
 constexpr double kStepTail = static_cast<double>(kStepLong - static_cast<long double>(kStepHead));
 // Adding and subtracting 1.5·2^52 rounds a double of magnitude below 2^51 to the nearest integer.
 constexpr double kRoundingShift = 6755399441055744.0;
-
-// atan z for z ∈ [0, 1]: atan(m/64) + atan(r) with r = (z − m/64)/(1 + z·m/64), |r| ≤ 1/128.
-inline double atanUnit(double z)
-{
-    const int m = static_cast<int>(z * kAtanSteps + 0.5);
-    const double c = static_cast<double>(m) / kAtanSteps;
-    const double r = (z - c) / (1.0 + z * c);
-    // r − r³/3 + r⁵/5 − r⁷/7; the first term left out, r⁹/9, is below 2e-20. Grouped as Estrin's
-    // scheme, so that the powers are formed side by side rather than in one long chain.
-    constexpr double a3 = -1.0 / 3, a5 = 1.0 / 5, a7 = -1.0 / 7;
-    const double r2 = r * r;
-    const double r3 = r2 * r;
-    return kAtanTable[static_cast<std::size_t>(m)] + (r + r3 * (a3 + r2 * a5) + (r3 * r2 * r2) * a7);
-}
 
 } // namespace fast_trig_detail
 
@@ -78,11 +65,27 @@ inline SinCos fastSinCos(double x)
     return {sinK * cosR + cosK * sinR, cosK * cosR - sinK * sinR};
 }
 
-// atan2(y, x) for y ≥ 0, x ≥ 0, not both zero: the angle in [0, π/2], to a few ulp.
-inline double fastAtan2FirstQuadrant(double y, double x)
+// The angle a ∈ [0, π/2] of the point (cos a, sin a) of the unit circle, both coordinates
+// non-negative: atan2(sine, cosine), to a few ulp. Measured from the nearer axis, the angle α ≤ π/4
+// is θⱼ + asin(sin α·cos θⱼ − cos α·sin θⱼ), with θⱼ = j·π/128 the table angle just below α: the
+// series argument lies in [0, 0.028), and the two terms, both positive, cannot cancel.
+inline double fastAngleOnUnitCircle(double cosine, double sine)
 {
-    using fast_trig_detail::atanUnit;
-    return y <= x ? atanUnit(y / x) : 0.5 * std::numbers::pi - atanUnit(x / y);
+    using namespace fast_trig_detail;
+    const bool steep = sine > cosine; // a > π/4: measure from the y axis
+    const double u = steep ? cosine : sine;
+    const double v = steep ? sine : cosine;
+    const std::size_t j = kAngleIndex[static_cast<std::size_t>(u * kAngleBins)];
+    const double sigma = u * kSinCosTable.cos[j] - v * kSinCosTable.sin[j];
+    // asin σ = σ + σ³/6 + 3σ⁵/40 + 5σ⁷/112 + 35σ⁹/1152 + 63σ¹¹/2816; the first term left out,
+    // 231σ¹³/13312, is below 1e-22.
+    const double s2 = sigma * sigma;
+    const double s4 = s2 * s2;
+    const double series = (1.0 / 6 + s2 * (3.0 / 40)) + s4 * (5.0 / 112 + s2 * (35.0 / 1152)) + (s4 * s4) * (63.0 / 2816);
+    const double asinSigma = sigma + (sigma * s2) * series;
+    const double step = static_cast<double>(j);
+    const double alpha = (step * kStepHead + asinSigma) + step * kStepTail;
+    return steep ? 0.5 * std::numbers::pi - alpha : alpha;
 }
 
 } // namespace gyre

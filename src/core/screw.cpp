@@ -51,7 +51,7 @@ Screw::Screw(const Pose& from, const Pose& to)
     : Screw(from, to, WithoutAngle{})
 {
     if (sinHalfAngle_ > 0.0)
-        halfAngle_ = fastAtan2FirstQuadrant(sinHalfAngle_, cosHalfAngle_);
+        halfAngle_ = fastAngleOnUnitCircle(cosHalfAngle_, sinHalfAngle_);
 }
 
 Pose Screw::at(double t) const
@@ -96,7 +96,7 @@ Pose screwInterpolate(const Pose& from, double t, const Pose& to)
     if (!(s > kNoRotation))
         return {from.orientation, from.position + t * c};
     const double w = relative.w();
-    const SinCos turn = fastSinCos(t * fastAtan2FirstQuadrant(s, w));
+    const SinCos turn = fastSinCos(t * fastAngleOnUnitCircle(w, s));
     const double inverseS = 1.0 / s;
     const Eigen::Vector3d axis = inverseS * relative.vec();
     const Eigen::Quaterniond rotation(turn.cos, turn.sin * axis.x(), turn.sin * axis.y(), turn.sin * axis.z());

@@ -167,7 +167,7 @@ void TestEulerAngles::roundTripRandomRotations()
 {
     Random random(32);
     for (const EulerConvention& c : EulerConvention::all()) {
-        for (int i = 0; i < 300; ++i) {
+        for (int i = 0; i < 150; ++i) {
             const Eigen::Quaterniond q = random.rotation();
             const EulerAngles result = eulerAnglesFromQuaternion(q, c);
             const Eigen::Vector3d& e = result.angles;

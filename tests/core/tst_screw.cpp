@@ -39,9 +39,11 @@ Eigen::Vector3d applyMatrix(const Eigen::Matrix4d& m, const Eigen::Vector3d& x)
 void checkAgainstGeodesic(const Pose& a, const Pose& b, double tolerance, const QString& label, double* largest = nullptr)
 {
     const Screw screw(a, b);
+    const Eigen::Matrix4d ma = poseMatrix(a);
+    const Vector6d xi = se3Log(inverseRigid(ma) * poseMatrix(b));
     for (double t : kParameters) {
         const Pose got = screw.at(t);
-        const Eigen::Matrix4d expected = geodesic(a, b, t);
+        const Eigen::Matrix4d expected = ma * se3Exp(t * xi); // the geodesic La·exp(t·log(La⁻¹Lb))
         const double error = poseMatrixDistance(got, expected);
         // screwInterpolate is a separate one-shot implementation of the same motion.
         const Pose oneShot = screwInterpolate(a, t, b);
@@ -102,14 +104,14 @@ void TestScrew::randomPairsFollowTheGeodesic()
 {
     Random random(81);
     double largest = 0.0;
-    for (int i = 0; i < 500; ++i) {
+    for (int i = 0; i < 200; ++i) {
         const Pose a = random.pose(5.0);
         const Pose b = random.pose(5.0);
         checkAgainstGeodesic(a, b, 1e-9, QStringLiteral("pair %1").arg(i), &largest);
         if (QTest::currentTestFailed())
             return;
         const Screw screw(a, b);
-        for (int k = 0; k < 4; ++k) {
+        for (int k = 0; k < 2; ++k) {
             const double t = random.uniform(-0.5, 1.5);
             const double error = poseMatrixDistance(screw.at(t), geodesic(a, b, t));
             GYRE_CHECK(error < 1e-9, QStringLiteral("pair %1, t %2: error %3").arg(i).arg(str(t), str(error)));
@@ -187,7 +189,7 @@ void TestScrew::rotationTendingToZero()
     Random random(85);
     for (double angle : {1e-3, 1e-5, 1e-7, 1e-9, 1e-10, 1e-12, 1e-14}) {
         for (bool translated : {false, true}) {
-            for (int i = 0; i < 20; ++i) {
+            for (int i = 0; i < 10; ++i) {
                 const Pose a = random.pose(5.0);
                 const Eigen::Vector3d axis = random.unitVector();
                 const Eigen::Vector3d translation = translated ? random.vector(3.0) : Eigen::Vector3d::Zero();
@@ -211,7 +213,7 @@ void TestScrew::rotationNearHalfTurn()
     Random random(86);
     for (double delta : {1e-3, 1e-5, 1e-6, 1e-7, 1e-8}) {
         for (bool translated : {false, true}) {
-            for (int i = 0; i < 20; ++i) {
+            for (int i = 0; i < 10; ++i) {
                 const Pose a = random.pose(5.0);
                 const Eigen::Vector3d axis = random.unitVector();
                 const Eigen::Vector3d translation = translated ? random.vector(3.0) : Eigen::Vector3d::Zero();
@@ -234,7 +236,7 @@ void TestScrew::largeTranslations()
 {
     Random random(87);
     for (double scale : {1e3, 1e6}) {
-        for (int i = 0; i < 100; ++i) {
+        for (int i = 0; i < 40; ++i) {
             Pose a = random.pose(scale);
             Pose b = random.pose(scale);
             if (i % 3 == 0)

@@ -197,7 +197,7 @@ void TestSubdivision::pureTranslationsReproduceLinearMasks()
     QFETCH(int, scheme);
     QFETCH(bool, cyclic);
     Random random(100 + std::uint64_t(scheme) * 2 + (cyclic ? 1 : 0));
-    for (std::size_t n : {std::size_t(2), std::size_t(3), std::size_t(5), std::size_t(8)}) {
+    for (std::size_t n : {std::size_t(2), std::size_t(3), std::size_t(6)}) {
         if (cyclic && n < 3)
             continue;
         for (bool identity : {true, false}) {
@@ -230,7 +230,7 @@ void TestSubdivision::counts()
         for (bool cyclic : {true, false}) {
             for (std::size_t n : {std::size_t(2), std::size_t(3), std::size_t(7)}) {
                 const std::vector<Pose> poses = randomWalk(random, n, 1.0, 1.0);
-                for (int levels : {0, 1, 2, 3, 5}) {
+                for (int levels : {0, 1, 3}) {
                     const SubdivisionSettings settings = settingsFor(s, levels, cyclic);
                     const std::size_t expected = expectedCount(n, levels, cyclic);
                     const std::optional<std::size_t> predicted = subdividedPoseCount(n, levels, cyclic);
@@ -351,7 +351,7 @@ void TestSubdivision::circularMotionStaysOnItsCircle()
     QFETCH(int, scheme);
     QFETCH(int, n);
     Random random(130 + std::uint64_t(scheme) * 10 + std::uint64_t(n));
-    for (int trial = 0; trial < 3; ++trial) {
+    for (int trial = 0; trial < 2; ++trial) {
         const Eigen::Vector3d centre = random.vector(5.0) + Eigen::Vector3d(3.0, 0.0, 0.0);
         const Eigen::Vector3d axis = random.unitVector();
         Pose start;
