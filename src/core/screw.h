@@ -6,7 +6,9 @@
 // The parameters are computed once in the constructor; at(t) is cheap and valid for any t, so t
 // outside [0, 1] extrapolates along the same screw.
 
+#include "core/fast_trig.h"
 #include "core/pose.h"
+#include "core/quaternion_math.h"
 
 #include <Eigen/Geometry>
 
@@ -36,6 +38,10 @@ public:
     // The point of the axis nearest the world origin; none when the motion has no rotation.
     std::optional<Eigen::Vector3d> axisPoint() const;
 
+    // Below this sin(r/2) the rotation is far below what any pose can resolve; the screw is then a
+    // pure translation. The bound keeps sin(t·a)/sin(a) and cot a in normal floating-point numbers.
+    static constexpr double kNoRotation = 1e-100;
+
 private:
     struct WithoutAngle {};
     // Everything but the angle itself, which only at() needs.
@@ -64,6 +70,71 @@ private:
     double sinHalfAngle_ = 0.0;
     double slide_ = 0.0;                   // d
 };
+
+// Defined here, so that the subdivision's loop inlines them.
+
+inline Screw::Screw(const Pose& from, const Pose& to, WithoutAngle)
+    : fromOrientation_(from.orientation)
+    , fromPosition_(from.position)
+{
+    // R = qb·qa⁻¹ on the short arc, c = pb − R·pa. The poses' quaternions are unit, so R's vector
+    // part and scalar are sin a·S and cos a.
+    const Eigen::Quaterniond relative = shortArc(to.orientation * from.orientation.conjugate());
+    const Eigen::Vector3d c = to.position - relative * from.position;
+    const double s = relative.vec().norm();
+    if (s > kNoRotation) {
+        axis_ = (1.0 / s) * relative.vec();
+        sinHalfAngle_ = s;
+        cosHalfAngle_ = relative.w();
+    } else {
+        const double length = c.norm();
+        axis_ = length > 0.0 ? Eigen::Vector3d(c / length) : Eigen::Vector3d::UnitX();
+    }
+    slide_ = axis_.dot(c);
+    perpendicular_ = c - slide_ * axis_;
+    turnedOrientation_ = pureQuaternion(axis_) * fromOrientation_;
+    if (sinHalfAngle_ > 0.0) {
+        const double cotangent = cosHalfAngle_ / sinHalfAngle_;
+        const Eigen::Vector3d positionAcross = from.position - axis_.dot(from.position) * axis_;
+        const Eigen::Vector3d perpendicularTurned = axis_.cross(perpendicular_);
+        sinSquaredTerm_ = perpendicular_ - 2.0 * positionAcross + cotangent * perpendicularTurned;
+        sinCosTerm_ = 2.0 * axis_.cross(positionAcross) - perpendicularTurned + cotangent * perpendicular_;
+    } else {
+        sinSquaredTerm_.setZero(); // s = sin(ta) is 0 for every t
+        sinCosTerm_.setZero();
+    }
+}
+
+inline Screw::Screw(const Pose& from, const Pose& to)
+    : Screw(from, to, WithoutAngle{})
+{
+    if (sinHalfAngle_ > 0.0)
+        halfAngle_ = fastAngleOnUnitCircle(cosHalfAngle_, sinHalfAngle_);
+}
+
+inline Pose Screw::at(double t) const
+{
+    const SinCos turn = fastSinCos(t * halfAngle_);
+    return pose(t, turn.sin, turn.cos, turn.sin * turn.sin, turn.sin * turn.cos);
+}
+
+inline Pose Screw::midpoint(const Pose& from, const Pose& to)
+{
+    // Half-angle formulas, with cos a ≥ 0 on the short arc: cos(a/2) = √((1 + cos a)/2),
+    // sin²(a/2) = sin²a / (2(1 + cos a)) (not (1 − cos a)/2, which cancels for small a),
+    // sin(a/2)·cos(a/2) = sin a / 2.
+    const Screw screw(from, to, WithoutAngle{});
+    const double sinA = screw.sinHalfAngle_;
+    const double onePlusCos = 1.0 + screw.cosHalfAngle_;
+    const double cosT = std::sqrt(0.5 * onePlusCos);
+    return screw.pose(0.5, 0.5 * sinA / cosT, cosT, 0.5 * sinA * sinA / onePlusCos, 0.5 * sinA);
+}
+
+inline Pose Screw::pose(double t, double sinT, double cosT, double sinSquared, double sinCos) const
+{
+    return {linearCombination(cosT, fromOrientation_, sinT, turnedOrientation_),
+            fromPosition_ + (t * slide_) * axis_ + sinSquared * sinSquaredTerm_ + sinCos * sinCosTerm_};
+}
 
 // s(La, t, Lb): the pose of Screw(from, to).at(t), computed for this one t at about half the cost.
 Pose screwInterpolate(const Pose& from, double t, const Pose& to);

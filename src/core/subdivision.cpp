@@ -43,6 +43,70 @@ constexpr NameTable<SubdivisionScheme, 4> kSchemeNames{{
     {SubdivisionScheme::Jarek, "jarek"},
 }};
 
+// One Split&Tweak level from `in` to `out`; `extended` is scratch space.
+template <class Segment>
+void splitAndTweak(const std::vector<Pose>& in, std::vector<Pose>& extended, std::vector<Pose>& out,
+                               const SubdivisionSettings& settings)
+{
+    const std::size_t n = in.size();
+    const bool cyclic = settings.cyclic;
+    if (n == 0 || (!cyclic && n == 1)) {
+        out = in;
+        return;
+    }
+    // extended[i + 1] = in[i], with the neighbours the rules reach past either end: the wrapped poses
+    // of a cycle, or the ghost poses of the dummy screws of an open sequence.
+    extended.clear();
+    if (cyclic) {
+        extended.push_back(in[n - 1]);
+        extended.insert(extended.end(), in.begin(), in.end());
+        extended.push_back(in[0]);
+        extended.push_back(in[1 % n]);
+    } else {
+        extended.push_back(Segment(in[1], in[0]).at(2.0));
+        extended.insert(extended.end(), in.begin(), in.end());
+        extended.push_back(Segment(in[n - 2], in[n - 1]).at(2.0));
+    }
+
+    out.resize(cyclic ? 2 * n : 2 * n - 1);
+    const std::size_t newPoses = cyclic ? n : n - 1;
+    // At in[i]: previous joins in[i−1]→in[i], current in[i]→in[i+1], next in[i+1]→in[i+2]. The rules
+    // of the paper are written with s(Lb, u, La) = s(La, 1 − u, Lb), so every screw is an edge's.
+    Segment previous(extended[0], extended[1]);
+    Segment current(extended[1], extended[2]);
+    for (std::size_t i = 0; i < newPoses; ++i) {
+        const Segment next(extended[i + 2], extended[i + 3]);
+        Pose& old = out[2 * i];
+        Pose& inserted = out[2 * i + 1];
+        switch (settings.scheme) {
+        case SubdivisionScheme::FourPoint:
+            old = in[i];
+            inserted = Segment::midpoint(previous.at(9.0 / 8.0), next.at(-1.0 / 8.0));
+            break;
+        case SubdivisionScheme::FourPointB:
+            old = in[i];
+            inserted = Segment(Segment::midpoint(extended[i], extended[i + 3]), current.at(0.5)).at(9.0 / 8.0);
+            break;
+        case SubdivisionScheme::BSpline:
+            old = Segment::midpoint(previous.at(3.0 / 4.0), current.at(1.0 / 4.0));
+            inserted = current.at(0.5);
+            break;
+        case SubdivisionScheme::Jarek:
+            old = Segment::midpoint(previous.at(7.0 / 8.0), current.at(1.0 / 8.0));
+            inserted = Segment::midpoint(previous.at(17.0 / 16.0), next.at(-1.0 / 16.0));
+            break;
+        }
+        previous = current;
+        current = next;
+    }
+    if (!cyclic) {
+        // The ghosts make every rule map the ends to themselves; keep them bit for bit.
+        out.front() = in.front();
+        out.back() = in.back();
+    }
+}
+
+
 } // namespace
 
 std::optional<SubdivisionScheme> parseSubdivisionScheme(std::string_view name)
@@ -84,75 +148,12 @@ const std::vector<Pose>& PolyscrewSubdivider::subdivide(const std::vector<Pose>&
     current_.assign(controlPoses.begin(), controlPoses.end());
     for (int level = 0; level < settings.levels; ++level) {
         if (settings.decoupled)
-            subdivideOnce<DecoupledSegment>(current_, next_, settings);
+            splitAndTweak<DecoupledSegment>(current_, extended_, next_, settings);
         else
-            subdivideOnce<Screw>(current_, next_, settings);
+            splitAndTweak<Screw>(current_, extended_, next_, settings);
         std::swap(current_, next_);
     }
     return current_;
-}
-
-template <class Segment>
-void PolyscrewSubdivider::subdivideOnce(const std::vector<Pose>& in, std::vector<Pose>& out,
-                                        const SubdivisionSettings& settings)
-{
-    const std::size_t n = in.size();
-    const bool cyclic = settings.cyclic;
-    if (n == 0 || (!cyclic && n == 1)) {
-        out = in;
-        return;
-    }
-    // extended_[i + 1] = in[i], with the neighbours the rules reach past either end: the wrapped poses
-    // of a cycle, or the ghost poses of the dummy screws of an open sequence.
-    extended_.clear();
-    if (cyclic) {
-        extended_.push_back(in[n - 1]);
-        extended_.insert(extended_.end(), in.begin(), in.end());
-        extended_.push_back(in[0]);
-        extended_.push_back(in[1 % n]);
-    } else {
-        extended_.push_back(Segment(in[1], in[0]).at(2.0));
-        extended_.insert(extended_.end(), in.begin(), in.end());
-        extended_.push_back(Segment(in[n - 2], in[n - 1]).at(2.0));
-    }
-    const auto edge = [this](std::size_t e) { return Segment(extended_[e], extended_[e + 1]); };
-
-    out.resize(cyclic ? 2 * n : 2 * n - 1);
-    const std::size_t newPoses = cyclic ? n : n - 1;
-    // At in[i]: previous joins in[i−1]→in[i], current in[i]→in[i+1], next in[i+1]→in[i+2]. The rules
-    // of the paper are written with s(Lb, u, La) = s(La, 1 − u, Lb), so every screw is an edge's.
-    Segment previous = edge(0);
-    Segment current = edge(1);
-    for (std::size_t i = 0; i < newPoses; ++i) {
-        const Segment next = edge(i + 2);
-        Pose& old = out[2 * i];
-        Pose& inserted = out[2 * i + 1];
-        switch (settings.scheme) {
-        case SubdivisionScheme::FourPoint:
-            old = in[i];
-            inserted = Segment::midpoint(previous.at(9.0 / 8.0), next.at(-1.0 / 8.0));
-            break;
-        case SubdivisionScheme::FourPointB:
-            old = in[i];
-            inserted = Segment(Segment::midpoint(extended_[i], extended_[i + 3]), current.at(0.5)).at(9.0 / 8.0);
-            break;
-        case SubdivisionScheme::BSpline:
-            old = Segment::midpoint(previous.at(3.0 / 4.0), current.at(1.0 / 4.0));
-            inserted = current.at(0.5);
-            break;
-        case SubdivisionScheme::Jarek:
-            old = Segment::midpoint(previous.at(7.0 / 8.0), current.at(1.0 / 8.0));
-            inserted = Segment::midpoint(previous.at(17.0 / 16.0), next.at(-1.0 / 16.0));
-            break;
-        }
-        previous = current;
-        current = next;
-    }
-    if (!cyclic) {
-        // The ghosts make every rule map the ends to themselves; keep them bit for bit.
-        out.front() = in.front();
-        out.back() = in.back();
-    }
 }
 
 std::vector<Pose> subdividePolyscrew(const std::vector<Pose>& controlPoses, const SubdivisionSettings& settings)

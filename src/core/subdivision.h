@@ -53,9 +53,6 @@ public:
     const std::vector<Pose>& subdivide(const std::vector<Pose>& controlPoses, const SubdivisionSettings& settings);
 
 private:
-    template <class Segment>
-    void subdivideOnce(const std::vector<Pose>& in, std::vector<Pose>& out, const SubdivisionSettings& settings);
-
     std::vector<Pose> current_;
     std::vector<Pose> next_;
     std::vector<Pose> extended_;
