@@ -38,7 +38,8 @@ struct EulerAngles {
     Eigen::Vector3d angles = Eigen::Vector3d::Zero(); // e1, e2, e3 in radians, each in (−π, π]
     // Angular distance in radians of the middle angle from its gimbal-lock value (±π/2 for
     // Tait-Bryan, 0 or π for proper Euler). Near zero, e1 and e3 turn about nearly the same axis and
-    // only their sum or difference is well defined; the angles still rebuild the rotation exactly.
+    // only their sum or difference is well defined; the angles still rebuild the rotation to rounding,
+    // except within 1e-12 rad of lock, where e3 is set to 0 and the rebuild is off by at most that.
     double gimbalLockDistance = 0.0;
 };
 
