@@ -2,7 +2,7 @@
 // Quaternion algebra that Eigen does not provide: the exponential and logarithm of unit quaternions,
 // their differentials, short-arc slerp and nlerp, and angular velocity.
 //
-// Conventions (DESIGN.md): Hamilton quaternions rotating actively, q and -q the same rotation.
+// Conventions (docs/conventions.md): Hamilton quaternions rotating actively, q and -q the same rotation.
 // Quaternion-valued quantities that need not be unit (derivatives, unnormalised spline values) are
 // Eigen::Quaterniond too; sums and scalings go through coeffs().
 

@@ -1,6 +1,6 @@
 // gyre-bench: the speed figures of the motion core. Run a Release build on an idle machine:
 //   build/tests/bench/gyre-bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
-// Targets on one core (issue 2): a screw under 35 ns, Jarek to 5 levels on 64 poses under 0.5 ms.
+// Targets on one core: a screw under 35 ns, Jarek to 5 levels on 64 poses under 0.5 ms.
 
 #include "core/euler_angles.h"
 #include "core/orientation_curves.h"

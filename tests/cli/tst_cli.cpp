@@ -144,7 +144,7 @@ Eigen::Vector3d axisVector(QChar axis)
     return axis == 'x' ? Eigen::Vector3d::UnitX() : axis == 'y' ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitZ();
 }
 
-// DESIGN.md: intrinsic ijk is R = Ri(e1)·Rj(e2)·Rk(e3); extrinsic ijk is R = Rk(e3)·Rj(e2)·Ri(e1).
+// docs/conventions.md: intrinsic ijk is R = Ri(e1)·Rj(e2)·Rk(e3); extrinsic ijk is R = Rk(e3)·Rj(e2)·Ri(e1).
 Eigen::Quaterniond fromEulerDegrees(const QString& order, bool intrinsic, const Eigen::Vector3d& degrees)
 {
     const Eigen::Quaterniond r1 = about(axisVector(order[0]), degrees[0] * kDegree);
