@@ -12,6 +12,7 @@
 
 #include <Eigen/Geometry>
 
+#include <cmath>
 #include <optional>
 
 namespace gyre {
@@ -136,7 +137,7 @@ inline Pose Screw::pose(double t, double sinT, double cosT, double sinSquared, d
             fromPosition_ + (t * slide_) * axis_ + sinSquared * sinSquaredTerm_ + sinCos * sinCosTerm_};
 }
 
-// s(La, t, Lb): the pose of Screw(from, to).at(t), computed for this one t at about half the cost.
+// s(La, t, Lb): Screw(from, to).at(t).
 Pose screwInterpolate(const Pose& from, double t, const Pose& to);
 
 } // namespace gyre
