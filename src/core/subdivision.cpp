@@ -46,7 +46,7 @@ constexpr NameTable<SubdivisionScheme, 4> kSchemeNames{{
 // One Split&Tweak level from `in` to `out`; `extended` is scratch space.
 template <class Segment>
 void splitAndTweak(const std::vector<Pose>& in, std::vector<Pose>& extended, std::vector<Pose>& out,
-                               const SubdivisionSettings& settings)
+                   const SubdivisionSettings& settings)
 {
     const std::size_t n = in.size();
     const bool cyclic = settings.cyclic;
@@ -105,7 +105,6 @@ void splitAndTweak(const std::vector<Pose>& in, std::vector<Pose>& extended, std
         out.back() = in.back();
     }
 }
-
 
 } // namespace
 
