@@ -3,6 +3,7 @@
 // Everything wrong with it is a UsageError whose message names the verb and the option.
 
 #include "core/euler_angles.h"
+#include "core/name_table.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -11,6 +12,7 @@
 #include <QStringList>
 
 #include <array>
+#include <optional>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -39,10 +41,9 @@ public:
 
     // The value of an option that must be given.
     QString requiredValue(const QString& option) const;
-    // A required option's value as one of `choices`, each known by nameOf(choice).
+    // A required option's value as one of the names in `choices`.
     template <class Choice, std::size_t Count>
-    Choice choice(const QString& option, const std::array<Choice, Count>& choices,
-                  std::string_view (*nameOf)(Choice)) const;
+    Choice choice(const QString& option, const NameTable<Choice, Count>& choices) const;
     // A required option's value as a finite number > 0.
     double positiveNumber(const QString& option) const;
     // A required option's value as an integer ≥ 0.
@@ -73,16 +74,14 @@ std::string alternatives(const std::vector<std::string_view>& names);
 void warn(std::string_view message);
 
 template <class Choice, std::size_t Count>
-Choice VerbCommandLine::choice(const QString& option, const std::array<Choice, Count>& choices,
-                               std::string_view (*nameOf)(Choice)) const
+Choice VerbCommandLine::choice(const QString& option, const NameTable<Choice, Count>& choices) const
 {
     const std::string value = requiredValue(option).toStdString();
+    if (const std::optional<Choice> chosen = valueNamed(choices, value))
+        return *chosen;
     std::vector<std::string_view> names;
-    for (const Choice candidate : choices) {
-        if (nameOf(candidate) == value)
-            return candidate;
-        names.push_back(nameOf(candidate));
-    }
+    for (const auto& entry : choices)
+        names.push_back(entry.second);
     throw error("--" + option.toStdString() + ": unknown value '" + value + "'; expected " + alternatives(names));
 }
 

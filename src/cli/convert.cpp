@@ -54,7 +54,7 @@ void warnNearGimbalLock(const QString& inputPath, const PoseTable& table, const 
 void runConvert(const QStringList& arguments)
 {
     const VerbCommandLine commandLine(QStringLiteral("convert"), arguments, convertOptions());
-    const RotationColumns target = commandLine.choice(QStringLiteral("to"), kAllRotationColumns, rotationColumnsName);
+    const RotationColumns target = commandLine.choice(QStringLiteral("to"), kRotationColumnsNames);
     const EulerConvention convention = commandLine.eulerConvention();
     PoseTable table = readPoseCsv(commandLine.inputPath(), convention);
     table.rotationColumns = target;

@@ -5,6 +5,7 @@
 #include "core/orientation_curves.h"
 #include "core/polyscrew.h"
 #include "core/position_curve.h"
+#include "core/timed_keys.h"
 #include "io/number_text.h"
 #include "io/pose_csv.h"
 
@@ -18,10 +19,6 @@ namespace {
 // A frame that falls this close to a key is the key's sample: the key time is written, not a
 // near-duplicate a rounding error away.
 constexpr double kKeyMergeSeconds = 1e-9;
-
-constexpr std::array kMethods{InterpolationMethod::Slerp, InterpolationMethod::Nlerp,
-                              InterpolationMethod::Squad, InterpolationMethod::Hermite,
-                              InterpolationMethod::Euler, InterpolationMethod::Screw};
 
 QList<QCommandLineOption> interpolateOptions()
 {
@@ -62,13 +59,11 @@ struct SpanPosition {
     double u = 0.0;
 };
 
-SpanPosition spanPosition(const std::vector<double>& keyTimes, double time)
+SpanPosition spanPosition(const PoseTable& keys, double time)
 {
-    const auto after = std::upper_bound(keyTimes.begin(), keyTimes.end(), time);
-    const auto span = std::clamp<std::ptrdiff_t>(after - keyTimes.begin() - 1, 0,
-                                                 static_cast<std::ptrdiff_t>(keyTimes.size()) - 2);
-    const auto i = static_cast<std::size_t>(span);
-    return {i, (time - keyTimes[i]) / (keyTimes[i + 1] - keyTimes[i])};
+    const std::size_t span = segmentAt(keys.rows, time);
+    const double start = keys.rows[span].time;
+    return {span, (time - start) / (keys.rows[span + 1].time - start)};
 }
 
 std::vector<Pose> curvePoses(InterpolationMethod method, const PoseTable& keys,
@@ -92,8 +87,7 @@ std::vector<Pose> curvePoses(InterpolationMethod method, const PoseTable& keys,
 
 // The polyscrew through the keys, its parameter mapped piecewise linearly from the key times so
 // that key i sits at parameter i.
-std::vector<Pose> screwPoses(const PoseTable& keys, const std::vector<double>& keyTimes,
-                             const std::vector<double>& times)
+std::vector<Pose> screwPoses(const PoseTable& keys, const std::vector<double>& times)
 {
     std::vector<Pose> keyPoses;
     for (const PoseRow& row : keys.rows)
@@ -102,7 +96,7 @@ std::vector<Pose> screwPoses(const PoseTable& keys, const std::vector<double>& k
     std::vector<Pose> poses;
     poses.reserve(times.size());
     for (const double time : times) {
-        const auto [span, u] = spanPosition(keyTimes, time);
+        const auto [span, u] = spanPosition(keys, time);
         poses.push_back(motion.at(static_cast<double>(span) + u));
     }
     return poses;
@@ -121,7 +115,7 @@ std::vector<double> timesOf(const PoseTable& table)
 void runInterpolate(const QStringList& arguments)
 {
     const VerbCommandLine commandLine(QStringLiteral("interpolate"), arguments, interpolateOptions());
-    const InterpolationMethod method = commandLine.choice(QStringLiteral("method"), kMethods, interpolationMethodName);
+    const InterpolationMethod method = commandLine.choice(QStringLiteral("method"), kInterpolationMethodNames);
     const double fps = commandLine.positiveNumber(QStringLiteral("fps"));
     const EulerConvention convention = commandLine.eulerConvention();
     const PoseTable keys = readPoseCsv(commandLine.inputPath(), convention, TimeColumn::Required);
@@ -130,7 +124,7 @@ void runInterpolate(const QStringList& arguments)
     const std::vector<double> keyTimes = timesOf(keys);
     const std::vector<double> times = sampleTimes(keyTimes, fps, commandLine);
     const std::vector<Pose> poses = method == InterpolationMethod::Screw
-                                        ? screwPoses(keys, keyTimes, times)
+                                        ? screwPoses(keys, times)
                                         : curvePoses(method, keys, times, convention);
     PoseTable frames{RotationColumns::Quaternion, true, true, {}};
     frames.rows.reserve(times.size());

@@ -12,9 +12,6 @@ namespace gyre::cli {
 
 namespace {
 
-constexpr std::array kSchemes{SubdivisionScheme::FourPoint, SubdivisionScheme::FourPointB, SubdivisionScheme::BSpline,
-                              SubdivisionScheme::Jarek};
-
 QList<QCommandLineOption> subdivideOptions()
 {
     return QList<QCommandLineOption>{QCommandLineOption(QStringLiteral("scheme"), {}, QStringLiteral("scheme")),
@@ -26,7 +23,7 @@ QList<QCommandLineOption> subdivideOptions()
 
 SubdivisionSettings settings(const VerbCommandLine& commandLine)
 {
-    return {commandLine.choice(QStringLiteral("scheme"), kSchemes, subdivisionSchemeName),
+    return {commandLine.choice(QStringLiteral("scheme"), kSubdivisionSchemeNames),
             commandLine.nonNegativeInteger(QStringLiteral("levels")),
             !commandLine.isSet(QStringLiteral("open")), commandLine.isSet(QStringLiteral("decoupled"))};
 }

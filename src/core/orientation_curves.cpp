@@ -1,6 +1,5 @@
 #include "core/orientation_curves.h"
 
-#include "core/name_table.h"
 #include "core/position_curve.h"
 #include "core/quaternion_math.h"
 #include "core/timed_keys.h"
@@ -255,27 +254,15 @@ OrientationSample EulerAngleCurve::sampleSegment(std::size_t segment, double u, 
 
 // --- factory ----------------------------------------------------------------------------------------
 
-namespace {
-
-constexpr NameTable<InterpolationMethod, 6> kMethodNames{{
-    {InterpolationMethod::Slerp, "slerp"},
-    {InterpolationMethod::Nlerp, "nlerp"},
-    {InterpolationMethod::Squad, "squad"},
-    {InterpolationMethod::Hermite, "hermite"},
-    {InterpolationMethod::Euler, "euler"},
-    {InterpolationMethod::Screw, "screw"},
-}};
-
-} // namespace
 
 std::optional<InterpolationMethod> parseInterpolationMethod(std::string_view name)
 {
-    return valueNamed(kMethodNames, name);
+    return valueNamed(kInterpolationMethodNames, name);
 }
 
 std::string_view interpolationMethodName(InterpolationMethod method)
 {
-    return nameOf(kMethodNames, method);
+    return nameOf(kInterpolationMethodNames, method);
 }
 
 std::unique_ptr<OrientationCurve> makeOrientationCurve(InterpolationMethod method, std::vector<OrientationKey> keys,

@@ -9,6 +9,7 @@
 // holds the end orientation with zero derivative.
 
 #include "core/euler_angles.h"
+#include "core/name_table.h"
 
 #include <Eigen/Geometry>
 
@@ -133,6 +134,15 @@ private:
 };
 
 enum class InterpolationMethod { Slerp, Nlerp, Squad, Hermite, Euler, Screw };
+
+inline constexpr NameTable<InterpolationMethod, 6> kInterpolationMethodNames{{
+    {InterpolationMethod::Slerp, "slerp"},
+    {InterpolationMethod::Nlerp, "nlerp"},
+    {InterpolationMethod::Squad, "squad"},
+    {InterpolationMethod::Hermite, "hermite"},
+    {InterpolationMethod::Euler, "euler"},
+    {InterpolationMethod::Screw, "screw"},
+}};
 
 std::optional<InterpolationMethod> parseInterpolationMethod(std::string_view name);
 std::string_view interpolationMethodName(InterpolationMethod method);

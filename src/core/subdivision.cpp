@@ -1,6 +1,5 @@
 #include "core/subdivision.h"
 
-#include "core/name_table.h"
 #include "core/quaternion_math.h"
 
 #include <array>
@@ -35,13 +34,6 @@ private:
     Eigen::Vector3d toPosition_;
     Eigen::Vector3d log_;
 };
-
-constexpr NameTable<SubdivisionScheme, 4> kSchemeNames{{
-    {SubdivisionScheme::FourPoint, "four-point"},
-    {SubdivisionScheme::FourPointB, "four-point-b"},
-    {SubdivisionScheme::BSpline, "bspline"},
-    {SubdivisionScheme::Jarek, "jarek"},
-}};
 
 // One Split&Tweak level from `in` to `out`; `extended` is scratch space.
 template <class Segment>
@@ -110,12 +102,12 @@ void splitAndTweak(const std::vector<Pose>& in, std::vector<Pose>& extended, std
 
 std::optional<SubdivisionScheme> parseSubdivisionScheme(std::string_view name)
 {
-    return valueNamed(kSchemeNames, name);
+    return valueNamed(kSubdivisionSchemeNames, name);
 }
 
 std::string_view subdivisionSchemeName(SubdivisionScheme scheme)
 {
-    return nameOf(kSchemeNames, scheme);
+    return nameOf(kSubdivisionSchemeNames, scheme);
 }
 
 std::optional<std::size_t> subdividedPoseCount(std::size_t controlPoses, int levels, bool cyclic)

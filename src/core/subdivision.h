@@ -12,6 +12,7 @@
 // ghosts every scheme maps the end poses to themselves (for a translation (2p₀ − p₁ + 6p₀ + p₁)/8 = p₀),
 // so the endpoints are kept.
 
+#include "core/name_table.h"
 #include "core/pose.h"
 #include "core/screw.h"
 
@@ -28,6 +29,13 @@ enum class SubdivisionScheme {
     BSpline,
     Jarek,
 };
+
+inline constexpr NameTable<SubdivisionScheme, 4> kSubdivisionSchemeNames{{
+    {SubdivisionScheme::FourPoint, "four-point"},
+    {SubdivisionScheme::FourPointB, "four-point-b"},
+    {SubdivisionScheme::BSpline, "bspline"},
+    {SubdivisionScheme::Jarek, "jarek"},
+}};
 
 std::optional<SubdivisionScheme> parseSubdivisionScheme(std::string_view name);
 std::string_view subdivisionSchemeName(SubdivisionScheme scheme);

@@ -36,7 +36,7 @@ std::string joined(std::span<const std::string_view> names)
 std::string rotationColumnSets()
 {
     std::string text;
-    for (const RotationColumns columns : kAllRotationColumns) {
+    for (const auto& [columns, setName] : kRotationColumnsNames) {
         if (!text.empty())
             text += " | ";
         text += joined(rotationColumnNames(columns));
@@ -53,8 +53,8 @@ bool isKnownColumn(std::string_view name)
 {
     const auto among = [name](std::span<const std::string_view> names) { return std::ranges::count(names, name) > 0; };
     return name == kTimeName || among(kPositionNames) ||
-           std::ranges::any_of(kAllRotationColumns, [&among](RotationColumns columns) {
-               return among(rotationColumnNames(columns));
+           std::ranges::any_of(kRotationColumnsNames, [&among](const auto& entry) {
+               return among(rotationColumnNames(entry.first));
            });
 }
 
@@ -152,7 +152,7 @@ RotationColumns PoseCsvParser::findRotationColumns(const FieldIndex& fields) con
 {
     std::optional<RotationColumns> found;
     std::string_view foundName;
-    for (const RotationColumns columns : kAllRotationColumns) {
+    for (const auto& [columns, setName] : kRotationColumnsNames) {
         for (const std::string_view name : rotationColumnNames(columns)) {
             if (!fields.contains(name))
                 continue;

@@ -27,8 +27,6 @@ constexpr std::array<std::string_view, 4> kAxisAngleNames{"ax", "ay", "az", "ang
 constexpr std::array<std::string_view, 3> kRotationVectorNames{"rx", "ry", "rz"};
 constexpr std::array<std::string_view, 3> kEulerNames{"e1", "e2", "e3"};
 
-constexpr std::array<std::string_view, 5> kSetNames{"quat", "matrix", "axis-angle", "rotvec", "euler"};
-
 Eigen::Quaterniond quaternionFromValues(std::span<const double> v)
 {
     const Eigen::Quaterniond q(v[0], v[1], v[2], v[3]);
@@ -93,7 +91,7 @@ void setAxisAngleRow(Eigen::MatrixXd& values, Eigen::Index row, const Eigen::Qua
 
 } // namespace
 
-std::string_view rotationColumnsName(RotationColumns columns) { return kSetNames[static_cast<std::size_t>(columns)]; }
+std::string_view rotationColumnsName(RotationColumns columns) { return nameOf(kRotationColumnsNames, columns); }
 
 std::span<const std::string_view> rotationColumnNames(RotationColumns columns)
 {

@@ -4,6 +4,7 @@
 // vector, whose length is its angle in radians.
 
 #include "core/euler_angles.h"
+#include "core/name_table.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -23,9 +24,14 @@ enum class RotationColumns {
     Euler,          // e1,e2,e3: degrees, e1 about the first axis of the convention's order
 };
 
-inline constexpr std::array kAllRotationColumns{RotationColumns::Quaternion, RotationColumns::Matrix,
-                                                RotationColumns::AxisAngle, RotationColumns::RotationVector,
-                                                RotationColumns::Euler};
+// Every set, with the name that --to and messages use for it.
+inline constexpr NameTable<RotationColumns, 5> kRotationColumnsNames{{
+    {RotationColumns::Quaternion, "quat"},
+    {RotationColumns::Matrix, "matrix"},
+    {RotationColumns::AxisAngle, "axis-angle"},
+    {RotationColumns::RotationVector, "rotvec"},
+    {RotationColumns::Euler, "euler"},
+}};
 
 // How far a quaternion's norm may be from 1 and still be read (and then normalised): values written
 // with a few digits drift by far less, while a scaled or garbled quaternion is caught.
