@@ -1,0 +1,90 @@
+#pragma once
+// The document's data: a scene of objects, each with a mesh, a parent and a motion track. Plain
+// values that undo commands copy and swap; only the Document (document.h) changes them, through
+// its undo stack.
+
+#include "core/orientation_curves.h"
+#include "core/pose.h"
+#include "core/subdivision.h"
+
+#include <Eigen/Core>
+#include <QString>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace gyre::model {
+
+// Stable identity of an object within a scene; 0 means "none" (for example, no parent).
+using ObjectId = std::uint64_t;
+inline constexpr ObjectId kNoObject = 0;
+
+struct Keyframe {
+    double time = 0.0;  // seconds
+    Pose pose;          // the object's local transform, relative to its parent
+    bool constrained = true;  // kept exactly by the angular-velocity fit unless freed
+};
+
+// A triangle mesh in the object's local frame, for display.
+struct Mesh {
+    std::vector<Eigen::Vector3f> positions;
+    std::vector<Eigen::Vector3f> normals;  // one per position, or empty
+    std::vector<std::uint32_t> indices;    // three per triangle
+};
+
+// One direction stroke the artist drew on the unit sphere: unit vectors, optionally timed. Without
+// times the stroke is spread over the edit window by arc length.
+struct DirectionStroke {
+    std::vector<Eigen::Vector3d> points;
+    std::vector<double> times;  // empty, or one per point, increasing
+};
+
+struct MagnitudePoint {
+    double time = 0.0;
+    double magnitude = 0.0;  // |ω| in rad/s
+};
+
+// The sketch-editing state of a track (the sketch-editing paper's interface).
+struct SketchState {
+    std::vector<DirectionStroke> directionStrokes;
+    std::vector<MagnitudePoint> magnitude;
+    // A small curve drawn once, repeated `patternRepeat` times along the direction curve: x runs along
+    // the stroke, y across it, both in radians on the sphere.
+    std::vector<Eigen::Vector2d> pattern;
+    int patternRepeat = 0;
+    std::optional<std::pair<double, double>> window;  // the edited span; the whole track if absent
+    double alpha = 0.002;
+    double beta = 1.0;
+    double delta = 0.1;
+    // The last applied fit: the Hermite control points of the orientation over the window. Empty when
+    // no fit is applied; then the track's interpolation gives the orientation everywhere.
+    std::vector<HermiteControlPoint> fittedCurve;
+};
+
+struct MotionTrack {
+    std::vector<Keyframe> keys;  // strictly increasing times
+    InterpolationMethod interpolation = InterpolationMethod::Hermite;
+    SubdivisionSettings subdivision;  // used when interpolation is Screw
+    SketchState sketch;
+};
+
+struct SceneObject {
+    ObjectId id = kNoObject;
+    QString name;
+    std::shared_ptr<const Mesh> mesh;  // null: the viewport draws a default shape
+    ObjectId parent = kNoObject;
+    MotionTrack track;
+};
+
+struct Scene {
+    std::vector<SceneObject> objects;  // parents come before their children
+    double fps = 24.0;
+    double startTime = 0.0;
+    double endTime = 10.0;
+    double currentTime = 0.0;
+    ObjectId nextObjectId = 1;
+};
+
+} // namespace gyre::model
