@@ -1,0 +1,475 @@
+#include "fit/angular_velocity_fit.h"
+
+#include "core/quaternion_math.h"
+#include "fit/gauss_legendre.h"
+#include "fit/segment_energy.h"
+
+#include <ceres/ceres.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+namespace gyre::fit {
+
+namespace {
+
+// Quadrature of the energy: about two nodes per frame at 24 fps, at least four per segment.
+constexpr double kNodesPerSecond = 48.0;
+constexpr int kMinNodesPerSegment = 4;
+constexpr int kMaxNodesPerSegment = 64;
+// Nodes per piece (a fragment or segment cut at control points) when measuring errors and energies.
+constexpr int kMeasureNodes = 8;
+
+// The unit-norm condition U = 0 is a penalty μU that grows tenfold until | |q| − 1 | ≤ 5·10⁻⁴ at
+// kNormSamplesPerSegment samples of every segment: half the 10⁻³ promised, as margin for the
+// stretches between samples. The penalty starts at kInitialPenalty relative to β.
+constexpr double kInitialPenalty = 10.0;
+constexpr double kPenaltyGrowth = 10.0;
+constexpr int kMaxPenaltyIncreases = 8;
+constexpr double kNormTolerance = 5e-4;
+constexpr int kNormSamplesPerSegment = 32;
+
+// A variable frame is not inserted closer than this fraction of the window to a control point.
+constexpr double kMinFrameSpacing = 1e-6;
+
+enum class Role {
+    Held,           // a window end inside the animation: value and derivative are the outside curve's
+    ConstrainedKey, // value fixed, derivative free
+    Free,           // a freed key or a variable frame
+};
+
+struct ControlPoint {
+    double time = 0.0;
+    Role role = Role::Free;
+    std::optional<std::size_t> key;    // the input key it stands for, if any
+    std::array<double, 4> value{};     // w, x, y, z
+    std::array<double, 4> derivative{}; // w, x, y, z per second
+};
+
+std::array<double, 4> wxyz(const Eigen::Quaterniond& q) { return {q.w(), q.x(), q.y(), q.z()}; }
+Eigen::Quaterniond quaternion(const std::array<double, 4>& a) { return {a[0], a[1], a[2], a[3]}; }
+
+std::vector<HermiteControlPoint> hermitePoints(const std::vector<ControlPoint>& points)
+{
+    std::vector<HermiteControlPoint> hermite;
+    hermite.reserve(points.size());
+    for (const ControlPoint& point : points)
+        hermite.push_back({point.time, quaternion(point.value), quaternion(point.derivative)});
+    return hermite;
+}
+
+std::vector<OrientationKey> orientationKeys(const std::vector<FitKey>& keys)
+{
+    std::vector<OrientationKey> orientations;
+    orientations.reserve(keys.size());
+    for (const FitKey& key : keys)
+        orientations.push_back({key.time, key.rotation});
+    return orientations;
+}
+
+std::string spanText(double start, double end)
+{
+    return "[" + std::to_string(start) + ", " + std::to_string(end) + "] s";
+}
+
+void checkKeys(const std::vector<FitKey>& keys)
+{
+    if (keys.size() < 2)
+        throw std::invalid_argument("the fit needs at least two keys");
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        const std::string which = "key " + std::to_string(i);
+        if (!std::isfinite(keys[i].time) || !keys[i].rotation.coeffs().allFinite())
+            throw std::invalid_argument(which + " is not finite");
+        if (keys[i].rotation.squaredNorm() == 0.0)
+            throw std::invalid_argument(which + " has a zero quaternion");
+        if (i > 0 && !(keys[i].time > keys[i - 1].time))
+            throw std::invalid_argument(which + ": key times must strictly increase");
+    }
+}
+
+void checkSettings(const FitSettings& settings)
+{
+    const auto require = [](bool holds, const char* message) {
+        if (!holds)
+            throw std::invalid_argument(message);
+    };
+    require(settings.alpha >= 0.0 && std::isfinite(settings.alpha), "alpha must be a finite number ≥ 0");
+    require(settings.beta > 0.0 && std::isfinite(settings.beta), "beta must be a finite number > 0");
+    require(settings.delta > 0.0 && std::isfinite(settings.delta), "delta must be a finite number > 0");
+    require(settings.fragmentSeconds > 0.0 && std::isfinite(settings.fragmentSeconds),
+            "the fragment length must be a finite number of seconds > 0");
+    require(settings.maxRounds >= 1, "the fit needs at least one round");
+    require(settings.maxVariableFrames >= 0, "the cap on variable frames must be ≥ 0");
+}
+
+// The window to refit, checked against the keys and the target.
+TimeWindow checkedWindow(const std::vector<FitKey>& keys, const AngularVelocityTarget& target,
+                         const FitSettings& settings)
+{
+    const double first = keys.front().time;
+    const double last = keys.back().time;
+    if (target.startTime() < first || target.endTime() > last)
+        throw std::invalid_argument("the target " + spanText(target.startTime(), target.endTime()) +
+                                    " reaches outside the keys' span " + spanText(first, last));
+    const TimeWindow window = settings.window.value_or(TimeWindow{target.startTime(), target.endTime()});
+    if (!std::isfinite(window.start) || !std::isfinite(window.end) || !(window.start < window.end))
+        throw std::invalid_argument("the window must be two finite times, the first before the second");
+    if (window.start < first || window.end > last)
+        throw std::invalid_argument("the window " + spanText(window.start, window.end) +
+                                    " lies outside the keys' span " + spanText(first, last));
+    if (window.start < target.startTime() || window.end > target.endTime())
+        throw std::invalid_argument("the window " + spanText(window.start, window.end) +
+                                    " is not covered by the target " +
+                                    spanText(target.startTime(), target.endTime()));
+    return window;
+}
+
+class ProgressCallback;
+
+// One run of Algorithm 1.
+class FitRun {
+public:
+    FitRun(const std::vector<FitKey>& keys, const AngularVelocityTarget& target, const FitSettings& settings,
+           const FitHooks& hooks)
+        : keys_(keys)
+        , target_(target)
+        , settings_(settings)
+        , hooks_(hooks)
+        , window_(checkedWindow(keys, target, settings))
+        , base_(HermiteQuaternionSpline::throughKeys(orientationKeys(keys)))
+        , penalty_(kInitialPenalty * settings.beta)
+    {
+    }
+
+    FitResult run();
+
+private:
+    friend class ProgressCallback;
+
+    void placeControlPoints();
+    bool solveUnitNorm();
+    bool solve();
+    ceres::CostFunction* segmentEnergy(std::size_t segment) const;
+    const QuadratureRule& rule(int nodes) const;
+    HermiteQuaternionSpline spline() const { return HermiteQuaternionSpline(hermitePoints(points_)); }
+    double largestNormDeviation(const HermiteQuaternionSpline& curve) const;
+    template <class Integrand>
+    double integrate(double from, double to, const Integrand& integrand) const;
+    EnergyTerms energyTerms(const HermiteQuaternionSpline& curve) const;
+    std::vector<double> fragmentErrors(const HermiteQuaternionSpline& curve) const;
+    int insertVariableFrames(const HermiteQuaternionSpline& curve, const std::vector<double>& errors);
+    FitResult result(FitOutcome outcome, const HermiteQuaternionSpline& curve) const;
+
+    const std::vector<FitKey>& keys_;
+    const AngularVelocityTarget& target_;
+    const FitSettings& settings_;
+    const FitHooks& hooks_;
+    TimeWindow window_;
+    HermiteQuaternionSpline base_;
+    std::vector<ControlPoint> points_;
+    mutable std::map<int, QuadratureRule> rules_;
+    double penalty_;
+    int round_ = 0;
+    int iterations_ = 0;
+    int variableFrames_ = 0;
+    std::optional<double> largestFragmentError_;
+    EnergyTerms before_;
+};
+
+class ProgressCallback final : public ceres::IterationCallback {
+public:
+    explicit ProgressCallback(const FitRun& run)
+        : run_(run)
+    {
+    }
+
+    ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override
+    {
+        if (run_.hooks_.isCancelled && run_.hooks_.isCancelled())
+            return ceres::SOLVER_ABORT;
+        if (run_.hooks_.onProgress)
+            run_.hooks_.onProgress({run_.round_, run_.iterations_ + summary.iteration, 2.0 * summary.cost,
+                                    run_.largestFragmentError_});
+        return ceres::SOLVER_CONTINUE;
+    }
+
+private:
+    const FitRun& run_;
+};
+
+void FitRun::placeControlPoints()
+{
+    const std::vector<HermiteControlPoint>& initial = base_.controlPoints();
+    // A held end takes the outside motion's normalised value and derivative: unit, so that the norm
+    // condition can hold there, and tangent, so that the fitted curve, once normalised, leaves the end
+    // with the outside motion's value and derivative.
+    const auto held = [this](double time) {
+        const OrientationSample outside = base_.sample(time);
+        return ControlPoint{time, Role::Held, std::nullopt, wxyz(outside.value), wxyz(outside.derivative)};
+    };
+    // A window end strictly inside the animation holds the outside curve there; at the animation's
+    // own ends there is no outside, and the end key is an ordinary one.
+    if (window_.start > keys_.front().time)
+        points_.push_back(held(window_.start));
+    for (std::size_t i = 0; i < keys_.size(); ++i) {
+        const double time = keys_[i].time;
+        const bool isEnd = i == 0 || i + 1 == keys_.size();
+        const bool inside = (time > window_.start && time < window_.end) ||
+                            (isEnd && time >= window_.start && time <= window_.end);
+        if (!inside)
+            continue;
+        points_.push_back({time, keys_[i].constrained ? Role::ConstrainedKey : Role::Free, i,
+                           wxyz(initial[i].value), wxyz(initial[i].derivative)});
+    }
+    if (window_.end < keys_.back().time)
+        points_.push_back(held(window_.end));
+}
+
+const QuadratureRule& FitRun::rule(int nodes) const
+{
+    auto found = rules_.find(nodes);
+    if (found == rules_.end())
+        found = rules_.emplace(nodes, gaussLegendre(nodes)).first;
+    return found->second;
+}
+
+ceres::CostFunction* FitRun::segmentEnergy(std::size_t segment) const
+{
+    const double start = points_[segment].time;
+    const double duration = points_[segment + 1].time - start;
+    const int nodes = std::clamp(static_cast<int>(std::ceil(duration * kNodesPerSecond)), kMinNodesPerSegment,
+                                 kMaxNodesPerSegment);
+    const QuadratureRule& quadrature = rule(nodes);
+    std::vector<Eigen::Vector3d> targets;
+    targets.reserve(quadrature.nodes.size());
+    for (const double u : quadrature.nodes)
+        targets.push_back(target_.at(start + u * duration));
+    return new SegmentEnergy(duration, quadrature.nodes, quadrature.weights, targets,
+                             {settings_.alpha, settings_.beta, penalty_});
+}
+
+// Solves once at the current penalty. The hard constraints: a constrained key's quaternion and a held
+// window end are constant parameter blocks, so they hold exactly; |q| = 1 is the penalty μU, raised by
+// solveUnitNorm until it holds to tolerance (a penalty continuation; the paper used SQP).
+bool FitRun::solve()
+{
+    ceres::Problem problem;
+    for (ControlPoint& point : points_) {
+        problem.AddParameterBlock(point.value.data(), 4);
+        problem.AddParameterBlock(point.derivative.data(), 4);
+        if (point.role != Role::Free)
+            problem.SetParameterBlockConstant(point.value.data());
+        if (point.role == Role::Held)
+            problem.SetParameterBlockConstant(point.derivative.data());
+    }
+    for (std::size_t segment = 0; segment + 1 < points_.size(); ++segment) {
+        ControlPoint& from = points_[segment];
+        ControlPoint& to = points_[segment + 1];
+        problem.AddResidualBlock(segmentEnergy(segment), nullptr, from.value.data(), from.derivative.data(),
+                                 to.value.data(), to.derivative.data());
+    }
+
+    ceres::Solver::Options options;
+    // Each residual block touches the four parameter blocks of one segment, so the normal equations
+    // are block-banded: a sparse Cholesky factorisation costs time linear in the number of segments.
+    options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+    options.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
+    options.num_threads = 1;  // one core per fit, and a result independent of scheduling
+    options.max_num_iterations = 100;
+    options.function_tolerance = 1e-9;
+    options.gradient_tolerance = 1e-12;
+    options.parameter_tolerance = 1e-10;
+    options.logging_type = ceres::SILENT;
+    ProgressCallback callback(*this);
+    options.callbacks.push_back(&callback);
+
+    ceres::Solver::Summary summary;
+    ceres::Solve(options, &problem, &summary);
+    iterations_ += std::max(0, static_cast<int>(summary.iterations.size()) - 1);
+    if (summary.termination_type == ceres::USER_FAILURE)
+        return false;
+    if (summary.termination_type == ceres::FAILURE)
+        throw std::runtime_error("the fit's solver failed: " + summary.message);
+    return true;
+}
+
+bool FitRun::solveUnitNorm()
+{
+    for (int increase = 0;; ++increase) {
+        if (!solve())
+            return false;
+        if (largestNormDeviation(spline()) <= kNormTolerance || increase == kMaxPenaltyIncreases)
+            return true;
+        penalty_ *= kPenaltyGrowth;
+    }
+}
+
+double FitRun::largestNormDeviation(const HermiteQuaternionSpline& curve) const
+{
+    double largest = 0.0;
+    for (std::size_t segment = 0; segment + 1 < points_.size(); ++segment) {
+        const double start = points_[segment].time;
+        const double step = (points_[segment + 1].time - start) / kNormSamplesPerSegment;
+        for (int k = 0; k <= kNormSamplesPerSegment; ++k)
+            largest = std::max(largest, std::abs(curve.raw(start + k * step).value.norm() - 1.0));
+    }
+    return largest;
+}
+
+// ∫ f(t) dt over [from, to], cut at the control points (where the spline's second derivative jumps).
+template <class Integrand>
+double FitRun::integrate(double from, double to, const Integrand& integrand) const
+{
+    const QuadratureRule& quadrature = rule(kMeasureNodes);
+    double sum = 0.0;
+    double start = from;
+    auto next = std::upper_bound(points_.begin(), points_.end(), from,
+                                 [](double time, const ControlPoint& point) { return time < point.time; });
+    while (start < to) {
+        const double end = next != points_.end() ? std::min(next->time, to) : to;
+        for (std::size_t j = 0; j < quadrature.nodes.size(); ++j)
+            sum += quadrature.weights[j] * (end - start) * integrand(start + quadrature.nodes[j] * (end - start));
+        start = end;
+        if (next != points_.end())
+            ++next;
+    }
+    return sum;
+}
+
+EnergyTerms FitRun::energyTerms(const HermiteQuaternionSpline& curve) const
+{
+    EnergyTerms terms;
+    terms.angular = integrate(window_.start, window_.end, [&](double t) {
+        return (curve.sample(t).angularVelocity - target_.at(t)).squaredNorm();
+    });
+    terms.tangential = integrate(window_.start, window_.end, [&](double t) {
+        const HermiteQuaternionSpline::RawSample raw = curve.raw(t);
+        const double along = raw.value.coeffs().dot(raw.secondDerivative.coeffs());
+        return raw.secondDerivative.squaredNorm() - along * along / raw.value.squaredNorm();
+    });
+    return terms;
+}
+
+// F_n of the paper's Eq. 2 on fragments of length ΔT from the window's start; the last may be shorter.
+std::vector<double> FitRun::fragmentErrors(const HermiteQuaternionSpline& curve) const
+{
+    std::vector<double> errors;
+    for (double start = window_.start; start < window_.end; start += settings_.fragmentSeconds) {
+        const double end = std::min(start + settings_.fragmentSeconds, window_.end);
+        errors.push_back(integrate(start, end, [&](double t) {
+            return (curve.sample(t).angularVelocity - target_.at(t)).squaredNorm();
+        }));
+    }
+    return errors;
+}
+
+// Inserts a variable frame at the middle of each fragment whose error exceeds δ, worst first, up to
+// the cap; each starts on the current curve, so the curve is unchanged until the next solve.
+int FitRun::insertVariableFrames(const HermiteQuaternionSpline& curve, const std::vector<double>& errors)
+{
+    std::vector<std::size_t> poor;
+    for (std::size_t n = 0; n < errors.size(); ++n)
+        if (errors[n] > settings_.delta)
+            poor.push_back(n);
+    std::ranges::stable_sort(poor, [&errors](std::size_t a, std::size_t b) { return errors[a] > errors[b]; });
+    const double spacing = kMinFrameSpacing * (window_.end - window_.start);
+    int inserted = 0;
+    for (const std::size_t n : poor) {
+        if (variableFrames_ == settings_.maxVariableFrames)
+            break;
+        const double start = window_.start + static_cast<double>(n) * settings_.fragmentSeconds;
+        const double middle = 0.5 * (start + std::min(start + settings_.fragmentSeconds, window_.end));
+        const auto at = std::ranges::lower_bound(points_, middle, {}, &ControlPoint::time);
+        const bool crowded = (at != points_.end() && at->time - middle < spacing) ||
+                             (at != points_.begin() && middle - std::prev(at)->time < spacing);
+        if (crowded)
+            continue;
+        const HermiteQuaternionSpline::RawSample raw = curve.raw(middle);
+        points_.insert(at, {middle, Role::Free, std::nullopt, wxyz(raw.value), wxyz(raw.derivative)});
+        ++variableFrames_;
+        ++inserted;
+    }
+    return inserted;
+}
+
+FitResult FitRun::result(FitOutcome outcome, const HermiteQuaternionSpline& curve) const
+{
+    FitResult result;
+    result.outcome = outcome;
+    result.window = window_;
+    result.keys = keys_;
+    result.rounds = round_;
+    result.iterations = iterations_;
+    result.variableFrames = variableFrames_;
+    result.before = before_;
+    if (outcome == FitOutcome::Cancelled)
+        return result;
+    result.controlPoints = curve.controlPoints();
+    for (const ControlPoint& point : points_) {
+        if (!point.key || point.role != Role::Free)
+            continue;
+        FitKey& key = result.keys[*point.key];
+        key.rotation = alignedWith(quaternion(point.value).normalized(), key.rotation);
+    }
+    result.largestFragmentError = largestFragmentError_.value_or(0.0);
+    result.largestNormDeviation = largestNormDeviation(curve);
+    result.after = energyTerms(curve);
+    return result;
+}
+
+FitResult FitRun::run()
+{
+    placeControlPoints();
+    before_ = energyTerms(spline());
+    while (true) {
+        ++round_;
+        if (!solveUnitNorm())
+            return result(FitOutcome::Cancelled, spline());
+        const HermiteQuaternionSpline curve = spline();
+        const std::vector<double> errors = fragmentErrors(curve);
+        largestFragmentError_ = *std::ranges::max_element(errors);
+        if (*largestFragmentError_ <= settings_.delta)
+            return result(FitOutcome::Converged, curve);
+        if (round_ == settings_.maxRounds)
+            return result(FitOutcome::RoundLimit, curve);
+        if (insertVariableFrames(curve, errors) == 0)
+            return result(variableFrames_ == settings_.maxVariableFrames ? FitOutcome::VariableFrameLimit
+                                                                         : FitOutcome::NoPlaceForFrame,
+                          curve);
+    }
+}
+
+} // namespace
+
+FitResult fitAngularVelocity(const std::vector<FitKey>& keys, const AngularVelocityTarget& target,
+                             const FitSettings& settings, const FitHooks& hooks)
+{
+    checkKeys(keys);
+    checkSettings(settings);
+    const auto started = std::chrono::steady_clock::now();
+    FitRun run(keys, target, settings, hooks);
+    FitResult result = run.run();
+    result.solveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return result;
+}
+
+FittedMotion::FittedMotion(const std::vector<FitKey>& originalKeys, const FitResult& result)
+    : outside_(HermiteQuaternionSpline::throughKeys(orientationKeys(originalKeys)))
+{
+    if (!result.controlPoints.empty())
+        inside_.emplace(result.controlPoints);
+}
+
+OrientationSample FittedMotion::sample(double time) const
+{
+    if (inside_ && time >= inside_->startTime() && time <= inside_->endTime())
+        return inside_->sample(time);
+    return outside_.sample(time);
+}
+
+} // namespace gyre::fit

@@ -1,0 +1,115 @@
+#pragma once
+// The angular-velocity fit of the sketch-editing paper (Xie et al. 2011, Algorithm 1): the rotation
+// q(t) through the constrained keyframes whose angular velocity matches a target ωˢ(t), smoothly.
+//
+// The curve is a Hermite quaternion spline; its unknowns are the quaternions and quaternion
+// derivatives at the control points (keyframes, plus variable frames inserted where the fit is poor).
+// It minimises E = αW_T + βW_A subject to q(tᵢ) = qᵢ at constrained keys and |q(t)| = 1. Only the
+// window [t_a, t_b] is refitted: outside it the motion is the spline through the keys (the paper's
+// InitCurve), and at the window's ends value and derivative are held, so the motion stays C¹ there.
+// Translation is not the fit's business.
+//
+// Runs on any thread; one fit uses one core. The same input always gives the same output.
+
+#include "core/name_table.h"
+#include "core/orientation_curves.h"
+#include "fit/angular_velocity_target.h"
+
+#include <Eigen/Geometry>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace gyre::fit {
+
+struct FitKey {
+    double time = 0.0;
+    Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+    bool constrained = true;  // kept exactly; a freed key is an ordinary unknown
+};
+
+struct TimeWindow {
+    double start = 0.0;
+    double end = 0.0;
+};
+
+struct FitSettings {
+    double alpha = 0.002;  // weight of W_T, the tangential acceleration (smoothness)
+    double beta = 1.0;     // weight of W_A, the deviation from the target angular velocity
+    double delta = 0.1;    // the largest fragment error F_n accepted, rad²/s
+    double fragmentSeconds = 0.25;  // ΔT, the length of the fragments F_n is measured on
+    int maxRounds = 10;             // solves, each after inserting variable frames
+    int maxVariableFrames = 100;
+    std::optional<TimeWindow> window;  // the span to refit; the target's span if absent
+};
+
+enum class FitOutcome {
+    Converged,          // every fragment error is at most δ
+    RoundLimit,         // maxRounds solves were made
+    VariableFrameLimit, // maxVariableFrames were inserted
+    NoPlaceForFrame,    // every poorly fitted fragment already has a control point at its middle
+    Cancelled,          // the caller asked to stop; the result holds no curve
+};
+
+inline constexpr NameTable<FitOutcome, 5> kFitOutcomeNames{{
+    {FitOutcome::Converged, "converged"},
+    {FitOutcome::RoundLimit, "round limit"},
+    {FitOutcome::VariableFrameLimit, "variable frame limit"},
+    {FitOutcome::NoPlaceForFrame, "no place for a variable frame"},
+    {FitOutcome::Cancelled, "cancelled"},
+}};
+
+struct FitProgress {
+    int round = 0;      // 1-based
+    int iteration = 0;  // solver iterations so far, over all rounds
+    double energy = 0.0;  // E plus the unit-norm penalty, at this iteration
+    std::optional<double> largestFragmentError;  // after the last finished round
+};
+
+struct FitHooks {
+    std::function<void(const FitProgress&)> onProgress;  // called from the fitting thread
+    std::function<bool()> isCancelled;  // polled once per solver iteration
+};
+
+struct EnergyTerms {
+    double tangential = 0.0;  // W_T over the window
+    double angular = 0.0;     // W_A over the window
+};
+
+struct FitResult {
+    FitOutcome outcome = FitOutcome::Converged;
+    TimeWindow window;
+    // The fitted spline over the window, not normalised: sample it through FittedMotion.
+    std::vector<HermiteControlPoint> controlPoints;
+    // The input keys; those freed inside the window carry the fitted orientation.
+    std::vector<FitKey> keys;
+    int rounds = 0;
+    int iterations = 0;
+    int variableFrames = 0;
+    double largestFragmentError = 0.0;
+    double largestNormDeviation = 0.0;  // max over the window of | |q(t)| − 1 | before normalising
+    EnergyTerms before;  // of the initial curve
+    EnergyTerms after;
+    double solveSeconds = 0.0;
+};
+
+// Throws std::invalid_argument, with a message naming what is wrong, for fewer than two keys, key
+// times that do not increase, a zero or non-finite quaternion, a target reaching outside the keys'
+// span, a window outside the keys' span or not covered by the target, or settings out of range.
+FitResult fitAngularVelocity(const std::vector<FitKey>& keys, const AngularVelocityTarget& target,
+                             const FitSettings& settings, const FitHooks& hooks = {});
+
+// The motion after a fit: the fitted spline inside the window, the spline through the original keys
+// outside it.
+class FittedMotion {
+public:
+    FittedMotion(const std::vector<FitKey>& originalKeys, const FitResult& result);
+    OrientationSample sample(double time) const;
+
+private:
+    HermiteQuaternionSpline outside_;
+    std::optional<HermiteQuaternionSpline> inside_;
+};
+
+} // namespace gyre::fit
