@@ -1,6 +1,8 @@
 #include "cli/command_line.h"
 
+#include "core/frame_times.h"
 #include "io/number_text.h"
+#include "io/pose_csv.h"
 
 #include <cstdio>
 #include <utility>
@@ -61,17 +63,20 @@ QString VerbCommandLine::requiredValue(const QString& option) const
     return parser_.value(option);
 }
 
-double VerbCommandLine::positiveNumber(const QString& option) const
+double VerbCommandLine::number(const QString& option) const
 {
-    const QString text = requiredValue(option);
-    double value = 0.0;
     try {
-        value = parseFiniteNumber(text.toStdString());
+        return parseFiniteNumber(requiredValue(option).toStdString());
     } catch (const std::invalid_argument& problem) {
         throw error(dashed(option).toStdString() + ": " + problem.what());
     }
+}
+
+double VerbCommandLine::positiveNumber(const QString& option) const
+{
+    const double value = number(option);
     if (!(value > 0.0))
-        throw error(dashed(option).toStdString() + ": " + quoted(text) + " is not positive");
+        throw error(dashed(option).toStdString() + ": " + quoted(parser_.value(option)) + " is not positive");
     return value;
 }
 
@@ -102,6 +107,17 @@ UsageError VerbCommandLine::error(std::string_view message) const
 {
     return UsageError(verb_.toStdString() + ": " + std::string(message) + " (see gyre-cli help " +
                       verb_.toStdString() + ")");
+}
+
+std::vector<double> outputFrameTimes(const std::vector<double>& keyTimes, double fps,
+                                     const VerbCommandLine& commandLine)
+{
+    std::optional<std::vector<double>> times = frameTimes(keyTimes, fps, kMaxPoseRows);
+    if (!times)
+        throw commandLine.error("--fps " + formatNumber(fps) + " over " +
+                                formatNumber(keyTimes.back() - keyTimes.front()) + " s of keys gives more than " +
+                                std::to_string(kMaxPoseRows) + " samples");
+    return std::move(*times);
 }
 
 QList<QCommandLineOption> eulerOptions()

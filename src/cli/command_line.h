@@ -44,6 +44,8 @@ public:
     // A required option's value as one of the names in `choices`.
     template <class Choice, std::size_t Count>
     Choice choice(const QString& option, const NameTable<Choice, Count>& choices) const;
+    // A required option's value as a finite number.
+    double number(const QString& option) const;
     // A required option's value as a finite number > 0.
     double positiveNumber(const QString& option) const;
     // A required option's value as an integer ≥ 0.
@@ -63,6 +65,11 @@ private:
     QString inputPath_;
     QString outputPath_;
 };
+
+// The times a verb samples a motion at for --fps: frameTimes() over the keys, or a UsageError when
+// that would be more rows than a pose file may hold.
+std::vector<double> outputFrameTimes(const std::vector<double>& keyTimes, double fps,
+                                     const VerbCommandLine& commandLine);
 
 // --order, --intrinsic and --extrinsic.
 QList<QCommandLineOption> eulerOptions();

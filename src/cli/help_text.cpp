@@ -10,6 +10,7 @@ Batch verbs over pose CSV files (docs/pose-csv.md):
   convert      rewrite the rotation columns in another representation
   interpolate  sample a motion through timed keys at a frame rate
   subdivide    smooth a sequence of poses by polyscrew subdivision
+  fit          bend the motion through keys to match a target angular velocity
 
   gyre-cli help VERB     usage of one verb (also: gyre-cli VERB --help)
   gyre-cli --version     the version
@@ -67,6 +68,37 @@ cycle lasts the mean of the others. Writes time (if the input has it),qw,qx,qy,q
 
 The Euler options say how to read Euler input.)";
 
+const char* const kFit = R"(Usage: gyre-cli fit KEYS.csv (--omega W.csv | --direction D.csv --magnitude M.csv [--pattern P.csv --repeat N])
+               -o FRAMES.csv --fps F [--alpha A] [--beta B] [--delta D] [--fragment DT]
+               [--free i,j,...] [--window ta,tb] [--report R.json] [--order AXES] [--intrinsic|--extrinsic]
+
+Fits the rotation through the keys (a time column is required, at least two keys) to a target
+angular velocity, world frame, rad/s (the sketch-editing method, docs/fit.md). Keys keep their
+orientation exactly unless freed; positions are not touched. Writes time,qw,qx,qy,qz (and x,y,z
+when the keys have positions) at t0 + k/F up to the last key, plus a sample at every key time.
+
+The target, either
+  --omega W.csv       samples time,wx,wy,wz, linear between them
+or the artist's sketch
+  --direction D.csv   the direction of the angular velocity: unit vectors x,y,z on the sphere, with
+                      an optional time column; without times spread over the window by arc length
+  --magnitude M.csv   its size: time,magnitude (rad/s, > 0), linear between samples
+  --pattern P.csv     a small x,y curve (any unit; x along the direction curve, y across) repeated
+  --repeat N          N times along the direction curve, each repetition 1/N of its length
+
+  --fps F        output samples per second, > 0; changes only the output, never the fit
+  --alpha A      weight of smoothness, the tangential acceleration W_T (default 0.002, >= 0)
+  --beta B       weight of the angular-velocity deviation W_A (default 1, > 0)
+  --delta D      the largest fragment error accepted, rad^2/s (default 0.1, > 0)
+  --fragment DT  length of the fragments the error is measured on, seconds (default 0.25)
+  --free LIST    0-based indices of keys the fit may move, e.g. 1,2,5
+  --window ta,tb refit only this span of the keys (default: the target's span); outside it the
+                 motion is unchanged, and it stays smooth across the window's ends
+  --report FILE  a JSON report: outcome, rounds, iterations, variable frames, largest fragment
+                 error, solve time, energy terms before and after
+
+The Euler options say how to read Euler key columns.)";
+
 QString withCommonOptions(const char* verbHelp) { return QString::fromUtf8(verbHelp) + '\n' + kCommonOptions; }
 
 } // namespace
@@ -75,5 +107,6 @@ QString generalHelp() { return QString::fromUtf8(kGeneral); }
 QString convertHelp() { return withCommonOptions(kConvert); }
 QString interpolateHelp() { return withCommonOptions(kInterpolate); }
 QString subdivideHelp() { return withCommonOptions(kSubdivide); }
+QString fitHelp() { return withCommonOptions(kFit); }
 
 } // namespace gyre::cli

@@ -9,5 +9,6 @@ QString generalHelp();
 QString convertHelp();
 QString interpolateHelp();
 QString subdivideHelp();
+QString fitHelp();
 
 } // namespace gyre::cli

@@ -4,6 +4,7 @@
 #include "cli/verbs.h"
 #include "core/orientation_curves.h"
 #include "core/polyscrew.h"
+#include "core/frame_times.h"
 #include "core/position_curve.h"
 #include "core/timed_keys.h"
 #include "io/number_text.h"
@@ -16,41 +17,11 @@ namespace gyre::cli {
 
 namespace {
 
-// A frame that falls this close to a key is the key's sample: the key time is written, not a
-// near-duplicate a rounding error away.
-constexpr double kKeyMergeSeconds = 1e-9;
-
 QList<QCommandLineOption> interpolateOptions()
 {
     return QList<QCommandLineOption>{QCommandLineOption(QStringLiteral("method"), {}, QStringLiteral("method")),
                                      QCommandLineOption(QStringLiteral("fps"), {}, QStringLiteral("rate"))} +
            eulerOptions();
-}
-
-// t0 + k/fps up to the last key, merged with the key times; a frame within kKeyMergeSeconds of a
-// key gives way to it.
-std::vector<double> sampleTimes(const std::vector<double>& keyTimes, double fps, const VerbCommandLine& commandLine)
-{
-    const double first = keyTimes.front();
-    const double last = keyTimes.back();
-    // One frame more than the product promises, in case rounding put it just below a whole number;
-    // frames past the last key are dropped below.
-    const double frames = std::floor((last - first) * fps) + 2.0;
-    if (!(frames + static_cast<double>(keyTimes.size()) <= static_cast<double>(kMaxPoseRows)))
-        throw commandLine.error("--fps " + formatNumber(fps) + " over " + formatNumber(last - first) +
-                                " s of keys gives more than " + std::to_string(kMaxPoseRows) + " samples");
-    std::vector<double> times;
-    std::size_t key = 0;
-    for (std::size_t k = 0; k < static_cast<std::size_t>(frames); ++k) {
-        const double time = first + static_cast<double>(k) / fps;
-        while (key < keyTimes.size() && keyTimes[key] < time - kKeyMergeSeconds)
-            times.push_back(keyTimes[key++]);
-        const bool atKey = key < keyTimes.size() && std::abs(keyTimes[key] - time) <= kKeyMergeSeconds;
-        if (!atKey && time <= last)
-            times.push_back(time);
-    }
-    times.insert(times.end(), keyTimes.begin() + static_cast<std::ptrdiff_t>(key), keyTimes.end());
-    return times;
 }
 
 // Where a time falls among the keys: in the span from key `span` to key `span + 1`, at fraction u.
@@ -122,7 +93,7 @@ void runInterpolate(const QStringList& arguments)
     if (keys.rows.size() < 2)
         throw InputError(commandLine.inputPath(), keys.rows.back().line, "interpolate needs at least two keys");
     const std::vector<double> keyTimes = timesOf(keys);
-    const std::vector<double> times = sampleTimes(keyTimes, fps, commandLine);
+    const std::vector<double> times = outputFrameTimes(keyTimes, fps, commandLine);
     const std::vector<Pose> poses = method == InterpolationMethod::Screw
                                         ? screwPoses(keys, times)
                                         : curvePoses(method, keys, times, convention);

@@ -29,6 +29,7 @@ const Verb kVerbs[] = {
     {QLatin1String("convert"), runConvert, convertHelp},
     {QLatin1String("interpolate"), runInterpolate, interpolateHelp},
     {QLatin1String("subdivide"), runSubdivide, subdivideHelp},
+    {QLatin1String("fit"), runFit, fitHelp},
 };
 
 const Verb* findVerb(const QString& name)
@@ -46,7 +47,7 @@ const Verb& requireVerb(const QString& name)
     if (name.startsWith(QLatin1Char('-')))
         throw UsageError("unknown option " + name.toStdString() + " (see gyre-cli --help)");
     throw UsageError("unknown verb '" + name.toStdString() +
-                     "'; the verbs are convert, interpolate and subdivide (see gyre-cli --help)");
+                     "'; the verbs are convert, interpolate, subdivide and fit (see gyre-cli --help)");
 }
 
 void print(QString text)

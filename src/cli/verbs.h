@@ -10,5 +10,6 @@ namespace gyre::cli {
 void runConvert(const QStringList& arguments);
 void runInterpolate(const QStringList& arguments);
 void runSubdivide(const QStringList& arguments);
+void runFit(const QStringList& arguments);
 
 } // namespace gyre::cli

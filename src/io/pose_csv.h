@@ -14,6 +14,7 @@
 #include "io/input_error.h"
 #include "io/rotation_columns.h"
 
+#include <QSaveFile>
 #include <QString>
 
 #include <cstddef>
@@ -52,5 +53,8 @@ PoseTable readPoseCsv(const QString& path, const EulerConvention& convention,
 // complete: on any error (OutputError; a value that is not finite is one) a file already at `path`
 // keeps its contents and none is created.
 void writePoseCsv(const QString& path, const PoseTable& table, const EulerConvention& convention = {});
+// The same into a save file the caller opened and commits, for a verb that writes several files and
+// commits them together.
+void writePoseCsv(QSaveFile& file, const PoseTable& table, const EulerConvention& convention = {});
 
 } // namespace gyre

@@ -3,6 +3,7 @@
 // here from Eigen (AngleAxis products, slerp), the closed-form SE(3) exponential, or the formulas in
 // docs/pose-csv.md, never from gyre-cli's own output.
 
+#include "cli_test_support.h"
 #include "core/quaternion_math.h"
 
 #include <Eigen/Dense>
@@ -21,93 +22,11 @@
 
 namespace {
 
+using namespace gyre::test;
+
 constexpr double kPi = std::numbers::pi;
 constexpr double kDegree = kPi / 180.0;
 constexpr double kTolerance = 1e-12;
-
-struct CliRun {
-    bool exitedNormally = false; // no crash, no hang
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
-
-CliRun runCli(const QStringList& arguments)
-{
-    QProcess process;
-    process.start(QStringLiteral(GYRE_CLI_PATH), arguments);
-    CliRun run;
-    if (!process.waitForFinished(120'000)) {
-        process.kill();
-        process.waitForFinished();
-        return run;
-    }
-    run.exitedNormally = process.exitStatus() == QProcess::NormalExit;
-    run.exitCode = process.exitCode();
-    run.out = QString::fromUtf8(process.readAllStandardOutput());
-    run.err = QString::fromUtf8(process.readAllStandardError());
-    return run;
-}
-
-// A CSV file as this test reads it: header names and rows of numbers, no comments.
-struct Csv {
-    QStringList header;
-    std::vector<std::vector<double>> rows;
-    QString problem; // empty if the file read cleanly
-
-    double at(std::size_t row, const QString& column) const
-    {
-        return rows[row][static_cast<std::size_t>(header.indexOf(column))];
-    }
-    Eigen::Quaterniond quaternion(std::size_t row) const
-    {
-        return {at(row, "qw"), at(row, "qx"), at(row, "qy"), at(row, "qz")};
-    }
-    Eigen::Vector3d vector(std::size_t row, const char* a, const char* b, const char* c) const
-    {
-        return {at(row, a), at(row, b), at(row, c)};
-    }
-    Eigen::Vector3d position(std::size_t row) const { return vector(row, "x", "y", "z"); }
-    std::vector<double> times() const
-    {
-        std::vector<double> result;
-        for (std::size_t row = 0; row < rows.size(); ++row)
-            result.push_back(at(row, "time"));
-        return result;
-    }
-};
-
-Csv readCsv(const QString& path)
-{
-    Csv csv;
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        csv.problem = "cannot open " + path;
-        return csv;
-    }
-    const QStringList lines = QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
-    if (lines.isEmpty()) {
-        csv.problem = path + " is empty";
-        return csv;
-    }
-    csv.header = lines.front().split(',');
-    for (qsizetype i = 1; i < lines.size(); ++i) {
-        const QStringList fields = lines[i].split(',');
-        if (fields.size() != csv.header.size())
-            csv.problem = QStringLiteral("%1:%2: wrong field count").arg(path).arg(i + 1);
-        std::vector<double> row;
-        for (const QString& field : fields) {
-            bool ok = false;
-            row.push_back(field.toDouble(&ok));
-            if (!ok)
-                csv.problem = QStringLiteral("%1:%2: '%3' is not a number").arg(path).arg(i + 1).arg(field);
-        }
-        csv.rows.push_back(row);
-    }
-    return csv;
-}
-
-QString number(double value) { return QString::number(value, 'g', 17); }
 
 struct Key {
     double time = 0.0;
@@ -680,7 +599,7 @@ void TstCli::helpAndVersion()
 {
     const CliRun help = runCli({"--help"});
     QCOMPARE(help.exitCode, 0);
-    for (const char* verb : {"convert", "interpolate", "subdivide"}) {
+    for (const char* verb : {"convert", "interpolate", "subdivide", "fit"}) {
         QVERIFY(help.out.contains(verb));
         const CliRun verbHelp = runCli({"help", verb});
         QCOMPARE(verbHelp.exitCode, 0);
