@@ -67,9 +67,9 @@ public:
         for (std::size_t i = 1; i < normals_.size(); ++i)
             if (normals_[i].isZero())
                 normals_[i] = normals_[i - 1];
-        for (std::size_t i = normals_.size() - 1; i-- > 0;)
-            if (normals_[i].isZero())
-                normals_[i] = normals_[i + 1];
+        for (std::size_t i = normals_.size(); i-- > 1;)
+            if (normals_[i - 1].isZero())
+                normals_[i - 1] = normals_[i];
     }
 
     double length() const { return lengths_.back(); }

@@ -119,6 +119,12 @@ void TestFitTarget::patternRepeatsAlongTheCurve()
     QVERIFY(angleBetween(patterned.back().value, unitAt(1.2, 0.0)) < 1e-12);
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, applyPattern(equator, {{0.0, 0.0}, {0.0, 1.0}}, 2));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, applyPattern(equator, triangle, 0));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, applyPattern({{0.0, unitAt(0.0, 0.0)}}, triangle, 2));
+    // An arc of no length inside the curve borrows its neighbour's sideways direction.
+    const std::vector<TimedVector> withPause{
+        {0.0, unitAt(0.0, 0.0)}, {1.0, unitAt(0.0, 0.0)}, {6.0, unitAt(1.2, 0.0)}};
+    for (const TimedVector& point : applyPattern(withPause, triangle, 3))
+        QVERIFY(point.value.allFinite() && std::abs(point.value.norm() - 1.0) < 1e-14);
 }
 
 QTEST_GUILESS_MAIN(TestFitTarget)
