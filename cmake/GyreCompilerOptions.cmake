@@ -10,5 +10,9 @@ function(gyre_target_options target)
         target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer
                                                  -fno-sanitize-recover=undefined)
         target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+        # Under AddressSanitizer Eigen stops trusting malloc's 16-byte alignment and switches to its
+        # own offset allocator; Debian's Ceres, built without the sanitizer, frees Eigen storage with
+        # plain free(), so both sides must agree. glibc's and ASan's malloc align to 16 bytes.
+        target_compile_definitions(${target} PRIVATE EIGEN_MALLOC_ALREADY_ALIGNED=1)
     endif()
 endfunction()
