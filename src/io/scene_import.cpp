@@ -63,6 +63,8 @@ const aiScene& readWithAssimp(Assimp::Importer& importer, const QString& path)
     // BVH would get a stick-figure mesh on its root joint; Gyre draws each joint as an object instead.
     importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
     const aiScene* scene = importer.ReadFile(QFile::encodeName(path).toStdString(), 0);
+    if (scene && scene->mNumMeshes == 0 && scene->mNumAnimations == 0)
+        throw InputError(path, "the file holds no meshes and no animation");
     if (scene && scene->mNumMeshes == 0) {
         // A skeleton with its motion and no mesh is a whole scene to Gyre. Assimp's flag for such
         // files lets validation pass them; the importer owns the scene and allows changing it.
