@@ -1,6 +1,7 @@
 #include "io/scene_export.h"
 
 #include "io/assimp_math.h"
+#include "io/number_text.h"
 #include "model/track_evaluation.h"
 
 #include <assimp/BlobIOSystem.h>
@@ -190,7 +191,7 @@ private:
     {
         samples_ += static_cast<std::size_t>(model::bakeSampleBound(range_, object.track.keys.size()));
         if (samples_ > kMaxExportSamples)
-            throw OutputError(path_, "baking at " + std::to_string(range_.fps) + " fps gives more than " +
+            throw OutputError(path_, "baking at " + formatNumber(range_.fps) + " fps gives more than " +
                                          std::to_string(kMaxExportSamples) + " samples");
         try {
             return model::bakeTrack(object.track, range_);
