@@ -251,7 +251,7 @@ void TstTrackEvaluation::refusesKeysOutOfOrder()
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, TrackMotion{track});
     }
     MotionTrack track = randomTrack(InterpolationMethod::Slerp, {0.0, 2.0}, 23);
-    track.sketch.fittedCurve = {{1.0, {}, {}}, {0.5, {}, {}}};
+    track.sketch.fittedCurve = {HermiteControlPoint{1.0}, HermiteControlPoint{0.5}};
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, TrackMotion{track});
 }
 
