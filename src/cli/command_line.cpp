@@ -1,6 +1,5 @@
 #include "cli/command_line.h"
 
-#include "core/frame_times.h"
 #include "io/number_text.h"
 #include "io/pose_csv.h"
 
@@ -109,15 +108,13 @@ UsageError VerbCommandLine::error(std::string_view message) const
                       verb_.toStdString() + ")");
 }
 
-std::vector<double> outputFrameTimes(const std::vector<double>& keyTimes, double fps,
-                                     const VerbCommandLine& commandLine)
+model::BakeRange outputRange(const std::vector<double>& keyTimes, double fps, const VerbCommandLine& commandLine)
 {
-    std::optional<std::vector<double>> times = frameTimes(keyTimes, fps, kMaxPoseRows);
-    if (!times)
-        throw commandLine.error("--fps " + formatNumber(fps) + " over " +
-                                formatNumber(keyTimes.back() - keyTimes.front()) + " s of keys gives more than " +
-                                std::to_string(kMaxPoseRows) + " samples");
-    return std::move(*times);
+    const model::BakeRange range{keyTimes.front(), keyTimes.back(), fps};
+    if (!(model::bakeSampleBound(range, keyTimes.size()) <= static_cast<double>(kMaxPoseRows)))
+        throw commandLine.error("--fps " + formatNumber(fps) + " over " + formatNumber(range.end - range.start) +
+                                " s of keys gives more than " + std::to_string(kMaxPoseRows) + " samples");
+    return range;
 }
 
 QList<QCommandLineOption> eulerOptions()

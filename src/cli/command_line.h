@@ -4,6 +4,7 @@
 
 #include "core/euler_angles.h"
 #include "core/name_table.h"
+#include "model/track_evaluation.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -66,10 +67,9 @@ private:
     QString outputPath_;
 };
 
-// The times a verb samples a motion at for --fps: frameTimes() over the keys, or a UsageError when
-// that would be more rows than a pose file may hold.
-std::vector<double> outputFrameTimes(const std::vector<double>& keyTimes, double fps,
-                                     const VerbCommandLine& commandLine);
+// The span of the keys at --fps, for a verb that writes a motion at its frames and keys; a UsageError
+// when that would be more rows than a pose file may hold.
+model::BakeRange outputRange(const std::vector<double>& keyTimes, double fps, const VerbCommandLine& commandLine);
 
 // --order, --intrinsic and --extrinsic.
 QList<QCommandLineOption> eulerOptions();

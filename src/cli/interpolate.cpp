@@ -3,15 +3,11 @@
 #include "cli/command_line.h"
 #include "cli/verbs.h"
 #include "core/orientation_curves.h"
-#include "core/polyscrew.h"
-#include "core/frame_times.h"
-#include "core/position_curve.h"
-#include "core/timed_keys.h"
 #include "io/number_text.h"
 #include "io/pose_csv.h"
+#include "model/track_evaluation.h"
 
-#include <algorithm>
-#include <cmath>
+#include <string>
 
 namespace gyre::cli {
 
@@ -24,61 +20,17 @@ QList<QCommandLineOption> interpolateOptions()
            eulerOptions();
 }
 
-// Where a time falls among the keys: in the span from key `span` to key `span + 1`, at fraction u.
-struct SpanPosition {
-    std::size_t span = 0;
-    double u = 0.0;
-};
-
-SpanPosition spanPosition(const PoseTable& keys, double time)
+// The keys as a track; screw is the plain polyscrew through them (no subdivision, open).
+model::MotionTrack trackOf(const PoseTable& keys, InterpolationMethod method)
 {
-    const std::size_t span = segmentAt(keys.rows, time);
-    const double start = keys.rows[span].time;
-    return {span, (time - start) / (keys.rows[span + 1].time - start)};
-}
-
-std::vector<Pose> curvePoses(InterpolationMethod method, const PoseTable& keys,
-                             const std::vector<double>& times, const EulerConvention& convention)
-{
-    std::vector<OrientationKey> orientationKeys;
-    std::vector<PositionKey> positionKeys;
-    for (const PoseRow& row : keys.rows) {
-        orientationKeys.push_back({row.time, row.pose.orientation});
-        positionKeys.push_back({row.time, row.pose.position});
-    }
-    const auto curve = makeOrientationCurve(method, std::move(orientationKeys), convention);
-    const bool cubic = method == InterpolationMethod::Squad || method == InterpolationMethod::Hermite;
-    const PositionCurve positions(std::move(positionKeys), cubic ? PositionCurve::Shape::Cubic : PositionCurve::Shape::Linear);
-    std::vector<Pose> poses;
-    poses.reserve(times.size());
-    for (const double time : times)
-        poses.push_back({curve->sample(time).value, positions.at(time)});
-    return poses;
-}
-
-// The polyscrew through the keys, its parameter mapped piecewise linearly from the key times so
-// that key i sits at parameter i.
-std::vector<Pose> screwPoses(const PoseTable& keys, const std::vector<double>& times)
-{
-    std::vector<Pose> keyPoses;
+    model::MotionTrack track;
+    track.interpolation = method;
+    track.subdivision.levels = 0;
+    track.subdivision.cyclic = false;
+    track.keys.reserve(keys.rows.size());
     for (const PoseRow& row : keys.rows)
-        keyPoses.push_back(row.pose);
-    const Polyscrew motion(std::move(keyPoses), false);
-    std::vector<Pose> poses;
-    poses.reserve(times.size());
-    for (const double time : times) {
-        const auto [span, u] = spanPosition(keys, time);
-        poses.push_back(motion.at(static_cast<double>(span) + u));
-    }
-    return poses;
-}
-
-std::vector<double> timesOf(const PoseTable& table)
-{
-    std::vector<double> times;
-    for (const PoseRow& row : table.rows)
-        times.push_back(row.time);
-    return times;
+        track.keys.push_back({row.time, row.pose, true});
+    return track;
 }
 
 } // namespace
@@ -92,15 +44,11 @@ void runInterpolate(const QStringList& arguments)
     const PoseTable keys = readPoseCsv(commandLine.inputPath(), convention, TimeColumn::Required);
     if (keys.rows.size() < 2)
         throw InputError(commandLine.inputPath(), keys.rows.back().line, "interpolate needs at least two keys");
-    const std::vector<double> keyTimes = timesOf(keys);
-    const std::vector<double> times = outputFrameTimes(keyTimes, fps, commandLine);
-    const std::vector<Pose> poses = method == InterpolationMethod::Screw
-                                        ? screwPoses(keys, times)
-                                        : curvePoses(method, keys, times, convention);
+    const model::MotionTrack track = trackOf(keys, method);
+    const model::BakeRange range = outputRange(model::keyTimes(track), fps, commandLine);
     PoseTable frames{RotationColumns::Quaternion, true, true, {}};
-    frames.rows.reserve(times.size());
-    for (std::size_t k = 0; k < times.size(); ++k)
-        frames.rows.push_back({times[k], poses[k], 0});
+    for (const model::TimedPose& sample : model::bakeTrack(track, range, convention))
+        frames.rows.push_back({sample.time, sample.pose, 0});
     writePoseCsv(commandLine.outputPath(), frames);
 }
 

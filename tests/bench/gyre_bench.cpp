@@ -11,11 +11,19 @@
 #include "fit/angular_velocity_fit.h"
 #include "fit_test_support.h"
 
+#include "io/bvh_fixture.h"
+#include "io/scene_export.h"
+#include "io/scene_import.h"
+
 #include <benchmark/benchmark.h>
+
+#include <QFile>
+#include <QTemporaryDir>
 
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 namespace {
@@ -188,6 +196,39 @@ void BM_Fit(benchmark::State& state)
     state.counters["largest_F_n"] = result.largestFragmentError;
 }
 BENCHMARK(BM_Fit)->Arg(20)->Arg(85)->Unit(benchmark::kMillisecond);
+
+// A motion-capture file the size of CMU's 01_03.bvh: 31 joints, 4500 frames at 120 Hz, 139,500
+// rotation keys. Written once, into a folder removed at exit.
+const QString& largeBvh()
+{
+    static QTemporaryDir folder;
+    static const QString path = [] {
+        const QString file = folder.filePath(QStringLiteral("large.bvh"));
+        QFile out(file);
+        if (!out.open(QIODevice::WriteOnly) || out.write(gyre::test::bvhChain(31, 4500, 1.0 / 120.0)) < 0)
+            throw std::runtime_error("cannot write the BVH fixture");
+        return file;
+    }();
+    return path;
+}
+
+void BM_ImportBvh(benchmark::State& state)
+{
+    for (auto _ : state)
+        benchmark::DoNotOptimize(gyre::importScene(largeBvh()));
+}
+BENCHMARK(BM_ImportBvh)->Unit(benchmark::kMillisecond);
+
+// The imported motion baked at 120 fps (every key a frame) and written as glb.
+void BM_ExportGlb(benchmark::State& state)
+{
+    const gyre::model::Scene scene = gyre::importScene(largeBvh()).scene;
+    QTemporaryDir folder;
+    const QString path = folder.filePath(QStringLiteral("large.glb"));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(gyre::exportScene(scene, path, gyre::SceneFormat::Glb, 120.0));
+}
+BENCHMARK(BM_ExportGlb)->Unit(benchmark::kMillisecond);
 
 } // namespace
 

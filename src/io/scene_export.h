@@ -1,0 +1,57 @@
+#pragma once
+// Scenes with their motion to glTF 2.0 (.gltf with its .bin, or .glb), Collada (.dae) and FBX
+// (.fbx), through Assimp's exporters; OBJ (.obj with its .mtl) for the meshes alone.
+//
+// Each object becomes a node under one root, with its parent kept, its mesh and its local transform
+// at the scene's start time. The motion is baked: every object's track is sampled at the frames
+// start + k/fps up to the scene's end and at each of its key times (model::bakeTrack), so every
+// interpolation and every fit plays the same after import, where each sample is a key.
+//
+// FBX is written as ASCII FBX: Assimp 5.2's binary FBX writer makes files that its own reader
+// rejects (assimp issue #4686). OBJ keeps no motion: the meshes are written posed at the start time,
+// and the report says so.
+
+#include "core/name_table.h"
+#include "io/input_error.h"
+#include "model/scene.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <cstddef>
+#include <optional>
+
+namespace gyre {
+
+enum class SceneFormat { Gltf, Glb, Collada, Fbx, Obj };
+
+// The names are the file extensions.
+inline constexpr NameTable<SceneFormat, 5> kSceneFormatNames{{
+    {SceneFormat::Gltf, "gltf"},
+    {SceneFormat::Glb, "glb"},
+    {SceneFormat::Collada, "dae"},
+    {SceneFormat::Fbx, "fbx"},
+    {SceneFormat::Obj, "obj"},
+}};
+
+// The format a path's extension names, ignoring case; nullopt for any other extension.
+std::optional<SceneFormat> sceneFormatOfPath(const QString& path);
+
+bool keepsMotion(SceneFormat format);
+
+// The most samples an export bakes, over all objects: 2²⁴.
+inline constexpr std::size_t kMaxExportSamples = std::size_t{1} << 24;
+
+struct ExportReport {
+    QStringList files;    // every file written: the .gltf's .bin and the .obj's .mtl come first
+    QStringList warnings; // what the file could not keep
+};
+
+// Writes the scene to `path` in `format`, its motion baked at `fps` over [startTime, endTime]. Each
+// file is written whole through a temporary file in its folder and renamed (QSaveFile): on an error
+// a file already at that path keeps its contents. Throws OutputError, naming the file, when fps is
+// not finite and positive, the range is empty or gives more than kMaxExportSamples samples, a track
+// cannot be evaluated, Assimp fails, or a file cannot be written.
+ExportReport exportScene(const model::Scene& scene, const QString& path, SceneFormat format, double fps);
+
+} // namespace gyre

@@ -1,0 +1,461 @@
+#include "io/scene_import.h"
+
+#include "io/assimp_math.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <QFile>
+#include <QFileInfo>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <unordered_map>
+#include <utility>
+
+namespace gyre {
+
+namespace {
+
+using assimp_math::toEigen;
+
+// Steps that make meshes displayable and refuse inconsistent data. None of them touches node
+// animation; steps that would (PreTransformVertices, OptimizeGraph, MakeLeftHanded, GlobalScale) are
+// left out on purpose.
+constexpr unsigned kPostProcessing = aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+                                     aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
+
+// Scales closer than this, relatively, count as equal: files from 3ds Max carry scales such as
+// (1.00005, 1.00004, 1) that are single-precision noise, not intent.
+constexpr double kScaleTolerance = 1e-3;
+
+QString nameOf(const aiString& name) { return QString::fromUtf8(name.data, static_cast<qsizetype>(name.length)); }
+
+std::string_view viewOf(const aiString& name) { return {name.data, name.length}; }
+
+void requireReadableFile(const QString& path)
+{
+    const QFileInfo info(path);
+    if (!info.exists())
+        throw InputError(path, "no such file");
+    if (info.isDir())
+        throw InputError(path, "is a directory, not a scene file");
+    if (!info.isReadable())
+        throw InputError(path, "cannot be read (permission denied)");
+    if (info.size() == 0)
+        throw InputError(path, "the file is empty");
+}
+
+const aiScene& readWithAssimp(Assimp::Importer& importer, const QString& path)
+{
+    // Without pivots FBX gives one node per model instead of a chain of $AssimpFbx$ helper nodes.
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);
+    // BVH would get a stick-figure mesh on its root joint; Gyre draws each joint as an object instead.
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
+    const aiScene* scene = importer.ReadFile(QFile::encodeName(path).toStdString(), 0);
+    if (scene && scene->mNumMeshes == 0 && scene->mNumAnimations == 0)
+        throw InputError(path, "the file holds no meshes and no animation");
+    if (scene && scene->mNumMeshes == 0) {
+        // A skeleton with its motion and no mesh is a whole scene to Gyre. Assimp's flag for such
+        // files lets validation pass them; the importer owns the scene and allows changing it.
+        const_cast<aiScene*>(scene)->mFlags |= AI_SCENE_FLAGS_INCOMPLETE;
+    }
+    if (scene)
+        scene = importer.ApplyPostProcessing(kPostProcessing);
+    if (!scene)
+        throw InputError(path, "not a scene Gyre can read: " + std::string(importer.GetErrorString()));
+    if (!scene->mRootNode)
+        throw InputError(path, "the file holds no scene nodes");
+    return *scene;
+}
+
+double ticksPerSecond(const aiAnimation& animation)
+{
+    const double ticks = animation.mTicksPerSecond;
+    return std::isfinite(ticks) && ticks > 0.0 ? ticks : kDefaultTicksPerSecond;
+}
+
+std::vector<AnimationSummary> summariesOf(const aiScene& scene)
+{
+    std::vector<AnimationSummary> summaries;
+    for (unsigned i = 0; i < scene.mNumAnimations; ++i) {
+        const aiAnimation& animation = *scene.mAnimations[i];
+        summaries.push_back({nameOf(animation.mName), animation.mDuration / ticksPerSecond(animation),
+                             animation.mNumChannels});
+    }
+    return summaries;
+}
+
+// --- keys -------------------------------------------------------------------------------------------
+
+
+bool isFinite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+bool isFinite(const aiQuaternion& q)
+{
+    return std::isfinite(q.w) && std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z);
+}
+
+// "" when the keys are finite, rotations nonzero and times strictly increasing; else what is wrong.
+template <class Key>
+std::string keyProblem(const Key* keys, unsigned count, std::string_view kind)
+{
+    for (unsigned i = 0; i < count; ++i) {
+        const std::string key = std::string(kind) + " key " + std::to_string(i);
+        if (!std::isfinite(keys[i].mTime) || !isFinite(keys[i].mValue))
+            return key + " is not finite";
+        if constexpr (std::is_same_v<Key, aiQuatKey>) {
+            if (toEigen(keys[i].mValue).squaredNorm() == 0.0)
+                return key + " is not a rotation (a zero quaternion)";
+        }
+        if (i > 0 && !(keys[i].mTime > keys[i - 1].mTime))
+            return key + " is not after the key before it";
+    }
+    return {};
+}
+
+// A node's local transform split into the parts Gyre keeps: a rigid pose and a scale.
+struct NodeTransform {
+    Pose pose;
+    Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+};
+
+NodeTransform decompose(const aiMatrix4x4& matrix)
+{
+    aiVector3D scale;
+    aiQuaternion rotation;
+    aiVector3D position;
+    matrix.Decompose(scale, rotation, position);
+    return {{toEigen(rotation).normalized(), toEigen(position)}, toEigen(scale)};
+}
+
+// Where a key sequence is at `ticks`, given the index `next` of its first key after `ticks`: held
+// before the first and after the last key, interpolated in between by `blend(a, b, u)`.
+template <class Key, class Blend>
+auto valueBetween(const Key* keys, unsigned count, unsigned next, double ticks, Blend blend)
+{
+    if (next == 0)
+        return toEigen(keys[0].mValue);
+    if (next == count)
+        return toEigen(keys[count - 1].mValue);
+    const Key& before = keys[next - 1];
+    const Key& after = keys[next];
+    return blend(toEigen(before.mValue), toEigen(after.mValue), (ticks - before.mTime) / (after.mTime - before.mTime));
+}
+
+Eigen::Quaterniond rotationAt(const aiNodeAnim& channel, unsigned next, double ticks)
+{
+    const auto slerp = [](const Eigen::Quaterniond& a, const Eigen::Quaterniond& b, double u) {
+        return a.normalized().slerp(u, b.normalized()); // the short arc, as aiQuaternion::Interpolate
+    };
+    return valueBetween(channel.mRotationKeys, channel.mNumRotationKeys, next, ticks, slerp).normalized();
+}
+
+Eigen::Vector3d positionAt(const aiNodeAnim& channel, unsigned next, double ticks)
+{
+    const auto lerp = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b, double u) -> Eigen::Vector3d {
+        return a + u * (b - a);
+    };
+    return valueBetween(channel.mPositionKeys, channel.mNumPositionKeys, next, ticks, lerp);
+}
+
+// The keyframes of an animated node at the union of its rotation and position key times. Each
+// file key keeps its value; the other value comes from rotationAt or positionAt. A value the channel
+// does not animate is the node's own.
+std::vector<model::Keyframe> keyframesOf(const aiNodeAnim& channel, double ticksPerSecond, const Pose& nodePose,
+                                         double positionScale)
+{
+    const unsigned rotations = channel.mNumRotationKeys;
+    const unsigned positions = channel.mNumPositionKeys;
+    std::vector<model::Keyframe> keys;
+    keys.reserve(std::size_t{rotations} + positions);
+    unsigned r = 0;
+    unsigned p = 0;
+    constexpr double kNever = std::numeric_limits<double>::infinity();
+    while (r < rotations || p < positions) {
+        const double ticks = std::min(r < rotations ? channel.mRotationKeys[r].mTime : kNever,
+                                      p < positions ? channel.mPositionKeys[p].mTime : kNever);
+        Pose pose = nodePose;
+        if (rotations > 0) {
+            const bool atKey = r < rotations && channel.mRotationKeys[r].mTime == ticks;
+            pose.orientation = atKey ? toEigen(channel.mRotationKeys[r++].mValue).normalized()
+                                     : rotationAt(channel, r, ticks);
+        }
+        if (positions > 0) {
+            const bool atKey = p < positions && channel.mPositionKeys[p].mTime == ticks;
+            pose.position = atKey ? toEigen(channel.mPositionKeys[p++].mValue) : positionAt(channel, p, ticks);
+        }
+        pose.position *= positionScale;
+        keys.push_back({ticks / ticksPerSecond, pose, true});
+    }
+    return keys;
+}
+
+// --- meshes -----------------------------------------------------------------------------------------
+
+// The meshes of a node, merged and scaled: positions by s, normals by the inverse transpose s⁻¹.
+class MeshConverter {
+public:
+    explicit MeshConverter(const aiScene& scene) : scene_(scene) {}
+
+    std::shared_ptr<const model::Mesh> meshOf(const aiNode& node, const Eigen::Vector3d& scale, QStringList& warnings)
+    {
+        if (node.mNumMeshes == 0)
+            return nullptr;
+        Key key{std::vector<unsigned>(node.mMeshes, node.mMeshes + node.mNumMeshes), {scale.x(), scale.y(), scale.z()}};
+        auto [entry, isNew] = converted_.try_emplace(std::move(key));
+        if (isNew)
+            entry->second = merged(node, scale, warnings);
+        return entry->second;
+    }
+
+private:
+    // Nodes that hold the same meshes at the same scale share one Mesh.
+    using Key = std::pair<std::vector<unsigned>, std::array<double, 3>>;
+
+    std::shared_ptr<const model::Mesh> merged(const aiNode& node, const Eigen::Vector3d& scale, QStringList& warnings)
+    {
+        auto mesh = std::make_shared<model::Mesh>();
+        bool allHaveNormals = true;
+        for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+            const aiMesh& part = *scene_.mMeshes[node.mMeshes[i]];
+            if (!(part.mPrimitiveTypes & aiPrimitiveType_TRIANGLE))
+                continue; // points and lines: nothing to shade
+            if (part.mNumBones > 0 && skinnedWarned_.insert(node.mMeshes[i]).second)
+                warnings << QStringLiteral("mesh '%1' is skinned; skinning is not imported, so it shows in its bind pose")
+                                .arg(nameOf(part.mName));
+            allHaveNormals = allHaveNormals && part.mNormals;
+            append(part, scale, *mesh);
+        }
+        if (!allHaveNormals)
+            mesh->normals.clear();
+        if (mesh->indices.empty())
+            return nullptr;
+        return mesh;
+    }
+
+    static void append(const aiMesh& part, const Eigen::Vector3d& scale, model::Mesh& mesh)
+    {
+        const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+        const Eigen::Vector3f positionScale = scale.cast<float>();
+        const Eigen::Vector3f normalScale = scale.cwiseInverse().cast<float>();
+        for (unsigned v = 0; v < part.mNumVertices; ++v) {
+            mesh.positions.push_back(toEigen(part.mVertices[v]).cast<float>().cwiseProduct(positionScale));
+            if (part.mNormals)
+                mesh.normals.push_back(toEigen(part.mNormals[v]).cast<float>().cwiseProduct(normalScale).normalized());
+        }
+        for (unsigned f = 0; f < part.mNumFaces; ++f) {
+            const aiFace& face = part.mFaces[f];
+            if (face.mNumIndices == 3)
+                for (unsigned k = 0; k < 3; ++k)
+                    mesh.indices.push_back(base + face.mIndices[k]);
+        }
+    }
+
+    const aiScene& scene_;
+    std::map<Key, std::shared_ptr<const model::Mesh>> converted_;
+    std::set<unsigned> skinnedWarned_;
+};
+
+// --- nodes ------------------------------------------------------------------------------------------
+
+bool isUniform(const Eigen::Vector3d& scale)
+{
+    return (scale.maxCoeff() - scale.minCoeff()) <= kScaleTolerance * scale.cwiseAbs().maxCoeff();
+}
+
+// Builds the scene from the node tree, depth first so that parents come before children.
+class SceneBuilder {
+public:
+    SceneBuilder(const QString& path, const aiScene& scene, const aiAnimation* animation, SceneImport& result)
+        : path_(path)
+        , meshes_(scene)
+        , animation_(animation)
+        , result_(result)
+    {
+        if (animation_)
+            indexChannels();
+    }
+
+    void build(const aiNode& root)
+    {
+        struct Pending {
+            const aiNode* node;
+            model::ObjectId parent;
+            double inheritedScale; // the uniform scale of the ancestors, baked into this node
+        };
+        std::vector<Pending> pending;
+        const auto pushChildren = [&pending](const aiNode& node, model::ObjectId parent, double scale) {
+            for (unsigned i = node.mNumChildren; i-- > 0;)
+                pending.push_back({node.mChildren[i], parent, scale});
+        };
+        if (carriesNothing(root))
+            pushChildren(root, model::kNoObject, 1.0);
+        else
+            pending.push_back({&root, model::kNoObject, 1.0});
+        while (!pending.empty()) {
+            const Pending next = pending.back();
+            pending.pop_back();
+            const auto [id, childScale] = addObject(*next.node, next.parent, next.inheritedScale);
+            pushChildren(*next.node, id, childScale);
+        }
+        reportUnusedChannels();
+    }
+
+private:
+    void indexChannels()
+    {
+        for (unsigned i = 0; i < animation_->mNumChannels; ++i) {
+            const aiNodeAnim& channel = *animation_->mChannels[i];
+            if (!channels_.try_emplace(viewOf(channel.mNodeName), &channel).second)
+                result_.warnings << QStringLiteral("node '%1' has more than one channel; the first is used")
+                                        .arg(nameOf(channel.mNodeName));
+        }
+    }
+
+    const aiNodeAnim* channelOf(const aiNode& node) const
+    {
+        const auto found = channels_.find(viewOf(node.mName));
+        return found == channels_.end() ? nullptr : found->second;
+    }
+
+    bool carriesNothing(const aiNode& node) const
+    {
+        return node.mNumMeshes == 0 && node.mTransformation.IsIdentity() && !channelOf(node);
+    }
+
+    // Adds the object of `node`; returns its id and the uniform scale its children inherit.
+    std::pair<model::ObjectId, double> addObject(const aiNode& node, model::ObjectId parent, double inheritedScale)
+    {
+        model::SceneObject object;
+        object.id = result_.scene.nextObjectId++;
+        object.name = nameOf(node.mName);
+        object.parent = parent;
+        const NodeTransform transform = decompose(node.mTransformation);
+        const aiNodeAnim* channel = channelOf(node);
+        Eigen::Vector3d scale = transform.scale;
+        if (channel) {
+            used_.insert(viewOf(node.mName));
+            object.track.keys = animatedKeys(node, *channel, transform.pose, inheritedScale);
+            scale = animatedScale(node, *channel, scale);
+        } else {
+            Pose pose = transform.pose;
+            pose.position *= inheritedScale;
+            object.track.keys = {{0.0, pose, true}};
+        }
+        object.track.interpolation = InterpolationMethod::Slerp;
+        object.mesh = meshes_.meshOf(node, inheritedScale * scale, result_.warnings);
+        if (!isUniform(scale) && node.mNumChildren > 0)
+            result_.warnings << QStringLiteral("node '%1' has a non-uniform scale; its children get the mean scale")
+                                    .arg(object.name);
+        const double childScale = inheritedScale * std::cbrt(scale.prod());
+        result_.scene.objects.push_back(std::move(object));
+        return {result_.scene.objects.back().id, childScale};
+    }
+
+    std::vector<model::Keyframe> animatedKeys(const aiNode& node, const aiNodeAnim& channel, const Pose& nodePose,
+                                              double positionScale) const
+    {
+        std::string problem = keyProblem(channel.mRotationKeys, channel.mNumRotationKeys, "rotation");
+        if (problem.empty())
+            problem = keyProblem(channel.mPositionKeys, channel.mNumPositionKeys, "position");
+        if (!problem.empty())
+            throw InputError(path_, "node '" + std::string(viewOf(node.mName)) + "': " + problem);
+        return keyframesOf(channel, ticksPerSecond(*animation_), nodePose, positionScale);
+    }
+
+    // The first scaling key, or the node's own scale when the channel has none.
+    Eigen::Vector3d animatedScale(const aiNode& node, const aiNodeAnim& channel, const Eigen::Vector3d& nodeScale)
+    {
+        if (channel.mNumScalingKeys == 0)
+            return nodeScale;
+        const std::string problem = keyProblem(channel.mScalingKeys, channel.mNumScalingKeys, "scaling");
+        if (!problem.empty())
+            throw InputError(path_, "node '" + std::string(viewOf(node.mName)) + "': " + problem);
+        const Eigen::Vector3d first = toEigen(channel.mScalingKeys[0].mValue);
+        for (unsigned i = 1; i < channel.mNumScalingKeys; ++i)
+            if ((toEigen(channel.mScalingKeys[i].mValue) - first).norm() > kScaleTolerance * first.norm()) {
+                result_.warnings << QStringLiteral("node '%1': its scale changes over time; Gyre's motion is rigid, "
+                                                   "so the scale of its first key is kept")
+                                        .arg(nameOf(node.mName));
+                break;
+            }
+        return first;
+    }
+
+    void reportUnusedChannels()
+    {
+        for (const auto& [name, channel] : channels_)
+            if (!used_.contains(name))
+                result_.warnings << QStringLiteral("the animation moves '%1', which is not in the scene")
+                                        .arg(nameOf(channel->mNodeName));
+    }
+
+    const QString& path_;
+    MeshConverter meshes_;
+    const aiAnimation* animation_;
+    SceneImport& result_;
+    std::unordered_map<std::string_view, const aiNodeAnim*> channels_;
+    std::set<std::string_view> used_;
+};
+
+const aiAnimation* chosenAnimation(const QString& path, const aiScene& scene, const ImportOptions& options)
+{
+    if (scene.mNumAnimations == 0)
+        return nullptr;
+    if (options.animationIndex >= scene.mNumAnimations)
+        throw InputError(path, "the file has " + std::to_string(scene.mNumAnimations) + " animations; there is no animation " +
+                                   std::to_string(options.animationIndex));
+    return scene.mAnimations[options.animationIndex];
+}
+
+void warnAboutWhatIsLeftOut(const aiScene& scene, const aiAnimation* animation, QStringList& warnings)
+{
+    if (animation && (animation->mNumMeshChannels > 0 || animation->mNumMorphMeshChannels > 0))
+        warnings << QStringLiteral("mesh and morph animation is not imported; only node motion is");
+    if (scene.mNumCameras > 0 || scene.mNumLights > 0)
+        warnings << QStringLiteral("cameras and lights are not imported");
+}
+
+// The span of the motion: from the earliest key to the latest key or the animation's end.
+void setTimeRange(const aiAnimation& animation, model::Scene& scene)
+{
+    double start = std::numeric_limits<double>::infinity();
+    double end = animation.mDuration / ticksPerSecond(animation);
+    for (const model::SceneObject& object : scene.objects) {
+        start = std::min(start, object.track.keys.front().time);
+        end = std::max(end, object.track.keys.back().time);
+    }
+    scene.startTime = std::isfinite(start) ? start : 0.0;
+    scene.endTime = std::max(end, scene.startTime);
+    scene.currentTime = scene.startTime;
+}
+
+} // namespace
+
+SceneImport importScene(const QString& path, const ImportOptions& options)
+{
+    requireReadableFile(path);
+    Assimp::Importer importer;
+    const aiScene& scene = readWithAssimp(importer, path);
+    const aiAnimation* animation = chosenAnimation(path, scene, options);
+    SceneImport result;
+    result.animations = summariesOf(scene);
+    warnAboutWhatIsLeftOut(scene, animation, result.warnings);
+    SceneBuilder(path, scene, animation, result).build(*scene.mRootNode);
+    if (animation)
+        setTimeRange(*animation, result.scene);
+    return result;
+}
+
+} // namespace gyre

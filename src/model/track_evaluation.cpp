@@ -1,0 +1,213 @@
+#include "model/track_evaluation.h"
+
+#include "core/polyscrew.h"
+#include "core/position_curve.h"
+#include "core/subdivision.h"
+#include "core/timed_keys.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace gyre::model {
+
+namespace detail {
+
+// The motion through a track's keys, without its fit.
+class KeyedMotion {
+public:
+    virtual ~KeyedMotion() = default;
+    virtual Pose at(double time) const = 0;
+
+protected:
+    KeyedMotion() = default;
+    KeyedMotion(const KeyedMotion&) = default;
+    KeyedMotion& operator=(const KeyedMotion&) = default;
+};
+
+} // namespace detail
+
+namespace {
+
+bool hasCubicPositions(InterpolationMethod method)
+{
+    return method == InterpolationMethod::Squad || method == InterpolationMethod::Hermite;
+}
+
+// An orientation curve with positions to go with it.
+class CurveMotion final : public detail::KeyedMotion {
+public:
+    CurveMotion(const MotionTrack& track, const EulerConvention& eulerConvention)
+        : orientations_(makeOrientationCurve(track.interpolation, orientationKeys(track), eulerConvention))
+        , positions_(positionKeys(track), hasCubicPositions(track.interpolation) ? PositionCurve::Shape::Cubic
+                                                                                 : PositionCurve::Shape::Linear)
+    {
+    }
+
+    Pose at(double time) const override { return {orientations_->sample(time).value, positions_.at(time)}; }
+
+private:
+    static std::vector<OrientationKey> orientationKeys(const MotionTrack& track)
+    {
+        std::vector<OrientationKey> keys;
+        keys.reserve(track.keys.size());
+        for (const Keyframe& key : track.keys)
+            keys.push_back({key.time, key.pose.orientation});
+        return keys;
+    }
+
+    static std::vector<PositionKey> positionKeys(const MotionTrack& track)
+    {
+        std::vector<PositionKey> keys;
+        keys.reserve(track.keys.size());
+        for (const Keyframe& key : track.keys)
+            keys.push_back({key.time, key.pose.position});
+        return keys;
+    }
+
+    std::unique_ptr<OrientationCurve> orientations_;
+    PositionCurve positions_;
+};
+
+// The subdivided polyscrew through the key poses, with time mapped to its parameter.
+class ScrewMotion final : public detail::KeyedMotion {
+public:
+    explicit ScrewMotion(const MotionTrack& track)
+        : keys_(track.keys)
+        , cyclic_(track.subdivision.cyclic)
+        , motion_(subdividePolyscrew(posesOf(track), track.subdivision), track.subdivision.cyclic,
+                  std::size_t{1} << track.subdivision.levels)
+    {
+        requireIncreasingTimes(keys_);
+        if (keys_.size() > 1)
+            closingSpan_ = (keys_.back().time - keys_.front().time) / static_cast<double>(keys_.size() - 1);
+    }
+
+    Pose at(double time) const override { return motion_.at(parameterAt(time)); }
+
+private:
+    static std::vector<Pose> posesOf(const MotionTrack& track)
+    {
+        std::vector<Pose> poses;
+        poses.reserve(track.keys.size());
+        for (const Keyframe& key : track.keys)
+            poses.push_back(key.pose);
+        return poses;
+    }
+
+    // Key i at parameter i, linear in between; the closing span of a cycle after the last key.
+    double parameterAt(double time) const
+    {
+        if (keys_.size() == 1)
+            return 0.0;
+        const double first = keys_.front().time;
+        if (cyclic_) {
+            const double period = closingSpan_ * static_cast<double>(keys_.size());
+            time = first + std::fmod(time - first, period);
+            if (time < first)
+                time += period;
+            if (time >= keys_.back().time)
+                return static_cast<double>(keys_.size() - 1) + (time - keys_.back().time) / closingSpan_;
+        }
+        const std::size_t span = segmentAt(keys_, time);
+        const double start = keys_[span].time;
+        return static_cast<double>(span) + (time - start) / (keys_[span + 1].time - start);
+    }
+
+    std::vector<Keyframe> keys_;
+    bool cyclic_;
+    double closingSpan_ = 0.0; // the mean span: the closing span's length in a cycle
+    Polyscrew motion_;
+};
+
+std::unique_ptr<const detail::KeyedMotion> keyedMotion(const MotionTrack& track, const EulerConvention& eulerConvention)
+{
+    if (track.keys.empty())
+        return nullptr;
+    if (track.interpolation == InterpolationMethod::Screw) {
+        if (track.subdivision.levels < 0 || track.subdivision.levels >= 32)
+            throw std::invalid_argument("subdivision levels must be between 0 and 31");
+        return std::make_unique<ScrewMotion>(track);
+    }
+    return std::make_unique<CurveMotion>(track, eulerConvention);
+}
+
+std::optional<HermiteQuaternionSpline> fittedSpline(const SketchState& sketch)
+{
+    if (sketch.fittedCurve.empty())
+        return std::nullopt;
+    return HermiteQuaternionSpline(sketch.fittedCurve);
+}
+
+} // namespace
+
+TrackMotion::TrackMotion(const MotionTrack& track, const EulerConvention& eulerConvention)
+    : keyed_(keyedMotion(track, eulerConvention))
+    , fitted_(fittedSpline(track.sketch))
+{
+}
+
+TrackMotion::~TrackMotion() = default;
+TrackMotion::TrackMotion(TrackMotion&&) noexcept = default;
+TrackMotion& TrackMotion::operator=(TrackMotion&&) noexcept = default;
+
+Pose TrackMotion::at(double time) const
+{
+    Pose pose = keyed_ ? keyed_->at(time) : Pose{};
+    if (fitted_ && time >= fitted_->startTime() && time <= fitted_->endTime())
+        pose.orientation = fitted_->sample(time).value;
+    return pose;
+}
+
+double bakeSampleBound(const BakeRange& range, std::size_t keyCount)
+{
+    // One frame more than the product promises, in case rounding put it just below a whole number.
+    return std::floor((range.end - range.start) * range.fps) + 2.0 + static_cast<double>(keyCount);
+}
+
+std::vector<double> bakeTimes(const std::vector<double>& keyTimes, const BakeRange& range)
+{
+    if (!(std::isfinite(range.fps) && range.fps > 0.0))
+        throw std::invalid_argument("a bake needs a finite frame rate above zero");
+    if (!(std::isfinite(range.start) && std::isfinite(range.end) && range.start <= range.end))
+        throw std::invalid_argument("a bake needs a finite range whose start is not after its end");
+    const double frames = bakeSampleBound(range, 0);
+    auto key = std::lower_bound(keyTimes.begin(), keyTimes.end(), range.start);
+    const auto keysEnd = std::upper_bound(key, keyTimes.end(), range.end);
+    std::vector<double> times;
+    times.reserve(static_cast<std::size_t>(frames) + static_cast<std::size_t>(keysEnd - key));
+    for (std::size_t k = 0; k < static_cast<std::size_t>(frames); ++k) {
+        const double time = range.start + static_cast<double>(k) / range.fps;
+        while (key != keysEnd && *key < time - kKeyMergeSeconds)
+            times.push_back(*key++);
+        const bool atKey = key != keysEnd && std::abs(*key - time) <= kKeyMergeSeconds;
+        if (!atKey && time <= range.end)
+            times.push_back(time);
+    }
+    times.insert(times.end(), key, keysEnd);
+    return times;
+}
+
+std::vector<double> keyTimes(const MotionTrack& track)
+{
+    std::vector<double> times;
+    times.reserve(track.keys.size());
+    for (const Keyframe& key : track.keys)
+        times.push_back(key.time);
+    return times;
+}
+
+std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range,
+                                 const EulerConvention& eulerConvention)
+{
+    const TrackMotion motion(track, eulerConvention);
+    const std::vector<double> times = bakeTimes(keyTimes(track), range);
+    std::vector<TimedPose> poses;
+    poses.reserve(times.size());
+    for (const double time : times)
+        poses.push_back({time, motion.at(time)});
+    return poses;
+}
+
+} // namespace gyre::model

@@ -1,0 +1,82 @@
+#pragma once
+// The motion of a track as the project evaluates it: its pose at any time, and a bake at a frame rate.
+//
+// - slerp, nlerp, euler: that orientation curve through the keys, positions linear;
+//   squad, hermite: that orientation curve, positions cubic (PositionCurve::Shape::Cubic).
+//   Before the first key and after the last the end pose is held.
+// - screw: ScrewBender's motion. The key poses are subdivided with track.subdivision and joined by
+//   screws (a polyscrew); time maps piecewise linearly to the polyscrew's parameter, key i at
+//   parameter i. An open track holds its end poses outside the keys. A cyclic track repeats forever:
+//   its closing span, from the last key back to the first, lasts the mean of the other spans (as
+//   `gyre-cli subdivide` times a cycle), so the period is T = n·(tₙ₋₁ − t₀)/(n − 1) for n keys and
+//   time t plays as t₀ + ((t − t₀) mod T), before t₀ as well as after.
+// - A fit (track.sketch.fittedCurve non-empty) gives the orientation inside the span of its control
+//   points, by the normalised HermiteQuaternionSpline through them; outside, and for positions, the
+//   interpolation above.
+// A track without keys stays at the identity pose.
+
+#include "core/euler_angles.h"
+#include "core/orientation_curves.h"
+#include "core/pose.h"
+#include "model/scene.h"
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace gyre::model {
+
+namespace detail {
+class KeyedMotion;
+}
+
+class TrackMotion {
+public:
+    // Built once, evaluated at many times. Throws std::invalid_argument for key or control-point
+    // times that do not strictly increase, or a subdivision too large to hold. The convention is
+    // the one the euler interpolation uses.
+    explicit TrackMotion(const MotionTrack& track, const EulerConvention& eulerConvention = {});
+    ~TrackMotion();
+    TrackMotion(TrackMotion&&) noexcept;
+    TrackMotion& operator=(TrackMotion&&) noexcept;
+
+    Pose at(double time) const;
+
+private:
+    std::unique_ptr<const detail::KeyedMotion> keyed_; // null for a track without keys
+    std::optional<HermiteQuaternionSpline> fitted_;
+};
+
+// A frame within this many seconds of a key gives way to the key: the key time is sampled, not a
+// near-duplicate a rounding error away.
+inline constexpr double kKeyMergeSeconds = 1e-9;
+
+// Frames at start + k/fps up to end (both in seconds, fps > 0).
+struct BakeRange {
+    double start = 0.0;
+    double end = 0.0;
+    double fps = 24.0;
+};
+
+// At least as many samples as bakeTimes gives for `keyCount` keys: the caller's check against a limit
+// before anything is allocated. Infinite or NaN for a range that is not finite.
+double bakeSampleBound(const BakeRange& range, std::size_t keyCount);
+
+// The frames of the range merged with the key times inside it, increasing; a frame within
+// kKeyMergeSeconds of a key gives way to it. Key times must increase. Throws std::invalid_argument
+// unless fps is finite and positive and start ≤ end, both finite.
+std::vector<double> bakeTimes(const std::vector<double>& keyTimes, const BakeRange& range);
+
+struct TimedPose {
+    double time = 0.0;
+    Pose pose;
+};
+
+// The track's poses at bakeTimes(its key times, range).
+std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range,
+                                 const EulerConvention& eulerConvention = {});
+
+std::vector<double> keyTimes(const MotionTrack& track);
+
+} // namespace gyre::model

@@ -1,0 +1,298 @@
+// Track evaluation: each interpolation through its keys, the screw motion against the SE(3) geodesic
+// and the subdivided poses, the fit's window, and the bake's sample times.
+
+#include "core/core_test_support.h"
+#include "core/subdivision.h"
+#include "model/track_evaluation.h"
+
+#include <QObject>
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+using namespace gyre;
+using namespace gyre::model;
+using namespace gyre::test;
+
+namespace {
+
+constexpr double kTolerance = 1e-9;
+
+MotionTrack randomTrack(InterpolationMethod method, const std::vector<double>& times, std::uint64_t seed)
+{
+    Random random(seed);
+    MotionTrack track;
+    track.interpolation = method;
+    for (const double time : times)
+        track.keys.push_back({time, random.pose(5.0), true});
+    return track;
+}
+
+Pose fromMatrix(const Eigen::Matrix4d& m)
+{
+    return {Eigen::Quaterniond(Eigen::Matrix3d(m.topLeftCorner<3, 3>())), m.topRightCorner<3, 1>()};
+}
+
+// The normalised cubic Hermite curve in R⁴ between two control points, written out:
+// p(u) = h₀₀q₀ + h₁₀Δm₀ + h₀₁q₁ + h₁₁Δm₁.
+Eigen::Quaterniond hermite(const HermiteControlPoint& a, const HermiteControlPoint& b, double time)
+{
+    const double span = b.time - a.time;
+    const double u = (time - a.time) / span;
+    const double h00 = 2 * u * u * u - 3 * u * u + 1;
+    const double h10 = u * u * u - 2 * u * u + u;
+    const double h01 = -2 * u * u * u + 3 * u * u;
+    const double h11 = u * u * u - u * u;
+    Eigen::Quaterniond q;
+    q.coeffs() = h00 * a.value.coeffs() + h10 * span * a.derivative.coeffs() + h01 * b.value.coeffs() +
+                 h11 * span * b.derivative.coeffs();
+    return q.normalized();
+}
+
+} // namespace
+
+class TstTrackEvaluation : public QObject {
+    Q_OBJECT
+
+private slots:
+    void passesThroughItsKeys_data();
+    void passesThroughItsKeys();
+    void linearAndCubicPositions_data();
+    void linearAndCubicPositions();
+    void slerpBetweenKeys();
+    void holdsTheEndsOutsideTheKeys();
+    void screwWithoutSubdivisionIsThePlainPolyscrew();
+    void cyclicScrewClosesAndRepeats();
+    void subdividedScrewPlaysTheSubdividedPoses();
+    void fittedCurveOverridesOnlyItsWindow();
+    void trackWithoutKeysStaysAtIdentity();
+    void refusesKeysOutOfOrder();
+    void bakeSamplesFramesAndKeys();
+    void bakeTrackGivesThePosesAtItsTimes();
+    void bakeRefusesBadRanges();
+};
+
+void TstTrackEvaluation::passesThroughItsKeys_data()
+{
+    QTest::addColumn<int>("method");
+    QTest::addColumn<int>("levels");
+    QTest::addColumn<bool>("cyclic");
+    QTest::newRow("slerp") << int(InterpolationMethod::Slerp) << 0 << false;
+    QTest::newRow("nlerp") << int(InterpolationMethod::Nlerp) << 0 << false;
+    QTest::newRow("squad") << int(InterpolationMethod::Squad) << 0 << false;
+    QTest::newRow("hermite") << int(InterpolationMethod::Hermite) << 0 << false;
+    QTest::newRow("euler") << int(InterpolationMethod::Euler) << 0 << false;
+    QTest::newRow("screw") << int(InterpolationMethod::Screw) << 0 << false;
+    // Four-point subdivision interpolates: control pose i stays at parameter i.
+    QTest::newRow("screw four-point open") << int(InterpolationMethod::Screw) << 3 << false;
+    QTest::newRow("screw four-point cyclic") << int(InterpolationMethod::Screw) << 3 << true;
+}
+
+void TstTrackEvaluation::passesThroughItsKeys()
+{
+    QFETCH(int, method);
+    QFETCH(int, levels);
+    QFETCH(bool, cyclic);
+    MotionTrack track = randomTrack(InterpolationMethod(method), {0.2, 0.5, 1.4, 1.5, 3.0}, 11);
+    track.subdivision = {SubdivisionScheme::FourPoint, levels, cyclic, false};
+    const TrackMotion motion(track);
+    for (const Keyframe& key : track.keys)
+        GYRE_CHECK(poseDistance(motion.at(key.time), key.pose) < kTolerance,
+                   QStringLiteral("at %1: %2, key %3").arg(str(key.time), str(motion.at(key.time)), str(key.pose)));
+}
+
+void TstTrackEvaluation::linearAndCubicPositions_data()
+{
+    QTest::addColumn<int>("method");
+    QTest::addColumn<bool>("cubic");
+    QTest::newRow("slerp") << int(InterpolationMethod::Slerp) << false;
+    QTest::newRow("nlerp") << int(InterpolationMethod::Nlerp) << false;
+    QTest::newRow("euler") << int(InterpolationMethod::Euler) << false;
+    QTest::newRow("squad") << int(InterpolationMethod::Squad) << true;
+    QTest::newRow("hermite") << int(InterpolationMethod::Hermite) << true;
+}
+
+// At the middle of the last span (h = 2): (p₁ + p₂)/2, plus h/8·(m₁ − m₂) for the cubic, whose slopes
+// are (p₂ − p₀)/(t₂ − t₀) inside and one-sided (p₂ − p₁)/(t₂ − t₁) at the last key.
+void TstTrackEvaluation::linearAndCubicPositions()
+{
+    QFETCH(int, method);
+    QFETCH(bool, cubic);
+    const std::vector<Eigen::Vector3d> p{{0, 0, 0}, {1, 2, 0}, {5, -1, 3}};
+    const std::vector<double> t{0, 1, 3};
+    MotionTrack track;
+    track.interpolation = InterpolationMethod(method);
+    for (std::size_t i = 0; i < 3; ++i)
+        track.keys.push_back({t[i], {Eigen::Quaterniond::Identity(), p[i]}, true});
+    Eigen::Vector3d expected = (p[1] + p[2]) / 2;
+    if (cubic)
+        expected += 2.0 / 8.0 * ((p[2] - p[0]) / (t[2] - t[0]) - (p[2] - p[1]) / (t[2] - t[1]));
+    const Pose pose = TrackMotion(track).at(2.0);
+    QVERIFY((pose.position - expected).norm() < kTolerance);
+    QVERIFY(distanceUpToSign(pose.orientation, Eigen::Quaterniond::Identity()) < kTolerance);
+}
+
+void TstTrackEvaluation::slerpBetweenKeys()
+{
+    const MotionTrack track = randomTrack(InterpolationMethod::Slerp, {0.0, 0.4, 2.0}, 5);
+    const TrackMotion motion(track);
+    const double u = 0.3;
+    const Eigen::Quaterniond& a = track.keys[1].pose.orientation;
+    const Eigen::Quaterniond b = sameHemisphere(track.keys[2].pose.orientation, a);
+    const Pose pose = motion.at(0.4 + u * 1.6);
+    QVERIFY(distanceUpToSign(pose.orientation, a.slerp(u, b)) < kTolerance);
+    const Eigen::Vector3d position = (1 - u) * track.keys[1].pose.position + u * track.keys[2].pose.position;
+    QVERIFY((pose.position - position).norm() < kTolerance);
+}
+
+void TstTrackEvaluation::holdsTheEndsOutsideTheKeys()
+{
+    for (const InterpolationMethod method : {InterpolationMethod::Hermite, InterpolationMethod::Screw}) {
+        MotionTrack track = randomTrack(method, {1.0, 2.0, 4.0}, 7);
+        track.subdivision = {SubdivisionScheme::Jarek, 2, false, false};
+        const TrackMotion motion(track);
+        QVERIFY(poseDistance(motion.at(-3.0), motion.at(1.0)) < kTolerance);
+        QVERIFY(poseDistance(motion.at(9.0), motion.at(4.0)) < kTolerance);
+    }
+}
+
+// Between keys i and i+1 the polyscrew's parameter is (t − tᵢ)/(tᵢ₊₁ − tᵢ) along the geodesic
+// Lᵢ·exp(u·log(Lᵢ⁻¹Lᵢ₊₁)), whatever the spans' lengths.
+void TstTrackEvaluation::screwWithoutSubdivisionIsThePlainPolyscrew()
+{
+    MotionTrack track = randomTrack(InterpolationMethod::Screw, {0.0, 2.0, 3.0}, 3);
+    track.subdivision = {SubdivisionScheme::BSpline, 0, false, false};
+    const TrackMotion motion(track);
+    for (const auto& [time, span, u] : {std::tuple{0.25, 0, 0.125}, {1.0, 0, 0.5}, {2.25, 1, 0.25}, {2.9, 1, 0.9}}) {
+        const Pose expected = fromMatrix(geodesic(track.keys[span].pose, track.keys[span + 1].pose, u));
+        GYRE_CHECK(poseDistance(motion.at(time), expected) < kTolerance,
+                   QStringLiteral("at %1: %2, expected %3").arg(str(time), str(motion.at(time)), str(expected)));
+    }
+}
+
+// A cycle of 4 keys over 3 s: the closing span lasts the mean span, 1 s; the period is 4 s.
+void TstTrackEvaluation::cyclicScrewClosesAndRepeats()
+{
+    MotionTrack track = randomTrack(InterpolationMethod::Screw, {1.0, 1.5, 3.0, 4.0}, 9);
+    track.subdivision = {SubdivisionScheme::FourPoint, 0, true, false};
+    const TrackMotion motion(track);
+    const Pose closing = fromMatrix(geodesic(track.keys[3].pose, track.keys[0].pose, 0.25));
+    QVERIFY(poseDistance(motion.at(4.25), closing) < kTolerance);
+    QVERIFY(poseDistance(motion.at(5.0), track.keys[0].pose) < kTolerance);
+    for (const double time : {1.2, 2.0, 3.7, 4.6})
+        for (const double periods : {-2.0, 1.0, 3.0})
+            QVERIFY(poseDistance(motion.at(time + 4.0 * periods), motion.at(time)) < 1e-8);
+}
+
+// Subdivided L levels, span i holds 2^L screws: time tᵢ + (j/2^L)(tᵢ₊₁ − tᵢ) is subdivided pose i·2^L + j.
+void TstTrackEvaluation::subdividedScrewPlaysTheSubdividedPoses()
+{
+    for (const bool cyclic : {false, true}) {
+        MotionTrack track = randomTrack(InterpolationMethod::Screw, {0.0, 0.5, 2.0, 2.5}, 13);
+        track.subdivision = {SubdivisionScheme::Jarek, 2, cyclic, false};
+        std::vector<Pose> controlPoses;
+        for (const Keyframe& key : track.keys)
+            controlPoses.push_back(key.pose);
+        const std::vector<Pose> subdivided = subdividePolyscrew(controlPoses, track.subdivision);
+        const TrackMotion motion(track);
+        for (std::size_t i = 0; i + 1 < track.keys.size(); ++i)
+            for (std::size_t j = 0; j < 4; ++j) {
+                const double start = track.keys[i].time;
+                const double time = start + static_cast<double>(j) / 4.0 * (track.keys[i + 1].time - start);
+                QVERIFY(poseDistance(motion.at(time), subdivided[4 * i + j]) < kTolerance);
+            }
+        if (cyclic) // the closing span, mean length 2.5/3 s, after the last key
+            QVERIFY(poseDistance(motion.at(2.5 + 0.5 * 2.5 / 3.0), subdivided[4 * 3 + 2]) < kTolerance);
+    }
+}
+
+void TstTrackEvaluation::fittedCurveOverridesOnlyItsWindow()
+{
+    MotionTrack track = randomTrack(InterpolationMethod::Slerp, {0.0, 1.0, 2.0, 3.0}, 17);
+    Random random(19);
+    for (const double time : {0.5, 1.25, 2.5}) {
+        HermiteControlPoint point{time, random.rotation(), random.rotation()};
+        point.value.coeffs() *= 1.5; // unnormalised on purpose: the track plays the normalised curve
+        track.sketch.fittedCurve.push_back(point);
+    }
+    const std::vector<HermiteControlPoint>& fit = track.sketch.fittedCurve;
+    const TrackMotion fitted(track);
+    MotionTrack unfitted = track;
+    unfitted.sketch.fittedCurve.clear();
+    const TrackMotion plain(unfitted);
+
+    for (const double time : {0.5, 0.8, 1.25, 2.0, 2.5}) {
+        const std::size_t segment = time < 1.25 ? 0 : 1;
+        const Eigen::Quaterniond expected =
+            time == 2.5 ? fit[2].value.normalized() : hermite(fit[segment], fit[segment + 1], time);
+        GYRE_CHECK(distanceUpToSign(fitted.at(time).orientation, expected) < kTolerance,
+                   QStringLiteral("at %1: %2, expected %3").arg(str(time), str(fitted.at(time).orientation), str(expected)));
+        QVERIFY((fitted.at(time).position - plain.at(time).position).norm() < kTolerance);
+    }
+    for (const double time : {0.0, 0.49, 2.51, 3.0}) {
+        QVERIFY(poseDistance(fitted.at(time), plain.at(time)) < kTolerance);
+        QVERIFY(distanceUpToSign(fitted.at(time).orientation, fit.front().value.normalized()) > 1e-3);
+    }
+}
+
+void TstTrackEvaluation::trackWithoutKeysStaysAtIdentity()
+{
+    const TrackMotion motion{MotionTrack{}};
+    QVERIFY(poseDistance(motion.at(1.5), Pose{}) == 0.0);
+}
+
+void TstTrackEvaluation::refusesKeysOutOfOrder()
+{
+    for (const InterpolationMethod method : {InterpolationMethod::Slerp, InterpolationMethod::Screw}) {
+        const MotionTrack track = randomTrack(method, {0.0, 2.0, 2.0}, 23);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, TrackMotion{track});
+    }
+    MotionTrack track = randomTrack(InterpolationMethod::Slerp, {0.0, 2.0}, 23);
+    track.sketch.fittedCurve = {HermiteControlPoint{1.0}, HermiteControlPoint{0.5}};
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, TrackMotion{track});
+}
+
+// Frames 0.1 + k/4 up to 1.0 and the keys inside the range; the frames at 0.35 and 0.6 give way to
+// the keys within 1e-9 s of them.
+void TstTrackEvaluation::bakeSamplesFramesAndKeys()
+{
+    const std::vector<double> keys{0.0, 0.35, 0.6000000001, 0.95, 1.2};
+    const BakeRange range{0.1, 1.0, 4.0};
+    std::vector<double> expected;
+    for (const double key : keys)
+        if (key >= range.start && key <= range.end)
+            expected.push_back(key);
+    for (int k = 0; range.start + k / range.fps <= range.end; ++k) {
+        const double frame = range.start + k / range.fps;
+        if (std::ranges::none_of(keys, [frame](double key) { return std::abs(key - frame) <= 1e-9; }))
+            expected.push_back(frame);
+    }
+    std::ranges::sort(expected);
+    QCOMPARE(expected.size(), std::size_t{5}); // 0.1, 0.35, 0.6000000001, 0.85, 0.95
+    QCOMPARE(bakeTimes(keys, range), expected);
+    QVERIFY(bakeSampleBound(range, keys.size()) >= 5.0);
+}
+
+void TstTrackEvaluation::bakeTrackGivesThePosesAtItsTimes()
+{
+    const MotionTrack track = randomTrack(InterpolationMethod::Squad, {0.0, 0.35, 1.0}, 29);
+    const std::vector<TimedPose> baked = bakeTrack(track, {0.0, 1.0, 10.0});
+    QCOMPARE(baked.size(), std::size_t{12}); // eleven frames and the key at 0.35
+    QCOMPARE(baked[4].time, 0.35);
+    QVERIFY(poseDistance(baked[4].pose, track.keys[1].pose) < kTolerance);
+    QVERIFY(poseDistance(baked.back().pose, track.keys[2].pose) < kTolerance);
+}
+
+void TstTrackEvaluation::bakeRefusesBadRanges()
+{
+    const std::vector<double> keys{0.0, 1.0};
+    for (const BakeRange& range : {BakeRange{0, 1, 0}, BakeRange{0, 1, -24}, BakeRange{0, 1, std::nan("")},
+                                   BakeRange{2, 1, 24}, BakeRange{0, INFINITY, 24}})
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, bakeTimes(keys, range));
+}
+
+QTEST_GUILESS_MAIN(TstTrackEvaluation)
+#include "tst_track_evaluation.moc"
