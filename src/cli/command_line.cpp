@@ -1,6 +1,6 @@
 #include "cli/command_line.h"
 
-#include "io/number_text.h"
+#include "core/number_text.h"
 
 #include <cstdio>
 #include <utility>

@@ -6,7 +6,7 @@
 #include "core/polyscrew.h"
 #include "core/position_curve.h"
 #include "core/timed_keys.h"
-#include "io/number_text.h"
+#include "core/number_text.h"
 #include "io/pose_csv.h"
 
 #include <algorithm>

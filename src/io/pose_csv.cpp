@@ -1,7 +1,7 @@
 #include "io/pose_csv.h"
 
 #include "io/csv_line_reader.h"
-#include "io/number_text.h"
+#include "core/number_text.h"
 
 #include <QSaveFile>
 

@@ -11,7 +11,7 @@
 
 #include "core/euler_angles.h"
 #include "core/pose.h"
-#include "io/input_error.h"
+#include "model/input_error.h"
 #include "io/rotation_columns.h"
 
 #include <QString>
