@@ -110,7 +110,8 @@ std::vector<JsonField> JsonField::elements() const
 double JsonField::number() const
 {
     requireType(QJsonValue::Double);
-    // Qt reads a literal too large for a double, such as 1e999, as infinity.
+    // Qt's parser refuses literals beyond a double's range, such as 1e999, but a scene being saved
+    // is checked through this reader too, and it may hold one.
     const double value = value_.toDouble();
     if (!std::isfinite(value))
         fail(formatNumber(value) + " is not a finite number");

@@ -169,15 +169,18 @@ Enum named(const JsonField& field, const NameTable<Enum, N>& names)
     field.fail("unknown value \"" + name.toStdString() + "\"; expected one of " + known);
 }
 
-// Reads each element, checking that the times `timeOf` gives strictly increase.
+// Reads each element, checking that the times `timeOf` gives strictly increase; `timeKey` names the
+// member that holds the time, or is null where the elements are bare times.
 template <class Item, class Read, class TimeOf>
-std::vector<Item> timedItems(const JsonField& field, Read read, TimeOf timeOf)
+std::vector<Item> timedItems(const JsonField& field, const char* timeKey, Read read, TimeOf timeOf)
 {
     std::vector<Item> items;
     for (const JsonField& element : field.elements()) {
         Item item = read(element);
         if (!items.empty())
-            element.checked([&] { return timeAfter(timeOf(item), timeOf(items.back())); });
+            (timeKey ? element.member(timeKey) : element).checked([&] {
+                return timeAfter(timeOf(item), timeOf(items.back()));
+            });
         items.push_back(std::move(item));
     }
     return items;
@@ -255,7 +258,7 @@ DirectionStroke strokeIn(const JsonField& field)
         stroke.points.push_back(point.checked([&] { return unitVector(direction); }));
     }
     const JsonField times = field.member("times");
-    stroke.times = timedItems<double>(times, [](const JsonField& time) { return time.number(); },
+    stroke.times = timedItems<double>(times, nullptr, [](const JsonField& time) { return time.number(); },
                                       [](double time) { return time; });
     if (stroke.points.empty())
         field.member("points").fail("a stroke needs at least one point");
@@ -297,7 +300,7 @@ SketchState sketchIn(const JsonField& field)
     SketchState sketch;
     for (const JsonField& stroke : field.member("directionStrokes").elements())
         sketch.directionStrokes.push_back(strokeIn(stroke));
-    sketch.magnitude = timedItems<MagnitudePoint>(field.member("magnitude"), magnitudePointIn,
+    sketch.magnitude = timedItems<MagnitudePoint>(field.member("magnitude"), "time", magnitudePointIn,
                                                   [](const MagnitudePoint& point) { return point.time; });
     for (const JsonField& point : field.member("pattern").elements())
         sketch.pattern.push_back(point.vector2());
@@ -306,7 +309,7 @@ SketchState sketchIn(const JsonField& field)
     sketch.alpha = numberIn(field.member("alpha"), nonNegativeNumber);
     sketch.beta = numberIn(field.member("beta"), nonNegativeNumber);
     sketch.delta = numberIn(field.member("delta"), positiveNumber);
-    sketch.fittedCurve = timedItems<HermiteControlPoint>(field.member("fittedCurve"), controlPointIn,
+    sketch.fittedCurve = timedItems<HermiteControlPoint>(field.member("fittedCurve"), "time", controlPointIn,
                                                          [](const HermiteControlPoint& point) { return point.time; });
     return sketch;
 }
@@ -329,7 +332,7 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
     }
     object.track.interpolation = named(field.member("interpolation"), kInterpolationMethodNames);
     object.track.subdivision = subdivisionIn(field.member("subdivision"));
-    object.track.keys = timedItems<Keyframe>(field.member("keyframes"), keyframeIn,
+    object.track.keys = timedItems<Keyframe>(field.member("keyframes"), "time", keyframeIn,
                                              [](const Keyframe& key) { return key.time; });
     // Version 1 has no sketch-editing state: it reads as the empty sketch.
     if (version >= 2)
@@ -415,14 +418,17 @@ QByteArray contentsOf(const QString& path)
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         throw InputError(path, "cannot open: " + file.errorString().toStdString());
+    const InputError tooLarge(path, "is larger than 1 GiB, the most a project file may hold");
+    if (file.size() > kMaxProjectBytes)
+        throw tooLarge;
     QByteArray contents;
     while (true) {
         const QByteArray chunk = file.read(kReadChunkBytes);
         if (chunk.isEmpty())
             break;
         contents += chunk;
-        if (contents.size() > kMaxProjectBytes)
-            throw InputError(path, "is larger than 1 GiB, the most a project file may hold");
+        if (contents.size() > kMaxProjectBytes) // a device whose size was not known beforehand
+            throw tooLarge;
     }
     if (file.error() != QFileDevice::NoError)
         throw InputError(path, "cannot read: " + file.errorString().toStdString());

@@ -4,11 +4,15 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 
 namespace gyre::model {
 
 namespace {
+
+// How far from 1 the computed length of a unit vector may be through rounding alone.
+constexpr double kRoundingTolerance = 4 * std::numeric_limits<double>::epsilon();
 
 [[noreturn]] void refuse(const std::string& message) { throw std::invalid_argument(message); }
 
@@ -29,6 +33,9 @@ Vector normalisedNearUnit(const Vector& value, const char* what)
         refuse(std::string("the ") + what + " is zero");
     if (!(std::abs(length - 1.0) <= kUnitLengthTolerance))
         refuse(std::string("the ") + what + " has length " + formatNumber(length) + "; it must have length 1");
+    // Unit up to rounding: left as it is, so that a value read back is the value written.
+    if (std::abs(length - 1.0) <= kRoundingTolerance)
+        return value;
     return value / length;
 }
 
