@@ -75,6 +75,8 @@ Autosave::Autosave(Document& document, const QString& directory, std::chrono::mi
     if (!lock_->tryLock(0))
         throw OutputError(lock_->fileName(), "cannot take the autosave lock");
 
+    // A document that arrives with unsaved changes is copied at the first tick.
+    changedSinceCopy_ = document_.isModified();
     const auto noteChange = [this] { changedSinceCopy_ = true; };
     connect(&document_.undoStack(), &QUndoStack::indexChanged, this, noteChange);
     connect(&document_, &Document::sceneReset, this, noteChange);

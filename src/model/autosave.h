@@ -66,7 +66,7 @@ private:
     QString infoPath_;
     std::unique_ptr<QLockFile> lock_;
     QTimer timer_;
-    bool changedSinceCopy_ = false;
+    bool changedSinceCopy_ = false; // since the last copy, or since the session began
 };
 
 } // namespace gyre::model
