@@ -2,11 +2,11 @@
 
 #include "cli/command_line.h"
 #include "cli/verbs.h"
+#include "core/number_text.h"
 #include "core/orientation_curves.h"
 #include "core/polyscrew.h"
 #include "core/position_curve.h"
 #include "core/timed_keys.h"
-#include "core/number_text.h"
 #include "io/pose_csv.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #include "io/pose_csv.h"
 
-#include "io/csv_line_reader.h"
 #include "core/number_text.h"
+#include "io/csv_line_reader.h"
 
 #include <QSaveFile>
 

@@ -55,7 +55,8 @@ template <class Value>
 QString base64Json(const Value* values, std::size_t count)
 {
     QByteArray bytes(static_cast<qsizetype>(count * sizeof(Value)), Qt::Uninitialized);
-    qToLittleEndian<Value>(values, static_cast<qsizetype>(count), bytes.data());
+    if (count > 0) // Qt copies with memcpy, which must not see the null pointer of an empty array
+        qToLittleEndian<Value>(values, static_cast<qsizetype>(count), bytes.data());
     return QString::fromLatin1(bytes.toBase64());
 }
 
@@ -207,7 +208,8 @@ std::vector<Value> littleEndianValues(const JsonField& field, std::size_t values
         field.fail(std::to_string(bytes.size()) + " bytes are not a whole number of " + std::to_string(itemBytes) +
                    "-byte items");
     std::vector<Value> values(static_cast<std::size_t>(bytes.size()) / sizeof(Value));
-    qFromLittleEndian<Value>(bytes.constData(), static_cast<qsizetype>(values.size()), values.data());
+    if (!values.empty()) // as in base64Json
+        qFromLittleEndian<Value>(bytes.constData(), static_cast<qsizetype>(values.size()), values.data());
     return values;
 }
 

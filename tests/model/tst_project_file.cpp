@@ -131,6 +131,7 @@ private slots:
     void numbersReadBackToTheSameBits();
     void sharedMeshesStayShared();
     void readsTheHandWrittenExample();
+    void readsTheDocumentedExamples();
     void driftedQuaternionsAreNormalised();
     void migratesVersionOne();
     void refusesMalformedFiles_data();
@@ -235,6 +236,28 @@ void TstProjectFile::readsTheHandWrittenExample()
     QCOMPARE(child.mesh->indices, (std::vector<std::uint32_t>{0, 1, 2}));
     QVERIFY(!scene.objects[0].mesh);
     QCOMPARE(scene.nextObjectId, ObjectId{3});
+}
+
+// The examples in docs/file-format.md stay valid: the version 2 example and the version 1 one.
+void TstProjectFile::readsTheDocumentedExamples()
+{
+    QFile document(QStringLiteral(GYRE_SOURCE_DIR "/docs/file-format.md"));
+    QVERIFY(document.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(document.readAll());
+    QStringList examples;
+    for (qsizetype start = text.indexOf("```json\n"); start >= 0; start = text.indexOf("```json\n", start)) {
+        start += 8;
+        examples << text.mid(start, text.indexOf("```", start) - start);
+    }
+    QCOMPARE(examples.size(), 2);
+    const Scene current = parseProject(examples[0].toUtf8(), QStringLiteral("example 1"));
+    QCOMPARE(current.objects.size(), std::size_t{2});
+    QCOMPARE(current.objects[1].track.sketch.directionStrokes.size(), std::size_t{1});
+    QCOMPARE(current.objects[1].track.sketch.patternRepeat, 3);
+    QCOMPARE(current.objects[1].mesh->indices.size(), std::size_t{3});
+    const Scene migrated = parseProject(examples[1].toUtf8(), QStringLiteral("example 2"));
+    QCOMPARE(migrated.objects.front().track.keys.size(), std::size_t{2});
+    QVERIFY(migrated.objects.front().track.sketch.fittedCurve.empty());
 }
 
 void TstProjectFile::driftedQuaternionsAreNormalised()
