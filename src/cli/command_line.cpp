@@ -1,6 +1,6 @@
 #include "cli/command_line.h"
 
-#include "io/number_text.h"
+#include "core/number_text.h"
 #include "io/pose_csv.h"
 
 #include <cstdio>
@@ -22,11 +22,12 @@ std::string quoted(const QString& text) { return "'" + text.toStdString() + "'";
 } // namespace
 
 VerbCommandLine::VerbCommandLine(QString verb, const QStringList& arguments,
-                                 const QList<QCommandLineOption>& verbOptions)
+                                 const QList<QCommandLineOption>& verbOptions, OutputFile output)
     : verb_(std::move(verb))
 {
     QList<QCommandLineOption> options = verbOptions;
-    options.append(QCommandLineOption({kOutputOption, QStringLiteral("output")}, {}, QStringLiteral("file")));
+    if (output == OutputFile::Required)
+        options.append(QCommandLineOption({kOutputOption, QStringLiteral("output")}, {}, QStringLiteral("file")));
     parser_.addOptions(options);
     // QCommandLineParser::parse skips the first argument, the program's name.
     if (!parser_.parse(QStringList{QStringLiteral("gyre-cli")} + arguments)) {
@@ -43,7 +44,8 @@ VerbCommandLine::VerbCommandLine(QString verb, const QStringList& arguments,
         throw error("one input file expected, got " + std::to_string(inputs.size()) + ": " +
                     inputs.join(QStringLiteral(", ")).toStdString());
     inputPath_ = inputs.front();
-    outputPath_ = requiredValue(kOutputOption);
+    if (output == OutputFile::Required)
+        outputPath_ = requiredValue(kOutputOption);
 }
 
 void VerbCommandLine::checkSingleValues(const QList<QCommandLineOption>& options) const

@@ -28,16 +28,21 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// Whether a verb writes a file named by -o, or prints what it has to say.
+enum class OutputFile { Required, None };
+
 class VerbCommandLine {
 public:
     // Parses the arguments after the verb. Throws UsageError for an unknown option, a missing
-    // value, a value option given twice, no -o, or not exactly one input file.
-    VerbCommandLine(QString verb, const QStringList& arguments, const QList<QCommandLineOption>& verbOptions);
+    // value, a value option given twice, no -o where the verb writes a file, or not exactly one
+    // input file.
+    VerbCommandLine(QString verb, const QStringList& arguments, const QList<QCommandLineOption>& verbOptions,
+                    OutputFile output = OutputFile::Required);
     VerbCommandLine(const VerbCommandLine&) = delete;
     VerbCommandLine& operator=(const VerbCommandLine&) = delete;
 
     const QString& inputPath() const { return inputPath_; }
-    const QString& outputPath() const { return outputPath_; }
+    const QString& outputPath() const { return outputPath_; } // empty for OutputFile::None
     bool isSet(const QString& option) const { return parser_.isSet(option); }
 
     // The value of an option that must be given.

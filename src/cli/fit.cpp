@@ -6,7 +6,7 @@
 #include "fit/angular_velocity_fit.h"
 #include "io/file_contents.h"
 #include "io/number_csv.h"
-#include "io/number_text.h"
+#include "core/number_text.h"
 #include "io/pose_csv.h"
 
 #include <QJsonArray>

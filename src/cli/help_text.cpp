@@ -4,13 +4,15 @@ namespace gyre::cli {
 
 namespace {
 
-const char* const kGeneral = R"(Usage: gyre-cli VERB INPUT -o OUTPUT [options]
+const char* const kGeneral = R"(Usage: gyre-cli VERB INPUT [-o OUTPUT] [options]
 
-Batch verbs over pose CSV files (docs/pose-csv.md):
+Batch verbs over pose CSV files (docs/pose-csv.md) and projects (docs/file-format.md):
   convert      rewrite the rotation columns in another representation
   interpolate  sample a motion through timed keys at a frame rate
   subdivide    smooth a sequence of poses by polyscrew subdivision
   fit          bend the motion through keys to match a target angular velocity
+  info         summarise a project: objects, keyframes, time range (no -o)
+  keys         write an object's keyframes from a project as a pose file
 
   gyre-cli help VERB     usage of one verb (also: gyre-cli VERB --help)
   gyre-cli --version     the version
@@ -98,6 +100,19 @@ or the artist's sketch
                  error, solve time, energy terms before and after
 
 The Euler options say how to read Euler key columns.)";
+const char* const kInfo = R"(Usage: gyre-cli info PROJECT.gyre
+
+Prints a short summary of a Gyre project: its time range and frame rate, its objects and
+keyframes, and for each object its parent, keyframes, their time span and the interpolation.)";
+
+const char* const kKeys = R"(Usage: gyre-cli keys PROJECT.gyre --object NAME -o KEYS.csv
+
+Writes the keyframes of one object of a Gyre project as a pose file with the columns
+time,qw,qx,qy,qz,x,y,z: the object's pose relative to its parent at each key.
+
+  --object NAME  the object, named as the node in the file it was imported from; the name must
+                 single out one object that has keyframes
+  -o, --output FILE  the output file)";
 
 QString withCommonOptions(const char* verbHelp) { return QString::fromUtf8(verbHelp) + '\n' + kCommonOptions; }
 
@@ -108,5 +123,7 @@ QString convertHelp() { return withCommonOptions(kConvert); }
 QString interpolateHelp() { return withCommonOptions(kInterpolate); }
 QString subdivideHelp() { return withCommonOptions(kSubdivide); }
 QString fitHelp() { return withCommonOptions(kFit); }
+QString infoHelp() { return QString::fromUtf8(kInfo); }
+QString keysHelp() { return QString::fromUtf8(kKeys); }
 
 } // namespace gyre::cli

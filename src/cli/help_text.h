@@ -1,5 +1,6 @@
 #pragma once
-// What `gyre-cli --help` and `gyre-cli help VERB` print. docs/pose-csv.md says the same at length.
+// What `gyre-cli --help` and `gyre-cli help VERB` print. docs/pose-csv.md and docs/file-format.md say
+// the same at length.
 
 #include <QString>
 
@@ -10,5 +11,7 @@ QString convertHelp();
 QString interpolateHelp();
 QString subdivideHelp();
 QString fitHelp();
+QString infoHelp();
+QString keysHelp();
 
 } // namespace gyre::cli

@@ -2,8 +2,9 @@
 
 #include "cli/command_line.h"
 #include "cli/verbs.h"
+#include "core/number_text.h"
 #include "core/orientation_curves.h"
-#include "io/number_text.h"
+#include "core/number_text.h"
 #include "io/pose_csv.h"
 #include "model/track_evaluation.h"
 

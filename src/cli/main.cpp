@@ -1,4 +1,4 @@
-// gyre-cli: batch verbs over pose CSV files. main() dispatches to a verb and turns every error into
+// gyre-cli: batch verbs over pose CSV files and projects. main() dispatches to a verb and turns every error into
 // a message on standard error and an exit status, so that no exception ever leaves the program.
 
 #include "cli/command_line.h"
@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <exception>
 #include <new>
+#include <string_view>
+#include <vector>
 
 namespace {
 
@@ -30,6 +32,8 @@ const Verb kVerbs[] = {
     {QLatin1String("interpolate"), runInterpolate, interpolateHelp},
     {QLatin1String("subdivide"), runSubdivide, subdivideHelp},
     {QLatin1String("fit"), runFit, fitHelp},
+    {QLatin1String("info"), runInfo, infoHelp},
+    {QLatin1String("keys"), runKeys, keysHelp},
 };
 
 const Verb* findVerb(const QString& name)
@@ -46,8 +50,11 @@ const Verb& requireVerb(const QString& name)
         return *verb;
     if (name.startsWith(QLatin1Char('-')))
         throw UsageError("unknown option " + name.toStdString() + " (see gyre-cli --help)");
-    throw UsageError("unknown verb '" + name.toStdString() +
-                     "'; the verbs are convert, interpolate, subdivide and fit (see gyre-cli --help)");
+    std::vector<std::string_view> names;
+    for (const Verb& verb : kVerbs)
+        names.push_back(std::string_view(verb.name.data(), static_cast<std::size_t>(verb.name.size())));
+    throw UsageError("unknown verb '" + name.toStdString() + "'; the verbs are " + alternatives(names) +
+                     " (see gyre-cli --help)");
 }
 
 void print(QString text)

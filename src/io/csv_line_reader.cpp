@@ -1,6 +1,6 @@
 #include "io/csv_line_reader.h"
 
-#include "io/number_text.h"
+#include "core/number_text.h"
 
 #include <QFileInfo>
 

@@ -4,7 +4,7 @@
 // '#'), accepts LF and CRLF line ends and a UTF-8 byte order mark, and rejects the signs of a file
 // that is not text at all: control characters (NUL and friends) and lines too long to be a record.
 
-#include "io/input_error.h"
+#include "model/input_error.h"
 
 #include <QFile>
 #include <QString>

@@ -1,6 +1,6 @@
 #include "io/file_contents.h"
 
-#include "io/input_error.h"
+#include "model/input_error.h"
 
 #include <QSaveFile>
 

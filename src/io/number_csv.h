@@ -3,7 +3,7 @@
 // samples, sketch curves, patterns. The same text rules as the pose format (docs/pose-csv.md): a
 // header row naming the columns in any order, '#' comment lines, blank lines skipped.
 
-#include "io/input_error.h"
+#include "model/input_error.h"
 
 #include <QString>
 

@@ -1,9 +1,9 @@
 #include "io/pose_csv.h"
 
+#include "core/number_text.h"
 #include "io/csv_header.h"
 #include "io/csv_line_reader.h"
 #include "io/file_contents.h"
-#include "io/number_text.h"
 
 #include <QSaveFile>
 

@@ -11,8 +11,8 @@
 
 #include "core/euler_angles.h"
 #include "core/pose.h"
-#include "io/input_error.h"
 #include "io/rotation_columns.h"
+#include "model/input_error.h"
 
 #include <QSaveFile>
 #include <QString>

@@ -1,7 +1,7 @@
 #include "io/rotation_columns.h"
 
+#include "core/number_text.h"
 #include "core/rotation.h"
-#include "io/number_text.h"
 
 #include <cmath>
 #include <limits>

@@ -1,7 +1,7 @@
 #include "io/scene_export.h"
 
 #include "io/assimp_math.h"
-#include "io/number_text.h"
+#include "core/number_text.h"
 #include "model/track_evaluation.h"
 
 #include <assimp/BlobIOSystem.h>

@@ -12,7 +12,7 @@
 // and the report says so.
 
 #include "core/name_table.h"
-#include "io/input_error.h"
+#include "model/input_error.h"
 #include "model/scene.h"
 
 #include <QString>

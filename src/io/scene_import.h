@@ -17,7 +17,7 @@
 //   changes over time, or that is not uniform on a node with children, is reported as a warning.
 // - Skinning, morph targets, cameras, lights and materials are not imported (warnings say so).
 
-#include "io/input_error.h"
+#include "model/input_error.h"
 #include "model/scene.h"
 
 #include <QString>

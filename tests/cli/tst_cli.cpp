@@ -118,6 +118,36 @@ std::vector<Key> randomKeys(int count, unsigned seed)
 
 const QStringList kMethods{"slerp", "nlerp", "squad", "hermite", "euler", "screw"};
 
+// A project object as docs/file-format.md describes it, with the keys given and an empty sketch.
+QString projectObject(int id, const QString& name, const QString& parent, const std::vector<Key>& keys)
+{
+    QStringList keyframes;
+    for (const Key& key : keys) {
+        const Eigen::Quaterniond& q = key.rotation;
+        const Eigen::Vector3d& p = key.position;
+        keyframes << QStringLiteral(R"({"time": %1, "orientation": [%2, %3, %4, %5], "position": [%6, %7, %8],)"
+                                    R"( "constrained": true})")
+                         .arg(number(key.time), number(q.w()), number(q.x()), number(q.y()), number(q.z()),
+                              number(p.x()), number(p.y()), number(p.z()));
+    }
+    return QStringLiteral(R"({"id": %1, "name": "%2", "parent": %3, "mesh": null, "interpolation": "squad",)"
+                          R"( "subdivision": {"scheme": "jarek", "levels": 3, "cyclic": false, "decoupled": false},)"
+                          R"( "keyframes": [%4],)"
+                          R"( "sketch": {"directionStrokes": [], "magnitude": [], "pattern": [], "patternRepeat": 0,)"
+                          R"( "window": null, "alpha": 0.002, "beta": 1, "delta": 0.1, "fittedCurve": []}})")
+        .arg(id)
+        .arg(name, parent, keyframes.join(", "));
+}
+
+QByteArray project(const QStringList& objects, int version = 2)
+{
+    return QStringLiteral(R"({"format": "gyre-project", "version": %1, "fps": 30, "startTime": 0, "endTime": 4,)"
+                          R"( "currentTime": 0, "meshes": [], "objects": [%2]})")
+        .arg(version)
+        .arg(objects.join(", "))
+        .toUtf8();
+}
+
 class TstCli : public QObject {
     Q_OBJECT
 
@@ -168,6 +198,9 @@ private slots:
     void subdivideOpen_data();
     void subdivideOpen();
     void subdivideWithoutTimes();
+
+    void infoSummarisesAProject();
+    void keysWritesAnObjectsKeyframes();
 
     void badInput_data();
     void badInput();
@@ -451,6 +484,46 @@ void TstCli::subdivideWithoutTimes()
     QVERIFY(rotationDistance(csv.quaternion(2), about({0, 1, 1}, std::sqrt(2.0))) < kTolerance);
 }
 
+void TstCli::infoSummarisesAProject()
+{
+    const std::vector<Key> keys = randomKeys(3, 4);
+    const QString in = writeFile("summary.gyre", project({projectObject(1, "car", "null", keys),
+                                                          projectObject(2, "wheel", "1", randomKeys(2, 5)),
+                                                          projectObject(3, "light", "null", {})}));
+    const CliRun run = runCli({"info", in});
+    QCOMPARE(run.exitCode, 0);
+    QCOMPARE(run.err, QString());
+    const QStringList lines = run.out.split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 6);
+    QCOMPARE(lines[0], in + ": Gyre project");
+    QCOMPARE(lines[1], QStringLiteral("time range: 0 to 4 s at 30 fps"));
+    QCOMPARE(lines[2], QStringLiteral("3 objects, 5 keyframes"));
+    QCOMPARE(lines[3], QStringLiteral("  car: 3 keyframes from %1 to %2 s, squad")
+                           .arg(QString::number(keys[0].time, 'g', QLocale::FloatingPointShortest),
+                                QString::number(keys[2].time, 'g', QLocale::FloatingPointShortest)));
+    QVERIFY2(lines[4].startsWith("  wheel (child of car): 2 keyframes from "), qPrintable(lines[4]));
+    QCOMPARE(lines[5], QStringLiteral("  light: 0 keyframes, squad"));
+}
+
+void TstCli::keysWritesAnObjectsKeyframes()
+{
+    const std::vector<Key> keys = randomKeys(4, 6);
+    const QString in = writeFile("keys.gyre", project({projectObject(1, "car", "null", randomKeys(2, 7)),
+                                                       projectObject(2, "wheel", "1", keys)}));
+    const QString out = path("wheel.csv");
+    QVERIFY(succeeds({"keys", in, "--object", "wheel", "-o", out}));
+    const Csv csv = readCsv(out);
+    QVERIFY2(csv.problem.isEmpty(), qPrintable(csv.problem));
+    QCOMPARE(csv.header, QString("time,qw,qx,qy,qz,x,y,z").split(','));
+    QCOMPARE(csv.rows.size(), keys.size());
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        // Both files hold 17 significant digits or the shortest exact form, so the numbers are equal.
+        QCOMPARE(csv.at(i, "time"), keys[i].time);
+        QCOMPARE(csv.quaternion(i).coeffs(), keys[i].rotation.coeffs());
+        QCOMPARE(csv.position(i), keys[i].position);
+    }
+}
+
 void TstCli::badInput_data()
 {
     QTest::addColumn<QStringList>("arguments"); // IN and OUT stand for the files
@@ -492,6 +565,26 @@ void TstCli::badInput_data()
     QTest::newRow("input is missing") << convert << QByteArray("<missing>") << 1
                                       << "IN: cannot open: No such file or directory";
     QTest::newRow("input is a folder") << convert << QByteArray("<folder>") << 1 << "IN: is a directory";
+
+    const QString wheel = projectObject(1, "wheel", "null", randomKeys(2, 8));
+    const QStringList keysVerb{"keys", "IN", "-o", "OUT", "--object", "wheel"};
+    QTest::newRow("project of a newer version") << keysVerb << project({wheel}, 3) << 1
+                                                << "IN: version: the file has version 3, newer than this build";
+    QTest::newRow("no such object") << QStringList{"keys", "IN", "-o", "OUT", "--object", "ghost"} << project({wheel})
+                                    << 1 << "IN: --object: no object is named 'ghost'";
+    QTest::newRow("two objects of that name")
+        << keysVerb << project({wheel, projectObject(2, "wheel", "null", randomKeys(2, 9))}) << 1
+        << "IN: --object: 2 objects are named 'wheel'; the name must single out one";
+    QTest::newRow("object without keys") << keysVerb << project({projectObject(1, "wheel", "null", {})}) << 1
+                                         << "IN: --object: object 'wheel' has no keyframes";
+    QTest::newRow("keys without --object") << QStringList{"keys", "IN", "-o", "OUT"} << project({wheel}) << 2
+                                           << "keys: missing option --object";
+    QTest::newRow("bad project field") << QStringList{"info", "IN"}
+                                       << QByteArray(project({wheel})).replace("\"fps\": 30", "\"fps\": \"30\"") << 1
+                                       << "IN: fps: expected a number, found the string \"30\"";
+    QTest::newRow("info of a pose file") << QStringList{"info", "IN"} << keys << 1 << "IN: not valid JSON: ";
+    QTest::newRow("info with -o") << QStringList{"info", "IN", "-o", "OUT"} << project({wheel}) << 2
+                                  << "info: unknown option -o";
 
     QTest::newRow("unknown method") << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "cubic", "--fps", "24"}
                                     << keys << 2
@@ -599,7 +692,7 @@ void TstCli::helpAndVersion()
 {
     const CliRun help = runCli({"--help"});
     QCOMPARE(help.exitCode, 0);
-    for (const char* verb : {"convert", "interpolate", "subdivide", "fit"}) {
+    for (const char* verb : {"convert", "interpolate", "subdivide", "fit", "info", "keys"}) {
         QVERIFY(help.out.contains(verb));
         const CliRun verbHelp = runCli({"help", verb});
         QCOMPARE(verbHelp.exitCode, 0);

@@ -2,7 +2,7 @@
 // and every kind of bad input with the exact line and column in its message. Expected rotations are
 // built here from Eigen's AngleAxis, not from the conversions under test.
 
-#include "io/number_text.h"
+#include "core/number_text.h"
 #include "io/pose_csv.h"
 
 #include <QDir>

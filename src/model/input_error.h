@@ -1,6 +1,8 @@
 #pragma once
 // The errors that reading and writing files report. Their messages are meant for the user as they
-// stand: each names the file, and where there is one the 1-based line, as `path:line: what`.
+// stand: each names the file, and where there is one the 1-based line, as `path:line: what`, or the
+// field, as `path: objects[2].name: what`. The model owns them because the project file is read here
+// and io, which reads the other formats, depends on the model.
 
 #include <QString>
 

@@ -1,4 +1,4 @@
-#include "io/input_error.h"
+#include "model/input_error.h"
 
 namespace gyre {
 

@@ -1,0 +1,149 @@
+#pragma once
+// The fields and lists of the document that commands change, for ChangeValueCommand and
+// ListEntryCommand. Each command has checked its target before it is pushed, so these look objects
+// and entries up without checking again.
+
+#include "model/document_editor.h"
+#include "model/commands/change_value_command.h"
+#include "model/scene.h"
+
+#include <QString>
+
+#include <optional>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace gyre::model {
+
+// The object with this id, which the command has made sure exists.
+SceneObject& objectIn(Scene& scene, ObjectId id);
+const SceneObject& objectIn(const Scene& scene, ObjectId id);
+
+// Merge ids of the fields whose consecutive edits merge; each is unique.
+enum MergeId : int {
+    kKeyframeTimeMerge = 1,
+    kKeyframeOrientationMerge,
+    kKeyframePositionMerge,
+    kSubdivisionMerge,
+    kStrokeMerge,
+    kMagnitudeCurveMerge,
+    kPatternMerge,
+    kFitWindowMerge,
+    kFitParameterMerge,
+    kTimeRangeMerge,
+};
+inline constexpr int kNeverMerge = -1;
+
+// A field of an object that `Member` gives a reference to, given the object and target.index (the
+// keyframe's or stroke's index, where the field belongs to one).
+template <auto Member, class ValueType, int MergeIdValue, Change... ChangeValues>
+struct MemberField {
+    using Value = ValueType;
+    static constexpr Changes kChanges = (Changes() | ... | ChangeValues);
+    static constexpr int kMergeId = MergeIdValue;
+    static Value get(const Scene& scene, const FieldTarget& target)
+    {
+        return Member(objectIn(scene, target.object), target.index);
+    }
+    static void set(Scene& scene, const FieldTarget& target, Value value)
+    {
+        Member(objectIn(scene, target.object), target.index) = std::move(value);
+    }
+};
+
+inline constexpr auto keyTime = [](auto& object, std::size_t key) -> auto& { return object.track.keys[key].time; };
+inline constexpr auto keyOrientation = [](auto& object, std::size_t key) -> auto& {
+    return object.track.keys[key].pose.orientation;
+};
+inline constexpr auto keyPosition = [](auto& object, std::size_t key) -> auto& {
+    return object.track.keys[key].pose.position;
+};
+inline constexpr auto keyConstrained = [](auto& object, std::size_t key) -> auto& {
+    return object.track.keys[key].constrained;
+};
+inline constexpr auto objectName = [](auto& object, std::size_t) -> auto& { return object.name; };
+inline constexpr auto trackInterpolation = [](auto& object, std::size_t) -> auto& {
+    return object.track.interpolation;
+};
+inline constexpr auto trackSubdivision = [](auto& object, std::size_t) -> auto& { return object.track.subdivision; };
+inline constexpr auto sketchStroke = [](auto& object, std::size_t stroke) -> auto& {
+    return object.track.sketch.directionStrokes[stroke];
+};
+inline constexpr auto sketchMagnitude = [](auto& object, std::size_t) -> auto& { return object.track.sketch.magnitude; };
+inline constexpr auto sketchWindow = [](auto& object, std::size_t) -> auto& { return object.track.sketch.window; };
+
+// The fit's parameters, chosen by target.index.
+enum class FitParameter : std::size_t { Alpha, Beta, Delta };
+inline constexpr auto sketchFitParameter = [](auto& object, std::size_t parameter) -> auto& {
+    auto& sketch = object.track.sketch;
+    const auto chosen = static_cast<FitParameter>(parameter);
+    return chosen == FitParameter::Alpha ? sketch.alpha : chosen == FitParameter::Beta ? sketch.beta : sketch.delta;
+};
+
+using KeyframeTimeField = MemberField<keyTime, double, kKeyframeTimeMerge, Change::Keyframes>;
+using KeyframeOrientationField =
+    MemberField<keyOrientation, Eigen::Quaterniond, kKeyframeOrientationMerge, Change::Keyframes>;
+using KeyframePositionField = MemberField<keyPosition, Eigen::Vector3d, kKeyframePositionMerge, Change::Keyframes>;
+using KeyframeConstraintField = MemberField<keyConstrained, bool, kNeverMerge, Change::Keyframes>;
+using ObjectNameField = MemberField<objectName, QString, kNeverMerge, Change::Object>;
+using InterpolationField = MemberField<trackInterpolation, InterpolationMethod, kNeverMerge, Change::TrackSettings>;
+using SubdivisionField = MemberField<trackSubdivision, SubdivisionSettings, kSubdivisionMerge, Change::TrackSettings>;
+using StrokeField = MemberField<sketchStroke, DirectionStroke, kStrokeMerge, Change::Sketch>;
+using MagnitudeCurveField = MemberField<sketchMagnitude, std::vector<MagnitudePoint>, kMagnitudeCurveMerge, Change::Sketch>;
+using FitWindowField = MemberField<sketchWindow, std::optional<std::pair<double, double>>, kFitWindowMerge, Change::Sketch>;
+using FitParameterField = MemberField<sketchFitParameter, double, kFitParameterMerge, Change::Sketch>;
+
+// The pattern and how often it repeats, drawn and set together.
+inline constexpr auto sketchPattern = [](auto& object, std::size_t) {
+    return std::tie(object.track.sketch.pattern, object.track.sketch.patternRepeat);
+};
+using PatternField =
+    MemberField<sketchPattern, std::tuple<std::vector<Eigen::Vector2d>, int>, kPatternMerge, Change::Sketch>;
+
+// The keyframes and the sketch together: what a retiming or an applied fit changes.
+inline constexpr auto keyframesAndSketch = [](auto& object, std::size_t) {
+    return std::tie(object.track.keys, object.track.sketch);
+};
+using KeyframesAndSketchField = MemberField<keyframesAndSketch, std::tuple<std::vector<Keyframe>, SketchState>, kNeverMerge, Change::Keyframes, Change::Sketch>;
+
+// The parent and, because parents come before their children, the order of all objects.
+struct ParentField {
+    using Value = std::pair<ObjectId, std::vector<ObjectId>>;
+    static constexpr Changes kChanges = Change::Object;
+    static constexpr int kMergeId = kNeverMerge;
+    static Value get(const Scene& scene, const FieldTarget& target);
+    static void set(Scene& scene, const FieldTarget& target, Value value);
+};
+
+// The frame rate and time range of the scene.
+struct TimeRange {
+    double fps = 24.0;
+    double startTime = 0.0;
+    double endTime = 10.0;
+};
+
+struct TimeRangeField {
+    using Value = TimeRange;
+    static constexpr Changes kChanges = Change::SceneSettings;
+    static constexpr int kMergeId = kTimeRangeMerge;
+    static Value get(const Scene& scene, const FieldTarget& target);
+    static void set(Scene& scene, const FieldTarget& target, Value value);
+};
+
+struct KeyframeList {
+    using Entry = Keyframe;
+    static constexpr Changes kChanges = Change::Keyframes;
+    static std::vector<Entry>& of(Scene& scene, ObjectId object) { return objectIn(scene, object).track.keys; }
+};
+
+struct StrokeList {
+    using Entry = DirectionStroke;
+    static constexpr Changes kChanges = Change::Sketch;
+    static std::vector<Entry>& of(Scene& scene, ObjectId object)
+    {
+        return objectIn(scene, object).track.sketch.directionStrokes;
+    }
+};
+
+} // namespace gyre::model

@@ -1,0 +1,13 @@
+#include "model/commands/rename_object_command.h"
+
+#include "model/commands/command_checks.h"
+
+namespace gyre::model {
+
+RenameObjectCommand::RenameObjectCommand(Document& document, ObjectId object, const QString& name,
+                                         QUndoCommand* parent)
+    : ChangeValueCommand(document, objectTarget(document, object), name, commandText("Rename Object"), parent)
+{
+}
+
+} // namespace gyre::model

@@ -1,0 +1,13 @@
+#include "model/commands/set_interpolation_command.h"
+
+#include "model/commands/command_checks.h"
+
+namespace gyre::model {
+
+SetInterpolationCommand::SetInterpolationCommand(Document& document, ObjectId object, InterpolationMethod method,
+                                                 QUndoCommand* parent)
+    : ChangeValueCommand(document, objectTarget(document, object), method, commandText("Set Interpolation"), parent)
+{
+}
+
+} // namespace gyre::model

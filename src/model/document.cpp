@@ -1,0 +1,69 @@
+#include "model/document.h"
+
+#include "model/project_file.h"
+#include "model/scene_queries.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace gyre::model {
+
+Document::Document(QObject* parent)
+    : QObject(parent)
+{
+    connect(&undoStack_, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
+}
+
+const SceneObject* Document::object(ObjectId id) const { return findObject(scene_, id); }
+
+void Document::setCurrentTime(double seconds)
+{
+    if (!std::isfinite(seconds))
+        throw std::invalid_argument("the current time must be a finite number of seconds");
+    if (seconds == scene_.currentTime)
+        return;
+    scene_.currentTime = seconds;
+    emit currentTimeChanged(seconds);
+}
+
+void Document::clear() { replaceScene(Scene{}, QString(), false); }
+
+void Document::load(const QString& path) { replaceScene(readProject(path), path, false); }
+
+void Document::save(const QString& path)
+{
+    writeProject(path, scene_);
+    undoStack_.setClean();
+    setFilePath(path);
+}
+
+void Document::recover(const QString& recoveryPath, const QString& documentPath)
+{
+    replaceScene(readProject(recoveryPath), documentPath, true);
+}
+
+void Document::replaceScene(Scene scene, const QString& filePath, bool modified)
+{
+    // clear() leaves an empty, clean stack; resetClean() then makes the clean state unreachable, so
+    // a recovered document stays modified until it is saved. modifiedChanged follows cleanChanged.
+    undoStack_.clear();
+    if (modified)
+        undoStack_.resetClean();
+    const double oldTime = scene_.currentTime;
+    scene_ = std::move(scene);
+    setFilePath(filePath);
+    emit sceneReset();
+    if (scene_.currentTime != oldTime)
+        emit currentTimeChanged(scene_.currentTime);
+}
+
+void Document::setFilePath(const QString& path)
+{
+    if (path == filePath_)
+        return;
+    filePath_ = path;
+    emit filePathChanged(path);
+}
+
+} // namespace gyre::model

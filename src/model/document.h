@@ -1,0 +1,78 @@
+#pragma once
+// The document: one scene, the undo stack that every change to it goes through, and the file it was
+// loaded from or saved to. Views read it through the const accessors and follow its signals; only
+// undo commands change it, through DocumentEditor (document_editor.h).
+//
+// The current time is the one value outside the undo history: scrubbing is looking, not editing, so
+// setCurrentTime neither pushes a command nor makes the document modified. It is still saved with the
+// file, so a project opens where it was left.
+
+#include "model/scene.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+namespace gyre::model {
+
+class Document : public QObject {
+    Q_OBJECT
+
+public:
+    explicit Document(QObject* parent = nullptr);
+
+    const Scene& scene() const { return scene_; }
+    // The object with this id, or null.
+    const SceneObject* object(ObjectId id) const;
+
+    QUndoStack& undoStack() { return undoStack_; }
+    const QUndoStack& undoStack() const { return undoStack_; }
+
+    // Where the document was loaded from or last saved to; empty for a new document.
+    const QString& filePath() const { return filePath_; }
+    // Changed since it was loaded or saved: the undo stack is away from its clean state.
+    bool isModified() const { return !undoStack_.isClean(); }
+
+    // Throws std::invalid_argument for a time that is not finite.
+    void setCurrentTime(double seconds);
+
+    // An empty, unmodified document with no file.
+    void clear();
+    // Replaces the scene with the project at `path` and forgets the undo history. Throws InputError
+    // and leaves the document untouched if the file cannot be read whole.
+    void load(const QString& path);
+    // Writes the project to `path`, which becomes the document's file, and marks this state saved.
+    // Throws OutputError; a file already at `path` then keeps its contents.
+    void save(const QString& path);
+    // Opens a recovery copy (autosave.h) as unsaved changes to the document at `documentPath`.
+    void recover(const QString& recoveryPath, const QString& documentPath);
+
+signals:
+    // The whole scene was replaced (clear, load, recover); views rebuild from scene().
+    void sceneReset();
+    void objectAdded(gyre::model::ObjectId id);
+    void objectRemoved(gyre::model::ObjectId id);
+    // Name, parent or mesh. A new parent may also move the object within scene().objects.
+    void objectChanged(gyre::model::ObjectId id);
+    void keyframesChanged(gyre::model::ObjectId id);
+    // Interpolation or subdivision settings.
+    void trackSettingsChanged(gyre::model::ObjectId id);
+    void sketchChanged(gyre::model::ObjectId id);
+    // Frame rate or time range.
+    void sceneSettingsChanged();
+    void currentTimeChanged(double seconds);
+    void modifiedChanged(bool modified);
+    void filePathChanged(const QString& path);
+
+private:
+    friend class DocumentEditor;
+
+    void replaceScene(Scene scene, const QString& filePath, bool modified);
+    void setFilePath(const QString& path);
+
+    Scene scene_;
+    QUndoStack undoStack_;
+    QString filePath_;
+};
+
+} // namespace gyre::model

@@ -1,0 +1,56 @@
+#include "model/document_editor.h"
+
+#include <algorithm>
+
+namespace gyre::model {
+
+void DocumentEditor::edit(ObjectId object, Changes changes, const std::function<void(Scene&)>& change)
+{
+    change(document_.scene_);
+    if (changes.testFlag(Change::Object))
+        emit document_.objectChanged(object);
+    if (changes.testFlag(Change::Keyframes))
+        emit document_.keyframesChanged(object);
+    if (changes.testFlag(Change::TrackSettings))
+        emit document_.trackSettingsChanged(object);
+    if (changes.testFlag(Change::Sketch))
+        emit document_.sketchChanged(object);
+    if (changes.testFlag(Change::SceneSettings))
+        emit document_.sceneSettingsChanged();
+}
+
+void DocumentEditor::insertObjects(const std::vector<PlacedObject>& objects)
+{
+    std::vector<SceneObject>& sceneObjects = document_.scene_.objects;
+    for (const PlacedObject& placed : objects)
+        sceneObjects.insert(sceneObjects.begin() + static_cast<std::ptrdiff_t>(placed.index), placed.object);
+    for (const PlacedObject& placed : objects)
+        emit document_.objectAdded(placed.object.id);
+}
+
+std::vector<PlacedObject> DocumentEditor::removeObjects(const std::vector<ObjectId>& ids)
+{
+    std::vector<SceneObject>& sceneObjects = document_.scene_.objects;
+    std::vector<PlacedObject> removed;
+    std::vector<SceneObject> kept;
+    for (std::size_t index = 0; index < sceneObjects.size(); ++index) {
+        SceneObject& object = sceneObjects[index];
+        if (std::find(ids.begin(), ids.end(), object.id) != ids.end())
+            removed.push_back({index, std::move(object)});
+        else
+            kept.push_back(std::move(object));
+    }
+    sceneObjects = std::move(kept);
+    for (auto placed = removed.rbegin(); placed != removed.rend(); ++placed)
+        emit document_.objectRemoved(placed->object.id);
+    return removed;
+}
+
+ObjectId DocumentEditor::reserveObjectIds(std::size_t count)
+{
+    const ObjectId first = document_.scene_.nextObjectId;
+    document_.scene_.nextObjectId += count;
+    return first;
+}
+
+} // namespace gyre::model

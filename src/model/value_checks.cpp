@@ -1,0 +1,215 @@
+#include "model/value_checks.h"
+
+#include "core/number_text.h"
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace gyre::model {
+
+namespace {
+
+// How far from 1 the computed length of a unit vector may be through rounding alone.
+constexpr double kRoundingTolerance = 4 * std::numeric_limits<double>::epsilon();
+
+[[noreturn]] void refuse(const std::string& message) { throw std::invalid_argument(message); }
+
+template <class Vector>
+Vector finiteCoefficients(const Vector& value)
+{
+    if (!value.allFinite())
+        refuse("not all components are finite");
+    return value;
+}
+
+// `value` scaled to length 1, if its length is within kUnitLengthTolerance of 1.
+template <class Vector>
+Vector normalisedNearUnit(const Vector& value, const char* what)
+{
+    const double length = finiteCoefficients(value).norm();
+    if (length == 0.0)
+        refuse(std::string("the ") + what + " is zero");
+    if (!(std::abs(length - 1.0) <= kUnitLengthTolerance))
+        refuse(std::string("the ") + what + " has length " + formatNumber(length) + "; it must have length 1");
+    // Unit up to rounding: left as it is, so that a value read back is the value written.
+    if (std::abs(length - 1.0) <= kRoundingTolerance)
+        return value;
+    return value / length;
+}
+
+// Times that are finite and strictly increase; `timeOf` gives an item's time.
+template <class Item, class TimeOf>
+void checkIncreasingTimes(const std::vector<Item>& items, TimeOf timeOf)
+{
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (i == 0)
+            finiteNumber(std::invoke(timeOf, items[i]));
+        else
+            timeAfter(std::invoke(timeOf, items[i]), std::invoke(timeOf, items[i - 1]));
+    }
+}
+
+} // namespace
+
+double finiteNumber(double value)
+{
+    if (!std::isfinite(value))
+        refuse(formatNumber(value) + " is not a finite number");
+    return value;
+}
+
+double nonNegativeNumber(double value)
+{
+    if (!(finiteNumber(value) >= 0.0))
+        refuse(formatNumber(value) + " is negative");
+    return value;
+}
+
+double positiveNumber(double value)
+{
+    if (!(finiteNumber(value) > 0.0))
+        refuse(formatNumber(value) + " is not positive");
+    return value;
+}
+
+Eigen::Vector3d finiteVector(const Eigen::Vector3d& value) { return finiteCoefficients(value); }
+Eigen::Vector2d finiteVector(const Eigen::Vector2d& value) { return finiteCoefficients(value); }
+Eigen::Vector3d unitVector(const Eigen::Vector3d& value) { return normalisedNearUnit(value, "direction"); }
+
+Eigen::Quaterniond unitQuaternion(const Eigen::Quaterniond& value)
+{
+    return Eigen::Quaterniond(normalisedNearUnit(Eigen::Vector4d(value.coeffs()), "quaternion"));
+}
+
+Eigen::Quaterniond finiteQuaternion(const Eigen::Quaterniond& value)
+{
+    return Eigen::Quaterniond(finiteCoefficients(Eigen::Vector4d(value.coeffs())));
+}
+
+double timeAfter(double time, double previous)
+{
+    if (!(finiteNumber(time) > previous))
+        refuse("time " + formatNumber(time) + " does not come after the time before it, " + formatNumber(previous));
+    return time;
+}
+
+void checkKeyframe(Keyframe& key)
+{
+    finiteNumber(key.time);
+    key.pose.orientation = unitQuaternion(key.pose.orientation);
+    finiteVector(key.pose.position);
+}
+
+void checkKeyframes(std::vector<Keyframe>& keys)
+{
+    for (Keyframe& key : keys)
+        checkKeyframe(key);
+    checkIncreasingTimes(keys, &Keyframe::time);
+}
+
+void checkStroke(DirectionStroke& stroke)
+{
+    if (stroke.points.empty())
+        refuse("a stroke needs at least one point");
+    for (Eigen::Vector3d& point : stroke.points)
+        point = unitVector(point);
+    if (!stroke.times.empty() && stroke.times.size() != stroke.points.size())
+        refuse("a stroke has no times or one per point");
+    checkIncreasingTimes(stroke.times, std::identity{});
+}
+
+void checkMagnitudeCurve(const std::vector<MagnitudePoint>& points)
+{
+    for (const MagnitudePoint& point : points)
+        nonNegativeNumber(point.magnitude);
+    checkIncreasingTimes(points, &MagnitudePoint::time);
+}
+
+void checkPattern(const std::vector<Eigen::Vector2d>& pattern, int repeat)
+{
+    for (const Eigen::Vector2d& point : pattern)
+        finiteVector(point);
+    if (repeat < 0)
+        refuse("the pattern's repeat count " + std::to_string(repeat) + " is negative");
+}
+
+void checkWindow(const std::optional<std::pair<double, double>>& window)
+{
+    if (window)
+        timeAfter(window->second, finiteNumber(window->first));
+}
+
+void checkFittedCurve(const std::vector<HermiteControlPoint>& curve)
+{
+    for (const HermiteControlPoint& point : curve) {
+        finiteQuaternion(point.value);
+        finiteQuaternion(point.derivative);
+    }
+    checkIncreasingTimes(curve, &HermiteControlPoint::time);
+}
+
+void checkSketch(SketchState& sketch)
+{
+    for (DirectionStroke& stroke : sketch.directionStrokes)
+        checkStroke(stroke);
+    checkMagnitudeCurve(sketch.magnitude);
+    checkPattern(sketch.pattern, sketch.patternRepeat);
+    checkWindow(sketch.window);
+    nonNegativeNumber(sketch.alpha);
+    nonNegativeNumber(sketch.beta);
+    positiveNumber(sketch.delta);
+    checkFittedCurve(sketch.fittedCurve);
+}
+
+void checkSubdivision(const SubdivisionSettings& settings)
+{
+    if (settings.levels < 0 || settings.levels > kMaxSubdivisionLevels)
+        refuse("subdivision levels " + std::to_string(settings.levels) + " are outside 0 to " +
+               std::to_string(kMaxSubdivisionLevels));
+}
+
+void checkTrack(MotionTrack& track)
+{
+    checkKeyframes(track.keys);
+    checkSubdivision(track.subdivision);
+    checkSketch(track.sketch);
+}
+
+double frameRate(double fps)
+{
+    if (!(positiveNumber(fps) <= kMaxFps))
+        refuse("a frame rate of " + formatNumber(fps) + " is above " + formatNumber(kMaxFps));
+    return fps;
+}
+
+void checkTimeRange(double fps, double startTime, double endTime)
+{
+    frameRate(fps);
+    if (!(finiteNumber(endTime) > finiteNumber(startTime)))
+        refuse("the end time " + formatNumber(endTime) + " does not come after the start time " +
+               formatNumber(startTime));
+}
+
+void checkMesh(const Mesh& mesh)
+{
+    for (const Eigen::Vector3f& position : mesh.positions)
+        if (!position.allFinite())
+            refuse("a mesh position is not finite");
+    for (const Eigen::Vector3f& normal : mesh.normals)
+        if (!normal.allFinite())
+            refuse("a mesh normal is not finite");
+    if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
+        refuse("the mesh has " + std::to_string(mesh.normals.size()) + " normals for " +
+               std::to_string(mesh.positions.size()) + " positions");
+    if (mesh.indices.size() % 3 != 0)
+        refuse("the mesh's " + std::to_string(mesh.indices.size()) + " indices do not make whole triangles");
+    for (std::uint32_t index : mesh.indices)
+        if (index >= mesh.positions.size())
+            refuse("mesh index " + std::to_string(index) + " is beyond its " + std::to_string(mesh.positions.size()) +
+                   " positions");
+}
+
+} // namespace gyre::model

@@ -1,0 +1,84 @@
+#pragma once
+// Random documents for the model's tests: scenes, objects and every kind of undo command, all from a
+// seeded generator so that a failure can be replayed.
+
+#include "model/document.h"
+#include "model/scene.h"
+
+#include <QUndoCommand>
+
+#include <array>
+#include <memory>
+#include <random>
+#include <vector>
+
+namespace gyre::model::test {
+
+// Every command kind, for the random edits and for counting that each was tried.
+enum class EditKind {
+    ImportObjects,
+    DeleteObject,
+    RenameObject,
+    ReparentObject,
+    AddKeyframe,
+    RemoveKeyframe,
+    MoveKeyframe,
+    RetimeKeyframes,
+    SetKeyframeOrientation,
+    SetKeyframePosition,
+    ToggleKeyframeConstraint,
+    SetInterpolation,
+    SetSubdivision,
+    AddStroke,
+    EraseStroke,
+    EditStroke,
+    SetMagnitudeCurve,
+    SetPattern,
+    SetFitWindow,
+    SetFitParameter,
+    ApplyFitResult,
+    SetTimeRange,
+};
+inline constexpr int kEditKinds = static_cast<int>(EditKind::SetTimeRange) + 1;
+
+class RandomEdits {
+public:
+    explicit RandomEdits(unsigned seed);
+
+    // A random command for the document as it is, or null when this kind has nothing to act on
+    // (no objects, no keys). With some probability the command repeats the previous kind and target,
+    // so that drags merge. May throw std::invalid_argument where the command refuses the edit, as a
+    // reparenting under a descendant does.
+    std::unique_ptr<QUndoCommand> command(Document& document, EditKind kind);
+    // The kind of the next edit; imports give way to deletions once the scene has enough objects,
+    // so that every step stays cheap to compare.
+    EditKind kind(const Document& document);
+
+    // Random values.
+    Eigen::Quaterniond rotation();
+    Eigen::Vector3d vector();
+    double number(double low, double high);
+    std::size_t index(std::size_t count);
+    Keyframe keyframe(double time);
+    std::vector<Keyframe> keyframes(int count);
+    SketchState sketch();
+    // A batch of objects in ImportObjectsCommand's terms: local ids 1..n, parents earlier in the batch.
+    std::vector<SceneObject> objects(int count);
+    std::shared_ptr<const Mesh> mesh();
+    // A scene with `count` objects, each with keys and a sketch, some sharing a mesh.
+    Scene scene(int count);
+
+    std::mt19937& engine() { return engine_; }
+
+private:
+    ObjectId object(const Document& document);
+    bool repeat();
+
+    std::mt19937 engine_;
+    EditKind lastKind_ = EditKind::ImportObjects;
+    ObjectId lastObject_ = kNoObject;
+    std::size_t lastIndex_ = 0;
+    bool repeating_ = false;
+};
+
+} // namespace gyre::model::test

@@ -1,0 +1,608 @@
+// Each command on its own: what it changes, what it refuses, how consecutive edits merge into one undo
+// step, and which of the document's signals it emits. Also the document's own state: the current
+// time outside the undo history, and the modified state that follows the stack's clean state.
+
+#include "model_test_support.h"
+
+#include "model/commands/add_keyframe_command.h"
+#include "model/commands/add_stroke_command.h"
+#include "model/commands/apply_fit_result_command.h"
+#include "model/commands/delete_object_command.h"
+#include "model/commands/edit_stroke_command.h"
+#include "model/commands/erase_stroke_command.h"
+#include "model/commands/import_objects_command.h"
+#include "model/commands/move_keyframe_command.h"
+#include "model/commands/remove_keyframe_command.h"
+#include "model/commands/rename_object_command.h"
+#include "model/commands/reparent_object_command.h"
+#include "model/commands/retime_keyframes_command.h"
+#include "model/commands/set_fit_parameter_command.h"
+#include "model/commands/set_fit_window_command.h"
+#include "model/commands/set_interpolation_command.h"
+#include "model/commands/set_keyframe_orientation_command.h"
+#include "model/commands/set_keyframe_position_command.h"
+#include "model/commands/set_magnitude_curve_command.h"
+#include "model/commands/set_pattern_command.h"
+#include "model/commands/set_subdivision_command.h"
+#include "model/commands/set_time_range_command.h"
+#include "model/commands/toggle_keyframe_constraint_command.h"
+#include "model/input_error.h"
+#include "model/project_file.h"
+#include "model/scene_queries.h"
+
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+using namespace gyre;
+using namespace gyre::model;
+
+namespace {
+
+// An object with keys at the given times, each turned a little further about z.
+SceneObject objectWithKeys(ObjectId id, std::vector<double> times, ObjectId parent = kNoObject)
+{
+    SceneObject object;
+    object.id = id;
+    object.name = QStringLiteral("object %1").arg(id);
+    object.parent = parent;
+    for (double time : times)
+        object.track.keys.push_back(
+            {time, {Eigen::Quaterniond(Eigen::AngleAxisd(time, Eigen::Vector3d::UnitZ())), {time, 0, 0}}, true});
+    return object;
+}
+
+// Imports the objects (batch ids as given) and returns their scene ids.
+std::vector<ObjectId> import(Document& document, std::vector<SceneObject> objects)
+{
+    auto* command = new ImportObjectsCommand(document, std::move(objects));
+    const std::vector<ObjectId> ids = command->ids();
+    document.undoStack().push(command);
+    return ids;
+}
+
+std::vector<double> keyTimes(const Document& document, ObjectId id)
+{
+    std::vector<double> times;
+    for (const Keyframe& key : document.object(id)->track.keys)
+        times.push_back(key.time);
+    return times;
+}
+
+// Whether constructing the command throws std::invalid_argument with `message` in it.
+bool refuses(const std::function<void()>& makeCommand, const QString& message)
+{
+    try {
+        makeCommand();
+    } catch (const std::invalid_argument& error) {
+        if (QString::fromUtf8(error.what()).contains(message))
+            return true;
+        qWarning("refused with another message: %s", error.what());
+        return false;
+    }
+    return false;
+}
+
+// Counts every signal of a document.
+struct SignalCounts {
+    explicit SignalCounts(Document& document)
+        : objectAdded(&document, &Document::objectAdded)
+        , objectRemoved(&document, &Document::objectRemoved)
+        , objectChanged(&document, &Document::objectChanged)
+        , keyframesChanged(&document, &Document::keyframesChanged)
+        , trackSettingsChanged(&document, &Document::trackSettingsChanged)
+        , sketchChanged(&document, &Document::sketchChanged)
+        , sceneSettingsChanged(&document, &Document::sceneSettingsChanged)
+        , currentTimeChanged(&document, &Document::currentTimeChanged)
+    {
+    }
+
+    // "name:id" for each object signal and "name" for each scene signal, in a fixed order.
+    QStringList summary() const
+    {
+        QStringList lines;
+        const auto add = [&lines](const char* name, const QSignalSpy& spy) {
+            for (const QList<QVariant>& arguments : spy)
+                lines << (arguments.isEmpty() || arguments[0].typeId() == QMetaType::Double
+                              ? QString::fromLatin1(name)
+                              : QStringLiteral("%1:%2").arg(name).arg(arguments[0].value<ObjectId>()));
+        };
+        add("objectAdded", objectAdded);
+        add("objectRemoved", objectRemoved);
+        add("objectChanged", objectChanged);
+        add("keyframesChanged", keyframesChanged);
+        add("trackSettingsChanged", trackSettingsChanged);
+        add("sketchChanged", sketchChanged);
+        add("sceneSettingsChanged", sceneSettingsChanged);
+        add("currentTimeChanged", currentTimeChanged);
+        return lines;
+    }
+
+    QSignalSpy objectAdded, objectRemoved, objectChanged, keyframesChanged, trackSettingsChanged, sketchChanged,
+        sceneSettingsChanged, currentTimeChanged;
+};
+
+} // namespace
+
+class TstCommands : public QObject {
+    Q_OBJECT
+
+private slots:
+    void addKeyframeKeepsTimeOrder();
+    void addKeyframeRefusesBadKeys();
+    void removeKeyframe();
+    void moveKeyframeStaysBetweenNeighbours();
+    void dragsMergeIntoOneStep();
+    void differentEditsDoNotMerge();
+    void retimeMapsTheWholeTrack();
+    void keyframeEdits();
+    void trackSettings();
+    void strokes();
+    void sketchSettings();
+    void applyFitResult();
+    void importRemapsIdsAndKeepsSharedMeshes();
+    void importRefusesBadBatches();
+    void renameObject();
+    void reparentKeepsParentsFirst();
+    void reparentRefusesCycles();
+    void deleteRemovesTheSubtree();
+    void timeRange();
+    void signalsSayWhatChanged_data();
+    void signalsSayWhatChanged();
+    void currentTimeIsNotUndoable();
+    void modifiedFollowsTheSavedState();
+};
+
+void TstCommands::addKeyframeKeepsTimeOrder()
+{
+    Document document;
+    const ObjectId id = import(document, {objectWithKeys(1, {0, 2})}).front();
+    document.undoStack().push(new AddKeyframeCommand(document, id, {1, {}, true}));
+    document.undoStack().push(new AddKeyframeCommand(document, id, {-1, {}, true}));
+    document.undoStack().push(new AddKeyframeCommand(document, id, {5, {}, true}));
+    QCOMPARE(keyTimes(document, id), (std::vector<double>{-1, 0, 1, 2, 5}));
+    document.undoStack().undo();
+    document.undoStack().undo();
+    QCOMPARE(keyTimes(document, id), (std::vector<double>{0, 1, 2}));
+}
+
+void TstCommands::addKeyframeRefusesBadKeys()
+{
+    Document document;
+    const ObjectId id = import(document, {objectWithKeys(1, {0, 2})}).front();
+    const auto add = [&](Keyframe key) { AddKeyframeCommand(document, id, key); };
+    QVERIFY(refuses([&] { add({2, {}, true}); }, "has a keyframe at 2 s already"));
+    QVERIFY(refuses([&] { add({std::nan(""), {}, true}); }, "is not a finite number"));
+    QVERIFY(refuses([&] { add({1, {Eigen::Quaterniond(0, 0, 0, 0), Eigen::Vector3d::Zero()}, true}); }, "the quaternion is zero"));
+    QVERIFY(refuses([&] { add({1, {Eigen::Quaterniond(2, 0, 0, 0), Eigen::Vector3d::Zero()}, true}); }, "has length 2"));
+    QVERIFY(refuses([&] { AddKeyframeCommand(document, 99, {1, {}, true}); }, "no object 99"));
+    QCOMPARE(document.undoStack().count(), 1);
+
+    // A quaternion that drifted a little off unit length is normalised.
+    document.undoStack().push(new AddKeyframeCommand(document, id, {1, {Eigen::Quaterniond(0, 0, 1.0005, 0), Eigen::Vector3d::Zero()}, true}));
+    QCOMPARE(document.object(id)->track.keys[1].pose.orientation.coeffs(), Eigen::Vector4d(0, 1, 0, 0));
+}
+
+void TstCommands::removeKeyframe()
+{
+    Document document;
+    const ObjectId id = import(document, {objectWithKeys(1, {0, 1, 2})}).front();
+    const Keyframe removed = document.object(id)->track.keys[1];
+    document.undoStack().push(new RemoveKeyframeCommand(document, id, 1));
+    QCOMPARE(keyTimes(document, id), (std::vector<double>{0, 2}));
+    document.undoStack().undo();
+    QCOMPARE(keyTimes(document, id), (std::vector<double>{0, 1, 2}));
+    QCOMPARE(document.object(id)->track.keys[1].pose.position, removed.pose.position);
+    QVERIFY(refuses([&] { RemoveKeyframeCommand(document, id, 3); }, "has no keyframe 3 (it has 3)"));
+}
+
+void TstCommands::moveKeyframeStaysBetweenNeighbours()
+{
+    Document document;
+    const ObjectId id = import(document, {objectWithKeys(1, {0, 1, 2})}).front();
+    QVERIFY(refuses([&] { MoveKeyframeCommand(document, id, 1, 2); }, "moves only between its neighbours at 0 and 2 s"));
+    QVERIFY(refuses([&] { MoveKeyframeCommand(document, id, 1, -0.5); }, "not to -0.5 s"));
+    document.undoStack().push(new MoveKeyframeCommand(document, id, 2, 100));
+    document.undoStack().push(new MoveKeyframeCommand(document, id, 0, -100));
+    QCOMPARE(keyTimes(document, id), (std::vector<double>{-100, 1, 100}));
+}
+
+void TstCommands::dragsMergeIntoOneStep()
+{
+    Document document;
+    const ObjectId id = import(document, {objectWithKeys(1, {0, 1, 2})}).front();
+    QUndoStack& stack = document.undoStack();
+    for (double time : {1.1, 1.2, 1.3})
+        stack.push(new MoveKeyframeCommand(document, id, 1, time));
+    QCOMPARE(stack.count(), 2);
+    QCOMPARE(keyTimes(document, id)[1], 1.3);
+    stack.undo();
+    QCOMPARE(keyTimes(document, id)[1], 1.0);
+    stack.redo();
+    QCOMPARE(keyTimes(document, id)[1], 1.3);
+
+    const Eigen::Quaterniond before = document.object(id)->track.keys[0].pose.orientation;
+    for (double angle : {0.1, 0.2, 0.3})
+        stack.push(new SetKeyframeOrientationCommand(
+            document, id, 0, Eigen::Quaterniond(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitX()))));
+    QCOMPARE(stack.count(), 3);
+    stack.undo();
+    QCOMPARE(document.object(id)->track.keys[0].pose.orientation.coeffs(), before.coeffs());
+    stack.redo();
+
+    // A drag that starts after a save is a new step: the saved state stays reachable.
+    stack.push(new SetKeyframePositionCommand(document, id, 0, {1, 0, 0}));
+    stack.setClean();
+    stack.push(new SetKeyframePositionCommand(document, id, 0, {2, 0, 0}));
+    QCOMPARE(stack.count(), 5);
+    stack.undo();
+    QVERIFY(stack.isClean());
+}
+
+void TstCommands::differentEditsDoNotMerge()
+{
+    Document document;
+    const ObjectId id = import(document, {objectWithKeys(1, {0, 1, 2})}).front();
+    QUndoStack& stack = document.undoStack();
+    stack.push(new MoveKeyframeCommand(document, id, 1, 1.5));
+    stack.push(new MoveKeyframeCommand(document, id, 2, 2.5)); // another key
+    stack.push(new SetKeyframePositionCommand(document, id, 2, {1, 2, 3})); // another field
+    stack.push(new SetFitParameterCommand(document, id, FitParameter::Alpha, 0.5));
+    stack.push(new SetFitParameterCommand(document, id, FitParameter::Beta, 0.5)); // another parameter
+    stack.push(new SetFitParameterCommand(document, id, FitParameter::Beta, 0.7));
+    QCOMPARE(stack.count(), 6);
+    stack.push(new ToggleKeyframeConstraintCommand(document, id, 0));
+    stack.push(new ToggleKeyframeConstraintCommand(document, id, 0)); // toggles never merge
+    QCOMPARE(stack.count(), 8);
+}
+
+void TstCommands::retimeMapsTheWholeTrack()
+{
+    Document document;
+    SceneObject object = objectWithKeys(1, {0, 1, 2});
+    SketchState& sketch = object.track.sketch;
+    sketch.directionStrokes = {{{Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()}, {0.5, 1.5}}};
+    sketch.magnitude = {{0, 1}, {2, 3}};
+    sketch.window = std::pair{0.5, 1.5};
+    sketch.fittedCurve = {{1, Eigen::Quaterniond::Identity(), Eigen::Quaterniond(0, 1, 2, 3)}};
+    const ObjectId id = import(document, {object}).front();
+    document.undoStack().push(new RetimeKeyframesCommand(document, id, 2, 1)); // t' = 2t + 1
+    const MotionTrack& track = document.object(id)->track;
+    QCOMPARE(keyTimes(document, id), (std::vector<double>{1, 3, 5}));
+    QCOMPARE(track.sketch.directionStrokes[0].times, (std::vector<double>{2, 4}));
+    QCOMPARE(track.sketch.magnitude[1].time, 5.0);
+    QCOMPARE(track.sketch.magnitude[1].magnitude, 3.0);
+    QCOMPARE(*track.sketch.window, (std::pair{2.0, 4.0}));
+    QCOMPARE(track.sketch.fittedCurve[0].time, 3.0);
+    // dq/dt' = (dq/dt)/2
+    QCOMPARE(track.sketch.fittedCurve[0].derivative.coeffs(), Eigen::Vector4d(0.5, 1, 1.5, 0));
+    QVERIFY(refuses([&] { RetimeKeyframesCommand(document, id, 0, 1); }, "0 is not positive"));
+    QVERIFY(refuses([&] { RetimeKeyframesCommand(document, id, 1e308, 0); }, "inf is not a finite number"));
+}
+
+void TstCommands::keyframeEdits()
+{
+    Document document;
+    const ObjectId id = import(document, {objectWithKeys(1, {0, 1})}).front();
+    document.undoStack().push(new SetKeyframePositionCommand(document, id, 1, {4, 5, 6}));
+    document.undoStack().push(new ToggleKeyframeConstraintCommand(document, id, 1));
+    const Keyframe& key = document.object(id)->track.keys[1];
+    QCOMPARE(key.pose.position, Eigen::Vector3d(4, 5, 6));
+    QVERIFY(!key.constrained);
+    document.undoStack().undo();
+    QVERIFY(document.object(id)->track.keys[1].constrained);
+    QVERIFY(refuses([&] { SetKeyframePositionCommand(document, id, 0, {0, INFINITY, 0}); }, "not all components are finite"));
+    QVERIFY(refuses([&] { SetKeyframeOrientationCommand(document, id, 2, Eigen::Quaterniond::Identity()); }, "has no keyframe 2"));
+}
+
+void TstCommands::trackSettings()
+{
+    Document document;
+    const ObjectId id = import(document, {objectWithKeys(1, {0})}).front();
+    document.undoStack().push(new SetInterpolationCommand(document, id, InterpolationMethod::Screw));
+    const SubdivisionSettings settings{SubdivisionScheme::Jarek, 5, false, true};
+    document.undoStack().push(new SetSubdivisionCommand(document, id, settings));
+    const MotionTrack& track = document.object(id)->track;
+    QCOMPARE(track.interpolation, InterpolationMethod::Screw);
+    QCOMPARE(track.subdivision.scheme, SubdivisionScheme::Jarek);
+    QCOMPARE(track.subdivision.levels, 5);
+    QVERIFY(!track.subdivision.cyclic);
+    QVERIFY(refuses([&] { SetSubdivisionCommand(document, id, {SubdivisionScheme::Jarek, 17, true, false}); },
+                    "levels 17 are outside 0 to 16"));
+}
+
+void TstCommands::strokes()
+{
+    Document document;
+    const ObjectId id = import(document, {objectWithKeys(1, {0})}).front();
+    QUndoStack& stack = document.undoStack();
+    stack.push(new AddStrokeCommand(document, id, {{Eigen::Vector3d(0, 0, 1.0002)}, {}}));
+    stack.push(new AddStrokeCommand(document, id, {{Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()}, {0, 1}}));
+    const auto strokes = [&] { return document.object(id)->track.sketch.directionStrokes; };
+    QCOMPARE(strokes().size(), std::size_t{2});
+    QCOMPARE(strokes()[0].points[0], Eigen::Vector3d::UnitZ()); // normalised
+    stack.push(new EditStrokeCommand(document, id, 0, {{Eigen::Vector3d::UnitY()}, {}}));
+    stack.push(new EditStrokeCommand(document, id, 0, {{-Eigen::Vector3d::UnitY()}, {}}));
+    QCOMPARE(stack.count(), 4); // the two edits merged
+    stack.push(new EraseStrokeCommand(document, id, 0));
+    QCOMPARE(strokes().size(), std::size_t{1});
+    QCOMPARE(strokes()[0].times, (std::vector<double>{0, 1}));
+    stack.undo();
+    QCOMPARE(strokes()[0].points[0], -Eigen::Vector3d::UnitY());
+    QVERIFY(refuses([&] { AddStrokeCommand(document, id, {}); }, "needs at least one point"));
+    QVERIFY(refuses([&] { AddStrokeCommand(document, id, {{Eigen::Vector3d::UnitX()}, {0, 1}}); }, "no times or one per point"));
+    QVERIFY(refuses([&] { EraseStrokeCommand(document, id, 2); }, "has no stroke 2"));
+}
+
+void TstCommands::sketchSettings()
+{
+    Document document;
+    const ObjectId id = import(document, {objectWithKeys(1, {0})}).front();
+    QUndoStack& stack = document.undoStack();
+    stack.push(new SetMagnitudeCurveCommand(document, id, {{0, 1}, {1, 2}}));
+    stack.push(new SetPatternCommand(document, id, {{0.1, 0.2}}, 3));
+    stack.push(new SetFitWindowCommand(document, id, std::pair{1.0, 2.0}));
+    stack.push(new SetFitParameterCommand(document, id, FitParameter::Delta, 0.25));
+    const SketchState& sketch = document.object(id)->track.sketch;
+    QCOMPARE(sketch.magnitude.size(), std::size_t{2});
+    QCOMPARE(sketch.patternRepeat, 3);
+    QCOMPARE(sketch.pattern.front(), Eigen::Vector2d(0.1, 0.2));
+    QCOMPARE(*sketch.window, (std::pair{1.0, 2.0}));
+    QCOMPARE(sketch.delta, 0.25);
+    stack.push(new SetFitWindowCommand(document, id, std::nullopt));
+    QVERIFY(!document.object(id)->track.sketch.window);
+    QVERIFY(refuses([&] { SetMagnitudeCurveCommand(document, id, {{0, -1}}); }, "-1 is negative"));
+    QVERIFY(refuses([&] { SetMagnitudeCurveCommand(document, id, {{1, 1}, {1, 1}}); }, "does not come after"));
+    QVERIFY(refuses([&] { SetPatternCommand(document, id, {}, -1); }, "repeat count -1 is negative"));
+    QVERIFY(refuses([&] { SetFitWindowCommand(document, id, std::pair{2.0, 1.0}); }, "does not come after"));
+    QVERIFY(refuses([&] { SetFitParameterCommand(document, id, FitParameter::Delta, 0); }, "0 is not positive"));
+    QVERIFY(refuses([&] { SetFitParameterCommand(document, id, FitParameter::Alpha, -1); }, "-1 is negative"));
+}
+
+void TstCommands::applyFitResult()
+{
+    Document document;
+    const ObjectId id = import(document, {objectWithKeys(1, {0, 1})}).front();
+    FitResult result{{{0, Eigen::Quaterniond::Identity(), Eigen::Quaterniond(0, 0, 0, 1)},
+                      {1, Eigen::Quaterniond::Identity(), Eigen::Quaterniond(0, 0, 0, 1)}},
+                     {{0, {}, true}, {0.5, {}, false}, {1, {}, true}}};
+    document.undoStack().push(new ApplyFitResultCommand(document, id, result));
+    QCOMPARE(keyTimes(document, id), (std::vector<double>{0, 0.5, 1}));
+    QCOMPARE(document.object(id)->track.sketch.fittedCurve.size(), std::size_t{2});
+    document.undoStack().undo();
+    QCOMPARE(keyTimes(document, id), (std::vector<double>{0, 1}));
+    QVERIFY(document.object(id)->track.sketch.fittedCurve.empty());
+    result.curve[1].time = 0;
+    QVERIFY(refuses([&] { ApplyFitResultCommand(document, id, result); }, "does not come after"));
+}
+
+void TstCommands::importRemapsIdsAndKeepsSharedMeshes()
+{
+    Document document;
+    import(document, {objectWithKeys(7, {0})});
+    std::vector<SceneObject> batch{objectWithKeys(10, {0}), objectWithKeys(3, {0}, 10), objectWithKeys(5, {0}, 3)};
+    const auto mesh = std::make_shared<Mesh>(Mesh{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {}, {0, 1, 2}});
+    batch[0].mesh = mesh;
+    batch[2].mesh = mesh;
+    const std::vector<ObjectId> ids = import(document, batch);
+    QCOMPARE(ids, (std::vector<ObjectId>{2, 3, 4}));
+    QCOMPARE(document.object(3)->parent, ObjectId{2});
+    QCOMPARE(document.object(4)->parent, ObjectId{3});
+    QCOMPARE(document.object(4)->name, QStringLiteral("object 5"));
+    QCOMPARE(document.object(2)->mesh.get(), document.object(4)->mesh.get());
+    document.undoStack().undo();
+    QCOMPARE(document.scene().objects.size(), std::size_t{1});
+    document.undoStack().redo();
+    QCOMPARE(objectOrder(document.scene()), (std::vector<ObjectId>{1, 2, 3, 4}));
+}
+
+void TstCommands::importRefusesBadBatches()
+{
+    Document document;
+    const auto importing = [&](std::vector<SceneObject> batch) { ImportObjectsCommand(document, std::move(batch)); };
+    QVERIFY(refuses([&] { importing({objectWithKeys(1, {0}, 2), objectWithKeys(2, {0})}); },
+                    "imported object 0: its parent 2 does not come before it"));
+    QVERIFY(refuses([&] { importing({objectWithKeys(1, {0}), objectWithKeys(1, {0})}); },
+                    "imported object 1: its id 1 is 0 or not unique"));
+    QVERIFY(refuses([&] { importing({objectWithKeys(0, {0})}); }, "its id 0 is 0 or not unique"));
+    QVERIFY(refuses([&] { importing({objectWithKeys(1, {0}, 1)}); }, "its parent 1 does not come before it"));
+    QVERIFY(refuses([&] { importing({objectWithKeys(1, {1, 0})}); }, "imported object 0: time 0 does not come after"));
+    SceneObject badMesh = objectWithKeys(1, {0});
+    badMesh.mesh = std::make_shared<Mesh>(Mesh{{{0, 0, 0}}, {}, {0, 0, 1}});
+    QVERIFY(refuses([&] { importing({badMesh}); }, "mesh index 1 is beyond its 1 positions"));
+    QCOMPARE(document.undoStack().count(), 0);
+}
+
+void TstCommands::renameObject()
+{
+    Document document;
+    const ObjectId id = import(document, {objectWithKeys(1, {0})}).front();
+    document.undoStack().push(new RenameObjectCommand(document, id, QStringLiteral("spinning top")));
+    QCOMPARE(document.object(id)->name, QStringLiteral("spinning top"));
+    document.undoStack().undo();
+    QCOMPARE(document.object(id)->name, QStringLiteral("object 1"));
+}
+
+void TstCommands::reparentKeepsParentsFirst()
+{
+    Document document;
+    // 1, 2 (child of 1), 3, 4 (child of 3)
+    import(document, {objectWithKeys(1, {0}), objectWithKeys(2, {0}, 1), objectWithKeys(3, {0}), objectWithKeys(4, {0}, 3)});
+    const Keyframe before = document.object(1)->track.keys[0];
+    document.undoStack().push(new ReparentObjectCommand(document, 1, 4));
+    // 1's subtree moves right after its new parent, 4.
+    QCOMPARE(objectOrder(document.scene()), (std::vector<ObjectId>{3, 4, 1, 2}));
+    QCOMPARE(document.object(1)->parent, ObjectId{4});
+    // The track, which is relative to the parent, is kept.
+    QCOMPARE(document.object(1)->track.keys[0].pose.position, before.pose.position);
+    document.undoStack().undo();
+    QCOMPARE(objectOrder(document.scene()), (std::vector<ObjectId>{1, 2, 3, 4}));
+    QCOMPARE(document.object(1)->parent, kNoObject);
+    document.undoStack().push(new ReparentObjectCommand(document, 4, kNoObject));
+    QCOMPARE(document.object(4)->parent, kNoObject);
+    QCOMPARE(objectOrder(document.scene()), (std::vector<ObjectId>{1, 2, 3, 4}));
+}
+
+void TstCommands::reparentRefusesCycles()
+{
+    Document document;
+    import(document, {objectWithKeys(1, {0}), objectWithKeys(2, {0}, 1), objectWithKeys(3, {0}, 2)});
+    QVERIFY(refuses([&] { ReparentObjectCommand(document, 1, 3); }, "cannot be the parent of object 1"));
+    QVERIFY(refuses([&] { ReparentObjectCommand(document, 2, 2); }, "cannot be the parent of object 2"));
+    QVERIFY(refuses([&] { ReparentObjectCommand(document, 2, 9); }, "no object 9"));
+}
+
+void TstCommands::deleteRemovesTheSubtree()
+{
+    Document document;
+    import(document, {objectWithKeys(1, {0}), objectWithKeys(2, {0}, 1), objectWithKeys(3, {0}),
+                      objectWithKeys(4, {0}, 2), objectWithKeys(5, {0}, 3)});
+    const QByteArray before = projectJson(document.scene());
+    document.undoStack().push(new DeleteObjectCommand(document, 1));
+    QCOMPARE(objectOrder(document.scene()), (std::vector<ObjectId>{3, 5}));
+    document.undoStack().undo();
+    QCOMPARE(projectJson(document.scene()), before);
+}
+
+void TstCommands::timeRange()
+{
+    Document document;
+    document.undoStack().push(new SetTimeRangeCommand(document, {30, 1, 5}));
+    document.undoStack().push(new SetTimeRangeCommand(document, {30, 1, 6}));
+    QCOMPARE(document.undoStack().count(), 1);
+    QCOMPARE(document.scene().fps, 30.0);
+    QCOMPARE(document.scene().endTime, 6.0);
+    document.undoStack().undo();
+    QCOMPARE(document.scene().fps, 24.0);
+    QCOMPARE(document.scene().endTime, 10.0);
+    QVERIFY(refuses([&] { SetTimeRangeCommand(document, {0, 0, 1}); }, "0 is not positive"));
+    QVERIFY(refuses([&] { SetTimeRangeCommand(document, {2000, 0, 1}); }, "above 1000"));
+    QVERIFY(refuses([&] { SetTimeRangeCommand(document, {24, 1, 1}); }, "does not come after the start time"));
+}
+
+void TstCommands::signalsSayWhatChanged_data()
+{
+    using Make = std::function<QUndoCommand*(Document&)>;
+    QTest::addColumn<Make>("make");
+    QTest::addColumn<QStringList>("expected");
+    // The document holds 1 with child 2, and 3; every object has keys at 0, 1, 2 and one stroke.
+    const auto row = [](const char* name, Make make, QStringList expected) {
+        QTest::newRow(name) << make << expected;
+    };
+    row("add keyframe", [](Document& d) { return new AddKeyframeCommand(d, 2, {3, {}, true}); }, {"keyframesChanged:2"});
+    row("remove keyframe", [](Document& d) { return new RemoveKeyframeCommand(d, 2, 0); }, {"keyframesChanged:2"});
+    row("move keyframe", [](Document& d) { return new MoveKeyframeCommand(d, 2, 1, 1.5); }, {"keyframesChanged:2"});
+    row("retime", [](Document& d) { return new RetimeKeyframesCommand(d, 2, 2, 0); },
+        {"keyframesChanged:2", "sketchChanged:2"});
+    row("orientation", [](Document& d) { return new SetKeyframeOrientationCommand(d, 2, 1, Eigen::Quaterniond::Identity()); }, {"keyframesChanged:2"});
+    row("position", [](Document& d) { return new SetKeyframePositionCommand(d, 2, 1, Eigen::Vector3d::Zero()); }, {"keyframesChanged:2"});
+    row("constraint", [](Document& d) { return new ToggleKeyframeConstraintCommand(d, 2, 1); }, {"keyframesChanged:2"});
+    row("interpolation", [](Document& d) { return new SetInterpolationCommand(d, 2, InterpolationMethod::Squad); },
+        {"trackSettingsChanged:2"});
+    row("subdivision", [](Document& d) { return new SetSubdivisionCommand(d, 2, {}); }, {"trackSettingsChanged:2"});
+    row("add stroke", [](Document& d) { return new AddStrokeCommand(d, 2, {{Eigen::Vector3d::UnitX()}, {}}); },
+        {"sketchChanged:2"});
+    row("erase stroke", [](Document& d) { return new EraseStrokeCommand(d, 2, 0); }, {"sketchChanged:2"});
+    row("edit stroke", [](Document& d) { return new EditStrokeCommand(d, 2, 0, {{Eigen::Vector3d::UnitY()}, {}}); },
+        {"sketchChanged:2"});
+    row("magnitude", [](Document& d) { return new SetMagnitudeCurveCommand(d, 2, {}); }, {"sketchChanged:2"});
+    row("pattern", [](Document& d) { return new SetPatternCommand(d, 2, {}, 0); }, {"sketchChanged:2"});
+    row("window", [](Document& d) { return new SetFitWindowCommand(d, 2, std::nullopt); }, {"sketchChanged:2"});
+    row("fit parameter", [](Document& d) { return new SetFitParameterCommand(d, 2, FitParameter::Beta, 2); },
+        {"sketchChanged:2"});
+    row("apply fit", [](Document& d) { return new ApplyFitResultCommand(d, 2, {}); },
+        {"keyframesChanged:2", "sketchChanged:2"});
+    row("import", [](Document& d) { return new ImportObjectsCommand(d, {objectWithKeys(1, {}), objectWithKeys(2, {}, 1)}); },
+        {"objectAdded:4", "objectAdded:5"});
+    row("rename", [](Document& d) { return new RenameObjectCommand(d, 2, QStringLiteral("x")); }, {"objectChanged:2"});
+    row("reparent", [](Document& d) { return new ReparentObjectCommand(d, 2, 3); }, {"objectChanged:2"});
+    // Children go before their parents, so a view never holds an object whose parent it has dropped.
+    row("delete", [](Document& d) { return new DeleteObjectCommand(d, 1); }, {"objectRemoved:2", "objectRemoved:1"});
+    row("time range", [](Document& d) { return new SetTimeRangeCommand(d, {25, 0, 4}); }, {"sceneSettingsChanged"});
+}
+
+// Each command emits exactly the signals of what it changed, on redo and again on undo.
+void TstCommands::signalsSayWhatChanged()
+{
+    using Make = std::function<QUndoCommand*(Document&)>;
+    QFETCH(Make, make);
+    QFETCH(QStringList, expected);
+    Document document;
+    std::vector<SceneObject> objects{objectWithKeys(1, {0, 1, 2}), objectWithKeys(2, {0, 1, 2}, 1),
+                                     objectWithKeys(3, {0, 1, 2})};
+    for (SceneObject& object : objects)
+        object.track.sketch.directionStrokes = {{{Eigen::Vector3d::UnitZ()}, {}}};
+    import(document, objects);
+
+    SignalCounts redoSignals(document);
+    document.undoStack().push(make(document));
+    QCOMPARE(redoSignals.summary(), expected);
+    SignalCounts undoSignals(document);
+    document.undoStack().undo();
+    QStringList undone = expected;
+    undone.replaceInStrings("objectAdded", "objectRemoved-");
+    undone.replaceInStrings("objectRemoved:", "objectAdded:");
+    undone.replaceInStrings("objectRemoved-", "objectRemoved");
+    QStringList actual = undoSignals.summary();
+    std::sort(undone.begin(), undone.end());
+    std::sort(actual.begin(), actual.end());
+    QCOMPARE(actual, undone);
+}
+
+void TstCommands::currentTimeIsNotUndoable()
+{
+    Document document;
+    QSignalSpy changed(&document, &Document::currentTimeChanged);
+    document.setCurrentTime(2.5);
+    document.setCurrentTime(2.5);
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(changed.front().front().toDouble(), 2.5);
+    QCOMPARE(document.scene().currentTime, 2.5);
+    QCOMPARE(document.undoStack().count(), 0);
+    QVERIFY(!document.isModified());
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, document.setCurrentTime(std::nan("")));
+}
+
+void TstCommands::modifiedFollowsTheSavedState()
+{
+    QTemporaryDir directory;
+    const QString path = directory.filePath("project.gyre");
+    Document document;
+    QSignalSpy modified(&document, &Document::modifiedChanged);
+    QSignalSpy filePath(&document, &Document::filePathChanged);
+    QVERIFY(!document.isModified());
+    import(document, {objectWithKeys(1, {0})});
+    QVERIFY(document.isModified());
+    document.save(path);
+    QVERIFY(!document.isModified());
+    QCOMPARE(document.filePath(), path);
+    QCOMPARE(filePath.count(), 1);
+    document.undoStack().undo();
+    QVERIFY(document.isModified());
+    document.undoStack().redo();
+    QVERIFY(!document.isModified()); // back at the saved state
+    QCOMPARE(modified.count(), 4);
+
+    // A file that cannot be loaded leaves the document as it was.
+    document.undoStack().push(new RenameObjectCommand(document, 1, QStringLiteral("edited")));
+    const QByteArray before = projectJson(document.scene());
+    QVERIFY_THROWS_EXCEPTION(gyre::InputError, document.load(directory.filePath("missing.gyre")));
+    QCOMPARE(projectJson(document.scene()), before);
+    QVERIFY(document.isModified());
+    QCOMPARE(document.undoStack().count(), 2);
+
+    QSignalSpy reset(&document, &Document::sceneReset);
+    document.load(path);
+    QCOMPARE(reset.count(), 1);
+    QVERIFY(!document.isModified());
+    QCOMPARE(document.undoStack().count(), 0);
+    QCOMPARE(document.object(1)->name, QStringLiteral("object 1"));
+}
+
+QTEST_GUILESS_MAIN(TstCommands)
+#include "tst_commands.moc"
