@@ -110,12 +110,12 @@ UsageError VerbCommandLine::error(std::string_view message) const
                       verb_.toStdString() + ")");
 }
 
-model::BakeRange outputRange(const std::vector<double>& keyTimes, double fps, const VerbCommandLine& commandLine)
+model::BakeRange checkedOutputRange(const model::BakeRange& range, std::size_t keyCount,
+                                    const VerbCommandLine& commandLine)
 {
-    const model::BakeRange range{keyTimes.front(), keyTimes.back(), fps};
-    if (!(model::bakeSampleBound(range, keyTimes.size()) <= static_cast<double>(kMaxPoseRows)))
-        throw commandLine.error("--fps " + formatNumber(fps) + " over " + formatNumber(range.end - range.start) +
-                                " s of keys gives more than " + std::to_string(kMaxPoseRows) + " samples");
+    if (!(model::bakeSampleBound(range, keyCount) <= static_cast<double>(kMaxPoseRows)))
+        throw commandLine.error("--fps " + formatNumber(range.fps) + " over " + formatNumber(range.end - range.start) +
+                                " s gives more than " + std::to_string(kMaxPoseRows) + " samples");
     return range;
 }
 

@@ -72,9 +72,10 @@ private:
     QString outputPath_;
 };
 
-// The span of the keys at --fps, for a verb that writes a motion at its frames and keys; a UsageError
-// when that would be more rows than a pose file may hold.
-model::BakeRange outputRange(const std::vector<double>& keyTimes, double fps, const VerbCommandLine& commandLine);
+// `range`, for a verb that writes a motion at its frames and `keyCount` keys; a UsageError naming
+// --fps when that would be more rows than a pose file may hold.
+model::BakeRange checkedOutputRange(const model::BakeRange& range, std::size_t keyCount,
+                                    const VerbCommandLine& commandLine);
 
 // --order, --intrinsic and --extrinsic.
 QList<QCommandLineOption> eulerOptions();

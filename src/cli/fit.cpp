@@ -278,7 +278,8 @@ void runFit(const QStringList& arguments)
         fitKeys.push_back({keys.rows[i].time, keys.rows[i].pose.orientation, !freed.contains(i)});
         keyTimes.push_back(keys.rows[i].time);
     }
-    const std::vector<double> times = model::bakeTimes(keyTimes, outputRange(keyTimes, fps, commandLine));
+    const model::BakeRange range{keyTimes.front(), keyTimes.back(), fps};
+    const std::vector<double> times = model::bakeTimes(keyTimes, checkedOutputRange(range, keyTimes.size(), commandLine));
     FitResult result;
     try {
         result = fit::fitAngularVelocity(fitKeys, angularVelocity, fitSettings);

@@ -6,13 +6,17 @@ namespace {
 
 const char* const kGeneral = R"(Usage: gyre-cli VERB INPUT [-o OUTPUT] [options]
 
-Batch verbs over pose CSV files (docs/pose-csv.md) and projects (docs/file-format.md):
+Batch verbs over pose CSV files (docs/pose-csv.md), projects (docs/file-format.md) and scene files
+(docs/scene-files.md):
   convert      rewrite the rotation columns in another representation
   interpolate  sample a motion through timed keys at a frame rate
   subdivide    smooth a sequence of poses by polyscrew subdivision
   fit          bend the motion through keys to match a target angular velocity
-  info         summarise a project: objects, keyframes, time range (no -o)
+  info         summarise a project or a scene file: objects, keyframes, time range (no -o)
   keys         write an object's keyframes from a project as a pose file
+  bake         write an object's motion from a project at every frame as a pose file
+  import       turn a scene file (FBX, glTF, Collada, BVH, OBJ, ...) into a project
+  export       write a project as a scene file with its motion baked
 
   gyre-cli help VERB     usage of one verb (also: gyre-cli VERB --help)
   gyre-cli --version     the version
@@ -100,10 +104,43 @@ or the artist's sketch
                  error, solve time, energy terms before and after
 
 The Euler options say how to read Euler key columns.)";
-const char* const kInfo = R"(Usage: gyre-cli info PROJECT.gyre
+const char* const kInfo = R"(Usage: gyre-cli info PROJECT.gyre|SCENE
 
-Prints a short summary of a Gyre project: its time range and frame rate, its objects and
-keyframes, and for each object its parent, keyframes, their time span and the interpolation.)";
+Prints a short summary of a Gyre project (a .gyre file) or of any scene file Assimp reads: its time
+range and frame rate, its objects and keyframes, and for each object its parent, keyframes, their
+time span and the interpolation. For a scene file it lists the animations too; the first is the one
+gyre-cli import takes unless told otherwise.)";
+
+const char* const kBake = R"(Usage: gyre-cli bake PROJECT.gyre --object NAME --fps F -o FRAMES.csv
+
+Writes the motion of one object as the project evaluates it (its interpolation, ScrewBender
+subdivision and any applied fit) at start + k/F over the scene's time range, plus a sample at every
+key time, as a pose file time,qw,qx,qy,qz,x,y,z: the pose relative to the object's parent, as its
+keys are.
+
+  --object NAME  the object; the name must single out one object that has keyframes
+  --fps F        samples per second, > 0
+  -o, --output FILE  the output file)";
+
+const char* const kImport = R"(Usage: gyre-cli import SCENE -o PROJECT.gyre [--animation N]
+
+Reads any scene file Assimp reads (FBX, OBJ, glTF 2.0, Collada, BVH, DirectX .x, 3DS, ASE, ...) and
+writes it as a Gyre project: one object per node, named as the node, with its mesh, its parent and
+every key of the chosen animation exactly as the file has them (docs/scene-files.md). What the
+project cannot keep (scale animation, skinning, ...) is reported on standard error.
+
+  --animation N  which of the file's animations to take, from 0 (default 0; gyre-cli info lists them)
+  -o, --output FILE  the project file)";
+
+const char* const kExport = R"(Usage: gyre-cli export PROJECT.gyre -o SCENE.(gltf|glb|dae|fbx|obj) [--fps F]
+
+Writes the project as a scene file, the format named by the extension: glTF 2.0 (.gltf with a .bin
+beside it, or .glb), Collada (.dae), FBX (.fbx, ASCII) or OBJ (.obj with a .mtl; meshes only, no
+motion). Every object's motion is baked at the frames and its keys, so every interpolation and fit
+plays the same after import.
+
+  --fps F   frames per second of the bake (default: the project's)
+  -o, --output FILE  the scene file)";
 
 const char* const kKeys = R"(Usage: gyre-cli keys PROJECT.gyre --object NAME -o KEYS.csv
 
@@ -124,6 +161,9 @@ QString interpolateHelp() { return withCommonOptions(kInterpolate); }
 QString subdivideHelp() { return withCommonOptions(kSubdivide); }
 QString fitHelp() { return withCommonOptions(kFit); }
 QString infoHelp() { return QString::fromUtf8(kInfo); }
+QString bakeHelp() { return QString::fromUtf8(kBake); }
+QString importHelp() { return QString::fromUtf8(kImport); }
+QString exportHelp() { return QString::fromUtf8(kExport); }
 QString keysHelp() { return QString::fromUtf8(kKeys); }
 
 } // namespace gyre::cli

@@ -13,5 +13,8 @@ QString subdivideHelp();
 QString fitHelp();
 QString infoHelp();
 QString keysHelp();
+QString importHelp();
+QString exportHelp();
+QString bakeHelp();
 
 } // namespace gyre::cli

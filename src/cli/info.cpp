@@ -1,8 +1,9 @@
-// gyre-cli info: a short summary of a project.
+// gyre-cli info: a short summary of a project or a scene file.
 
 #include "cli/command_line.h"
 #include "cli/verbs.h"
 #include "core/number_text.h"
+#include "io/scene_import.h"
 #include "model/project_file.h"
 #include "model/scene_queries.h"
 
@@ -33,13 +34,35 @@ std::string objectLine(const model::Scene& scene, const SceneObject& object)
     return line + ", " + std::string(interpolationMethodName(object.track.interpolation));
 }
 
+// A project by its .gyre extension; any other file is a scene for Assimp, whose animations are listed.
+bool isProject(const QString& path) { return path.endsWith(QStringLiteral(".gyre"), Qt::CaseInsensitive); }
+
+std::string animationLines(const std::vector<AnimationSummary>& animations)
+{
+    std::string text = plural(animations.size(), "animation") + (animations.empty() ? "\n" : ":\n");
+    for (std::size_t i = 0; i < animations.size(); ++i)
+        text += "  " + std::to_string(i) + ": '" + animations[i].name.toStdString() + "', " +
+                formatNumber(animations[i].durationSeconds) + " s, " + plural(animations[i].channelCount, "channel") +
+                (i == 0 ? " (imported by default)\n" : "\n");
+    return text;
+}
+
 } // namespace
 
 void runInfo(const QStringList& arguments)
 {
     const VerbCommandLine commandLine(QStringLiteral("info"), arguments, {}, OutputFile::None);
-    const model::Scene scene = model::readProject(commandLine.inputPath());
-    std::string text = commandLine.inputPath().toStdString() + ": Gyre project\n";
+    const QString& path = commandLine.inputPath();
+    std::string text;
+    model::Scene scene;
+    if (isProject(path)) {
+        scene = model::readProject(path);
+        text = path.toStdString() + ": Gyre project\n";
+    } else {
+        SceneImport imported = importScene(path);
+        scene = std::move(imported.scene);
+        text = path.toStdString() + ": scene\n" + animationLines(imported.animations);
+    }
     text += "time range: " + formatNumber(scene.startTime) + " to " + formatNumber(scene.endTime) + " s at " +
             formatNumber(scene.fps) + " fps\n";
     text += plural(scene.objects.size(), "object") + ", " + plural(model::keyframeCount(scene), "keyframe") + "\n";

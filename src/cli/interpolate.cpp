@@ -46,7 +46,8 @@ void runInterpolate(const QStringList& arguments)
     if (keys.rows.size() < 2)
         throw InputError(commandLine.inputPath(), keys.rows.back().line, "interpolate needs at least two keys");
     const model::MotionTrack track = trackOf(keys, method);
-    const model::BakeRange range = outputRange(model::keyTimes(track), fps, commandLine);
+    const model::BakeRange range = checkedOutputRange({track.keys.front().time, track.keys.back().time, fps},
+                                                      track.keys.size(), commandLine);
     PoseTable frames{RotationColumns::Quaternion, true, true, {}};
     for (const model::TimedPose& sample : model::bakeTrack(track, range, convention))
         frames.rows.push_back({sample.time, sample.pose, 0});

@@ -34,6 +34,9 @@ const Verb kVerbs[] = {
     {QLatin1String("fit"), runFit, fitHelp},
     {QLatin1String("info"), runInfo, infoHelp},
     {QLatin1String("keys"), runKeys, keysHelp},
+    {QLatin1String("bake"), runBake, bakeHelp},
+    {QLatin1String("import"), runImport, importHelp},
+    {QLatin1String("export"), runExport, exportHelp},
 };
 
 const Verb* findVerb(const QString& name)

@@ -13,5 +13,8 @@ void runSubdivide(const QStringList& arguments);
 void runFit(const QStringList& arguments);
 void runInfo(const QStringList& arguments);
 void runKeys(const QStringList& arguments);
+void runImport(const QStringList& arguments);
+void runExport(const QStringList& arguments);
+void runBake(const QStringList& arguments);
 
 } // namespace gyre::cli

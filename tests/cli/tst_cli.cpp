@@ -201,6 +201,9 @@ private slots:
 
     void infoSummarisesAProject();
     void keysWritesAnObjectsKeyframes();
+    void bakeIsTheInterpolationOverTheSceneRange();
+    void sceneFilesRoundTripThroughTheVerbs_data();
+    void sceneFilesRoundTripThroughTheVerbs();
 
     void badInput_data();
     void badInput();
@@ -524,6 +527,88 @@ void TstCli::keysWritesAnObjectsKeyframes()
     }
 }
 
+void TstCli::bakeIsTheInterpolationOverTheSceneRange()
+{
+    // Keys from 0.5 to 3.3 s in a scene of [0, 4] s: the bake holds the end poses outside the keys and
+    // is the squad interpolation through them inside.
+    std::vector<Key> keys = randomKeys(5, 12);
+    for (std::size_t i = 0; i < keys.size(); ++i)
+        keys[i].time = 0.5 + 0.7 * static_cast<double>(i);
+    const QString in = writeFile("bake.gyre", project({projectObject(1, "top", "null", keys)}));
+    QVERIFY(succeeds({"bake", in, "--object", "top", "--fps", "10", "-o", path("baked.csv")}));
+    QVERIFY(succeeds({"interpolate", writeFile("bake-keys.csv", keysCsv(keys)), "--method", "squad", "--fps", "10",
+                      "-o", path("squad.csv")}));
+    const Csv baked = readCsv(path("baked.csv"));
+    const Csv squad = readCsv(path("squad.csv"));
+    QCOMPARE(baked.rows.size(), std::size_t{41});  // 0, 0.1, …, 4 s: every key falls on a frame
+    std::size_t matched = 0;
+    for (std::size_t row = 0; row < baked.rows.size(); ++row) {
+        const double t = baked.at(row, "time");
+        QVERIFY(std::abs(t - 0.1 * static_cast<double>(row)) < 1e-12);
+        if (t < 0.5 || t > keys.back().time) {
+            const Key& held = t < 0.5 ? keys.front() : keys.back();
+            QVERIFY(rotationDistance(baked.quaternion(row), held.rotation) < kTolerance);
+            QVERIFY((baked.position(row) - held.position).norm() < kTolerance);
+            continue;
+        }
+        for (std::size_t other = 0; other < squad.rows.size(); ++other) {
+            if (std::abs(squad.at(other, "time") - t) > 1e-12)
+                continue;
+            QVERIFY(rotationDistance(baked.quaternion(row), squad.quaternion(other)) < kTolerance);
+            QVERIFY((baked.position(row) - squad.position(other)).norm() < kTolerance);
+            ++matched;
+        }
+    }
+    QCOMPARE(matched, std::size_t{29});  // the frames from 0.5 to 3.3 s
+}
+
+void TstCli::sceneFilesRoundTripThroughTheVerbs_data()
+{
+    QTest::addColumn<QString>("extension");
+    for (const char* extension : {"glb", "gltf", "dae", "fbx"})
+        QTest::newRow(extension) << extension;
+}
+
+// A project exported to a scene file and imported back bakes to the same motion at every frame, to
+// the single precision the formats store.
+void TstCli::sceneFilesRoundTripThroughTheVerbs()
+{
+    QFETCH(QString, extension);
+    const QString in = writeFile("trip.gyre", project({projectObject(1, "car", "null", randomKeys(4, 21)),
+                                                       projectObject(2, "wheel", "1", randomKeys(3, 22))}));
+    const QString scene = path("trip." + extension);
+    const QString back = path("trip-back.gyre");
+    QVERIFY(succeeds({"export", in, "-o", scene}));
+    QVERIFY(succeeds({"import", scene, "-o", back}));
+    const CliRun info = runCli({"info", scene});
+    QCOMPARE(info.exitCode, 0);
+    QVERIFY2(info.out.startsWith(scene + ": scene\n1 animation:\n"), qPrintable(info.out));
+    QVERIFY2(info.out.contains("  wheel (child of car): "), qPrintable(info.out));
+    for (const char* object : {"car", "wheel"}) {
+        QVERIFY(succeeds({"bake", in, "--object", object, "--fps", "30", "-o", path("trip-before.csv")}));
+        QVERIFY(succeeds({"bake", back, "--object", object, "--fps", "30", "-o", path("trip-after.csv")}));
+        const Csv before = readCsv(path("trip-before.csv"));
+        const Csv after = readCsv(path("trip-after.csv"));
+        std::size_t compared = 0;
+        for (std::size_t row = 0; row < before.rows.size(); ++row) {
+            const double t = before.at(row, "time");
+            const double frame = t * 30.0;
+            if (std::abs(frame - std::round(frame)) > 1e-9)
+                continue;  // a key's own sample; the frames are compared
+            for (std::size_t other = 0; other < after.rows.size(); ++other) {
+                if (std::abs(after.at(other, "time") - t) > 1e-6)
+                    continue;
+                QVERIFY2(rotationDistance(before.quaternion(row), after.quaternion(other)) < 1e-5,
+                         qPrintable(QStringLiteral("%1 at %2 s").arg(object).arg(t)));
+                QVERIFY((before.position(row) - after.position(other)).norm() < 1e-5);
+                ++compared;
+                break;
+            }
+        }
+        QCOMPARE(compared, std::size_t{121});  // every frame of [0, 4] s at 30 fps
+    }
+}
+
 void TstCli::badInput_data()
 {
     QTest::addColumn<QStringList>("arguments"); // IN and OUT stand for the files
@@ -533,6 +618,16 @@ void TstCli::badInput_data()
 
     const QStringList convert{"convert", "IN", "-o", "OUT", "--to", "quat"};
     const QStringList interpolate{"interpolate", "IN", "-o", "OUT", "--method", "slerp", "--fps", "24"};
+    const QByteArray oneObject = project({projectObject(1, "car", "null", randomKeys(2, 3))});
+    QTest::newRow("export to an unknown format") << QStringList{"export", "IN", "-o", "OUT"} << oneObject << 2
+                                                 << "export: -o: the file's extension must name a scene format";
+    QTest::newRow("import random bytes") << QStringList{"import", "IN", "-o", "OUT"}
+                                         << QByteArray("\x13\x37garbage\x01\x02 not a scene", 26) << 1 << "IN: ";
+    QTest::newRow("import an empty file") << QStringList{"import", "IN", "-o", "OUT"} << QByteArray() << 1 << "IN: ";
+    QTest::newRow("bake an unknown object") << QStringList{"bake", "IN", "--object", "bus", "--fps", "24", "-o", "OUT"}
+                                            << oneObject << 1 << "IN: --object: no object is named 'bus'";
+    QTest::newRow("bake without fps") << QStringList{"bake", "IN", "--object", "car", "-o", "OUT"} << oneObject << 2
+                                      << "bake: missing option --fps";
     const QStringList subdivide{"subdivide", "IN", "-o", "OUT", "--scheme", "four-point", "--levels", "2"};
     const QByteArray keys = "time,qw,qx,qy,qz\n0,1,0,0,0\n1,0,1,0,0\n2,0,0,1,0\n";
 
@@ -579,10 +674,11 @@ void TstCli::badInput_data()
                                          << "IN: --object: object 'wheel' has no keyframes";
     QTest::newRow("keys without --object") << QStringList{"keys", "IN", "-o", "OUT"} << project({wheel}) << 2
                                            << "keys: missing option --object";
-    QTest::newRow("bad project field") << QStringList{"info", "IN"}
+    QTest::newRow("bad project field") << QStringList{"keys", "IN", "--object", "wheel", "-o", "OUT"}
                                        << QByteArray(project({wheel})).replace("\"fps\": 30", "\"fps\": \"30\"") << 1
                                        << "IN: fps: expected a number, found the string \"30\"";
-    QTest::newRow("info of a pose file") << QStringList{"info", "IN"} << keys << 1 << "IN: not valid JSON: ";
+    // Only a .gyre file is read as a project; anything else goes to Assimp as a scene.
+    QTest::newRow("info of a pose file") << QStringList{"info", "IN"} << keys << 1 << "IN: not a scene Gyre can read";
     QTest::newRow("info with -o") << QStringList{"info", "IN", "-o", "OUT"} << project({wheel}) << 2
                                   << "info: unknown option -o";
 
@@ -605,7 +701,7 @@ void TstCli::badInput_data()
     QTest::newRow("fps nan") << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "slerp", "--fps", "nan"}
                              << keys << 2 << "interpolate: --fps: 'nan' is not a finite number";
     QTest::newRow("too many frames") << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "slerp", "--fps", "1e7"}
-                                     << keys << 2 << "interpolate: --fps 1e+07 over 2 s of keys gives more than 16777216";
+                                     << keys << 2 << "interpolate: --fps 1e+07 over 2 s gives more than 16777216";
     QTest::newRow("too deep") << QStringList{"subdivide", "IN", "-o", "OUT", "--scheme", "bspline", "--levels", "23"}
                               << keys << 2 << "subdivide: --levels 23 would turn 3 poses into more than 16777216";
     QTest::newRow("far too deep") << QStringList{"subdivide", "IN", "-o", "OUT", "--scheme", "bspline", "--levels", "2000"}
