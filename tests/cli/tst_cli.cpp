@@ -622,7 +622,7 @@ void TstCli::badInput_data()
     QTest::newRow("export to an unknown format") << QStringList{"export", "IN", "-o", "OUT"} << oneObject << 2
                                                  << "export: -o: the file's extension must name a scene format";
     QTest::newRow("import random bytes") << QStringList{"import", "IN", "-o", "OUT"}
-                                         << QByteArray("\x13\x37garbage\x01\x02 not a scene", 26) << 1 << "IN: ";
+                                         << QByteArray("\x13\x37garbage\x01\x02 not a scene") << 1 << "IN: ";
     QTest::newRow("import an empty file") << QStringList{"import", "IN", "-o", "OUT"} << QByteArray() << 1 << "IN: ";
     QTest::newRow("bake an unknown object") << QStringList{"bake", "IN", "--object", "bus", "--fps", "24", "-o", "OUT"}
                                             << oneObject << 1 << "IN: --object: no object is named 'bus'";
