@@ -51,10 +51,10 @@ struct SketchState {
     std::vector<DirectionStroke> directionStrokes;
     std::vector<MagnitudePoint> magnitude;
     // A small curve drawn once, repeated `patternRepeat` times along the direction curve: x runs along
-    // the stroke, y across it, both in radians on the sphere.
+    // the stroke, y across it, in any unit; only its shape counts (fit::applyPattern, docs/fit.md).
     std::vector<Eigen::Vector2d> pattern;
     int patternRepeat = 0;
-    std::optional<std::pair<double, double>> window;  // the edited span; the whole track if absent
+    std::optional<std::pair<double, double>> window;  // the edited span; the sketch's span if absent
     double alpha = 0.002;
     double beta = 1.0;
     double delta = 0.1;
