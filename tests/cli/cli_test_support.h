@@ -3,9 +3,11 @@
 // a parser of the tests' own.
 
 #include <QFile>
+#include <QObject>
 #include <QProcess>
 #include <QString>
 #include <QStringList>
+#include <QTemporaryDir>
 
 #include <Eigen/Geometry>
 
@@ -96,5 +98,37 @@ inline Csv readCsv(const QString& path)
 }
 
 inline QString number(double value) { return QString::number(value, 'g', 17); }
+
+// What gyre-cli may print on standard error when it succeeds.
+enum class Warnings { Allowed, Refused };
+
+// The base of a gyre-cli test: a temporary folder for its fixtures and outputs, and a check that a
+// run succeeded.
+class CliTestCase : public QObject {
+protected:
+    QString path(const QString& name) const { return dir_.filePath(name); }
+
+    QString writeFile(const QString& name, const QByteArray& contents) const
+    {
+        const QString filePath = path(name);
+        QFile file(filePath);
+        if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(contents) != contents.size())
+            qFatal("cannot write the fixture %s", qPrintable(filePath));
+        return filePath;
+    }
+
+    // Runs gyre-cli and checks that it exited normally with status 0 (and, if warnings are refused,
+    // printed nothing on standard error); says what went wrong otherwise.
+    static bool succeeds(const QStringList& arguments, Warnings warnings = Warnings::Allowed)
+    {
+        const CliRun run = runCli(arguments);
+        if (run.exitedNormally && run.exitCode == 0 && (warnings == Warnings::Allowed || run.err.isEmpty()))
+            return true;
+        qWarning("gyre-cli %s: exit %d: %s", qPrintable(arguments.join(' ')), run.exitCode, qPrintable(run.err));
+        return false;
+    }
+
+    QTemporaryDir dir_;
+};
 
 } // namespace gyre::test

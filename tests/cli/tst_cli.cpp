@@ -148,37 +148,14 @@ QByteArray project(const QStringList& objects, int version = 2)
         .toUtf8();
 }
 
-class TstCli : public QObject {
+class TstCli : public CliTestCase {
     Q_OBJECT
 
 private:
-    QTemporaryDir dir_;
-
-    QString path(const QString& name) const { return dir_.filePath(name); }
-
-    QString writeFile(const QString& name, const QByteArray& contents)
-    {
-        const QString filePath = path(name);
-        QFile file(filePath);
-        if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(contents) != contents.size())
-            qFatal("cannot write the fixture %s", qPrintable(filePath));
-        return filePath;
-    }
-
     static QByteArray contentsOf(const QString& filePath)
     {
         QFile file(filePath);
         return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray("<cannot open>");
-    }
-
-    // Runs gyre-cli and checks that it succeeded.
-    static bool succeeds(const QStringList& arguments)
-    {
-        const CliRun run = runCli(arguments);
-        if (run.exitedNormally && run.exitCode == 0)
-            return true;
-        qWarning("gyre-cli %s: exit %d: %s", qPrintable(arguments.join(' ')), run.exitCode, qPrintable(run.err));
-        return false;
     }
 
 private slots:

@@ -54,28 +54,9 @@ QByteArray omegaCsv(const NutatingTop& top, double start, double end)
 
 } // namespace
 
-class TstCliFit : public QObject {
+// The fit verb has nothing to warn about: every run here refuses a message on standard error.
+class TstCliFit : public CliTestCase {
     Q_OBJECT
-
-private:
-    QTemporaryDir dir_;
-
-    QString path(const QString& name) const { return dir_.filePath(name); }
-    QString writeFile(const QString& name, const QByteArray& contents)
-    {
-        QFile file(path(name));
-        if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(contents) != contents.size())
-            qFatal("cannot write the fixture %s", qPrintable(path(name)));
-        return path(name);
-    }
-    static bool succeeds(const QStringList& arguments)
-    {
-        const CliRun run = runCli(arguments);
-        if (run.exitedNormally && run.exitCode == 0 && run.err.isEmpty())
-            return true;
-        qWarning("gyre-cli %s: exit %d: %s", qPrintable(arguments.join(' ')), run.exitCode, qPrintable(run.err));
-        return false;
-    }
 
 private slots:
     void initTestCase();
@@ -101,7 +82,7 @@ void TstCliFit::omegaTargetFollowsTheTop()
 {
     const NutatingTop top;
     QVERIFY(succeeds({"fit", path("keys.csv"), "--omega", path("omega.csv"), "-o", path("frames.csv"), "--fps", "24",
-                      "--report", path("report.json")}));
+                      "--report", path("report.json")}, Warnings::Refused));
     const Csv frames = readCsv(path("frames.csv"));
     QVERIFY2(frames.problem.isEmpty(), qPrintable(frames.problem));
     QCOMPARE(frames.header, QStringList({"time", "qw", "qx", "qy", "qz", "x", "y", "z"}));
@@ -138,8 +119,8 @@ void TstCliFit::omegaTargetFollowsTheTop()
 
 void TstCliFit::fpsChangesOnlyTheOutput()
 {
-    QVERIFY(succeeds({"fit", path("keys.csv"), "--omega", path("omega.csv"), "-o", path("at24.csv"), "--fps", "24"}));
-    QVERIFY(succeeds({"fit", path("keys.csv"), "--omega", path("omega.csv"), "-o", path("at60.csv"), "--fps", "60"}));
+    QVERIFY(succeeds({"fit", path("keys.csv"), "--omega", path("omega.csv"), "-o", path("at24.csv"), "--fps", "24"}, Warnings::Refused));
+    QVERIFY(succeeds({"fit", path("keys.csv"), "--omega", path("omega.csv"), "-o", path("at60.csv"), "--fps", "60"}, Warnings::Refused));
     const Csv at24 = readCsv(path("at24.csv"));
     const Csv at60 = readCsv(path("at60.csv"));
     int shared = 0;
@@ -155,9 +136,9 @@ void TstCliFit::fpsChangesOnlyTheOutput()
 void TstCliFit::windowKeepsTheOutside()
 {
     QVERIFY(succeeds({"fit", path("keys.csv"), "--omega", path("omega.csv"), "-o", path("window.csv"), "--fps", "24",
-                      "--window", "1.1,2.95"}));
+                      "--window", "1.1,2.95"}, Warnings::Refused));
     // Outside the window the motion is the Hermite spline through the keys, as interpolate gives it.
-    QVERIFY(succeeds({"interpolate", path("keys.csv"), "-o", path("hermite.csv"), "--fps", "24", "--method", "hermite"}));
+    QVERIFY(succeeds({"interpolate", path("keys.csv"), "-o", path("hermite.csv"), "--fps", "24", "--method", "hermite"}, Warnings::Refused));
     const Csv fitted = readCsv(path("window.csv"));
     const Csv plain = readCsv(path("hermite.csv"));
     QCOMPARE(fitted.rows.size(), plain.rows.size());
@@ -180,7 +161,7 @@ void TstCliFit::freedKeysMove()
     steady.nutation = 0.0;
     const QString keys = writeFile("steady.csv", keysCsv(steady));
     QVERIFY(succeeds({"fit", keys, "--omega", path("omega.csv"), "-o", path("freed.csv"), "--fps", "24", "--free",
-                      "2,3,5"}));
+                      "2,3,5"}, Warnings::Refused));
     const Csv frames = readCsv(path("freed.csv"));
     for (std::size_t row = 0; row < frames.rows.size(); ++row) {
         const double t = frames.at(row, "time");
@@ -209,7 +190,7 @@ void TstCliFit::sketchOfASteadySpin()
     writeFile("direction.csv", "x,y,z\n0,0,1\n");
     writeFile("magnitude.csv", "time,magnitude\n0,1.5\n4,1.5\n");
     QVERIFY(succeeds({"fit", path("spin.csv"), "--direction", path("direction.csv"), "--magnitude",
-                      path("magnitude.csv"), "-o", path("spin-fit.csv"), "--fps", "30"}));
+                      path("magnitude.csv"), "-o", path("spin-fit.csv"), "--fps", "30"}, Warnings::Refused));
     const Csv frames = readCsv(path("spin-fit.csv"));
     for (std::size_t row = 0; row < frames.rows.size(); ++row) {
         const double t = frames.at(row, "time");
@@ -224,9 +205,9 @@ void TstCliFit::patternAddsWobble()
     writeFile("arc.csv", "x,y,z\n0,0.2588190451025208,0.9659258262890683\n0.2588190451025208,0,0.9659258262890683\n");
     writeFile("zigzag.csv", "x,y\n0,0\n1,1\n2,-1\n3,0\n");
     QVERIFY(succeeds({"fit", path("spin.csv"), "--direction", path("arc.csv"), "--magnitude", path("magnitude.csv"),
-                      "-o", path("plain.csv"), "--fps", "30"}));
+                      "-o", path("plain.csv"), "--fps", "30"}, Warnings::Refused));
     QVERIFY(succeeds({"fit", path("spin.csv"), "--direction", path("arc.csv"), "--magnitude", path("magnitude.csv"),
-                      "--pattern", path("zigzag.csv"), "--repeat", "4", "-o", path("wobble.csv"), "--fps", "30"}));
+                      "--pattern", path("zigzag.csv"), "--repeat", "4", "-o", path("wobble.csv"), "--fps", "30"}, Warnings::Refused));
     const Csv plain = readCsv(path("plain.csv"));
     const Csv wobble = readCsv(path("wobble.csv"));
     QCOMPARE(plain.rows.size(), wobble.rows.size());
