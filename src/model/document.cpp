@@ -31,6 +31,8 @@ void Document::clear() { replaceScene(Scene{}, QString(), false); }
 
 void Document::load(const QString& path) { replaceScene(readProject(path), path, false); }
 
+void Document::loadAsUntitled(const QString& path) { replaceScene(readProject(path), QString(), false); }
+
 void Document::save(const QString& path)
 {
     writeProject(path, scene_);

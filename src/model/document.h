@@ -41,6 +41,10 @@ public:
     // Replaces the scene with the project at `path` and forgets the undo history. Throws InputError
     // and leaves the document untouched if the file cannot be read whole.
     void load(const QString& path);
+    // Replaces the scene with the project at `path` as a new untitled document, unmodified: a
+    // template such as a bundled sample (a Qt resource path works), which Save then asks a name for.
+    // Throws InputError and leaves the document untouched if the file cannot be read whole.
+    void loadAsUntitled(const QString& path);
     // Writes the project to `path`, which becomes the document's file, and marks this state saved.
     // Throws OutputError; a file already at `path` then keeps its contents.
     void save(const QString& path);

@@ -1,0 +1,267 @@
+#include "app/main_window.h"
+
+#include "model/input_error.h"
+#include "ui_main_window.h"
+
+#include <QCloseEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStyle>
+#include <QUndoView>
+
+// The resources (samples, shaders) are compiled into the gyre_app static library, whose static
+// initialisers the linker may drop; Q_INIT_RESOURCE registers them, and must be called outside any
+// namespace.
+static void registerResources()
+{
+    Q_INIT_RESOURCE(gyre);
+}
+
+namespace gyre::app {
+
+namespace {
+
+constexpr int kMaxRecentFiles = 8;
+const char* const kRecentFilesKey = "recentFiles";
+const char* const kGeometryKey = "mainWindow/geometry";
+const char* const kStateKey = "mainWindow/state";
+
+QString projectFilter()
+{
+    return MainWindow::tr("Gyre projects (*.gyre)");
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent)
+    , ui_(std::make_unique<Ui::MainWindow>())
+    , selection_(document_)
+    , playback_(document_)
+{
+    registerResources();
+    ui_->setupUi(this);
+    setUpActions();
+    setUpDocks();
+    createViews();
+    restoreLayout();
+    connect(&document_, &model::Document::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(&document_, &model::Document::filePathChanged, this, &MainWindow::updateTitle);
+    updateTitle();
+    updateRecentFilesMenu();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::setUpActions()
+{
+    QStyle* style = this->style();
+    ui_->actionNew->setShortcut(QKeySequence::New);
+    ui_->actionNew->setIcon(style->standardIcon(QStyle::SP_FileIcon));
+    ui_->actionOpen->setShortcut(QKeySequence::Open);
+    ui_->actionOpen->setIcon(style->standardIcon(QStyle::SP_DialogOpenButton));
+    ui_->actionSave->setShortcut(QKeySequence::Save);
+    ui_->actionSave->setIcon(style->standardIcon(QStyle::SP_DialogSaveButton));
+    ui_->actionSaveAs->setShortcut(QKeySequence::SaveAs);
+    ui_->actionQuit->setShortcut(QKeySequence::Quit);
+    ui_->actionPlay->setIcon(style->standardIcon(QStyle::SP_MediaPlay));
+    ui_->actionStepForward->setIcon(style->standardIcon(QStyle::SP_MediaSeekForward));
+    ui_->actionStepBackward->setIcon(style->standardIcon(QStyle::SP_MediaSeekBackward));
+    ui_->actionGoToStart->setIcon(style->standardIcon(QStyle::SP_MediaSkipBackward));
+    ui_->actionGoToEnd->setIcon(style->standardIcon(QStyle::SP_MediaSkipForward));
+    ui_->actionLoop->setIcon(style->standardIcon(QStyle::SP_BrowserReload));
+
+    connect(ui_->actionNew, &QAction::triggered, this, &MainWindow::newProject);
+    connect(ui_->actionOpen, &QAction::triggered, this, &MainWindow::chooseProjectToOpen);
+    connect(ui_->actionSave, &QAction::triggered, this, &MainWindow::save);
+    connect(ui_->actionSaveAs, &QAction::triggered, this, &MainWindow::saveAs);
+    connect(ui_->actionQuit, &QAction::triggered, this, &QWidget::close);
+
+    QAction* undo = document_.undoStack().createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    undo->setIcon(style->standardIcon(QStyle::SP_ArrowBack));
+    undo->setObjectName("actionUndo");
+    QAction* redo = document_.undoStack().createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    redo->setIcon(style->standardIcon(QStyle::SP_ArrowForward));
+    redo->setObjectName("actionRedo");
+    ui_->menuEdit->insertActions(ui_->actionUndoHistory, {undo, redo});
+    ui_->menuEdit->insertSeparator(ui_->actionUndoHistory);
+    ui_->editToolBar->addActions({undo, redo});
+
+    connect(ui_->actionPlay, &QAction::triggered, &playback_, &Playback::togglePlaying);
+    connect(&playback_, &Playback::playingChanged, this, [this](bool playing) {
+        ui_->actionPlay->setChecked(playing);
+        ui_->actionPlay->setIcon(this->style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    });
+    connect(ui_->actionStepForward, &QAction::triggered, &playback_, &Playback::stepForward);
+    connect(ui_->actionStepBackward, &QAction::triggered, &playback_, &Playback::stepBackward);
+    connect(ui_->actionGoToStart, &QAction::triggered, &playback_, &Playback::goToStart);
+    connect(ui_->actionGoToEnd, &QAction::triggered, &playback_, &Playback::goToEnd);
+    connect(ui_->actionLoop, &QAction::toggled, &playback_, &Playback::setLoops);
+    playback_.setLoops(ui_->actionLoop->isChecked());
+}
+
+void MainWindow::setUpDocks()
+{
+    auto* history = new QUndoView(&document_.undoStack(), ui_->historyDockContents);
+    history->setEmptyLabel(tr("<opened>"));
+    ui_->historyDockLayout->addWidget(history);
+    ui_->historyDock->hide();
+    for (QDockWidget* dock : {ui_->inspectorDock, ui_->screwBenderDock, ui_->historyDock, ui_->timelineDock,
+                              ui_->smoothnessDock})
+        ui_->menuPanels->addAction(dock->toggleViewAction());
+    // The history dock has its own action in the Edit menu, kept in step with the dock.
+    connect(ui_->actionUndoHistory, &QAction::toggled, ui_->historyDock, &QDockWidget::setVisible);
+    connect(ui_->historyDock, &QDockWidget::visibilityChanged, ui_->actionUndoHistory, &QAction::setChecked);
+    tabifyDockWidget(ui_->inspectorDock, ui_->historyDock);
+    tabifyDockWidget(ui_->timelineDock, ui_->smoothnessDock);
+    ui_->inspectorDock->raise();
+    ui_->timelineDock->raise();
+}
+
+void MainWindow::createViews()
+{
+}
+
+void MainWindow::restoreLayout()
+{
+    QSettings settings;
+    restoreGeometry(settings.value(kGeometryKey).toByteArray());
+    restoreState(settings.value(kStateKey).toByteArray());
+}
+
+void MainWindow::saveLayout() const
+{
+    QSettings settings;
+    settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kStateKey, saveState());
+}
+
+void MainWindow::updateTitle()
+{
+    const QString& path = document_.filePath();
+    const QString name = path.isEmpty() ? tr("Untitled") : QFileInfo(path).fileName();
+    // Qt shows "[*]" as the unsaved-changes mark, where the platform has one.
+    setWindowTitle(tr("%1[*] — Gyre").arg(name));
+    setWindowModified(document_.isModified());
+    setWindowFilePath(path);
+}
+
+void MainWindow::newProject()
+{
+    if (maybeSave())
+        document_.clear();
+}
+
+void MainWindow::chooseProjectToOpen()
+{
+    if (!maybeSave())
+        return;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Project"), QString(), projectFilter());
+    if (!path.isEmpty())
+        openProject(path);
+}
+
+bool MainWindow::openProject(const QString& path)
+{
+    try {
+        document_.load(path);
+    } catch (const InputError& error) {
+        QMessageBox::warning(this, tr("Cannot open the project"), QString::fromUtf8(error.what()));
+        return false;
+    }
+    addRecentFile(document_.filePath());
+    return true;
+}
+
+void MainWindow::openBundledSample()
+{
+    // The sample is compiled in; failing to read it is a broken build, not a user error.
+    document_.loadAsUntitled(QStringLiteral(":/samples/l-cycle.gyre"));
+    playback_.play();
+}
+
+bool MainWindow::save()
+{
+    return document_.filePath().isEmpty() ? saveAs() : saveTo(document_.filePath());
+}
+
+bool MainWindow::saveAs()
+{
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Project As"), document_.filePath(), projectFilter());
+    if (path.isEmpty())
+        return false;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".gyre");
+    return saveTo(path);
+}
+
+bool MainWindow::saveTo(const QString& path)
+{
+    try {
+        document_.save(path);
+    } catch (const OutputError& error) {
+        QMessageBox::warning(this, tr("Cannot save the project"), QString::fromUtf8(error.what()));
+        return false;
+    }
+    addRecentFile(path);
+    statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), 3000);
+    return true;
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!document_.isModified())
+        return true;
+    const auto answer = QMessageBox::warning(
+        this, tr("Unsaved changes"), tr("The project has unsaved changes. Save them first?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::addRecentFile(const QString& path)
+{
+    QSettings settings;
+    QStringList files = settings.value(kRecentFilesKey).toStringList();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    files.removeAll(absolute);
+    files.prepend(absolute);
+    while (files.size() > kMaxRecentFiles)
+        files.removeLast();
+    settings.setValue(kRecentFilesKey, files);
+    updateRecentFilesMenu();
+}
+
+void MainWindow::updateRecentFilesMenu()
+{
+    QMenu* menu = ui_->menuOpenRecent;
+    menu->clear();
+    const QStringList files = QSettings().value(kRecentFilesKey).toStringList();
+    for (const QString& file : files) {
+        QAction* action = menu->addAction(QFileInfo(file).fileName());
+        action->setStatusTip(file);
+        connect(action, &QAction::triggered, this, [this, file] {
+            if (maybeSave())
+                openProject(file);
+        });
+    }
+    menu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    playback_.pause();
+    saveLayout();
+    event->accept();
+}
+
+} // namespace gyre::app

@@ -1,0 +1,68 @@
+#pragma once
+// The main window: menus, toolbars, the viewport in the middle and the panels in docks around it, all
+// laid out in ui/main_window.ui. It owns the document and the selection the views share, opens and
+// saves files, and asks before unsaved work is lost. Its layout and geometry persist in QSettings.
+
+#include "app/playback.h"
+#include "app/selection.h"
+#include "model/document.h"
+
+#include <QMainWindow>
+#include <QString>
+
+#include <memory>
+
+namespace Ui {
+class MainWindow;
+}
+
+namespace gyre::app {
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    model::Document& document() { return document_; }
+    Selection& selection() { return selection_; }
+    Playback& playback() { return playback_; }
+
+    // Opens the project at `path` in place of the current one, after asking to keep unsaved work.
+    // Reports a file it cannot read in a message box, naming the file and what is wrong, and keeps
+    // the current project. Returns whether the project was opened.
+    bool openProject(const QString& path);
+
+    // Opens the bundled sample, the L-shaped cycle of the ScrewBender paper, as an untitled project, so
+    // that a newcomer sees a moving object at once.
+    void openBundledSample();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void setUpActions();
+    void setUpDocks();
+    void createViews();
+    void restoreLayout();
+    void saveLayout() const;
+    void updateTitle();
+
+    void newProject();
+    void chooseProjectToOpen();
+    bool save();
+    bool saveAs();
+    bool saveTo(const QString& path);
+    // Asks whether to save unsaved changes; false if the user cancels the action that asked.
+    bool maybeSave();
+    void addRecentFile(const QString& path);
+    void updateRecentFilesMenu();
+
+    std::unique_ptr<Ui::MainWindow> ui_;
+    model::Document document_;
+    Selection selection_;
+    Playback playback_;
+};
+
+} // namespace gyre::app

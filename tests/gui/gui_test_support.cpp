@@ -1,0 +1,68 @@
+#include "gui_test_support.h"
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QFileDialog>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTest>
+#include <QTimer>
+
+namespace gyre::test {
+
+namespace {
+
+// Looks for the modal dialog every few milliseconds, for at most five seconds.
+void pollForDialog(std::function<void(QWidget*)> answer, int attemptsLeft)
+{
+    QWidget* dialog = QApplication::activeModalWidget();
+    if (dialog != nullptr && dialog->isVisible()) {
+        answer(dialog);
+        return;
+    }
+    if (attemptsLeft == 0)
+        qFatal("No modal dialog opened");
+    QTimer::singleShot(10, [answer = std::move(answer), attemptsLeft] { pollForDialog(answer, attemptsLeft - 1); });
+}
+
+} // namespace
+
+void useTestSettings()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings().clear();
+}
+
+void whenDialogOpens(std::function<void(QWidget*)> answer)
+{
+    QTimer::singleShot(0, [answer = std::move(answer)] { pollForDialog(answer, 500); });
+}
+
+void answerFileDialog(const QString& path)
+{
+    whenDialogOpens([path](QWidget* widget) {
+        auto* dialog = qobject_cast<QFileDialog*>(widget);
+        if (dialog == nullptr)
+            qFatal("Expected a file dialog, got %s", widget->metaObject()->className());
+        dialog->selectFile(path);
+        QMetaObject::invokeMethod(dialog, "accept"); // as pressing Open or Save does
+    });
+}
+
+void answerMessageBox(int standardButton, QString* text)
+{
+    whenDialogOpens([standardButton, text](QWidget* widget) {
+        auto* box = qobject_cast<QMessageBox*>(widget);
+        if (box == nullptr)
+            qFatal("Expected a message box, got %s", widget->metaObject()->className());
+        if (text != nullptr)
+            *text = box->text() + QLatin1Char('\n') + box->informativeText();
+        QAbstractButton* button = box->button(static_cast<QMessageBox::StandardButton>(standardButton));
+        if (button == nullptr)
+            qFatal("The message box has no such button");
+        button->click();
+    });
+}
+
+} // namespace gyre::test

@@ -1,0 +1,27 @@
+#pragma once
+// What the GUI tests share: answering the modal dialogs the real code paths open, and settings kept
+// apart from the user's.
+
+#include <QString>
+#include <QWidget>
+
+#include <functional>
+
+namespace gyre::test {
+
+// Keeps QSettings and QStandardPaths in a test location and starts with empty settings; call at the
+// start of initTestCase.
+void useTestSettings();
+
+// Calls `answer` on the next modal dialog as soon as it is shown, from within its event loop: the way
+// a test fills in and closes a dialog that the code under test opens with exec().
+void whenDialogOpens(std::function<void(QWidget* dialog)> answer);
+
+// Answers the next file dialog with `path`, as if the user had typed it and pressed Open or Save.
+void answerFileDialog(const QString& path);
+
+// Presses the button with this role (QMessageBox::StandardButton) on the next message box, and keeps
+// its text in `text` if given.
+void answerMessageBox(int standardButton, QString* text = nullptr);
+
+} // namespace gyre::test
