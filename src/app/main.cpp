@@ -1,9 +1,37 @@
-// gyre, the desktop application: opens the files named on the command line, or the bundled sample.
+// gyre, the desktop application: opens the file named on the command line, or the bundled sample.
 
 #include "app/main_window.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QTimer>
+
+#include <cstdio>
+
+namespace {
+
+// Saves a picture of the window to `path` after `delayMilliseconds` and quits, with status 1 if the
+// picture cannot be written: screenshots for the documentation, and a check that the window draws.
+void screenshotAndQuit(QWidget& window, const QString& path, int delayMilliseconds)
+{
+    QTimer::singleShot(delayMilliseconds, &window, [&window, path] {
+        if (window.grab().save(path)) {
+            QApplication::exit(0);
+            return;
+        }
+        std::fprintf(stderr, "gyre: %s: cannot write the screenshot\n", qPrintable(path));
+        QApplication::exit(1);
+    });
+}
+
+// Exit status 2, as for gyre-cli: the command line was wrong.
+int commandLineError(const QString& message)
+{
+    std::fprintf(stderr, "gyre: %s\n", qPrintable(message));
+    return 2;
+}
+
+} // namespace
 
 int main(int argc, char* argv[])
 {
@@ -16,16 +44,35 @@ int main(int argc, char* argv[])
     parser.setApplicationDescription(QApplication::translate("main", "Edit the rotations of animated rigid objects."));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument(QStringLiteral("file"),
-                                 QApplication::translate("main", "A Gyre project to open."));
+    parser.addPositionalArgument(
+        QStringLiteral("file"),
+        QApplication::translate("main", "A Gyre project to open, or a scene file (FBX, glTF, ...) to import."));
+    const QCommandLineOption screenshot(
+        QStringLiteral("screenshot"),
+        QApplication::translate("main", "Save a picture of the window to <file> after a few seconds, then quit."),
+        QStringLiteral("file"));
+    const QCommandLineOption delay(QStringLiteral("delay"),
+                                   QApplication::translate("main", "Wait <ms> milliseconds before the screenshot."),
+                                   QStringLiteral("ms"), QStringLiteral("3000"));
+    parser.addOptions({screenshot, delay});
     parser.process(application);
+    bool delayIsNumber = false;
+    const int delayMilliseconds = parser.value(delay).toInt(&delayIsNumber);
+    if (!delayIsNumber || delayMilliseconds < 0)
+        return commandLineError(QApplication::translate("main", "--delay takes a number of milliseconds, not \"%1\".")
+                                    .arg(parser.value(delay)));
+    if (parser.positionalArguments().size() > 1)
+        return commandLineError(QApplication::translate("main", "give at most one file to open."));
 
     gyre::app::MainWindow window;
     window.show();
+    const bool recovered = window.recoverAndStartAutosave();
     const QStringList files = parser.positionalArguments();
-    if (files.isEmpty())
+    if (!files.isEmpty())
+        window.openFile(files.front());
+    else if (!recovered)
         window.openBundledSample();
-    else
-        window.openProject(files.front());
+    if (parser.isSet(screenshot))
+        screenshotAndQuit(window, parser.value(screenshot), delayMilliseconds);
     return QApplication::exec();
 }

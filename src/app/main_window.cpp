@@ -1,9 +1,18 @@
 #include "app/main_window.h"
 
+#include "io/scene_import.h"
 #include "model/input_error.h"
 #include "ui_main_window.h"
 
+#include <Eigen/Core>
+#include <ceres/version.h>
+#include <qcustomplot.h>
+
 #include <QCloseEvent>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QMimeData>
+#include <QStandardPaths>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
@@ -27,6 +36,13 @@ constexpr int kMaxRecentFiles = 8;
 const char* const kRecentFilesKey = "recentFiles";
 const char* const kGeometryKey = "mainWindow/geometry";
 const char* const kStateKey = "mainWindow/state";
+// A crash loses at most this much work.
+constexpr std::chrono::seconds kAutosaveInterval{30};
+
+bool isProjectFile(const QString& path)
+{
+    return QFileInfo(path).suffix().compare(QLatin1String("gyre"), Qt::CaseInsensitive) == 0;
+}
 
 QString projectFilter()
 {
@@ -47,6 +63,7 @@ MainWindow::MainWindow(QWidget* parent)
     setUpDocks();
     createViews();
     restoreLayout();
+    setAcceptDrops(true);
     connect(&document_, &model::Document::modifiedChanged, this, &MainWindow::updateTitle);
     connect(&document_, &model::Document::filePathChanged, this, &MainWindow::updateTitle);
     updateTitle();
@@ -78,6 +95,14 @@ void MainWindow::setUpActions()
     connect(ui_->actionSave, &QAction::triggered, this, &MainWindow::save);
     connect(ui_->actionSaveAs, &QAction::triggered, this, &MainWindow::saveAs);
     connect(ui_->actionQuit, &QAction::triggered, this, &QWidget::close);
+    connect(ui_->actionAbout, &QAction::triggered, this, &MainWindow::showAbout);
+
+    sceneFiles_ = new SceneFileActions(document_, selection_, this, statusBar(), this);
+    connect(ui_->actionImportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToImport);
+    connect(ui_->actionExportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToExport);
+    keyframeActions_ = new KeyframeActions(
+        document_, selection_, {ui_->actionAddKeyframe, ui_->actionDeleteKeyframe, ui_->actionToggleConstraint},
+        statusBar(), this);
 
     QAction* undo = document_.undoStack().createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
@@ -162,6 +187,14 @@ void MainWindow::chooseProjectToOpen()
         return;
     const QString path = QFileDialog::getOpenFileName(this, tr("Open Project"), QString(), projectFilter());
     if (!path.isEmpty())
+        openProject(path);
+}
+
+void MainWindow::openFile(const QString& path)
+{
+    if (!isProjectFile(path))
+        sceneFiles_->importScene(path);
+    else if (maybeSave())
         openProject(path);
 }
 
@@ -251,6 +284,73 @@ void MainWindow::updateRecentFilesMenu()
         });
     }
     menu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::showAbout()
+{
+    QMessageBox::about(
+        this, tr("About Gyre"),
+        tr("<h3>Gyre %1</h3>"
+           "<p>Edit the rotations of animated rigid objects: every way of writing an orientation, "
+           "interpolation that behaves, sketched angular velocity, and ScrewBender motions.</p>"
+           "<p>Built on Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 and QCustomPlot %8.</p>")
+            .arg(QApplication::applicationVersion(), QString::fromLatin1(qVersion()))
+            .arg(EIGEN_WORLD_VERSION)
+            .arg(EIGEN_MAJOR_VERSION)
+            .arg(EIGEN_MINOR_VERSION)
+            .arg(QString::fromLatin1(CERES_VERSION_STRING), assimpVersion(),
+                 QString::fromLatin1(QCUSTOMPLOT_VERSION_STR)));
+}
+
+bool MainWindow::recoverAndStartAutosave()
+{
+    const QString directory = QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation)
+                              + QStringLiteral("/autosave");
+    const std::vector<model::RecoveryFile> crashed = model::Autosave::recoverableFiles(directory);
+    bool recovered = false;
+    if (!crashed.empty()) {
+        const model::RecoveryFile& newest = crashed.front();
+        const QString name = newest.documentPath.isEmpty() ? tr("an untitled project")
+                                                           : QDir::toNativeSeparators(newest.documentPath);
+        const auto answer = QMessageBox::question(
+            this, tr("Recover unsaved work"),
+            tr("Gyre ended without saving changes to %1 (last copy %2). Recover them?")
+                .arg(name, QLocale().toString(newest.savedAt, QLocale::ShortFormat)),
+            QMessageBox::Yes | QMessageBox::Discard, QMessageBox::Yes);
+        if (answer == QMessageBox::Yes) {
+            try {
+                model::Autosave::recover(document_, newest);
+                recovered = true;
+            } catch (const InputError& error) {
+                QMessageBox::warning(this, tr("Cannot recover"), QString::fromUtf8(error.what()));
+            }
+        } else {
+            model::Autosave::discard(newest);
+        }
+    }
+    try {
+        autosave_ = std::make_unique<model::Autosave>(document_, directory, kAutosaveInterval);
+    } catch (const OutputError& error) {
+        statusBar()->showMessage(tr("Autosave is off: %1").arg(QString::fromUtf8(error.what())));
+    }
+    return recovered;
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+    if (event->mimeData()->hasUrls())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event)
+{
+    for (const QUrl& url : event->mimeData()->urls()) {
+        if (url.isLocalFile()) {
+            openFile(url.toLocalFile());
+            event->acceptProposedAction();
+            return; // one file at a time: an import runs alone
+        }
+    }
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

@@ -3,8 +3,11 @@
 // laid out in ui/main_window.ui. It owns the document and the selection the views share, opens and
 // saves files, and asks before unsaved work is lost. Its layout and geometry persist in QSettings.
 
+#include "app/keyframe_actions.h"
 #include "app/playback.h"
+#include "app/scene_file_actions.h"
 #include "app/selection.h"
+#include "model/autosave.h"
 #include "model/document.h"
 
 #include <QMainWindow>
@@ -28,18 +31,27 @@ public:
     model::Document& document() { return document_; }
     Selection& selection() { return selection_; }
     Playback& playback() { return playback_; }
+    SceneFileActions& sceneFiles() { return *sceneFiles_; }
 
     // Opens the project at `path` in place of the current one, after asking to keep unsaved work.
     // Reports a file it cannot read in a message box, naming the file and what is wrong, and keeps
     // the current project. Returns whether the project was opened.
     bool openProject(const QString& path);
+    // A project (.gyre) opens in place of the current one; any other file is imported as a scene
+    // into the current project. What the command line and dropped files go through.
+    void openFile(const QString& path);
 
     // Opens the bundled sample, the L-shaped cycle of the ScrewBender paper, as an untitled project, so
     // that a newcomer sees a moving object at once.
     void openBundledSample();
+    // Offers to recover the work of a session that crashed, then autosaves this session's unsaved
+    // work. Returns whether work was recovered into the document.
+    bool recoverAndStartAutosave();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
     void setUpActions();
@@ -58,11 +70,15 @@ private:
     bool maybeSave();
     void addRecentFile(const QString& path);
     void updateRecentFilesMenu();
+    void showAbout();
 
     std::unique_ptr<Ui::MainWindow> ui_;
     model::Document document_;
     Selection selection_;
     Playback playback_;
+    KeyframeActions* keyframeActions_ = nullptr;
+    SceneFileActions* sceneFiles_ = nullptr;
+    std::unique_ptr<model::Autosave> autosave_;
 };
 
 } // namespace gyre::app

@@ -6,6 +6,7 @@
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/version.h>
 
 #include <QFile>
 #include <QFileInfo>
@@ -456,6 +457,11 @@ SceneImport importScene(const QString& path, const ImportOptions& options)
     if (animation)
         setTimeRange(*animation, result.scene);
     return result;
+}
+
+QString assimpVersion()
+{
+    return QStringLiteral("%1.%2.%3").arg(aiGetVersionMajor()).arg(aiGetVersionMinor()).arg(aiGetVersionPatch());
 }
 
 } // namespace gyre

@@ -53,4 +53,7 @@ struct SceneImport {
 // Nothing is returned on error.
 SceneImport importScene(const QString& path, const ImportOptions& options = {});
 
+// The version of the Assimp library Gyre reads and writes scenes with, "5.2.5" for example.
+QString assimpVersion();
+
 } // namespace gyre

@@ -1,0 +1,88 @@
+#include "app/keyframe_actions.h"
+
+#include "app/undo_gesture.h"
+#include "model/commands/add_keyframe_command.h"
+#include "model/commands/remove_keyframe_command.h"
+#include "model/commands/toggle_keyframe_constraint_command.h"
+#include "model/track_evaluation.h"
+
+#include <QAction>
+#include <QStatusBar>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace gyre::app {
+
+namespace {
+
+constexpr int kMessageMilliseconds = 5000;
+
+} // namespace
+
+KeyframeActions::KeyframeActions(model::Document& document, Selection& selection, KeyframeActionSet actions,
+                                 QStatusBar* statusBar, QObject* parent)
+    : QObject(parent)
+    , document_(document)
+    , selection_(selection)
+    , actions_(actions)
+    , statusBar_(statusBar)
+{
+    connect(actions_.add, &QAction::triggered, this, &KeyframeActions::addKeyframe);
+    connect(actions_.remove, &QAction::triggered, this, &KeyframeActions::removeKeyframe);
+    // triggered, not toggled: the action's check mark follows the key, and setChecked from
+    // updateActions must not toggle the key back.
+    connect(actions_.toggleConstraint, &QAction::triggered, this, &KeyframeActions::toggleConstraint);
+    connect(&selection_, &Selection::changed, this, &KeyframeActions::updateActions);
+    connect(&document_, &model::Document::keyframesChanged, this, &KeyframeActions::updateActions);
+    connect(&document_, &model::Document::sceneReset, this, &KeyframeActions::updateActions);
+    updateActions();
+}
+
+void KeyframeActions::addKeyframe()
+{
+    const model::SceneObject* object = selection_.selectedObject();
+    if (object == nullptr)
+        return;
+    const double time = document_.scene().currentTime;
+    // The key holds the pose the object has now, so keying changes nothing but the keys.
+    const model::Keyframe key{time, model::TrackMotion(object->track).at(time), true};
+    const model::ObjectId id = object->id;
+    try {
+        pushAlone(document_.undoStack(), new model::AddKeyframeCommand(document_, id, key));
+    } catch (const std::invalid_argument& error) {
+        statusBar_->showMessage(tr("Cannot add a keyframe: %1").arg(QString::fromUtf8(error.what())),
+                                kMessageMilliseconds);
+        return;
+    }
+    const auto& keys = document_.object(id)->track.keys;
+    const auto added = std::find_if(keys.begin(), keys.end(), [time](const model::Keyframe& k) { return k.time == time; });
+    if (added != keys.end())
+        selection_.selectKey(id, static_cast<std::size_t>(added - keys.begin()));
+}
+
+void KeyframeActions::removeKeyframe()
+{
+    if (selection_.selectedKey() == nullptr)
+        return;
+    pushAlone(document_.undoStack(), new model::RemoveKeyframeCommand(document_, selection_.object(), *selection_.key()));
+}
+
+void KeyframeActions::toggleConstraint()
+{
+    if (selection_.selectedKey() != nullptr)
+        pushAlone(document_.undoStack(),
+                  new model::ToggleKeyframeConstraintCommand(document_, selection_.object(), *selection_.key()));
+    updateActions();
+}
+
+void KeyframeActions::updateActions()
+{
+    const model::Keyframe* key = selection_.selectedKey();
+    actions_.add->setEnabled(selection_.selectedObject() != nullptr);
+    actions_.remove->setEnabled(key != nullptr);
+    actions_.toggleConstraint->setEnabled(key != nullptr);
+    actions_.toggleConstraint->setChecked(key != nullptr && key->constrained);
+}
+
+} // namespace gyre::app

@@ -1,0 +1,43 @@
+#pragma once
+// The Motion menu's keyframe actions on the selection: key the selected object's pose at the current
+// time, delete the selected key, constrain or free it. Each is one undo step; each is enabled only
+// when it applies.
+
+#include "app/selection.h"
+#include "model/document.h"
+
+#include <QObject>
+
+class QAction;
+class QStatusBar;
+
+namespace gyre::app {
+
+struct KeyframeActionSet {
+    QAction* add = nullptr;
+    QAction* remove = nullptr;
+    QAction* toggleConstraint = nullptr; // checkable: checked when the selected key is constrained
+};
+
+class KeyframeActions : public QObject {
+    Q_OBJECT
+
+public:
+    // Says in `statusBar` why an action could not be done.
+    KeyframeActions(model::Document& document, Selection& selection, KeyframeActionSet actions,
+                    QStatusBar* statusBar, QObject* parent = nullptr);
+
+    void addKeyframe();
+    void removeKeyframe();
+    void toggleConstraint();
+
+private:
+    void updateActions();
+
+    model::Document& document_;
+    Selection& selection_;
+    KeyframeActionSet actions_;
+    QStatusBar* statusBar_;
+};
+
+} // namespace gyre::app

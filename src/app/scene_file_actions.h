@@ -1,0 +1,57 @@
+#pragma once
+// File > Import Scene and File > Export Scene: choosing the file, running the job off the UI thread
+// with a busy indicator (and, for an import, a Cancel button) in the status bar, and turning an
+// imported scene into one undo step.
+
+#include "app/selection.h"
+#include "jobs/scene_file_jobs.h"
+#include "model/document.h"
+
+#include <QObject>
+#include <QString>
+
+#include <memory>
+
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QStatusBar;
+class QWidget;
+
+namespace gyre::app {
+
+class SceneFileActions : public QObject {
+    Q_OBJECT
+
+public:
+    SceneFileActions(model::Document& document, Selection& selection, QWidget* window, QStatusBar* statusBar,
+                     QObject* parent = nullptr);
+
+    jobs::SceneFileJobs& jobs() { return jobs_; }
+
+    void chooseSceneToImport();
+    void chooseSceneToExport();
+    // Starts reading the scene; its objects join the document when it is read.
+    void importScene(const QString& path);
+    void exportScene(const QString& path);
+
+private:
+    void addImportedObjects(const QString& path, const std::shared_ptr<const SceneImport>& imported);
+    void reportExport(const QString& path, const ExportReport& report);
+    // `message` names the file and says what was wrong.
+    void reportFailure(const QString& message);
+    void showWarnings(const QString& title, const QStringList& warnings);
+    void showBusy(const QString& text, bool cancellable);
+    void hideBusy();
+
+    model::Document& document_;
+    Selection& selection_;
+    QWidget* window_;
+    QStatusBar* statusBar_;
+    jobs::SceneFileJobs jobs_;
+    QLabel* busyLabel_;
+    QProgressBar* busyBar_;
+    QPushButton* cancelButton_;
+};
+
+} // namespace gyre::app
