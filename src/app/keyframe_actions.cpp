@@ -65,7 +65,9 @@ void KeyframeActions::removeKeyframe()
 {
     if (selection_.selectedKey() == nullptr)
         return;
-    pushAlone(document_.undoStack(), new model::RemoveKeyframeCommand(document_, selection_.object(), *selection_.key()));
+    const model::ObjectId object = selection_.object();
+    pushAlone(document_.undoStack(), new model::RemoveKeyframeCommand(document_, object, *selection_.key()));
+    selection_.selectObject(object); // the key is gone; its index now names its neighbour
 }
 
 void KeyframeActions::toggleConstraint()

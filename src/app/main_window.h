@@ -29,7 +29,9 @@ public:
     ~MainWindow() override;
 
     model::Document& document() { return document_; }
+    const model::Document& document() const { return document_; }
     Selection& selection() { return selection_; }
+    const Selection& selection() const { return selection_; }
     Playback& playback() { return playback_; }
     SceneFileActions& sceneFiles() { return *sceneFiles_; }
 

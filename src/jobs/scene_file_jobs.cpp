@@ -7,6 +7,28 @@
 
 namespace gyre::jobs {
 
+namespace {
+
+// What a job gives back: its result, or the message of the error that stopped it. Caught on the
+// worker, so that the message is the file's own and not a copy of a base class's.
+template <class Result>
+struct Outcome {
+    std::shared_ptr<const Result> result;
+    QString error;
+};
+
+template <class Work>
+auto runCatching(Work work) -> Outcome<decltype(work())>
+{
+    try {
+        return {std::make_shared<const decltype(work())>(work()), QString()};
+    } catch (const std::exception& error) {
+        return {nullptr, QString::fromUtf8(error.what())};
+    }
+}
+
+} // namespace
+
 SceneFileJobs::SceneFileJobs(QObject* parent)
     : QObject(parent)
 {
@@ -18,15 +40,14 @@ bool SceneFileJobs::startImport(const QString& path, const ImportOptions& option
         return false;
     busy_ = true;
     const std::uint64_t job = ++job_;
-    QtConcurrent::run([path, options] { return std::make_shared<const SceneImport>(importScene(path, options)); })
-        .then(this,
-              [this, job, path](std::shared_ptr<const SceneImport> scene) {
-                  if (finishJob(job, path))
-                      emit imported(path, std::move(scene));
-              })
-        .onFailed(this, [this, job, path](const std::exception& error) {
-            if (finishJob(job, path))
-                emit failed(path, QString::fromUtf8(error.what()));
+    QtConcurrent::run([path, options] { return runCatching([&] { return importScene(path, options); }); })
+        .then(this, [this, job, path](const Outcome<SceneImport>& outcome) {
+            if (!finishJob(job, path))
+                return;
+            if (outcome.result)
+                emit imported(path, outcome.result);
+            else
+                emit failed(path, outcome.error);
         });
     return true;
 }
@@ -39,16 +60,16 @@ bool SceneFileJobs::startExport(const model::Scene& scene, const QString& path, 
     const std::uint64_t job = ++job_;
     // The scene is copied: the document may change while the export runs. Meshes are shared, not
     // copied, and never change once made.
-    QtConcurrent::run([scene, path, format, fps] { return exportScene(scene, path, format, fps); })
-        .then(this,
-              [this, job, path](const ExportReport& report) {
-                  if (finishJob(job, path))
-                      emit exported(path, report);
-              })
-        .onFailed(this, [this, job, path](const std::exception& error) {
-            if (finishJob(job, path))
-                emit failed(path, QString::fromUtf8(error.what()));
-        });
+    QtConcurrent::run([scene, path, format, fps] {
+        return runCatching([&] { return exportScene(scene, path, format, fps); });
+    }).then(this, [this, job, path](const Outcome<ExportReport>& outcome) {
+        if (!finishJob(job, path))
+            return;
+        if (outcome.result)
+            emit exported(path, *outcome.result);
+        else
+            emit failed(path, outcome.error);
+    });
     return true;
 }
 

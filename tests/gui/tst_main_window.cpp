@@ -1,16 +1,65 @@
-// The main window driven as the artist drives it: files through the File menu, the title and its
-// unsaved-changes mark, asking before unsaved work is lost.
+// The main window driven as the artist drives it: files through the File menu and by dropping them,
+// the title and its unsaved-changes mark, asking before unsaved work is lost, the keyframe actions,
+// scene import and export off the UI thread, and the layout kept between sessions.
 
 #include "app/main_window.h"
 #include "gui_test_support.h"
+#include "io/scene_export.h"
 #include "model/commands/set_keyframe_position_command.h"
+#include "model/track_evaluation.h"
 
+#include <QAbstractButton>
 #include <QAction>
+#include <QDockWidget>
+#include <QFile>
+#include <QMenu>
 #include <QMessageBox>
+#include <QMimeData>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QUrl>
 
 using namespace gyre;
+
+namespace {
+
+QAction* action(const app::MainWindow& window, const char* name)
+{
+    auto* found = window.findChild<QAction*>(QLatin1String(name));
+    if (found == nullptr)
+        qFatal("No action %s", name);
+    return found;
+}
+
+model::ObjectId firstObject(const app::MainWindow& window)
+{
+    return window.document().scene().objects.front().id;
+}
+
+Eigen::Vector3d keyPosition(const app::MainWindow& window, std::size_t key)
+{
+    return window.document().scene().objects.front().track.keys.at(key).pose.position;
+}
+
+void moveFirstKey(app::MainWindow& window, const Eigen::Vector3d& position)
+{
+    window.document().undoStack().push(
+        new model::SetKeyframePositionCommand(window.document(), firstObject(window), 0, position));
+}
+
+// The window after it opened the bundled sample, shown.
+struct SampleWindow {
+    SampleWindow()
+    {
+        window.show();
+        window.openBundledSample();
+        window.playback().pause();
+    }
+    app::MainWindow window;
+};
+
+} // namespace
 
 class TestMainWindow : public QObject {
     Q_OBJECT
@@ -20,15 +69,217 @@ private slots:
 
     void startsOnTheBundledSampleUntitledAndUnmodified()
     {
-        app::MainWindow window;
-        window.show();
-        window.openBundledSample();
+        SampleWindow sample;
+        const app::MainWindow& window = sample.window;
         QCOMPARE(window.document().scene().objects.size(), std::size_t{1});
         QCOMPARE(window.document().scene().objects.front().track.keys.size(), std::size_t{6});
         QVERIFY(window.document().filePath().isEmpty());
         QVERIFY(!window.document().isModified());
         QVERIFY(window.windowTitle().startsWith(QStringLiteral("Untitled")));
-        QVERIFY(window.selection().object() != model::kNoObject);
+        QVERIFY(!window.isWindowModified());
+        QCOMPARE(window.selection().object(), firstObject(window));
+    }
+
+    void anEditMarksTheTitleAndUndoClearsTheMark()
+    {
+        SampleWindow sample;
+        moveFirstKey(sample.window, Eigen::Vector3d(1, 2, 3));
+        QVERIFY(sample.window.isWindowModified());
+        action(sample.window, "actionUndo")->trigger();
+        QVERIFY(!sample.window.isWindowModified());
+        QCOMPARE(keyPosition(sample.window, 0), Eigen::Vector3d::Zero().eval());
+        action(sample.window, "actionRedo")->trigger();
+        QCOMPARE(keyPosition(sample.window, 0), Eigen::Vector3d(1, 2, 3));
+    }
+
+    void savesThroughSaveAsAndReopensThroughTheFileMenu()
+    {
+        QTemporaryDir folder;
+        const QString path = folder.filePath(QStringLiteral("moved.gyre"));
+        {
+            SampleWindow sample;
+            moveFirstKey(sample.window, Eigen::Vector3d(0.25, -1, 2));
+            test::answerFileDialog(path);
+            action(sample.window, "actionSaveAs")->trigger();
+            QCOMPARE(sample.window.document().filePath(), path);
+            QVERIFY(!sample.window.isWindowModified());
+            QVERIFY(sample.window.windowTitle().startsWith(QStringLiteral("moved.gyre")));
+        }
+        app::MainWindow window;
+        window.show();
+        test::answerFileDialog(path);
+        action(window, "actionOpen")->trigger();
+        QCOMPARE(window.document().filePath(), path);
+        QCOMPARE(keyPosition(window, 0), Eigen::Vector3d(0.25, -1, 2));
+        QVERIFY(window.windowTitle().startsWith(QStringLiteral("moved.gyre")));
+        // It is now the first of the recent files.
+        auto* recent = window.findChild<QMenu*>(QStringLiteral("menuOpenRecent"));
+        QVERIFY(recent->isEnabled());
+        QCOMPARE(recent->actions().front()->statusTip(), QFileInfo(path).absoluteFilePath());
+    }
+
+    void closingWithUnsavedWorkAsksAndCancelKeepsTheWindow()
+    {
+        SampleWindow sample;
+        moveFirstKey(sample.window, Eigen::Vector3d(4, 0, 0));
+        QString question;
+        test::answerMessageBox(QMessageBox::Cancel, &question);
+        QVERIFY(!sample.window.close());
+        QVERIFY(question.contains(QStringLiteral("unsaved")));
+        QVERIFY(sample.window.isVisible());
+        QCOMPARE(keyPosition(sample.window, 0), Eigen::Vector3d(4, 0, 0));
+        test::answerMessageBox(QMessageBox::Discard);
+        QVERIFY(sample.window.close());
+    }
+
+    void aBrokenProjectIsReportedByNameAndTheOpenOneStays()
+    {
+        QTemporaryDir folder;
+        const QString path = folder.filePath(QStringLiteral("broken.gyre"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("{\"format\": \"gyre-project\", \"version\": 2, \"fps\": \"fast\"}");
+        file.close();
+        SampleWindow sample;
+        QString message;
+        test::answerMessageBox(QMessageBox::Ok, &message);
+        QVERIFY(!sample.window.openProject(path));
+        QVERIFY2(message.contains(QStringLiteral("broken.gyre")), qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("fps")), qPrintable(message));
+        QCOMPARE(sample.window.document().scene().objects.size(), std::size_t{1});
+        QVERIFY(sample.window.document().filePath().isEmpty());
+    }
+
+    void droppingAProjectOpensIt()
+    {
+        QTemporaryDir folder;
+        const QString path = folder.filePath(QStringLiteral("dropped.gyre"));
+        {
+            SampleWindow sample;
+            moveFirstKey(sample.window, Eigen::Vector3d(0, 0, 9));
+            sample.window.document().save(path);
+        }
+        app::MainWindow window;
+        window.show();
+        QMimeData data;
+        data.setUrls({QUrl::fromLocalFile(path)});
+        QDragEnterEvent enter(QPoint(200, 200), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&window, &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(QPointF(200, 200), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&window, &drop);
+        QCOMPARE(window.document().filePath(), path);
+        QCOMPARE(keyPosition(window, 0), Eigen::Vector3d(0, 0, 9));
+    }
+
+    void importsASceneOffTheUiThreadAsOneUndoStep()
+    {
+        QTemporaryDir folder;
+        const QString path = folder.filePath(QStringLiteral("exported.gltf"));
+        SampleWindow sample;
+        app::MainWindow& window = sample.window;
+        QSignalSpy exported(&window.sceneFiles().jobs(), &jobs::SceneFileJobs::exported);
+        window.sceneFiles().exportScene(path);
+        QVERIFY(window.sceneFiles().jobs().isBusy());
+        QTRY_COMPARE(exported.count(), 1);
+        QVERIFY(QFile::exists(path));
+
+        const int steps = window.document().undoStack().count();
+        QSignalSpy imported(&window.sceneFiles().jobs(), &jobs::SceneFileJobs::imported);
+        window.sceneFiles().importScene(path);
+        QTRY_COMPARE(imported.count(), 1);
+        QCOMPARE(window.document().undoStack().count(), steps + 1);
+        const auto& objects = window.document().scene().objects;
+        QCOMPARE(objects.size(), std::size_t{2});
+        // The baked motion plays the sample's: at a key time the imported object has the pose the
+        // sample's subdivided motion has then (Jarek's scheme approximates its control poses).
+        const double keyTime = objects.front().track.keys.at(2).time;
+        const Pose original = model::TrackMotion(objects.front().track).at(keyTime);
+        const auto& copiedKeys = objects.back().track.keys;
+        const auto copied = std::find_if(copiedKeys.begin(), copiedKeys.end(),
+                                         [&](const model::Keyframe& key) { return key.time == keyTime; });
+        QVERIFY(copied != copiedKeys.end());
+        QVERIFY((copied->pose.position - original.position).norm() < 1e-5);
+        QVERIFY(copied->pose.orientation.angularDistance(original.orientation) < 1e-5);
+        QCOMPARE(window.selection().object(), objects.back().id);
+        window.document().undoStack().undo();
+        QCOMPARE(window.document().scene().objects.size(), std::size_t{1});
+    }
+
+    void aCancelledImportChangesNothing()
+    {
+        QTemporaryDir folder;
+        const QString path = folder.filePath(QStringLiteral("exported.glb"));
+        SampleWindow sample;
+        app::MainWindow& window = sample.window;
+        exportScene(window.document().scene(), path, SceneFormat::Glb, window.document().scene().fps);
+        QSignalSpy cancelled(&window.sceneFiles().jobs(), &jobs::SceneFileJobs::cancelled);
+        window.sceneFiles().importScene(path);
+        auto* cancel = window.findChild<QAbstractButton*>(QStringLiteral("cancelSceneJob"));
+        QVERIFY(cancel->isVisible());
+        QTest::mouseClick(cancel, Qt::LeftButton);
+        QTRY_COMPARE(cancelled.count(), 1);
+        QVERIFY(!cancel->isVisible());
+        QCOMPARE(window.document().scene().objects.size(), std::size_t{1});
+        QCOMPARE(window.document().undoStack().count(), 0);
+    }
+
+    void anUnreadableSceneIsReportedByName()
+    {
+        QTemporaryDir folder;
+        const QString path = folder.filePath(QStringLiteral("garbage.fbx"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("this is not an FBX file\n");
+        file.close();
+        SampleWindow sample;
+        QSignalSpy failed(&sample.window.sceneFiles().jobs(), &jobs::SceneFileJobs::failed);
+        QString message;
+        test::answerMessageBox(QMessageBox::Ok, &message);
+        sample.window.sceneFiles().importScene(path);
+        QTRY_COMPARE(failed.count(), 1);
+        QTRY_VERIFY2(message.contains(QStringLiteral("garbage.fbx")), qPrintable(message));
+        QCOMPARE(sample.window.document().scene().objects.size(), std::size_t{1});
+    }
+
+    void keyframeActionsAddDeleteAndConstrainTheSelectedKey()
+    {
+        SampleWindow sample;
+        app::MainWindow& window = sample.window;
+        window.document().setCurrentTime(2.5);
+        action(window, "actionAddKeyframe")->trigger();
+        const auto& keys = window.document().scene().objects.front().track.keys;
+        QCOMPARE(keys.size(), std::size_t{7});
+        QCOMPARE(window.selection().key(), std::optional<std::size_t>(3));
+        QCOMPARE(keys[3].time, 2.5);
+        QCOMPARE(window.document().undoStack().count(), 1);
+
+        QAction* constrain = action(window, "actionToggleConstraint");
+        QVERIFY(constrain->isChecked());
+        constrain->trigger();
+        QVERIFY(!keys[3].constrained);
+        QVERIFY(!constrain->isChecked());
+
+        action(window, "actionDeleteKeyframe")->trigger();
+        QCOMPARE(window.document().scene().objects.front().track.keys.size(), std::size_t{6});
+        QVERIFY(!action(window, "actionDeleteKeyframe")->isEnabled());
+        QCOMPARE(window.document().undoStack().count(), 3);
+    }
+
+    void theDockLayoutIsKeptBetweenSessions()
+    {
+        {
+            app::MainWindow window;
+            window.show();
+            window.findChild<QDockWidget*>(QStringLiteral("screwBenderDock"))->hide();
+            QVERIFY(window.close());
+        }
+        app::MainWindow window;
+        window.show();
+        QVERIFY(!window.findChild<QDockWidget*>(QStringLiteral("screwBenderDock"))->isVisible());
+        QVERIFY(window.findChild<QDockWidget*>(QStringLiteral("inspectorDock"))->isVisible());
+        window.findChild<QDockWidget*>(QStringLiteral("screwBenderDock"))->show();
+        QVERIFY(window.close());
     }
 };
 
