@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The README's first command: installs what Gyre needs, builds it (Release), and runs it on the
-# bundled sample. Until the desktop app exists, "running it" means gyre-cli smoothing the L-shaped
-# cycle of the ScrewBender paper and converting the result to Euler angles.
+# The README's first command: installs what Gyre needs, builds it (Release), and opens the desktop
+# application on its bundled sample, the L-shaped cycle of the ScrewBender paper. On a machine without
+# a display it runs the application on a virtual X server instead and saves a picture of its window.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${GYRE_BUILD_DIR:-$here/build}"
@@ -10,15 +10,12 @@ build="${GYRE_BUILD_DIR:-$here/build}"
 cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" --parallel
 
-cli="$build/src/cli/gyre-cli"
-sample="$here/resources/samples/l-cycle.csv"
-out="$build/samples"
-mkdir -p "$out"
-"$cli" subdivide "$sample" -o "$out/l-cycle-jarek.csv" --scheme jarek --levels 4
-"$cli" convert "$out/l-cycle-jarek.csv" -o "$out/l-cycle-jarek-euler.csv" --to euler --order zyx --intrinsic
-echo
-echo "Subdivided the 6 control poses of $sample into $(($(grep -vc '^#' "$out/l-cycle-jarek.csv") - 1)) poses (Jarek, 4 levels):"
-head -n 6 "$out/l-cycle-jarek-euler.csv"
-echo "..."
-echo "Full results: $out/l-cycle-jarek.csv (quaternions) and $out/l-cycle-jarek-euler.csv (intrinsic zyx angles)."
-echo "Try: $cli --help"
+app="$build/src/app/gyre"
+if [[ -n "${DISPLAY:-}" || -n "${WAYLAND_DISPLAY:-}" ]]; then
+    exec "$app" "$@"
+fi
+screenshot="$build/gyre-window.png"
+echo "No display: running gyre on a virtual X server for a few seconds."
+xvfb-run -a -s "-screen 0 1600x1000x24" env QT_QPA_PLATFORM=xcb "$app" --screenshot "$screenshot" --delay 4000 "$@"
+echo "gyre opened the bundled sample; its window is in $screenshot."
+echo "On a machine with a display, $app opens it for you to use; $build/src/cli/gyre-cli --help lists the batch verbs."
