@@ -100,7 +100,7 @@ void MainWindow::setUpActions()
     sceneFiles_ = new SceneFileActions(document_, selection_, this, statusBar(), this);
     connect(ui_->actionImportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToImport);
     connect(ui_->actionExportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToExport);
-    keyframeActions_ = new KeyframeActions(
+    new KeyframeActions(
         document_, selection_, {ui_->actionAddKeyframe, ui_->actionDeleteKeyframe, ui_->actionToggleConstraint},
         statusBar(), this);
 

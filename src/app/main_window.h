@@ -78,7 +78,6 @@ private:
     model::Document document_;
     Selection selection_;
     Playback playback_;
-    KeyframeActions* keyframeActions_ = nullptr;
     SceneFileActions* sceneFiles_ = nullptr;
     std::unique_ptr<model::Autosave> autosave_;
 };
