@@ -1,5 +1,6 @@
 #include "app/main_window.h"
 
+#include "app/inspector_widget.h"
 #include "model/input_error.h"
 #include "ui_main_window.h"
 
@@ -124,6 +125,7 @@ void MainWindow::setUpDocks()
 
 void MainWindow::createViews()
 {
+    ui_->inspectorDockLayout->addWidget(new InspectorWidget(document_, selection_, ui_->inspectorDockContents));
 }
 
 void MainWindow::restoreLayout()
