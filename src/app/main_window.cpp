@@ -1,6 +1,7 @@
 #include "app/main_window.h"
 
 #include "app/inspector_widget.h"
+#include "app/screwbender_panel.h"
 #include "model/input_error.h"
 #include "ui_main_window.h"
 
@@ -126,6 +127,7 @@ void MainWindow::setUpDocks()
 void MainWindow::createViews()
 {
     ui_->inspectorDockLayout->addWidget(new InspectorWidget(document_, selection_, ui_->inspectorDockContents));
+    ui_->screwBenderDockLayout->addWidget(new ScrewBenderPanel(document_, selection_, ui_->screwBenderDockContents));
 }
 
 void MainWindow::restoreLayout()
