@@ -1,6 +1,11 @@
 #include "app/main_window.h"
 
+<<<<<<< HEAD
 #include "io/scene_import.h"
+=======
+#include "app/inspector_widget.h"
+#include "app/screwbender_panel.h"
+>>>>>>> inspector
 #include "model/input_error.h"
 #include "ui_main_window.h"
 
@@ -149,6 +154,8 @@ void MainWindow::setUpDocks()
 
 void MainWindow::createViews()
 {
+    ui_->inspectorDockLayout->addWidget(new InspectorWidget(document_, selection_, ui_->inspectorDockContents));
+    ui_->screwBenderDockLayout->addWidget(new ScrewBenderPanel(document_, selection_, ui_->screwBenderDockContents));
 }
 
 void MainWindow::restoreLayout()
