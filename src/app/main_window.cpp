@@ -1,11 +1,8 @@
 #include "app/main_window.h"
 
-<<<<<<< HEAD
-#include "io/scene_import.h"
-=======
 #include "app/inspector_widget.h"
 #include "app/screwbender_panel.h"
->>>>>>> inspector
+#include "io/scene_import.h"
 #include "model/input_error.h"
 #include "ui_main_window.h"
 
