@@ -1,5 +1,7 @@
 #include "app/main_window.h"
 
+#include "app/time_bar.h"
+#include "app/timeline_widget.h"
 #include "model/input_error.h"
 #include "ui_main_window.h"
 
@@ -124,6 +126,8 @@ void MainWindow::setUpDocks()
 
 void MainWindow::createViews()
 {
+    ui_->timelineDockLayout->addWidget(new TimeBar(document_, ui_->timelineDockContents));
+    ui_->timelineDockLayout->addWidget(new TimelineWidget(document_, selection_, playback_, ui_->timelineDockContents), 1);
 }
 
 void MainWindow::restoreLayout()
