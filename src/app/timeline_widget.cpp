@@ -33,42 +33,59 @@ bool isWholeNumber(double value)
     return std::abs(value - std::round(value)) < 1e-9;
 }
 
-// Steps in frames worth putting ticks or labels at, increasing: 1, 2, 5, 10, 20, 50, ... and, for a
-// whole frame rate, half, quarter and whole multiples of a second (so 30 fps labels 0.5 s, 1 s, 2 s
-// rather than every 20 frames).
-std::vector<long long> frameSteps(double fps, double totalFrames)
+// Steps in frames worth putting ticks at, increasing: 1, 2, 5, 10, 20, 50, ...
+std::vector<long long> tickSteps(double totalFrames)
 {
     std::vector<long long> steps;
     for (long long power = 1; static_cast<double>(power) <= 2.0 * totalFrames + 10.0; power *= 10)
         for (long long factor : {1, 2, 5})
             steps.push_back(power * factor);
-    if (isWholeNumber(fps)) {
-        const auto perSecond = static_cast<long long>(std::round(fps));
-        if (perSecond % 4 == 0)
-            steps.push_back(perSecond / 4);
-        if (perSecond % 2 == 0)
-            steps.push_back(perSecond / 2);
-        for (long long seconds : {1, 2, 5, 10, 15, 30, 60, 120, 300, 600, 1800, 3600})
-            steps.push_back(perSecond * seconds);
-    }
+    return steps;
+}
+
+// Steps in frames worth labelling, increasing. For a whole frame rate, labels fall on whole seconds
+// or their halves and quarters where they can (30 fps labels 0.5 s, 1 s, 2 s, not every 10 frames
+// at 0.333 s), and on 1, 2 or 5 frames only when zoomed in closer than a quarter second.
+std::vector<long long> labelSteps(double fps, double totalFrames)
+{
+    if (!isWholeNumber(fps))
+        return tickSteps(totalFrames);
+    const auto perSecond = static_cast<long long>(std::round(fps));
+    std::vector<long long> steps;
+    for (long long frames : {1, 2, 5})
+        if (frames * 4 < perSecond)
+            steps.push_back(frames);
+    for (long long divisor : {4, 2})
+        if (perSecond % divisor == 0)
+            steps.push_back(perSecond / divisor);
+    for (long long power = 1; static_cast<double>(perSecond * power) <= 2.0 * totalFrames + 10.0 * fps; power *= 10)
+        for (long long factor : {1, 2, 5})
+            steps.push_back(perSecond * power * factor);
     std::sort(steps.begin(), steps.end());
     steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
     return steps;
 }
 
-// The smallest step at least `minPixels` wide that is a multiple of `multipleOf`; the largest step if none is.
-long long firstStepWiderThan(const std::vector<long long>& steps, double pixelsPerFrame, double minPixels,
-                             long long multipleOf)
+// The smallest of `steps` at least `minPixels` wide; the largest if none is.
+long long firstStepWiderThan(const std::vector<long long>& steps, double pixelsPerFrame, double minPixels)
 {
     for (long long step : steps)
-        if (step % multipleOf == 0 && static_cast<double>(step) * pixelsPerFrame >= minPixels)
+        if (static_cast<double>(step) * pixelsPerFrame >= minPixels)
             return step;
     return steps.back();
 }
 
+// Seconds to the millisecond, without trailing zeros: "0.5 s", "0.167 s", "2 s".
 QString secondsLabel(double seconds)
 {
-    return TimelineWidget::tr("%1 s").arg(seconds, 0, 'g', 6);
+    QString number = QString::number(seconds, 'f', 3);
+    while (number.endsWith(QLatin1Char('0')))
+        number.chop(1);
+    if (number.endsWith(QLatin1Char('.')))
+        number.chop(1);
+    if (number == QLatin1String("-0"))
+        number = QStringLiteral("0");
+    return TimelineWidget::tr("%1 s").arg(number);
 }
 
 QString frameLabel(long long frame)
@@ -168,15 +185,23 @@ void TimelineWidget::paintRuler(QPainter& painter) const
     const QRect ruler = rulerRect();
     const double totalFrames = (scene.endTime - scene.startTime) * scene.fps;
     const double pixelsPerFrame = (width() - 2 * kSideMargin) / totalFrames;
-    const std::vector<long long> steps = frameSteps(scene.fps, totalFrames);
-    const long long tickStep = firstStepWiderThan(steps, pixelsPerFrame, kMinTickSpacing, 1);
     const QFontMetrics metrics = fontMetrics();
-    // The widest label is at the end of the range, or at the start for a range that ends at or before 0.
-    const double widestLabel = std::max(
-        {metrics.horizontalAdvance(secondsLabel(scene.endTime)), metrics.horizontalAdvance(secondsLabel(scene.startTime)),
-         metrics.horizontalAdvance(frameLabel(std::llround(scene.endTime * scene.fps))),
-         metrics.horizontalAdvance(frameLabel(std::llround(scene.startTime * scene.fps)))});
-    const long long labelStep = firstStepWiderThan(steps, pixelsPerFrame, widestLabel + kLabelPadding, tickStep);
+    // No label is wider than the range's longer end written to the millisecond, e.g. "-12.345 s".
+    const double longerEnd = std::max(std::abs(scene.startTime), std::abs(scene.endTime));
+    const QString widestSeconds = TimelineWidget::tr("%1 s").arg(
+        (scene.startTime < 0.0 ? QStringLiteral("-") : QString()) + QString::number(longerEnd, 'f', 3));
+    const double widestLabel =
+        std::max({metrics.horizontalAdvance(widestSeconds),
+                  metrics.horizontalAdvance(frameLabel(std::llround(scene.startTime * scene.fps))),
+                  metrics.horizontalAdvance(frameLabel(std::llround(scene.endTime * scene.fps)))});
+    const long long labelStep =
+        firstStepWiderThan(labelSteps(scene.fps, totalFrames), pixelsPerFrame, widestLabel + kLabelPadding);
+    // Ticks between the labels, on steps that divide the labels' step, so that labels sit on ticks.
+    std::vector<long long> dividingSteps;
+    for (long long step : tickSteps(totalFrames))
+        if (labelStep % step == 0)
+            dividingSteps.push_back(step);
+    const long long tickStep = firstStepWiderThan(dividingSteps, pixelsPerFrame, kMinTickSpacing);
 
     const QColor tickColour = palette().color(QPalette::ButtonText);
     QColor frameTextColour = tickColour;
