@@ -1,5 +1,6 @@
 #include "app/main_window.h"
 
+#include "app/smoothness_panel.h"
 #include "app/time_bar.h"
 #include "app/timeline_widget.h"
 #include "model/input_error.h"
@@ -128,6 +129,7 @@ void MainWindow::createViews()
 {
     ui_->timelineDockLayout->addWidget(new TimeBar(document_, ui_->timelineDockContents));
     ui_->timelineDockLayout->addWidget(new TimelineWidget(document_, selection_, playback_, ui_->timelineDockContents), 1);
+    ui_->smoothnessDockLayout->addWidget(new SmoothnessPanel(document_, selection_, ui_->smoothnessDockContents));
 }
 
 void MainWindow::restoreLayout()
