@@ -149,15 +149,6 @@ Eigen::Vector3d SmoothnessPanel::point() const
     return {pointBoxes_[0]->value(), pointBoxes_[1]->value(), pointBoxes_[2]->value()};
 }
 
-void SmoothnessPanel::setPoint(const Eigen::Vector3d& localPoint)
-{
-    for (std::size_t axis = 0; axis < pointBoxes_.size(); ++axis) {
-        const QSignalBlocker block(pointBoxes_[axis]);
-        pointBoxes_[axis]->setValue(localPoint[static_cast<Eigen::Index>(axis)]);
-    }
-    scheduleRecompute();
-}
-
 QCPGraph* SmoothnessPanel::graph(Quantity quantity, Component component) const
 {
     return graphs_[static_cast<std::size_t>(quantity)][static_cast<std::size_t>(component)];

@@ -44,9 +44,8 @@ public:
 
     SmoothnessPanel(model::Document& document, Selection& selection, QWidget* parent = nullptr);
 
-    // The point whose motion is plotted, in the object's local frame.
+    // The point whose motion is plotted, in the object's local frame, as its spin boxes give it.
     Eigen::Vector3d point() const;
-    void setPoint(const Eigen::Vector3d& localPoint);
 
     QCustomPlot* plot() const { return plot_; }
     QCPGraph* graph(Quantity quantity, Component component) const;
