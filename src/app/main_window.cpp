@@ -2,6 +2,9 @@
 
 #include "app/inspector_widget.h"
 #include "app/screwbender_panel.h"
+#include "app/smoothness_panel.h"
+#include "app/time_bar.h"
+#include "app/timeline_widget.h"
 #include "io/scene_import.h"
 #include "model/input_error.h"
 #include "ui_main_window.h"
@@ -153,6 +156,9 @@ void MainWindow::createViews()
 {
     ui_->inspectorDockLayout->addWidget(new InspectorWidget(document_, selection_, ui_->inspectorDockContents));
     ui_->screwBenderDockLayout->addWidget(new ScrewBenderPanel(document_, selection_, ui_->screwBenderDockContents));
+    ui_->timelineDockLayout->addWidget(new TimeBar(document_, ui_->timelineDockContents));
+    ui_->timelineDockLayout->addWidget(new TimelineWidget(document_, selection_, playback_, ui_->timelineDockContents), 1);
+    ui_->smoothnessDockLayout->addWidget(new SmoothnessPanel(document_, selection_, ui_->smoothnessDockContents));
 }
 
 void MainWindow::restoreLayout()

@@ -1,0 +1,158 @@
+// The timeline driven with the mouse on the bundled sample (keys at 0, 1, ..., 5 s, 30 fps): dragging
+// a key marker retimes the key by the distance dragged, one undo step per drag, and stops before its
+// neighbour; clicking the ruler scrubs without an undo step; clicking a marker selects the key. The
+// bar above it edits the time range as one undo step.
+
+#include "app/main_window.h"
+#include "app/timeline_widget.h"
+#include "gui_test_support.h"
+
+#include <QApplication>
+#include <QDoubleSpinBox>
+#include <QMouseEvent>
+#include <QTest>
+
+#include <cmath>
+#include <memory>
+
+using namespace gyre;
+
+namespace {
+
+constexpr std::size_t kDraggedKey = 2; // at 2 s, between keys at 1 s and 3 s
+
+// Presses at `from`, moves in steps to `to` with the left button held, and releases there.
+void dragWithLeftButton(QWidget* widget, const QPoint& from, const QPoint& to, Qt::KeyboardModifiers modifiers = {})
+{
+    QTest::mousePress(widget, Qt::LeftButton, modifiers, from);
+    constexpr int kSteps = 10;
+    for (int step = 1; step <= kSteps; ++step) {
+        const QPointF at = QPointF(from) + QPointF(to - from) * step / kSteps;
+        // QTest::mouseMove does not say which buttons are held; a drag needs them.
+        QMouseEvent move(QEvent::MouseMove, at, widget->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, modifiers);
+        QApplication::sendEvent(widget, &move);
+    }
+    QTest::mouseRelease(widget, Qt::LeftButton, modifiers, to);
+}
+
+} // namespace
+
+class TestTimeline : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { test::useTestSettings(); }
+
+    void init()
+    {
+        window_ = std::make_unique<app::MainWindow>();
+        window_->resize(1400, 900);
+        window_->show();
+        window_->openBundledSample();
+        window_->playback().pause();
+        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+        timeline_ = window_->findChild<app::TimelineWidget*>();
+        QVERIFY(timeline_ != nullptr);
+        QVERIFY(timeline_->isVisible());
+        QCOMPARE(keyTime(kDraggedKey), 2.0);
+    }
+
+    void cleanup() { window_.reset(); }
+
+    void draggingAKeyRetimesItAsOneUndoStep()
+    {
+        QUndoStack& stack = window_->document().undoStack();
+        const int stepsBefore = stack.count();
+        const QPoint from = *timeline_->keyMarkerCentre(kDraggedKey);
+        dragWithLeftButton(timeline_, from, from + QPoint(pixelsFor(0.5), 0));
+        QCOMPARE(keyTime(kDraggedKey), 2.5);
+        QCOMPARE(window_->selection().key(), std::optional(kDraggedKey));
+        QCOMPARE(stack.count(), stepsBefore + 1);
+
+        stack.undo();
+        QCOMPARE(keyTime(kDraggedKey), 2.0);
+        stack.redo();
+        QCOMPARE(keyTime(kDraggedKey), 2.5);
+
+        // The next drag of the same key is a step of its own, though the model merges such moves.
+        const QPoint again = *timeline_->keyMarkerCentre(kDraggedKey);
+        dragWithLeftButton(timeline_, again, again - QPoint(pixelsFor(0.2), 0));
+        QCOMPARE(keyTime(kDraggedKey), 2.3);
+        QCOMPARE(stack.count(), stepsBefore + 2);
+        stack.undo();
+        QCOMPARE(keyTime(kDraggedKey), 2.5);
+    }
+
+    void aDragTowardANeighbourStopsBeforeIt()
+    {
+        const QPoint from = *timeline_->keyMarkerCentre(kDraggedKey);
+        dragWithLeftButton(timeline_, from, from + QPoint(pixelsFor(2.5), 0));
+        // The last frame before the neighbour at 3 s: frame 89 at 30 fps.
+        QCOMPARE(keyTime(kDraggedKey), 89.0 / 30.0);
+        QCOMPARE(keyTime(kDraggedKey + 1), 3.0);
+
+        // Unsnapped (Shift), it comes closer, still short of the neighbour.
+        const QPoint left = *timeline_->keyMarkerCentre(kDraggedKey);
+        dragWithLeftButton(timeline_, left, left - QPoint(pixelsFor(2.5), 0), Qt::ShiftModifier);
+        QVERIFY(keyTime(kDraggedKey) > 1.0);
+        QVERIFY(keyTime(kDraggedKey) < 1.0 + 1.0 / 30.0);
+        QCOMPARE(keyTime(kDraggedKey - 1), 1.0);
+    }
+
+    void clickingTheRulerScrubsWithoutAnUndoStep()
+    {
+        const int stepsBefore = window_->document().undoStack().count();
+        window_->playback().play();
+        const QPoint onRuler(static_cast<int>(std::lround(timeline_->xForTime(2.5))), timeline_->rulerRect().center().y());
+        QTest::mouseClick(timeline_, Qt::LeftButton, {}, onRuler);
+        QVERIFY(!window_->playback().isPlaying());
+        QCOMPARE(window_->document().scene().currentTime, 2.5);
+        QCOMPARE(window_->document().undoStack().count(), stepsBefore);
+        QVERIFY(!window_->document().isModified());
+    }
+
+    void clickingAMarkerSelectsItsKey()
+    {
+        const int stepsBefore = window_->document().undoStack().count();
+        QTest::mouseClick(timeline_, Qt::LeftButton, {}, *timeline_->keyMarkerCentre(4));
+        QCOMPARE(window_->selection().key(), std::optional<std::size_t>(4));
+        QCOMPARE(keyTime(4), 4.0);
+        QCOMPARE(window_->document().undoStack().count(), stepsBefore);
+    }
+
+    void theTimeBarSetsTheRangeAsOneUndoStep()
+    {
+        auto* end = window_->findChild<QDoubleSpinBox*>(QStringLiteral("endTimeBox"));
+        QVERIFY(end != nullptr);
+        QCOMPARE(end->value(), 6.0);
+        const int stepsBefore = window_->document().undoStack().count();
+        end->setValue(8.0);
+        QCOMPARE(window_->document().scene().endTime, 8.0);
+        QCOMPARE(window_->document().undoStack().count(), stepsBefore + 1);
+        // An end before the start is refused, and the box shows the scene's end again.
+        end->setValue(-1.0);
+        QCOMPARE(window_->document().scene().endTime, 8.0);
+        QCOMPARE(end->value(), 8.0);
+        window_->document().undoStack().undo();
+        QCOMPARE(window_->document().scene().endTime, 6.0);
+        QCOMPARE(end->value(), 6.0);
+    }
+
+private:
+    double keyTime(std::size_t key) const
+    {
+        return window_->selection().selectedObject()->track.keys[key].time;
+    }
+
+    // The width of `seconds` on the ruler, to the nearest pixel.
+    int pixelsFor(double seconds) const
+    {
+        return static_cast<int>(std::lround(timeline_->xForTime(seconds) - timeline_->xForTime(0.0)));
+    }
+
+    std::unique_ptr<app::MainWindow> window_;
+    app::TimelineWidget* timeline_ = nullptr;
+};
+
+QTEST_MAIN(TestTimeline)
+#include "tst_timeline.moc"
