@@ -165,7 +165,12 @@ void MainWindow::restoreLayout()
 {
     QSettings settings;
     restoreGeometry(settings.value(kGeometryKey).toByteArray());
-    restoreState(settings.value(kStateKey).toByteArray());
+    if (restoreState(settings.value(kStateKey).toByteArray()))
+        return;
+    // The first start: most of the window for the viewport, panels at the sizes they need.
+    resizeDocks({ui_->inspectorDock}, {420}, Qt::Horizontal);
+    resizeDocks({ui_->inspectorDock, ui_->screwBenderDock}, {520, 300}, Qt::Vertical);
+    resizeDocks({ui_->timelineDock}, {150}, Qt::Vertical);
 }
 
 void MainWindow::saveLayout() const
@@ -224,6 +229,8 @@ void MainWindow::openBundledSample()
 {
     // The sample is compiled in; failing to read it is a broken build, not a user error.
     document_.loadAsUntitled(QStringLiteral(":/samples/l-cycle.gyre"));
+    // Its first control pose selected, so the inspector and the pose's handles show at once.
+    selection_.selectKey(selection_.object(), 0);
     playback_.play();
 }
 
