@@ -1,11 +1,13 @@
 #include "app/main_window.h"
 
+#include "app/viewport/viewport.h"
 #include "model/input_error.h"
 #include "ui_main_window.h"
 
 #include <QCloseEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QLabel>
 #include <QMessageBox>
 #include <QSettings>
 #include <QStyle>
@@ -124,6 +126,29 @@ void MainWindow::setUpDocks()
 
 void MainWindow::createViews()
 {
+    viewport_ = new Viewport(document_, selection_, ui_->centralWidget);
+    ui_->centralLayout->addWidget(viewport_);
+    viewport_->setShowGhost(ui_->actionShowGhost->isChecked());
+    viewport_->setShowTrajectory(ui_->actionShowTrajectory->isChecked());
+    viewport_->setShowControlPoses(ui_->actionShowControlPoses->isChecked());
+    viewport_->setShowTrail(ui_->actionShowTrail->isChecked());
+    connect(ui_->actionShowGhost, &QAction::toggled, viewport_, &Viewport::setShowGhost);
+    connect(ui_->actionShowTrajectory, &QAction::toggled, viewport_, &Viewport::setShowTrajectory);
+    connect(ui_->actionShowControlPoses, &QAction::toggled, viewport_, &Viewport::setShowControlPoses);
+    connect(ui_->actionShowTrail, &QAction::toggled, viewport_, &Viewport::setShowTrail);
+    connect(ui_->actionFrameAll, &QAction::triggered, viewport_, &Viewport::frameScene);
+
+    auto* frameStats = new QLabel(statusBar());
+    frameStats->setToolTip(tr("Viewport frame rate while drawing, and the time to subdivide the trail: "
+                              "on the worker, and from the request to its arrival"));
+    statusBar()->addPermanentWidget(frameStats);
+    connect(viewport_, &Viewport::frameStatsChanged, frameStats,
+            [frameStats](double framesPerSecond, double subdivisionMs, double latencyMs) {
+                frameStats->setText(tr("%1 fps · subdivision %2 ms (%3 ms to arrive)")
+                                        .arg(framesPerSecond, 0, 'f', 0)
+                                        .arg(subdivisionMs, 0, 'f', 1)
+                                        .arg(latencyMs, 0, 'f', 1));
+            });
 }
 
 void MainWindow::restoreLayout()

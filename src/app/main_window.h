@@ -18,6 +18,8 @@ class MainWindow;
 
 namespace gyre::app {
 
+class Viewport;
+
 class MainWindow : public QMainWindow {
     Q_OBJECT
 
@@ -63,6 +65,7 @@ private:
     model::Document document_;
     Selection selection_;
     Playback playback_;
+    Viewport* viewport_ = nullptr; // owned by the central widget
 };
 
 } // namespace gyre::app
