@@ -51,8 +51,8 @@ struct Rgba {
 constexpr Rgba kBackground{0.16F, 0.17F, 0.19F, 1.0F};
 constexpr Rgba kObjectColor{0.62F, 0.66F, 0.72F, 1.0F};
 constexpr Rgba kSelectedColor{0.98F, 0.63F, 0.22F, 1.0F};
-constexpr Rgba kTrailStart{0.30F, 0.55F, 0.95F, 1.0F};
-constexpr Rgba kTrailEnd{0.55F, 0.90F, 0.75F, 1.0F};
+constexpr Rgba kTrailStart{0.30F, 0.55F, 0.95F, 0.3F};
+constexpr Rgba kTrailEnd{0.55F, 0.90F, 0.75F, 0.3F};
 constexpr Rgba kControlPoseColor{0.95F, 0.95F, 0.98F, 0.35F};
 constexpr Rgba kSelectedKeyColor{1.0F, 0.85F, 0.30F, 0.6F};
 constexpr Rgba kGhostColor{0.85F, 0.85F, 1.0F, 0.25F};
@@ -902,6 +902,10 @@ void Viewport::paintGL()
     const QMatrix4x4 selectedFrame = selected != nullptr
         ? toQMatrix(poseMatrix(sceneMotion.parentWorldPose(selected->id, scene.currentTime)))
         : QMatrix4x4();
+    // Translucent last, over everything opaque, without hiding each other. The trail too: a few
+    // hundred instances opaque would hide the object, its trajectory and its control poses.
+    glEnable(GL_BLEND);
+    glDepthMask(GL_FALSE);
     if (showTrail_ && selected != nullptr && trailPoseCount_ > 0) {
         // Behind the object itself, which stands on the trail and would otherwise fight it for depth.
         glEnable(GL_POLYGON_OFFSET_FILL);
@@ -912,10 +916,6 @@ void Viewport::paintGL()
         glDisable(GL_POLYGON_OFFSET_FILL);
         drawnTrailInstances_ = trailPoseCount_;
     }
-
-    // Translucent last, over everything opaque, without hiding each other.
-    glEnable(GL_BLEND);
-    glDepthMask(GL_FALSE);
     if (showControlPoses_ && selected != nullptr && !selected->track.keys.empty()) {
         uploadControlPoses(*selected);
         setColors(kControlPoseColor, kControlPoseColor);
