@@ -41,7 +41,7 @@ constexpr float kHandlePointSize = 11.0F;
 constexpr int kGridHalfLines = 10;        // a 20 × 20 grid of unit squares about the origin
 constexpr int kMaxTrajectorySamples = 4096;
 constexpr double kGhostTolerance = 1e-6;  // the ghost is drawn where the motions differ by more
-constexpr qint64 kIdleFrameGap = 200'000'000; // ns: a longer gap between frames is idling, not drawing
+constexpr qint64 kIdleFrameGap = 1'000'000'000; // ns: a longer gap between frames is idling, not drawing
 constexpr qint64 kStatsWindow = 500'000'000;  // ns of drawing per frameStatsChanged
 
 struct Rgba {
