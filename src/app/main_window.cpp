@@ -5,6 +5,7 @@
 #include "app/smoothness_panel.h"
 #include "app/time_bar.h"
 #include "app/timeline_widget.h"
+#include "app/viewport/viewport.h"
 #include "io/scene_import.h"
 #include "model/input_error.h"
 #include "ui_main_window.h"
@@ -20,6 +21,7 @@
 #include <QStandardPaths>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QLabel>
 #include <QMessageBox>
 #include <QSettings>
 #include <QStyle>
@@ -159,6 +161,29 @@ void MainWindow::createViews()
     ui_->timelineDockLayout->addWidget(new TimeBar(document_, ui_->timelineDockContents));
     ui_->timelineDockLayout->addWidget(new TimelineWidget(document_, selection_, playback_, ui_->timelineDockContents), 1);
     ui_->smoothnessDockLayout->addWidget(new SmoothnessPanel(document_, selection_, ui_->smoothnessDockContents));
+    viewport_ = new Viewport(document_, selection_, ui_->centralWidget);
+    ui_->centralLayout->addWidget(viewport_);
+    viewport_->setShowGhost(ui_->actionShowGhost->isChecked());
+    viewport_->setShowTrajectory(ui_->actionShowTrajectory->isChecked());
+    viewport_->setShowControlPoses(ui_->actionShowControlPoses->isChecked());
+    viewport_->setShowTrail(ui_->actionShowTrail->isChecked());
+    connect(ui_->actionShowGhost, &QAction::toggled, viewport_, &Viewport::setShowGhost);
+    connect(ui_->actionShowTrajectory, &QAction::toggled, viewport_, &Viewport::setShowTrajectory);
+    connect(ui_->actionShowControlPoses, &QAction::toggled, viewport_, &Viewport::setShowControlPoses);
+    connect(ui_->actionShowTrail, &QAction::toggled, viewport_, &Viewport::setShowTrail);
+    connect(ui_->actionFrameAll, &QAction::triggered, viewport_, &Viewport::frameScene);
+
+    auto* frameStats = new QLabel(statusBar());
+    frameStats->setToolTip(tr("Viewport frame rate while drawing, and the time to subdivide the trail: "
+                              "on the worker, and from the request to its arrival"));
+    statusBar()->addPermanentWidget(frameStats);
+    connect(viewport_, &Viewport::frameStatsChanged, frameStats,
+            [frameStats](double framesPerSecond, double subdivisionMs, double latencyMs) {
+                frameStats->setText(tr("%1 fps · subdivision %2 ms (%3 ms to arrive)")
+                                        .arg(framesPerSecond, 0, 'f', 0)
+                                        .arg(subdivisionMs, 0, 'f', 1)
+                                        .arg(latencyMs, 0, 'f', 1));
+            });
 }
 
 void MainWindow::restoreLayout()

@@ -21,6 +21,8 @@ class MainWindow;
 
 namespace gyre::app {
 
+class Viewport;
+
 class MainWindow : public QMainWindow {
     Q_OBJECT
 
@@ -80,6 +82,7 @@ private:
     Playback playback_;
     SceneFileActions* sceneFiles_ = nullptr;
     std::unique_ptr<model::Autosave> autosave_;
+    Viewport* viewport_ = nullptr; // owned by the central widget
 };
 
 } // namespace gyre::app

@@ -1,0 +1,12 @@
+#pragma once
+// The shape drawn for an object without a mesh: a block with a nose along +x and a fin on top (+z),
+// so that every rotation of it, even a half turn about any axis, looks different.
+
+#include "model/scene.h"
+
+namespace gyre::app {
+
+// Built once; flat-shaded (each face has its own vertices and normal).
+const model::Mesh& defaultShapeMesh();
+
+} // namespace gyre::app

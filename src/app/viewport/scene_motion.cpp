@@ -1,0 +1,33 @@
+#include "app/viewport/scene_motion.h"
+
+namespace gyre::app {
+
+SceneMotion::SceneMotion(const model::Scene& scene)
+{
+    for (const model::SceneObject& object : scene.objects)
+        entries_.insert_or_assign(object.id, Entry{object.parent, model::TrackMotion(object.track)});
+}
+
+Pose SceneMotion::worldPose(model::ObjectId id, double time) const
+{
+    const auto found = entries_.find(id);
+    if (found == entries_.end())
+        return {};
+    return parentWorldPose(id, time) * found->second.motion.at(time);
+}
+
+Pose SceneMotion::parentWorldPose(model::ObjectId id, double time) const
+{
+    Pose world;
+    // At most one step per object, so a broken hierarchy cannot loop forever.
+    auto link = entries_.find(id);
+    for (std::size_t steps = 0; link != entries_.end() && steps < entries_.size(); ++steps) {
+        link = entries_.find(link->second.parent);
+        if (link == entries_.end())
+            break;
+        world = link->second.motion.at(time) * world;
+    }
+    return world;
+}
+
+} // namespace gyre::app

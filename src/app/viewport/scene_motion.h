@@ -1,0 +1,34 @@
+#pragma once
+// Where a scene's objects are at any time: each object's track evaluated (TrackMotion) and composed
+// up its parent chain, since a track gives the pose relative to the parent. Built once per change of
+// the scene, not per frame; building subdivides every screw track, so the viewport builds it off the
+// UI thread while the artist drags.
+
+#include "core/pose.h"
+#include "model/scene.h"
+#include "model/track_evaluation.h"
+
+#include <unordered_map>
+
+namespace gyre::app {
+
+class SceneMotion {
+public:
+    SceneMotion() = default; // no objects
+    explicit SceneMotion(const model::Scene& scene);
+
+    // The object's pose in the world at `time`; an unknown object is at the identity.
+    Pose worldPose(model::ObjectId id, double time) const;
+    // The world pose of the frame its track is relative to: its parent's world pose, or the identity.
+    Pose parentWorldPose(model::ObjectId id, double time) const;
+
+private:
+    struct Entry {
+        model::ObjectId parent = model::kNoObject;
+        model::TrackMotion motion;
+    };
+
+    std::unordered_map<model::ObjectId, Entry> entries_;
+};
+
+} // namespace gyre::app

@@ -1,0 +1,48 @@
+#pragma once
+// ScrewBender's subdivision off the UI thread, for the stroboscopic trail that follows a dragged
+// control pose. Every request gets a generation, increasing; a burst of requests while the worker is
+// busy costs one run (JobThread), and only the result of the newest request is emitted, so a result
+// never arrives after a newer one and the UI never waits. The worker keeps one PolyscrewSubdivider,
+// whose buffers grow once and are reused by every later request.
+
+#include "core/pose.h"
+#include "core/subdivision.h"
+#include "jobs/job_thread.h"
+
+#include <QObject>
+#include <QString>
+
+#include <cstdint>
+#include <vector>
+
+namespace gyre::jobs {
+
+class SubdivisionJob : public QObject {
+    Q_OBJECT
+
+public:
+    explicit SubdivisionJob(QObject* parent = nullptr);
+    ~SubdivisionJob() override;
+
+    // Asks for `controlPoses` subdivided with `settings`; returns the request's generation.
+    std::uint64_t request(std::vector<Pose> controlPoses, const SubdivisionSettings& settings);
+    // Drops the results of every request made so far: nothing more is emitted until the next request.
+    void cancel();
+    std::uint64_t newestGeneration() const { return newestGeneration_; }
+
+signals:
+    // The newest request's poses, and how long the worker took to subdivide them.
+    void subdivided(std::uint64_t generation, const std::vector<gyre::Pose>& poses, qint64 nanoseconds);
+    // The newest request could not be subdivided (PolyscrewSubdivider's std::invalid_argument).
+    void failed(std::uint64_t generation, const QString& reason);
+
+private:
+    void deliver(std::uint64_t generation, const std::vector<Pose>& poses, qint64 nanoseconds);
+    void deliverFailure(std::uint64_t generation, const QString& reason);
+
+    std::uint64_t newestGeneration_ = 0; // read and written on the UI thread only
+    PolyscrewSubdivider subdivider_;     // used on the worker only
+    JobThread thread_;                   // last: joined before the subdivider goes
+};
+
+} // namespace gyre::jobs

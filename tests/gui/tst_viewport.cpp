@@ -1,0 +1,297 @@
+// The viewport driven with the mouse on the bundled sample: handle drags change the selected key in
+// one undo step each, clicks select, the stroboscopic trail follows the subdivision settings, the
+// ghost shows the motion as opened. One test also measures drawing while a handle is dragged with
+// thousands of trail instances, and prints the figures (tests never assert on time).
+
+#include "app/main_window.h"
+#include "app/viewport/viewport.h"
+#include "gui_test_support.h"
+#include "model/commands/set_subdivision_command.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QMouseEvent>
+#include <QTest>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+using namespace gyre;
+using Handle = app::Viewport::Handle;
+
+namespace {
+
+// The main window on the bundled sample, paused at `time`, its viewport shown and drawn once.
+struct Session {
+    app::MainWindow window;
+    app::Viewport* viewport = nullptr;
+    model::ObjectId object = model::kNoObject;
+
+    explicit Session(double time = 0.5)
+    {
+        window.resize(1200, 850);
+        window.show();
+        window.openBundledSample();
+        window.playback().pause();
+        window.document().setCurrentTime(time);
+        viewport = window.findChild<app::Viewport*>();
+        object = window.document().scene().objects.front().id;
+    }
+
+    const model::Keyframe& key(std::size_t index) { return window.document().object(object)->track.keys[index]; }
+};
+
+void sendMove(QWidget* widget, const QPointF& position, Qt::MouseButtons buttons)
+{
+    // QTest::mouseMove does not say which buttons are held; a drag needs them.
+    QMouseEvent move(QEvent::MouseMove, position, widget->mapToGlobal(position), Qt::NoButton, buttons, Qt::NoModifier);
+    QApplication::sendEvent(widget, &move);
+}
+
+// Presses at `path[0]`, moves through the rest with the left button held, and releases at the end.
+void dragAlong(QWidget* widget, const std::vector<QPointF>& path)
+{
+    QTest::mousePress(widget, Qt::LeftButton, Qt::NoModifier, path.front().toPoint());
+    for (std::size_t i = 1; i < path.size(); ++i)
+        sendMove(widget, path[i], Qt::LeftButton);
+    QTest::mouseRelease(widget, Qt::LeftButton, Qt::NoModifier, path.back().toPoint());
+}
+
+std::vector<QPointF> straightPath(const QPointF& from, const QPointF& to, int steps)
+{
+    std::vector<QPointF> path;
+    for (int i = 0; i <= steps; ++i)
+        path.push_back(from + (to - from) * (double(i) / steps));
+    return path;
+}
+
+// From `from`, an arc of `radians` (counter-clockwise on screen) about `centre`.
+std::vector<QPointF> arcPath(const QPointF& centre, const QPointF& from, double radians, int steps)
+{
+    const QPointF offset = from - centre;
+    const double radius = std::hypot(offset.x(), offset.y());
+    const double start = std::atan2(-offset.y(), offset.x());
+    std::vector<QPointF> path;
+    for (int i = 0; i <= steps; ++i) {
+        const double angle = start + radians * i / steps;
+        path.push_back(centre + QPointF(radius * std::cos(angle), -radius * std::sin(angle)));
+    }
+    return path;
+}
+
+// A point one arrow length along the x handle, beyond its tip.
+QPointF pastTheXArrow(const app::Viewport& viewport)
+{
+    const QPointF base = *viewport.controlPoseScreenPosition(0);
+    const QPointF grab = *viewport.handleScreenPosition(Handle::MoveX);
+    return grab + (grab - base);
+}
+
+} // namespace
+
+class TestViewport : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { test::useTestSettings(); }
+
+    void draggingTheXArrowMovesTheKeyInOneUndoStep()
+    {
+        Session session;
+        QVERIFY(QTest::qWaitForWindowExposed(&session.window));
+        session.window.selection().selectKey(session.object, 0);
+        QUndoStack& stack = session.window.document().undoStack();
+        const int stepsBefore = stack.count();
+        const Eigen::Vector3d before = session.key(0).pose.position;
+        const Eigen::Quaterniond orientation = session.key(0).pose.orientation;
+
+        const QPointF grab = *session.viewport->handleScreenPosition(Handle::MoveX);
+        dragAlong(session.viewport, straightPath(grab, pastTheXArrow(*session.viewport), 8));
+
+        const Eigen::Vector3d after = session.key(0).pose.position;
+        QVERIFY(after.x() > before.x() + 0.1);
+        QCOMPARE(after.y(), before.y());
+        QCOMPARE(after.z(), before.z());
+        QVERIFY(session.key(0).pose.orientation.coeffs() == orientation.coeffs());
+        QCOMPARE(stack.count(), stepsBefore + 1);
+        stack.undo();
+        QVERIFY(session.key(0).pose.position == before);
+        stack.redo();
+        QVERIFY(session.key(0).pose.position == after);
+
+        // The next drag is an undo step of its own.
+        const QPointF again = *session.viewport->handleScreenPosition(Handle::MoveX);
+        dragAlong(session.viewport, straightPath(again, again + QPointF(0, 40), 4));
+        QCOMPARE(stack.count(), stepsBefore + 2);
+        stack.undo();
+        QVERIFY(session.key(0).pose.position == after);
+    }
+
+    void turningTheZRingTurnsTheKeyAboutZInOneUndoStep()
+    {
+        Session session;
+        QVERIFY(QTest::qWaitForWindowExposed(&session.window));
+        session.window.selection().selectKey(session.object, 1);
+        QUndoStack& stack = session.window.document().undoStack();
+        const int stepsBefore = stack.count();
+        const Pose before = session.key(1).pose;
+
+        const QPointF centre = *session.viewport->controlPoseScreenPosition(1);
+        const QPointF grab = *session.viewport->handleScreenPosition(Handle::RotateZ);
+        dragAlong(session.viewport, arcPath(centre, grab, std::numbers::pi / 4, 6));
+
+        const Pose after = session.key(1).pose;
+        QVERIFY(after.position == before.position);
+        // A turn about the parent frame's z (the world's here) only: the change fixes z.
+        const Eigen::Quaterniond turn = after.orientation * before.orientation.conjugate();
+        const Eigen::AngleAxisd axisAngle(turn);
+        QVERIFY(axisAngle.angle() > 0.2);
+        QVERIFY(std::abs(std::abs(axisAngle.axis().z()) - 1) < 1e-9);
+        QCOMPARE(stack.count(), stepsBefore + 1);
+        stack.undo();
+        QVERIFY(session.key(1).pose.orientation.coeffs() == before.orientation.coeffs());
+        stack.redo();
+        QVERIFY(session.key(1).pose.orientation.coeffs() == after.orientation.coeffs());
+    }
+
+    void theTrailHasOneInstancePerSubdividedPose()
+    {
+        Session session;
+        QVERIFY(QTest::qWaitForWindowExposed(&session.window));
+        const SubdivisionSettings settings = session.window.document().object(session.object)->track.subdivision;
+        QTRY_COMPARE(session.viewport->trailInstanceCount(), *subdividedPoseCount(6, settings.levels, settings.cyclic));
+
+        SubdivisionSettings finer = settings;
+        finer.levels = settings.levels + 2;
+        session.window.document().undoStack().push(
+            new model::SetSubdivisionCommand(session.window.document(), session.object, finer));
+        QTRY_COMPARE(session.viewport->trailInstanceCount(), *subdividedPoseCount(6, finer.levels, finer.cyclic));
+
+        session.viewport->setShowTrail(false);
+        QTRY_COMPARE(session.viewport->trailInstanceCount(), std::size_t{0});
+    }
+
+    void clickingSelectsObjectsAndControlPoses()
+    {
+        Session session;
+        QVERIFY(QTest::qWaitForWindowExposed(&session.window));
+        app::Selection& selection = session.window.selection();
+        selection.clear();
+        QTest::mouseClick(session.viewport, Qt::LeftButton, Qt::NoModifier,
+                          session.viewport->objectScreenPosition(session.object)->toPoint());
+        QCOMPARE(selection.object(), session.object);
+        QVERIFY(!selection.key());
+
+        QTest::mouseClick(session.viewport, Qt::LeftButton, Qt::NoModifier,
+                          session.viewport->controlPoseScreenPosition(3)->toPoint());
+        QCOMPARE(selection.key(), std::optional<std::size_t>(3));
+
+        // Empty space keeps the object and clears the key.
+        QTest::mouseClick(session.viewport, Qt::LeftButton, Qt::NoModifier, QPoint(5, 5));
+        QCOMPARE(selection.object(), session.object);
+        QVERIFY(!selection.key());
+    }
+
+    void theGhostShowsTheMotionAsOpenedWhereItDiffers()
+    {
+        Session session(0.0);
+        QVERIFY(QTest::qWaitForWindowExposed(&session.window));
+        QTRY_VERIFY(session.viewport->trailInstanceCount() > 0); // drawn since the sample opened
+        QVERIFY(!session.viewport->drewGhost());
+        session.window.selection().selectKey(session.object, 0);
+        const QPointF grab = *session.viewport->handleScreenPosition(Handle::MoveX);
+        dragAlong(session.viewport, straightPath(grab, pastTheXArrow(*session.viewport), 4));
+        QTRY_VERIFY(session.viewport->drewGhost());
+        session.window.document().undoStack().undo();
+        QTRY_VERIFY(!session.viewport->drewGhost());
+    }
+
+    void dragsAndOrbitsTheCameraAndTheWheelZooms()
+    {
+        Session session;
+        QVERIFY(QTest::qWaitForWindowExposed(&session.window));
+        const Eigen::Vector3d eye = session.viewport->camera().eye();
+        const int steps = session.window.document().undoStack().count();
+        dragAlong(session.viewport, straightPath(QPointF(20, 20), QPointF(120, 60), 5));
+        QVERIFY((session.viewport->camera().eye() - eye).norm() > 0.1);
+        QCOMPARE(session.window.document().undoStack().count(), steps);
+
+        const double distance = session.viewport->camera().distance();
+        const QPointF at(300, 300);
+        QWheelEvent wheel(at, session.viewport->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(session.viewport, &wheel);
+        QVERIFY(session.viewport->camera().distance() < distance);
+
+        session.viewport->frameScene();
+        for (std::size_t key = 0; key < 6; ++key)
+            QVERIFY(session.viewport->rect().contains(session.viewport->controlPoseScreenPosition(key)->toPoint()));
+    }
+
+    // Levels 8 on the sample: 1536 trail instances, re-subdivided at every move of the drag.
+    void measuresDrawingWhileDraggingWithThousandsOfInstances()
+    {
+        Session session;
+        QVERIFY(QTest::qWaitForWindowExposed(&session.window));
+        SubdivisionSettings settings = session.window.document().object(session.object)->track.subdivision;
+        settings.levels = 8;
+        session.window.document().undoStack().push(
+            new model::SetSubdivisionCommand(session.window.document(), session.object, settings));
+        const std::size_t instances = *subdividedPoseCount(6, settings.levels, settings.cyclic);
+        QTRY_COMPARE(session.viewport->trailInstanceCount(), instances);
+        session.window.selection().selectKey(session.object, 0);
+
+        double framesPerSecond = 0, subdivisionMs = 0, latencyMs = 0;
+        connect(session.viewport, &app::Viewport::frameStatsChanged, this, [&](double fps, double ms, double latency) {
+            framesPerSecond = fps;
+            subdivisionMs = ms;
+            latencyMs = latency;
+        });
+        // Drawing alone first: orbiting redraws the trail without re-subdividing it.
+        const auto waitForFrame = [&](std::uint64_t drawn) {
+            // Every move asks for a frame: wait for it without spinning.
+            while (session.viewport->framesDrawn() == drawn)
+                QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+        };
+        constexpr int kMoves = 60;
+        const QPointF corner(30, 30);
+        QTest::mousePress(session.viewport, Qt::LeftButton, Qt::NoModifier, corner.toPoint());
+        QElapsedTimer clock;
+        clock.start();
+        for (int move = 1; move <= kMoves; ++move) {
+            const std::uint64_t drawn = session.viewport->framesDrawn();
+            sendMove(session.viewport, corner + QPointF(move % 2 == 0 ? 0 : 4, 0), Qt::LeftButton);
+            waitForFrame(drawn);
+        }
+        const double orbitSeconds = double(clock.nsecsElapsed()) / 1e9;
+        QTest::mouseRelease(session.viewport, Qt::LeftButton, Qt::NoModifier, corner.toPoint());
+
+        const int stepsBefore = session.window.document().undoStack().count();
+        const QPointF grab = *session.viewport->handleScreenPosition(Handle::MoveX);
+        const QPointF end = pastTheXArrow(*session.viewport);
+        QTest::mousePress(session.viewport, Qt::LeftButton, Qt::NoModifier, grab.toPoint());
+        clock.restart();
+        for (int move = 1; move <= kMoves; ++move) {
+            // Back and forth along the arrow, a frame drawn after each move, as fast as it goes.
+            const double phase = 0.5 - 0.5 * std::cos(2 * std::numbers::pi * move / 30.0);
+            const std::uint64_t drawn = session.viewport->framesDrawn();
+            sendMove(session.viewport, grab + (end - grab) * phase, Qt::LeftButton);
+            waitForFrame(drawn);
+        }
+        const double dragSeconds = double(clock.nsecsElapsed()) / 1e9;
+        QTest::mouseRelease(session.viewport, Qt::LeftButton, Qt::NoModifier, grab.toPoint());
+        QTRY_COMPARE(session.viewport->trailInstanceCount(), instances);
+        QCOMPARE(session.window.document().undoStack().count(), stepsBefore + 1);
+        qInfo("%zu trail instances, a frame after each of %d moves: orbiting %.1f frames/s (%.1f ms a frame), dragging "
+              "the x arrow %.1f frames/s (%.1f ms a move and frame); the viewport's last figures: %.1f fps, "
+              "subdivision %.1f ms on the worker, %.1f ms from request to arrival",
+              instances, kMoves, kMoves / orbitSeconds, 1000 * orbitSeconds / kMoves, kMoves / dragSeconds,
+              1000 * dragSeconds / kMoves, framesPerSecond, subdivisionMs, latencyMs);
+    }
+};
+
+QTEST_MAIN(TestViewport)
+#include "tst_viewport.moc"

@@ -1,0 +1,109 @@
+// The subdivision job under a burst of requests, as while a pose is dragged: the newest request's
+// result arrives, equal to a direct subdivision, and no older result arrives after it.
+
+#include "jobs/subdivision_job.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+#include <numbers>
+#include <cstdint>
+#include <vector>
+
+using namespace gyre;
+
+namespace {
+
+// The L-shaped cycle of the ScrewBender paper, its second pose moved `offset` along x: each request
+// of a burst gives a different motion.
+std::vector<Pose> lCycle(double offset)
+{
+    const auto turn = [](double degrees, const Eigen::Vector3d& axis) {
+        return Eigen::Quaterniond(Eigen::AngleAxisd(degrees * std::numbers::pi / 180.0, axis));
+    };
+    return {
+        {Eigen::Quaterniond::Identity(), Eigen::Vector3d(0, 0, 0)},
+        {Eigen::Quaterniond::Identity(), Eigen::Vector3d(4 + offset, 0, 0)},
+        {turn(90, Eigen::Vector3d::UnitZ()), Eigen::Vector3d(4, 2, 0)},
+        {turn(45, Eigen::Vector3d::UnitX()), Eigen::Vector3d(2, 2, 0)},
+        {turn(120, Eigen::Vector3d::UnitZ()), Eigen::Vector3d(2, 6, 0)},
+        {turn(30, Eigen::Vector3d::UnitY()), Eigen::Vector3d(0, 6, 0)},
+    };
+}
+
+bool samePoses(const std::vector<Pose>& a, const std::vector<Pose>& b)
+{
+    if (a.size() != b.size())
+        return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (!a[i].orientation.coeffs().isApprox(b[i].orientation.coeffs(), 1e-12)
+            || !a[i].position.isApprox(b[i].position, 1e-12))
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
+class TestSubdivisionJob : public QObject {
+    Q_OBJECT
+
+private slots:
+    void aBurstEndsWithTheNewestResultAndNothingOlderAfterIt()
+    {
+        jobs::SubdivisionJob job;
+        std::vector<std::uint64_t> arrived;
+        std::vector<Pose> newestPoses;
+        connect(&job, &jobs::SubdivisionJob::subdivided, this,
+                [&](std::uint64_t generation, const std::vector<Pose>& poses, qint64 nanoseconds) {
+                    QVERIFY(nanoseconds >= 0);
+                    arrived.push_back(generation);
+                    newestPoses = poses;
+                });
+        const SubdivisionSettings settings{SubdivisionScheme::Jarek, 8, true, false};
+        constexpr int kRequests = 200;
+        std::uint64_t newest = 0;
+        for (int request = 0; request < kRequests; ++request) {
+            newest = job.request(lCycle(0.01 * request), settings);
+            // Let a result come back now and then, as the UI's event loop does between mouse moves.
+            if (request % 20 == 0)
+                QCoreApplication::processEvents();
+        }
+        QCOMPARE(newest, std::uint64_t{kRequests});
+        QTRY_VERIFY(!arrived.empty() && arrived.back() == newest);
+        // Results still queued from older requests must not arrive after the newest.
+        QTest::qWait(200);
+        QCOMPARE(arrived.back(), newest);
+        for (std::size_t i = 1; i < arrived.size(); ++i)
+            QVERIFY(arrived[i] > arrived[i - 1]);
+        QVERIFY(samePoses(newestPoses, subdividePolyscrew(lCycle(0.01 * (kRequests - 1)), settings)));
+        QCOMPARE(newestPoses.size(), *subdividedPoseCount(6, 8, true));
+    }
+
+    void cancelDropsTheResultOnItsWay()
+    {
+        jobs::SubdivisionJob job;
+        std::vector<std::uint64_t> arrived;
+        connect(&job, &jobs::SubdivisionJob::subdivided, this,
+                [&](std::uint64_t generation, const std::vector<Pose>&, qint64) { arrived.push_back(generation); });
+        job.request(lCycle(0), SubdivisionSettings{SubdivisionScheme::BSpline, 6, false, false});
+        job.cancel();
+        QTest::qWait(200);
+        QVERIFY(arrived.empty());
+        const std::uint64_t next = job.request(lCycle(1), SubdivisionSettings{SubdivisionScheme::BSpline, 2, false, false});
+        QTRY_COMPARE(arrived.size(), std::size_t{1});
+        QCOMPARE(arrived.front(), next);
+    }
+
+    void aSubdivisionTooLargeIsReportedAsFailed()
+    {
+        jobs::SubdivisionJob job;
+        QSignalSpy failures(&job, &jobs::SubdivisionJob::failed);
+        const std::uint64_t generation = job.request(lCycle(0), SubdivisionSettings{SubdivisionScheme::Jarek, -1, true, false});
+        QTRY_COMPARE(failures.count(), 1);
+        QCOMPARE(failures.front().front().value<std::uint64_t>(), generation);
+    }
+};
+
+QTEST_MAIN(TestSubdivisionJob)
+#include "tst_subdivision_job.moc"
