@@ -25,6 +25,7 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QStyle>
+#include <QTimer>
 #include <QUndoView>
 
 // The resources (samples, shaders) are compiled into the gyre_app static library, whose static
@@ -148,10 +149,11 @@ void MainWindow::setUpDocks()
     // The history dock has its own action in the Edit menu, kept in step with the dock.
     connect(ui_->actionUndoHistory, &QAction::toggled, ui_->historyDock, &QDockWidget::setVisible);
     connect(ui_->historyDock, &QDockWidget::visibilityChanged, ui_->actionUndoHistory, &QAction::setChecked);
+    // Three smoothness plots need height more than width: they share the right side with the
+    // inspector, leaving the bottom to the timeline.
+    tabifyDockWidget(ui_->inspectorDock, ui_->smoothnessDock);
     tabifyDockWidget(ui_->inspectorDock, ui_->historyDock);
-    tabifyDockWidget(ui_->timelineDock, ui_->smoothnessDock);
     ui_->inspectorDock->raise();
-    ui_->timelineDock->raise();
 }
 
 void MainWindow::createViews()
@@ -192,10 +194,13 @@ void MainWindow::restoreLayout()
     restoreGeometry(settings.value(kGeometryKey).toByteArray());
     if (restoreState(settings.value(kStateKey).toByteArray()))
         return;
-    // The first start: most of the window for the viewport, panels at the sizes they need.
-    resizeDocks({ui_->inspectorDock}, {420}, Qt::Horizontal);
-    resizeDocks({ui_->inspectorDock, ui_->screwBenderDock}, {520, 300}, Qt::Vertical);
-    resizeDocks({ui_->timelineDock}, {150}, Qt::Vertical);
+    // The first start: most of the window for the viewport, panels at the sizes they need. Docks
+    // take their sizes once the window is laid out, so this waits for the event loop.
+    QTimer::singleShot(0, this, [this] {
+        resizeDocks({ui_->inspectorDock}, {420}, Qt::Horizontal);
+        resizeDocks({ui_->inspectorDock, ui_->screwBenderDock}, {560, 300}, Qt::Vertical);
+        resizeDocks({ui_->timelineDock}, {130}, Qt::Vertical);
+    });
 }
 
 void MainWindow::saveLayout() const

@@ -215,6 +215,7 @@ void Viewport::frameScene()
     if (box.isEmpty())
         box = Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-kGridHalfLines / 2.0), Eigen::Vector3d::Constant(kGridHalfLines / 2.0));
     camera_.frame(box.min(), box.max());
+    cameraIsFramed_ = true;
     update();
 }
 
@@ -509,10 +510,12 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
     switch (drag_.kind) {
     case DragKind::Orbit:
         camera_.orbit(delta.x(), delta.y());
+        cameraIsFramed_ = false;
         update();
         break;
     case DragKind::Pan:
         camera_.pan(delta.x(), delta.y());
+        cameraIsFramed_ = false;
         update();
         break;
     case DragKind::Handle:
@@ -566,6 +569,7 @@ void Viewport::wheelEvent(QWheelEvent* event)
 {
     // angleDelta is in eighths of a degree; a wheel step is 15°.
     camera_.zoom(event->angleDelta().y() / 120.0);
+    cameraIsFramed_ = false;
     update();
     event->accept();
 }
@@ -613,7 +617,9 @@ void Viewport::initializeGL()
     lineBuffer_.release();
 
     glEnable(GL_PROGRAM_POINT_SIZE);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    // Colour blends by the source's alpha; the framebuffer's own alpha stays 1 (1·a + 1·(1 − a)), so
+    // the widget is opaque wherever it is composed: on screen and in QWidget::grab's pictures.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 }
 
 void Viewport::releaseGl()
@@ -637,6 +643,10 @@ void Viewport::resizeGL(int width, int height)
     Q_UNUSED(width);
     Q_UNUSED(height);
     camera_.setViewportSize(this->width(), this->height());
+    // A project opens before the window has its final size; until the artist moves the camera,
+    // the framing follows the size.
+    if (cameraIsFramed_)
+        frameScene();
 }
 
 Viewport::GpuMesh& Viewport::gpuMesh(const model::SceneObject& object)

@@ -45,6 +45,9 @@ public:
     Viewport(model::Document& document, Selection& selection, QWidget* parent = nullptr);
     ~Viewport() override;
 
+    // The viewport is what the window is for: it asks for most of it.
+    QSize sizeHint() const override { return {960, 640}; }
+
     void setShowGhost(bool show);
     void setShowTrajectory(bool show);
     void setShowControlPoses(bool show);
@@ -165,6 +168,7 @@ private:
     model::Document& document_;
     Selection& selection_;
     OrbitCamera camera_;
+    bool cameraIsFramed_ = false; // by frameScene, and not moved since
 
     bool showGhost_ = true;
     bool showTrajectory_ = true;
