@@ -65,7 +65,7 @@ QPen componentPen(SmoothnessPanel::Component component)
     return {};
 }
 
-const std::vector<Eigen::Vector3d>& samplesOf(const PointTrajectory& trajectory, SmoothnessPanel::Quantity quantity)
+const std::vector<Eigen::Vector3d>& samplesOf(const model::PointTrajectory& trajectory, SmoothnessPanel::Quantity quantity)
 {
     switch (quantity) {
     case SmoothnessPanel::Quantity::Position:
@@ -228,9 +228,9 @@ void SmoothnessPanel::recompute()
     // The work has copies of what it reads; `this` is only the receiver of the queued result.
     sampler_.post([this, request, track = object->track, localPoint = point(), start = scene.startTime,
                    end = scene.endTime](const std::atomic<bool>&) {
-        PointTrajectory trajectory;
+        model::PointTrajectory trajectory;
         try {
-            trajectory = samplePointTrajectory(track, localPoint, start, end, kSampleCount);
+            trajectory = model::samplePointTrajectory(track, localPoint, start, end, kSampleCount);
         } catch (const std::invalid_argument&) {
             // A subdivision too large to hold (track_evaluation.h): no curves to show.
         }
@@ -244,7 +244,7 @@ void SmoothnessPanel::recompute()
     });
 }
 
-void SmoothnessPanel::showTrajectory(const PointTrajectory& trajectory)
+void SmoothnessPanel::showTrajectory(const model::PointTrajectory& trajectory)
 {
     const QVector<double> times(trajectory.times.begin(), trajectory.times.end());
     for (std::size_t q = 0; q < kQuantityCount; ++q) {

@@ -11,7 +11,7 @@
 // motion took 20–40 ms in a Debug build, and building a TrackMotion grows with 2^levels (0.2 s at 8
 // subdivision levels, seconds at 12 and more), far beyond what the UI thread can spare.
 
-#include "app/point_trajectory.h"
+#include "model/point_trajectory.h"
 #include "app/selection.h"
 #include "jobs/job_thread.h"
 #include "model/document.h"
@@ -62,7 +62,7 @@ private:
     void scheduleRecompute();
     // Asks the job thread for the curves of the selection, keys and point as they are now.
     void recompute();
-    void showTrajectory(const PointTrajectory& trajectory);
+    void showTrajectory(const model::PointTrajectory& trajectory);
     void showTimeRange();
     void moveCursor();
 

@@ -48,6 +48,16 @@ void moveFirstKey(app::MainWindow& window, const Eigen::Vector3d& position)
         new model::SetKeyframePositionCommand(window.document(), firstObject(window), 0, position));
 }
 
+// A file named `name` in `folder` holding `bytes`; its path.
+QString writeFile(const QTemporaryDir& folder, const QString& name, const QByteArray& bytes)
+{
+    const QString path = folder.filePath(name);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size())
+        qFatal("Cannot write the fixture %s", qPrintable(path));
+    return path;
+}
+
 // The window after it opened the bundled sample, shown.
 struct SampleWindow {
     SampleWindow()
@@ -135,11 +145,8 @@ private slots:
     void aBrokenProjectIsReportedByNameAndTheOpenOneStays()
     {
         QTemporaryDir folder;
-        const QString path = folder.filePath(QStringLiteral("broken.gyre"));
-        QFile file(path);
-        QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write("{\"format\": \"gyre-project\", \"version\": 2, \"fps\": \"fast\"}");
-        file.close();
+        const QString path = writeFile(folder, QStringLiteral("broken.gyre"),
+                                       "{\"format\": \"gyre-project\", \"version\": 2, \"fps\": \"fast\"}");
         SampleWindow sample;
         QString message;
         test::answerMessageBox(QMessageBox::Ok, &message);
@@ -235,11 +242,7 @@ private slots:
     void anUnreadableSceneIsReportedByName()
     {
         QTemporaryDir folder;
-        const QString path = folder.filePath(QStringLiteral("garbage.fbx"));
-        QFile file(path);
-        QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write("this is not an FBX file\n");
-        file.close();
+        const QString path = writeFile(folder, QStringLiteral("garbage.fbx"), "this is not an FBX file\n");
         SampleWindow sample;
         QSignalSpy failed(&sample.window.sceneFiles().jobs(), &jobs::SceneFileJobs::failed);
         QString message;

@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace gyre::app {
+namespace gyre::model {
 
 struct PointTrajectory {
     std::vector<double> times;                 // seconds, evenly spaced from the start to the end
@@ -25,7 +25,7 @@ struct PointTrajectory {
 // with the motion also sampled one step before the start and one after the end, so the ends are
 // central too. Throws std::invalid_argument for fewer than 2 samples, an end not after the start, or
 // a track TrackMotion refuses.
-PointTrajectory samplePointTrajectory(const model::MotionTrack& track, const Eigen::Vector3d& localPoint,
+PointTrajectory samplePointTrajectory(const MotionTrack& track, const Eigen::Vector3d& localPoint,
                                       double start, double end, std::size_t samples);
 
-} // namespace gyre::app
+} // namespace gyre::model
