@@ -163,6 +163,24 @@ void MainWindow::createViews()
     ui_->timelineDockLayout->addWidget(new TimeBar(document_, ui_->timelineDockContents));
     ui_->timelineDockLayout->addWidget(new TimelineWidget(document_, selection_, playback_, ui_->timelineDockContents), 1);
     ui_->smoothnessDockLayout->addWidget(new SmoothnessPanel(document_, selection_, ui_->smoothnessDockContents));
+    createViewport();
+}
+
+void MainWindow::createViewport()
+{
+    if (!Viewport::isSupported()) {
+        // Everything but the 3D view still works: editing, files, the panels, the timeline.
+        auto* missing = new QLabel(tr("The 3D viewport needs OpenGL 3.3, which this display does not offer. "
+                                      "Editing, the panels and the timeline work without it."),
+                                   ui_->centralWidget);
+        missing->setAlignment(Qt::AlignCenter);
+        missing->setWordWrap(true);
+        ui_->centralLayout->addWidget(missing);
+        for (QAction* action : {ui_->actionShowGhost, ui_->actionShowTrajectory, ui_->actionShowControlPoses,
+                                ui_->actionShowTrail, ui_->actionFrameAll})
+            action->setEnabled(false);
+        return;
+    }
     viewport_ = new Viewport(document_, selection_, ui_->centralWidget);
     ui_->centralLayout->addWidget(viewport_);
     viewport_->setShowGhost(ui_->actionShowGhost->isChecked());

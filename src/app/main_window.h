@@ -61,6 +61,8 @@ private:
     void setUpActions();
     void setUpDocks();
     void createViews();
+    // The 3D viewport in the middle, or a note saying why there is none.
+    void createViewport();
     void restoreLayout();
     void saveLayout() const;
     void updateTitle();

@@ -117,16 +117,28 @@ double wrapAngle(double angle)
 
 } // namespace
 
-Viewport::Viewport(model::Document& document, Selection& selection, QWidget* parent)
-    : QOpenGLWidget(parent)
-    , document_(document)
-    , selection_(selection)
+QSurfaceFormat Viewport::surfaceFormat()
 {
     QSurfaceFormat format = QSurfaceFormat::defaultFormat();
     format.setVersion(3, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
-    setFormat(format);
+    return format;
+}
+
+bool Viewport::isSupported()
+{
+    QOpenGLContext probe;
+    probe.setFormat(surfaceFormat());
+    return probe.create() && probe.format().version() >= std::pair(3, 3);
+}
+
+Viewport::Viewport(model::Document& document, Selection& selection, QWidget* parent)
+    : QOpenGLWidget(parent)
+    , document_(document)
+    , selection_(selection)
+{
+    setFormat(surfaceFormat());
     setMinimumSize(200, 150);
     setFocusPolicy(Qt::ClickFocus);
 

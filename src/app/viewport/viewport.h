@@ -24,6 +24,7 @@
 #include <QOpenGLShaderProgram>
 #include <QOpenGLVertexArrayObject>
 #include <QOpenGLWidget>
+#include <QSurfaceFormat>
 #include <QPointF>
 
 #include <cstddef>
@@ -44,6 +45,12 @@ public:
 
     Viewport(model::Document& document, Selection& selection, QWidget* parent = nullptr);
     ~Viewport() override;
+
+    // What the viewport draws with: OpenGL 3.3, core profile, a depth buffer.
+    static QSurfaceFormat surfaceFormat();
+    // Whether the display gives such a context. Without one, Qt 6.4 brings the whole window down as
+    // soon as a QOpenGLWidget is shown, so the window asks first.
+    static bool isSupported();
 
     // The viewport is what the window is for: it asks for most of it.
     QSize sizeHint() const override { return {960, 640}; }
