@@ -43,7 +43,7 @@ private:
         const NumberFields* fields = nullptr;
         EulerConvention convention;  // of the Euler angles; unused for the other representations
         std::vector<double> values;
-        Eigen::Quaterniond stored;
+        Eigen::Quaterniond stored = Eigen::Quaterniond::Identity();
     };
 
     void setUpConventionChoosers();

@@ -115,8 +115,8 @@ private:
     // The selected key's handles in the world: centre, the parent frame's axes (columns) and the
     // arrows' length, which keeps their size on screen.
     struct HandleFrame {
-        Eigen::Vector3d centre;
-        Eigen::Matrix3d axes;
+        Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+        Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
         double length = 1.0;
     };
 
@@ -131,9 +131,9 @@ private:
         model::ObjectId object = model::kNoObject;
         std::size_t key = 0;
         Pose startKeyPose;          // the key's local pose when the drag began
-        Eigen::Vector3d worldAxis;  // the handle's axis in the world
+        Eigen::Vector3d worldAxis = Eigen::Vector3d::UnitX(); // the handle's axis in the world
         int axisIndex = 0;          // 0, 1, 2: x, y, z of the parent frame
-        Eigen::Vector3d centre;     // the key's world position when the drag began
+        Eigen::Vector3d centre = Eigen::Vector3d::Zero();    // the key's world position when the drag began
         double startAxisParameter = 0.0;
         double startScreenAngle = 0.0;
     };
