@@ -2,6 +2,7 @@
 
 #include "core/polyscrew.h"
 #include "core/position_curve.h"
+#include "core/quaternion_math.h"
 #include "core/subdivision.h"
 #include "core/timed_keys.h"
 
@@ -158,6 +159,14 @@ Pose TrackMotion::at(double time) const
     if (fitted_ && time >= fitted_->startTime() && time <= fitted_->endTime())
         pose.orientation = fitted_->sample(time).value;
     return pose;
+}
+
+Eigen::Vector3d TrackMotion::angularVelocity(double time) const
+{
+    const Eigen::Quaterniond before = at(time - kAngularVelocityStep).orientation;
+    const Eigen::Quaterniond after = at(time + kAngularVelocityStep).orientation;
+    // The rotation vector 2·log(q(t+h)·q(t−h)⁻¹), turned in 2h.
+    return quatLog(after * before.conjugate()) / kAngularVelocityStep;
 }
 
 double bakeSampleBound(const BakeRange& range, std::size_t keyCount)

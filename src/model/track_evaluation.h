@@ -42,11 +42,19 @@ public:
     TrackMotion& operator=(TrackMotion&&) noexcept;
 
     Pose at(double time) const;
+    // The angular velocity ω = 2q′q⁻¹ of the orientation, in the parent's frame, rad/s, by a central
+    // difference ω ≈ 2·log(q(t+h)·q(t−h)⁻¹)/(2h) with h = kAngularVelocityStep: every interpolation
+    // method alike, screws included. Zero where the pose is held.
+    Eigen::Vector3d angularVelocity(double time) const;
 
 private:
     std::unique_ptr<const detail::KeyedMotion> keyed_; // null for a track without keys
     std::optional<HermiteQuaternionSpline> fitted_;
 };
+
+// The step of TrackMotion::angularVelocity's central difference, seconds: small against any key
+// spacing an artist makes, large enough that rounding stays below 1e-9 rad/s per rad/s.
+inline constexpr double kAngularVelocityStep = 1e-5;
 
 // A frame within this many seconds of a key gives way to the key: the key time is sampled, not a
 // near-duplicate a rounding error away.
