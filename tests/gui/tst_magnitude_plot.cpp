@@ -12,6 +12,7 @@
 #include "model/commands/set_fit_window_command.h"
 #include "model/commands/set_magnitude_curve_command.h"
 #include "model/commands/set_time_range_command.h"
+#include "model/commands/toggle_keyframe_constraint_command.h"
 #include "model/document.h"
 #include "model/track_evaluation.h"
 
@@ -144,6 +145,20 @@ private slots:
         QCOMPARE(plot_->graph(Curve::ConstrainedKeys)->dataCount(), kKeyCount);
         QCOMPARE(plot_->graph(Curve::FreeKeys)->dataCount(), 0);
         QCOMPARE(plot_->graph(Curve::ConstrainedKeys)->data()->at(2)->value, motion.angularVelocity(2.0).norm());
+    }
+
+    void aFreedKeyIsDrawnHollow()
+    {
+        QSignalSpy updated(plot_.get(), &app::MagnitudePlot::curvesUpdated);
+        document_->undoStack().push(new model::ToggleKeyframeConstraintCommand(*document_, object_, 2));
+        QVERIFY(updated.wait(5000));
+        const QCPGraph* constrained = plot_->graph(Curve::ConstrainedKeys);
+        const QCPGraph* free = plot_->graph(Curve::FreeKeys);
+        QCOMPARE(constrained->dataCount(), kKeyCount - 1);
+        QCOMPARE(free->dataCount(), 1);
+        QCOMPARE(free->data()->at(0)->key, 2.0);
+        QCOMPARE(constrained->scatterStyle().brush().color(), constrained->scatterStyle().pen().color());
+        QVERIFY(free->scatterStyle().brush().color() != free->scatterStyle().pen().color());
     }
 
     void aStrokeDrawsTheMagnitudeCurveAsOneUndoStep()
@@ -296,6 +311,23 @@ private slots:
         QVERIFY(std::abs(beforeFit->data()->at(1)->value - std::numbers::sqrt2) < 0.05);
         QVERIFY(plot_->plot()->legend->hasItemWithPlottable(fitted));
         QVERIFY(plot_->plot()->legend->hasItemWithPlottable(beforeFit));
+    }
+
+    void thePanToolPansWithoutEditingAndDoubleClickFitsTheView()
+    {
+        plot_->panAction()->trigger();
+        QVERIFY(!plot_->drawAction()->isChecked());
+        const QPointF from = plot_->pixelFor(2.0, 0.5);
+        dragThrough(plot_->plot(), {from, plot_->pixelFor(2.5, 0.5), plot_->pixelFor(3.0, 0.5)});
+        // The time under the pointer stays under it: the view moved a second back.
+        QVERIFY(std::abs(plot_->plot()->xAxis->range().lower + 1.0) < 2.0 * secondsPerPixel());
+        QVERIFY(track().sketch.magnitude.empty());
+        QCOMPARE(document_->undoStack().count(), 0);
+
+        QTest::mouseDClick(plot_->plot(), Qt::LeftButton, {}, from.toPoint());
+        QCOMPARE(plot_->plot()->xAxis->range().lower, 0.0);
+        QCOMPARE(plot_->plot()->xAxis->range().upper, 6.0);
+        QCOMPARE(document_->undoStack().count(), 0);
     }
 
     void withoutASelectionItSaysSo()
