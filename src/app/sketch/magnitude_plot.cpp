@@ -363,7 +363,12 @@ void MagnitudePlot::setTool(bool drawing)
 {
     plot_->setInteraction(QCP::iRangeZoom, true);
     plot_->setInteraction(QCP::iRangeDrag, !drawing);
-    plot_->setCursor(drawing ? Qt::CrossCursor : Qt::OpenHandCursor);
+    showToolCursor();
+}
+
+void MagnitudePlot::showToolCursor()
+{
+    plot_->setCursor(drawAction_->isChecked() ? Qt::CrossCursor : Qt::OpenHandCursor);
 }
 
 void MagnitudePlot::scheduleRecompute()
@@ -569,7 +574,7 @@ void MagnitudePlot::updateHoverCursor(const QPointF& pixel)
 {
     const std::optional<WindowPart> part = windowPartAt(pixel);
     if (!part)
-        setTool(drawAction_->isChecked());
+        showToolCursor();
     else
         plot_->setCursor(*part == WindowPart::Grip ? Qt::SizeAllCursor : Qt::SizeHorCursor);
 }

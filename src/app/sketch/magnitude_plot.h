@@ -126,6 +126,7 @@ private:
     void moveCursor();
     void showSelection();
     void setTool(bool drawing);
+    void showToolCursor();
 
     // The mouse on the plot; true when the press is this widget's own rather than QCustomPlot's.
     bool pressed(const QMouseEvent& event);
