@@ -50,8 +50,10 @@ model::SceneObject spinningObject()
     object.id = 1;
     object.name = QStringLiteral("top");
     object.track.interpolation = InterpolationMethod::Hermite;
-    for (int key = 0; key < kKeyCount; ++key)
-        object.track.keys.push_back(model::Keyframe{double(key), Pose{turnAboutZ(key * kQuarterTurn), {}}, true});
+    for (int key = 0; key < kKeyCount; ++key) {
+        const Pose pose{turnAboutZ(key * kQuarterTurn), Eigen::Vector3d::Zero()};
+        object.track.keys.push_back(model::Keyframe{double(key), pose, true});
+    }
     return object;
 }
 
