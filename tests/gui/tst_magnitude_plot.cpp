@@ -279,6 +279,16 @@ private slots:
         QVERIFY(!track().sketch.window.has_value());
     }
 
+    void aSketchWithoutAWindowImpliesTheSpanItCovers()
+    {
+        draw({{1.2, 1.0}, {2.0, 1.0}, {3.0, 1.0}});
+        QVERIFY(!track().sketch.window.has_value());
+        QVERIFY(!plot_->shownWindowIsOwn());
+        const std::pair<double, double> implied = *plot_->shownWindow();
+        QCOMPARE(implied.first, track().sketch.magnitude.front().time);
+        QCOMPARE(implied.second, track().sketch.magnitude.back().time);
+    }
+
     void aFitShowsAsTheFittedCurveBesideTheMotionBeforeIt()
     {
         QCOMPARE(plot_->graph(Curve::Fitted)->dataCount(), 0);
