@@ -156,8 +156,6 @@ MagnitudePlot::MagnitudePlot(model::Document& document, Selection& selection, QW
     showSelection();
 }
 
-MagnitudePlot::~MagnitudePlot() = default;
-
 QCPGraph* MagnitudePlot::graph(Curve curve) const
 {
     switch (curve) {

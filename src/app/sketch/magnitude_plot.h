@@ -20,7 +20,8 @@
 //
 // The window's edges and grip take the press in either tool. In the Pan tool a left drag pans; in
 // both the wheel zooms time. Double-click or Fit view shows the scene's range and the curves' height.
-// The value axis keeps its range while the curves change, so the pen's scale never moves under it.
+// The view keeps its ranges while the curves change, so the pen's scale never moves under it; another
+// object, scene or time range refits it.
 
 #include "app/selection.h"
 #include "app/undo_gesture.h"
@@ -63,7 +64,6 @@ public:
     enum class Curve { Current, Sketched, Fitted, BeforeFit, ConstrainedKeys, FreeKeys };
 
     MagnitudePlot(model::Document& document, Selection& selection, QWidget* parent = nullptr);
-    ~MagnitudePlot() override;
 
     QCustomPlot* plot() const { return plot_; }
     QCPGraph* graph(Curve curve) const;
