@@ -44,7 +44,8 @@ namespace {
 
 constexpr double kSpinRate = std::numbers::pi / 2; // rad/s about z
 constexpr double kTilt = std::numbers::pi / 3;     // of the sketched direction at its end
-constexpr int kFitTimeoutMilliseconds = 120'000;
+// QTRY waits up to three times this when the condition stays false; the test function has 300 s.
+constexpr int kFitTimeoutMilliseconds = 60'000;
 const QString kApplyFitText = QStringLiteral("Apply angular velocity fit");
 
 // Keys every `spacing` seconds over [0, duration] of a steady spin about z, Hermite.
@@ -143,7 +144,9 @@ private slots:
         layout->addWidget(statusBar_);
         window_->resize(480, 760);
         window_->show();
-        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+        // Active, so that the panel's shortcut reaches it.
+        window_->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(window_.get()));
         QVERIFY(!progress_->isVisible());
         QVERIFY(button("fitButton")->isEnabled());
     }
@@ -179,14 +182,20 @@ private slots:
                 QVERIFY(sameQuaternion(track().keys[key].pose.orientation, before.keys[key].pose.orientation));
 
         // Inside the window ω leans towards the sketched direction; before the fit it was z throughout.
+        // The constrained keys at 1 s and 3 s still ask for half a turn about z, so it cannot follow
+        // the sketch all the way: it leans to +x everywhere and is nearer the sketch on the whole.
         const model::TrackMotion fitted(track());
-        for (double time : {1.5, 2.0, 2.5, 2.9}) {
+        double offBefore = 0.0;
+        double offAfter = 0.0;
+        for (double time = 1.05; time < 3.0; time += 0.1) {
             const Eigen::Vector3d sketched = sketchedDirection(time, 1.0, 3.0, kTilt);
-            const double wasOff = angleBetween(Eigen::Vector3d::UnitZ(), sketched);
-            const double isOff = angleBetween(fitted.angularVelocity(time), sketched);
-            QVERIFY2(isOff < 0.5 * wasOff,
-                     qPrintable(QStringLiteral("at %1 s: %2 rad off the sketch, %3 before").arg(time).arg(isOff).arg(wasOff)));
+            const Eigen::Vector3d omega = fitted.angularVelocity(time);
+            QVERIFY2(omega.x() > 0.05 * omega.norm(), qPrintable(QStringLiteral("at %1 s").arg(time)));
+            offBefore += angleBetween(Eigen::Vector3d::UnitZ(), sketched);
+            offAfter += angleBetween(omega, sketched);
         }
+        QVERIFY2(offAfter < 0.8 * offBefore,
+                 qPrintable(QStringLiteral("off the sketch by %1 rad in all, %2 before").arg(offAfter).arg(offBefore)));
 
         stack.undo();
         QVERIFY(sameTrack(track(), before));

@@ -15,9 +15,9 @@ QString endOfFitMessage(const jobs::FitSummary& summary)
 {
     const QString how = summary.converged ? FitController::tr("Fit converged")
                                           : FitController::tr("Fit stopped (%1)").arg(summary.outcome);
-    return FitController::tr("%1 after %n round(s), %2 iterations: largest fragment error %3 rad²/s, %4 s.",
-                             nullptr, summary.rounds)
+    return FitController::tr("%1: %2 rounds, %3 iterations, largest fragment error %4 rad²/s, %5 s.")
         .arg(how)
+        .arg(summary.rounds)
         .arg(summary.iterations)
         .arg(summary.largestFragmentError, 0, 'g', 3)
         .arg(summary.seconds, 0, 'f', 1);

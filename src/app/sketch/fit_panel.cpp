@@ -153,7 +153,7 @@ void FitPanel::showKeys(const model::MotionTrack& track)
         auto* time = new QTableWidgetItem(QString::number(track.keys[key].time, 'f', 3));
         time->setFlags(Qt::ItemIsEnabled);
         ui_->keyTable->setItem(row, kTimeColumn, time);
-        auto* constrained = new QTableWidgetItem(tr("kept"));
+        auto* constrained = new QTableWidgetItem;
         constrained->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
         constrained->setCheckState(track.keys[key].constrained ? Qt::Checked : Qt::Unchecked);
         ui_->keyTable->setItem(row, kConstrainedColumn, constrained);
