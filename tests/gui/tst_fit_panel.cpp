@@ -9,6 +9,7 @@
 #include "app/sketch/fit_panel.h"
 #include "app/sketch/fit_progress.h"
 #include "app/undo_gesture.h"
+#include "app/viewport/viewport.h"
 #include "gui_test_support.h"
 #include "jobs/sketch_fit.h"
 #include "model/commands/add_stroke_command.h"
@@ -323,6 +324,25 @@ private slots:
         QTest::qWait(1000);
         QCOMPARE(stack.index(), stepsBeforeStroke);
         QCOMPARE(stack.count(), stepsBeforeStroke + 2);
+    }
+
+    void theViewportDrawsThePreviewTrackUntilItIsCleared()
+    {
+        app::Viewport viewport(*document_, *selection_);
+        viewport.resize(640, 480);
+        viewport.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&viewport));
+        viewport.frameScene();
+        const QPointF drawn = *viewport.objectScreenPosition(object_);
+        // A preview moved aside, so that where the object is drawn shows which track is used.
+        model::MotionTrack preview = track();
+        for (model::Keyframe& key : preview.keys)
+            key.pose.position.x() += 2.0;
+        viewport.setPreviewTrack(object_, preview);
+        QTRY_VERIFY((*viewport.objectScreenPosition(object_) - drawn).manhattanLength() > 10.0);
+        QVERIFY(track().keys.front().pose.position.isZero());
+        viewport.setPreviewTrack(object_, std::nullopt);
+        QTRY_VERIFY((*viewport.objectScreenPosition(object_) - drawn).manhattanLength() < 0.5);
     }
 
     void removeFitTakesTheCurveAwayInOneStep()
