@@ -20,13 +20,13 @@ namespace {
 
 constexpr double kSpinRate = std::numbers::pi / 2; // rad/s about z
 
-// Keys every second from 0 to 4 s of a steady spin about z; a stroke from z tilting 60° towards x
-// over 1–3 s, a magnitude of kSpinRate over the same span, and that span as the window.
-model::MotionTrack tiltedSpin()
+// Keys every second from 0 to `seconds` of a steady spin about z; a stroke from z tilting 60° towards
+// x over 1–3 s, a magnitude of kSpinRate over the same span, and that span as the window.
+model::MotionTrack tiltedSpin(int seconds = 4)
 {
     model::MotionTrack track;
     track.interpolation = InterpolationMethod::Hermite;
-    for (int second = 0; second <= 4; ++second) {
+    for (int second = 0; second <= seconds; ++second) {
         model::Keyframe key;
         key.time = second;
         key.pose.orientation = Eigen::AngleAxisd(kSpinRate * second, Eigen::Vector3d::UnitZ());
@@ -45,13 +45,16 @@ model::MotionTrack tiltedSpin()
     return track;
 }
 
-// A fit that takes long: every fragment error above δ, so it inserts variable frames round after round.
+// A fit that takes long, seconds even in a Release build: a minute of keys, the whole of it refitted
+// against a speed the keys cannot follow, and every fragment error above δ, so that it inserts
+// variable frames round after round.
 model::MotionTrack slowToFit()
 {
-    model::MotionTrack track = tiltedSpin();
+    constexpr int kSeconds = 60;
+    model::MotionTrack track = tiltedSpin(kSeconds);
     track.sketch.delta = 1e-12;
-    track.sketch.window = std::pair(0.0, 4.0);
-    track.sketch.magnitude = {{0.0, 3 * kSpinRate}, {4.0, kSpinRate}};
+    track.sketch.window = std::pair(0.0, double{kSeconds});
+    track.sketch.magnitude = {{0.0, 3 * kSpinRate}, {double{kSeconds}, kSpinRate}};
     return track;
 }
 

@@ -20,7 +20,7 @@ QString endOfFitMessage(const jobs::FitSummary& summary)
         .arg(summary.rounds)
         .arg(summary.iterations)
         .arg(summary.largestFragmentError, 0, 'g', 3)
-        .arg(summary.seconds, 0, 'f', 1);
+        .arg(summary.seconds, 0, 'g', 2);
 }
 
 // The track as it is with `result` applied: what ApplyFitResultCommand makes of it.
