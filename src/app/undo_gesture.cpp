@@ -25,4 +25,9 @@ void pushAlone(QUndoStack& stack, QUndoCommand* command)
     gesture.push(command);
 }
 
+bool isMacroOpen(const QUndoStack& stack)
+{
+    return stack.index() < stack.count() && !stack.canRedo();
+}
+
 } // namespace gyre::app

@@ -33,4 +33,9 @@ private:
 // Pushes `command` as an undo step of its own, never merged with the step before it.
 void pushAlone(QUndoStack& stack, QUndoCommand* command);
 
+// Whether a gesture, or any macro, is open on `stack`. QUndoStack has no query for it, but an open
+// macro is already in its command list, at index(), while canRedo() says false until it ends;
+// otherwise a command at index() is one to redo.
+bool isMacroOpen(const QUndoStack& stack);
+
 } // namespace gyre::app

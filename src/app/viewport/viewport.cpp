@@ -181,6 +181,13 @@ Viewport::~Viewport()
     releaseGl();
 }
 
+void Viewport::setPreviewTrack(model::ObjectId object, std::optional<model::MotionTrack> track)
+{
+    previewObject_ = object;
+    previewTrack_ = std::move(track);
+    rebuildMotionInBackground();
+}
+
 void Viewport::setShowGhost(bool show)
 {
     showGhost_ = show;
@@ -235,7 +242,8 @@ void Viewport::frameScene()
 
 void Viewport::onSceneReset()
 {
-    // Opening a project may wait for its motion; only dragging must not.
+    // Opening a project may wait for its motion; only dragging must not. A preview was of the old scene.
+    previewTrack_.reset();
     ++motionGeneration_;
     motion_ = std::make_shared<SceneMotion>(document_.scene());
     meshesMayBeUnused_ = true;
@@ -281,11 +289,20 @@ void Viewport::snapshotOriginalMotion()
     originalMotion_ = SceneMotion(originalScene_);
 }
 
+model::Scene Viewport::sceneToDraw() const
+{
+    model::Scene scene = document_.scene();
+    if (previewTrack_)
+        if (model::SceneObject* previewed = model::findObject(scene, previewObject_))
+            previewed->track = *previewTrack_;
+    return scene;
+}
+
 void Viewport::rebuildMotionInBackground()
 {
     // The whole scene each time, so that the newest request, the one that runs, has every change.
     const std::uint64_t generation = ++motionGeneration_;
-    motionThread_.post([this, generation, scene = document_.scene()](const std::atomic<bool>&) {
+    motionThread_.post([this, generation, scene = sceneToDraw()](const std::atomic<bool>&) {
         auto built = std::make_shared<const SceneMotion>(scene);
         QMetaObject::invokeMethod(
             this, [this, generation, built = std::move(built)] { receiveMotion(generation, built); },

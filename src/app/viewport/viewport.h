@@ -55,6 +55,10 @@ public:
     // The viewport is what the window is for: it asks for most of it.
     QSize sizeHint() const override { return {960, 640}; }
 
+    // Draws `object` following `track` instead of its own track, until called with nullopt: the
+    // preview of a live fit while a stroke is still being drawn. The document is not changed.
+    void setPreviewTrack(model::ObjectId object, std::optional<model::MotionTrack> track);
+
     void setShowGhost(bool show);
     void setShowTrajectory(bool show);
     void setShowControlPoses(bool show);
@@ -144,6 +148,8 @@ private:
     void onTrackChanged(model::ObjectId id);
     void onSelectionChanged();
     void snapshotOriginalMotion();
+    // The document's scene with the preview track in place of its object's track.
+    model::Scene sceneToDraw() const;
     void rebuildMotionInBackground();
     void receiveMotion(std::uint64_t generation, std::shared_ptr<const SceneMotion> motion);
     void requestTrail();
@@ -185,6 +191,8 @@ private:
     // The motion drawn: the document's, or a moment behind it while a newer one is built.
     std::shared_ptr<const SceneMotion> motion_ = std::make_shared<SceneMotion>();
     std::uint64_t motionGeneration_ = 0; // of the newest motion asked for
+    model::ObjectId previewObject_ = model::kNoObject;
+    std::optional<model::MotionTrack> previewTrack_;
     model::Scene originalScene_; // as opened or last saved, for the ghost
     SceneMotion originalMotion_;
 

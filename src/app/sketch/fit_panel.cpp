@@ -1,0 +1,252 @@
+#include "app/sketch/fit_panel.h"
+
+#include "app/undo_gesture.h"
+#include "jobs/sketch_fit.h"
+#include "model/commands/apply_fit_result_command.h"
+#include "model/commands/set_fit_parameter_command.h"
+#include "model/commands/set_fit_window_command.h"
+#include "model/commands/toggle_keyframe_constraint_command.h"
+#include "ui_fit_panel.h"
+
+#include <QSignalBlocker>
+#include <QStyle>
+
+#include <stdexcept>
+
+namespace gyre::app {
+
+namespace {
+
+constexpr int kTimeColumn = 0;
+constexpr int kConstrainedColumn = 1;
+
+// The span of the track's keys, or nullopt for fewer than two.
+std::optional<std::pair<double, double>> keySpan(const model::MotionTrack& track)
+{
+    if (track.keys.size() < 2)
+        return std::nullopt;
+    return std::pair(track.keys.front().time, track.keys.back().time);
+}
+
+} // namespace
+
+FitPanel::FitPanel(model::Document& document, Selection& selection, QWidget* parent)
+    : FitPanel(document, selection, *new FitController(document, selection), parent)
+{
+    controller_.setParent(this);
+}
+
+FitPanel::FitPanel(model::Document& document, Selection& selection, FitController& controller, QWidget* parent)
+    : QWidget(parent)
+    , ui_(std::make_unique<Ui::FitPanel>())
+    , document_(document)
+    , selection_(selection)
+    , controller_(controller)
+{
+    ui_->setupUi(this);
+    const int iconSize = style()->pixelMetric(QStyle::PM_SmallIconSize, nullptr, this);
+    ui_->fitProblemIcon->setPixmap(style()->standardIcon(QStyle::SP_MessageBoxWarning).pixmap(iconSize));
+    ui_->fitProblemFrame->hide();
+
+    // Without keyboard tracking a typed value arrives once, on Enter or when the focus leaves; a step
+    // arrives at once. Each is an undo step of its own (push), though the model merges such edits.
+    connect(ui_->alphaSpin, &QDoubleSpinBox::valueChanged, this,
+            [this](double value) { setParameter(model::FitParameter::Alpha, value); });
+    connect(ui_->betaSpin, &QDoubleSpinBox::valueChanged, this,
+            [this](double value) { setParameter(model::FitParameter::Beta, value); });
+    connect(ui_->deltaSpin, &QDoubleSpinBox::valueChanged, this,
+            [this](double value) { setParameter(model::FitParameter::Delta, value); });
+    // clicked comes from the artist only, never from showing the track.
+    connect(ui_->wholeSketchCheck, &QCheckBox::clicked, this, &FitPanel::applyWholeSketch);
+    connect(ui_->windowStartSpin, &QDoubleSpinBox::valueChanged, this, &FitPanel::applyWindowEnds);
+    connect(ui_->windowEndSpin, &QDoubleSpinBox::valueChanged, this, &FitPanel::applyWindowEnds);
+    connect(ui_->keyTable, &QTableWidget::itemChanged, this, &FitPanel::toggleConstraint);
+
+    connect(ui_->fitButton, &QPushButton::clicked, &controller_, &FitController::fitSelected);
+    connect(ui_->cancelButton, &QPushButton::clicked, &controller_, &FitController::cancel);
+    connect(ui_->removeFitButton, &QPushButton::clicked, this, &FitPanel::removeFit);
+    connect(ui_->liveCheck, &QCheckBox::clicked, &controller_, &FitController::setLive);
+    connect(&controller_, &FitController::liveChanged, ui_->liveCheck, &QCheckBox::setChecked);
+    connect(&controller_, &FitController::fitStarted, this, [this] {
+        showStatus(tr("Fitting…"));
+        updateButtons();
+    });
+    connect(&controller_, &FitController::fitEnded, this, [this](const QString& message) {
+        showStatus(message);
+        updateButtons();
+    });
+
+    connect(&selection_, &Selection::changed, this, [this] {
+        showStatus({});
+        showSelectedTrack();
+    });
+    connect(&document_, &model::Document::sceneReset, this, &FitPanel::showSelectedTrack);
+    const auto showIfSelected = [this](model::ObjectId id) {
+        if (id == selection_.object())
+            showSelectedTrack();
+    };
+    connect(&document_, &model::Document::sketchChanged, this, showIfSelected);
+    connect(&document_, &model::Document::keyframesChanged, this, showIfSelected);
+    connect(&document_, &model::Document::trackSettingsChanged, this, showIfSelected);
+    connect(&document_, &model::Document::objectChanged, this, showIfSelected);
+    ui_->liveCheck->setChecked(controller_.isLive());
+    showSelectedTrack();
+}
+
+FitPanel::~FitPanel() = default;
+
+void FitPanel::showSelectedTrack()
+{
+    const model::SceneObject* object = selection_.selectedObject();
+    ui_->noObjectLabel->setVisible(object == nullptr);
+    ui_->objectTitleLabel->setVisible(object != nullptr);
+    for (QWidget* group : {static_cast<QWidget*>(ui_->weightsGroup), static_cast<QWidget*>(ui_->windowGroup),
+                           static_cast<QWidget*>(ui_->keysGroup)})
+        group->setEnabled(object != nullptr);
+    if (object == nullptr) {
+        ui_->fitProblemFrame->hide();
+        ui_->keyTable->setRowCount(0);
+        fittable_ = false;
+        updateButtons();
+        return;
+    }
+    const model::MotionTrack& track = object->track;
+    ui_->objectTitleLabel->setText(object->name);
+    for (auto [spin, value] : {std::pair(ui_->alphaSpin, track.sketch.alpha), std::pair(ui_->betaSpin, track.sketch.beta),
+                               std::pair(ui_->deltaSpin, track.sketch.delta)}) {
+        const QSignalBlocker blocker(spin);
+        spin->setValue(value);
+    }
+    showWindow(track);
+    showKeys(track);
+    showFitProblem(track);
+    updateButtons();
+}
+
+void FitPanel::showWindow(const model::MotionTrack& track)
+{
+    const std::pair<double, double> span = keySpan(track).value_or(std::pair(0.0, 0.0));
+    // The sketch's own window, or the span the fit would edit without one.
+    std::optional<std::pair<double, double>> shown = track.sketch.window;
+    if (!shown)
+        if (const std::optional<fit::TimeWindow> edited = jobs::editWindow(track))
+            shown = std::pair(edited->start, edited->end);
+    const std::pair<double, double> ends = shown.value_or(span);
+    const QSignalBlocker startBlocker(ui_->windowStartSpin);
+    const QSignalBlocker endBlocker(ui_->windowEndSpin);
+    for (QDoubleSpinBox* spin : {ui_->windowStartSpin, ui_->windowEndSpin})
+        spin->setRange(span.first, span.second);
+    ui_->windowStartSpin->setValue(ends.first);
+    ui_->windowEndSpin->setValue(ends.second);
+    const bool whole = !track.sketch.window.has_value();
+    ui_->wholeSketchCheck->setChecked(whole);
+    ui_->windowStartSpin->setEnabled(!whole);
+    ui_->windowEndSpin->setEnabled(!whole);
+}
+
+void FitPanel::showKeys(const model::MotionTrack& track)
+{
+    const QSignalBlocker blocker(ui_->keyTable);
+    ui_->keyTable->setRowCount(static_cast<int>(track.keys.size()));
+    for (std::size_t key = 0; key < track.keys.size(); ++key) {
+        const int row = static_cast<int>(key);
+        auto* time = new QTableWidgetItem(QString::number(track.keys[key].time, 'f', 3));
+        time->setFlags(Qt::ItemIsEnabled);
+        ui_->keyTable->setItem(row, kTimeColumn, time);
+        auto* constrained = new QTableWidgetItem;
+        constrained->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
+        constrained->setCheckState(track.keys[key].constrained ? Qt::Checked : Qt::Unchecked);
+        ui_->keyTable->setItem(row, kConstrainedColumn, constrained);
+    }
+    ui_->keyTable->resizeColumnToContents(kTimeColumn);
+}
+
+void FitPanel::showFitProblem(const model::MotionTrack& track)
+{
+    try {
+        jobs::sketchFitProblem(track);
+        fittable_ = true;
+        ui_->fitProblemFrame->hide();
+    } catch (const jobs::SketchFitError& error) {
+        fittable_ = false;
+        ui_->fitProblemLabel->setText(QString::fromUtf8(error.what()));
+        ui_->fitProblemFrame->show();
+    }
+}
+
+void FitPanel::updateButtons()
+{
+    const model::SceneObject* object = selection_.selectedObject();
+    ui_->fitButton->setEnabled(fittable_ && !controller_.isFitting());
+    ui_->cancelButton->setEnabled(controller_.isFitting());
+    ui_->removeFitButton->setEnabled(object != nullptr && !object->track.sketch.fittedCurve.empty());
+}
+
+void FitPanel::setParameter(model::FitParameter parameter, double value)
+{
+    const model::SceneObject* object = selection_.selectedObject();
+    if (object == nullptr || model::sketchFitParameter(*object, static_cast<std::size_t>(parameter)) == value)
+        return;
+    push([&] { return new model::SetFitParameterCommand(document_, object->id, parameter, value); });
+}
+
+void FitPanel::applyWholeSketch(bool whole)
+{
+    setWindow(whole ? std::nullopt
+                    : std::optional(std::pair(ui_->windowStartSpin->value(), ui_->windowEndSpin->value())));
+}
+
+void FitPanel::applyWindowEnds()
+{
+    setWindow(std::pair(ui_->windowStartSpin->value(), ui_->windowEndSpin->value()));
+}
+
+void FitPanel::setWindow(std::optional<std::pair<double, double>> window)
+{
+    const model::SceneObject* object = selection_.selectedObject();
+    if (object == nullptr || object->track.sketch.window == window)
+        return;
+    push([&] { return new model::SetFitWindowCommand(document_, object->id, window); });
+}
+
+void FitPanel::toggleConstraint(QTableWidgetItem* item)
+{
+    const model::SceneObject* object = selection_.selectedObject();
+    if (object == nullptr || item->column() != kConstrainedColumn)
+        return;
+    const auto key = static_cast<std::size_t>(item->row());
+    if (key >= object->track.keys.size() || object->track.keys[key].constrained == (item->checkState() == Qt::Checked))
+        return;
+    push([&] { return new model::ToggleKeyframeConstraintCommand(document_, object->id, key); });
+}
+
+void FitPanel::removeFit()
+{
+    const model::SceneObject* object = selection_.selectedObject();
+    if (object == nullptr)
+        return;
+    push([&] {
+        // An applied empty curve: the model's command for it, named for what the artist did.
+        auto* command = new model::ApplyFitResultCommand(document_, object->id, {{}, object->track.keys});
+        command->setText(tr("Remove angular velocity fit"));
+        return command;
+    });
+}
+
+void FitPanel::push(const std::function<QUndoCommand*()>& makeCommand)
+{
+    try {
+        pushAlone(document_.undoStack(), makeCommand());
+    } catch (const std::invalid_argument& error) {
+        showStatus(tr("Not changed: %1.").arg(QString::fromUtf8(error.what())));
+        // The widgets go back to what the track holds.
+        showSelectedTrack();
+    }
+}
+
+void FitPanel::showStatus(const QString& message)
+{
+    ui_->fitStatusLabel->setText(message);
+}
+
+} // namespace gyre::app
