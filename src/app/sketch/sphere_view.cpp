@@ -38,6 +38,7 @@ const QColor kDrawnStrokeColor(80, 130, 255);
 const QColor kTargetStrokeColor(20, 60, 210);
 const QColor kCurrentTimeColor(255, 215, 0);
 const QColor kTextColor(230, 232, 236);
+const QColor kTickColor(110, 60, 0);
 
 constexpr double kBackOpacity = 0.3;      // of the back side's lines, seen through the disc
 constexpr int kCircleSegments = 96;
@@ -217,6 +218,11 @@ QPointF SphereView::projectToWidget(const Eigen::Vector3d& direction) const
 bool SphereView::facesViewer(const Eigen::Vector3d& direction) const
 {
     return projection_.facesViewer(direction);
+}
+
+Eigen::Vector3d SphereView::sphereAt(const QPointF& widgetPoint) const
+{
+    return projection_.cast(widgetPoint);
 }
 
 QString SphereView::message() const
@@ -549,7 +555,7 @@ void SphereView::drawTimeTicks(QPainter& painter, Side side) const
     const double labelStep = timeLabelStep(range);
     const double tickStep = range <= kLongestMinorTickedRange ? kMinorTickSeconds : 1.0;
     const double opacity = side == Side::Front ? 1.0 : kBackOpacity;
-    painter.setPen(faded(QPen(kMotionColor.darker(150), 1.5), opacity));
+    painter.setPen(faded(QPen(kTickColor, 1.5), opacity));
     QFont font = painter.font();
     font.setPointSizeF(font.pointSizeF() * 0.85);
     painter.setFont(font);
