@@ -64,6 +64,8 @@ private slots:
     void linearAndCubicPositions();
     void slerpBetweenKeys();
     void holdsTheEndsOutsideTheKeys();
+    void angularVelocityOfSlerpIsTheTurnOverTheSpan();
+    void angularVelocityMatchesTheAnalyticHermite();
     void screwWithoutSubdivisionIsThePlainPolyscrew();
     void cyclicScrewClosesAndRepeats();
     void subdividedScrewPlaysTheSubdividedPoses();
@@ -156,6 +158,37 @@ void TstTrackEvaluation::holdsTheEndsOutsideTheKeys()
         const TrackMotion motion(track);
         QVERIFY(poseDistance(motion.at(-3.0), motion.at(1.0)) < kTolerance);
         QVERIFY(poseDistance(motion.at(9.0), motion.at(4.0)) < kTolerance);
+    }
+}
+
+// Slerp from a to b over T turns at the constant world rate ω = θ·n/T, where b·a⁻¹ = AngleAxis(θ, n);
+// held ends do not turn.
+void TstTrackEvaluation::angularVelocityOfSlerpIsTheTurnOverTheSpan()
+{
+    const MotionTrack track = randomTrack(InterpolationMethod::Slerp, {0.5, 2.5}, 11);
+    const TrackMotion motion(track);
+    const Eigen::Quaterniond& a = track.keys[0].pose.orientation;
+    const Eigen::AngleAxisd turn(sameHemisphere(track.keys[1].pose.orientation, a) * a.conjugate());
+    const Eigen::Vector3d expected = turn.angle() * turn.axis() / 2.0;
+    for (const double time : {0.7, 1.5, 2.3})
+        QVERIFY((motion.angularVelocity(time) - expected).norm() < 1e-6 * expected.norm());
+    QVERIFY(motion.angularVelocity(0.0).norm() < kTolerance);
+    QVERIFY(motion.angularVelocity(3.0).norm() < kTolerance);
+}
+
+// The central difference against the spline's own analytic ω = 2q′q⁻¹.
+void TstTrackEvaluation::angularVelocityMatchesTheAnalyticHermite()
+{
+    const MotionTrack track = randomTrack(InterpolationMethod::Hermite, {0.0, 0.5, 1.5, 2.0, 3.5}, 13);
+    std::vector<OrientationKey> keys;
+    for (const Keyframe& key : track.keys)
+        keys.push_back({key.time, key.pose.orientation});
+    const auto spline = makeOrientationCurve(InterpolationMethod::Hermite, keys, {});
+    const TrackMotion motion(track);
+    for (double time = 0.05; time < 3.5; time += 0.173) {
+        const Eigen::Vector3d expected = spline->sample(time).angularVelocity;
+        QVERIFY2((motion.angularVelocity(time) - expected).norm() < 1e-6 * (1.0 + expected.norm()),
+                 qPrintable(QString::number(time)));
     }
 }
 
