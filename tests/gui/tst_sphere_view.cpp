@@ -12,6 +12,7 @@
 #include "app/undo_gesture.h"
 #include "fit/angular_velocity_target.h"
 #include "gui_test_support.h"
+#include "jobs/sketch_fit.h"
 #include "model/commands/add_stroke_command.h"
 #include "model/commands/apply_fit_result_command.h"
 #include "model/commands/import_objects_command.h"
@@ -32,6 +33,12 @@
 #include <memory>
 #include <numbers>
 #include <vector>
+
+// The bundled samples are compiled into gyre_app; registering them must happen outside any namespace.
+static void registerResources()
+{
+    Q_INIT_RESOURCE(gyre);
+}
 
 using namespace gyre;
 using Tool = app::SphereView::Tool;
@@ -89,7 +96,11 @@ class TestSphereView : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { test::useTestSettings(); }
+    void initTestCase()
+    {
+        test::useTestSettings();
+        registerResources();
+    }
 
     void init()
     {
@@ -132,7 +143,7 @@ private slots:
         const model::DirectionStroke drawn = strokes().front();
         QCOMPARE(drawn.points.size(), aims.size());
         // A pixel of the pointer's rounding, on the sphere's radius.
-        const double pixel = 1.0 / (std::min(view_->width(), view_->height()) / 2.0 - 28.0);
+        const double pixel = 1.0 / view_->sphereRadius();
         for (std::size_t i = 0; i < aims.size(); ++i) {
             QVERIFY(std::abs(drawn.points[i].norm() - 1.0) < 1e-12);
             QVERIFY2(angleBetween(drawn.points[i], aims[i]) < 1.5 * pixel,
@@ -393,6 +404,35 @@ private slots:
         QVERIFY(strokes().empty());
         QCOMPARE(stack.index(), 0);
         QVERIFY(!document_->isModified());
+    }
+
+    void theSpinningTopSampleAfterItsFit()
+    {
+        // The paper's Fig. 3: the top's sketch with its wobble pattern, fitted, the fit in red over
+        // the steady precession in grey. The picture is kept for the documentation.
+        QSignalSpy updated(view_, &app::SphereView::curvesUpdated);
+        document_->loadAsUntitled(QStringLiteral(":/samples/spinning-top.gyre"));
+        QVERIFY(selection_->selectedObject() != nullptr);
+        const model::ObjectId top = selection_->object();
+        const jobs::SketchFitProblem problem = jobs::sketchFitProblem(document_->object(top)->track);
+        const fit::FitResult result = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
+        app::pushAlone(document_->undoStack(), new model::ApplyFitResultCommand(
+                                                   *document_, top, jobs::appliedFitResult(document_->object(top)->track, result)));
+        document_->setCurrentTime(6.0);
+        QVERIFY(updated.wait(5000));
+        while (updated.wait(300)) {
+        }
+        QVERIFY(view_->curves().fitSpan.has_value());
+        QVERIFY(!view_->curves().beforeFit.empty());
+        QVERIFY(!view_->curves().targetStrokes.empty());
+        panel_->resize(500, 540);
+        QTest::qWait(100);
+        // Looking down at the pole, about which the top's axis turns.
+        const QPointF centre(view_->width() / 2.0, view_->height() / 2.0);
+        dragThrough(view_, {view_->projectToWidget(Eigen::Vector3d::UnitZ()), centre - QPointF(0.0, 0.3 * view_->sphereRadius())},
+                    Qt::RightButton);
+        QTest::qWait(100);
+        view_->grabFramebuffer().save(QStringLiteral("sphere-view-top.png"));
     }
 
     void withoutASelectionItSaysSo()

@@ -13,7 +13,7 @@ SphereProjection::SphereProjection()
 void SphereProjection::setViewportSize(int width, int height)
 {
     centre_ = QPointF(width / 2.0, height / 2.0);
-    radius_ = std::max(1.0, std::min(width, height) / 2.0 - kLabelMargin);
+    radius_ = std::max(1.0, std::min(width, height) / 2.0 / kLabelReach);
 }
 
 Eigen::Quaterniond SphereProjection::defaultRotation()

@@ -15,7 +15,8 @@ class SphereProjection {
 public:
     SphereProjection();
 
-    // The sphere fills the widget's shorter side, less a margin for the axis labels.
+    // The sphere fills the widget's shorter side but for room for the axes' labels: its radius is
+    // half that side over kLabelReach.
     void setViewportSize(int width, int height);
     QPointF centre() const { return centre_; }
     double radius() const { return radius_; }
@@ -37,7 +38,9 @@ public:
     void beginTurn(const QPointF& widgetPoint);
     void turnTo(const QPointF& widgetPoint);
 
-    static constexpr double kLabelMargin = 28.0; // pixels between the sphere and the widget's edge
+    static constexpr double kAxisOvershoot = 1.12;     // the axes stick out of the sphere this far
+    static constexpr double kAxisLabelDistance = 1.22; // their labels sit here
+    static constexpr double kLabelReach = 1.3;         // the widget's edge, in sphere radii
 
 private:
     Eigen::Vector3d castInView(const QPointF& widgetPoint) const;

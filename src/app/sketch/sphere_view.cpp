@@ -33,7 +33,7 @@ const QColor kGridColor(96, 104, 118);
 const std::array<QColor, 3> kAxisColors{QColor(214, 48, 48), QColor(40, 150, 60), QColor(45, 95, 220)};
 const QColor kMotionColor(225, 140, 20);
 const QColor kFittedColor(215, 25, 25);
-const QColor kBeforeFitColor(120, 120, 120);
+const QColor kBeforeFitColor(100, 100, 110);
 const QColor kDrawnStrokeColor(80, 130, 255);
 const QColor kTargetStrokeColor(20, 60, 210);
 const QColor kCurrentTimeColor(255, 215, 0);
@@ -42,8 +42,6 @@ const QColor kTickColor(110, 60, 0);
 
 constexpr double kBackOpacity = 0.3;      // of the back side's lines, seen through the disc
 constexpr int kCircleSegments = 96;
-constexpr double kAxisOvershoot = 1.12;   // axes stick out of the sphere this far, labels beyond
-constexpr double kAxisLabelDistance = 1.22;
 constexpr double kMajorTickPixels = 6.0;
 constexpr double kMinorTickPixels = 3.0;
 constexpr double kTickLabelPixels = 14.0;
@@ -213,6 +211,11 @@ void SphereView::setTool(Tool tool)
 QPointF SphereView::projectToWidget(const Eigen::Vector3d& direction) const
 {
     return projection_.project(direction);
+}
+
+double SphereView::sphereRadius() const
+{
+    return projection_.radius();
 }
 
 bool SphereView::facesViewer(const Eigen::Vector3d& direction) const
@@ -448,9 +451,10 @@ void SphereView::drawSphereLayers(QPainter& painter, Side side) const
 {
     drawGrid(painter, side);
     drawAxes(painter, side);
+    // The sketch under the motion: where the fit achieves it, the red lies on the blue.
+    drawStrokes(painter, side);
     drawMotion(painter, side);
     drawTimeTicks(painter, side);
-    drawStrokes(painter, side);
     drawCurrentTime(painter, side);
 }
 
@@ -523,8 +527,8 @@ void SphereView::drawAxes(QPainter& painter, Side side) const
         const double opacity = side == Side::Front ? 1.0 : kBackOpacity;
         const QPen pen = faded(QPen(kAxisColors[static_cast<std::size_t>(axis)], 2.0), opacity);
         painter.setPen(pen);
-        painter.drawLine(projection_.centre(), projection_.project(kAxisOvershoot * direction));
-        const QPointF labelAt = projection_.project(kAxisLabelDistance * direction);
+        painter.drawLine(projection_.centre(), projection_.project(SphereProjection::kAxisOvershoot * direction));
+        const QPointF labelAt = projection_.project(SphereProjection::kAxisLabelDistance * direction);
         painter.drawText(QRectF(labelAt - QPointF(10.0, 10.0), QSizeF(20.0, 20.0)), Qt::AlignCenter,
                          names[static_cast<std::size_t>(axis)]);
     }
@@ -543,7 +547,7 @@ void SphereView::drawMotion(QPainter& painter, Side side) const
     drawRuns(painter, curves_.motion, motionPen, side, -infinity, fitStart);
     drawRuns(painter, curves_.motion, motionPen, side, fitEnd, infinity);
     drawRuns(painter, curves_.beforeFit, QPen(kBeforeFitColor, 2.0, Qt::DashLine), side, fitStart, fitEnd);
-    drawRuns(painter, curves_.motion, QPen(kFittedColor, 2.5), side, fitStart, fitEnd);
+    drawRuns(painter, curves_.motion, QPen(kFittedColor, 1.8), side, fitStart, fitEnd);
 }
 
 void SphereView::drawTimeTicks(QPainter& painter, Side side) const
@@ -615,7 +619,7 @@ void SphereView::drawLegend(QPainter& painter) const
     };
     std::vector<Entry> entries{{QPen(kMotionColor, 2.0), tr("motion: ω/|ω|")}};
     if (curves_.fitSpan) {
-        entries.push_back({QPen(kFittedColor, 2.5), tr("fitted")});
+        entries.push_back({QPen(kFittedColor, 1.8), tr("fitted")});
         entries.push_back({QPen(kBeforeFitColor, 2.0, Qt::DashLine), tr("before the fit")});
     }
     entries.push_back({QPen(kDrawnStrokeColor, 1.2), tr("sketch as drawn")});

@@ -79,6 +79,8 @@ public:
     // Where a point of the sphere is drawn, in widget pixels; facesViewer says whether it is in front.
     QPointF projectToWidget(const Eigen::Vector3d& direction) const;
     bool facesViewer(const Eigen::Vector3d& direction) const;
+    // The sphere's radius on screen, pixels.
+    double sphereRadius() const;
     // The point of the sphere's front under a widget point, as the pen draws it.
     Eigen::Vector3d sphereAt(const QPointF& widgetPoint) const;
     // The curves drawn, as the latest recompute gave them.
