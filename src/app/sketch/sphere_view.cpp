@@ -9,7 +9,6 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
-#include <QPainterPath>
 #include <QRadialGradient>
 #include <QSurfaceFormat>
 
@@ -147,7 +146,7 @@ SphereView::SphereView(model::Document& document, Selection& selection, QWidget*
     connect(&document_, &model::Document::sceneSettingsChanged, this, &SphereView::scheduleRecompute);
     connect(&document_, &model::Document::sceneReset, this, [this] {
         endDrag();
-        curvesShown_ = false;
+        forgetCurves();
         scheduleRecompute();
     });
     connect(&document_, &model::Document::currentTimeChanged, this, [this] { update(); });
@@ -156,8 +155,7 @@ SphereView::SphereView(model::Document& document, Selection& selection, QWidget*
             return;
         shown = selection_.object();
         endDrag();
-        curvesShown_ = false;
-        update();
+        forgetCurves();
         scheduleRecompute();
     });
     scheduleRecompute();
@@ -276,6 +274,14 @@ void SphereView::recompute()
             },
             Qt::QueuedConnection);
     });
+}
+
+void SphereView::forgetCurves()
+{
+    // Another object's curves are not shown, not even until this one's arrive.
+    curves_ = {};
+    curvesShown_ = false;
+    update();
 }
 
 void SphereView::showCurves(SphereCurves curves)
@@ -554,7 +560,7 @@ void SphereView::drawTimeTicks(QPainter& painter, Side side) const
 {
     const model::Scene& scene = document_.scene();
     const double range = scene.endTime - scene.startTime;
-    if (curves_.motion.empty() || !(range > 0.0))
+    if (curves_.motion.empty() || !(range > 0.0) || !std::isfinite(range))
         return;
     const double labelStep = timeLabelStep(range);
     const double tickStep = range <= kLongestMinorTickedRange ? kMinorTickSeconds : 1.0;

@@ -27,8 +27,10 @@
 // Escape during a stroke or an erasing drag undoes what it did so far.
 //
 // The curves follow the selection, the track and the scene's range, recomputed at most every
-// kRecomputeMilliseconds on a job thread of the view's own: a screw track's motion takes long to build
-// (smoothness_panel.h), and a sketch being drawn changes the patterned strokes at every move.
+// kRecomputeMilliseconds on a job thread of the view's own. They are not cheap: the bundled spinning
+// top's (14 s at kSamplesPerSecond, with its fit and its patterned sketch) took 0.22 s in a Debug
+// build, the L-cycle's screw motion 0.04 s, and a screw track's motion grows with 2^levels
+// (smoothness_panel.h). A stroke being drawn asks again at every move.
 
 #include "app/selection.h"
 #include "app/sketch/direction_curves.h"
@@ -113,6 +115,7 @@ private:
     // Asks the job thread for the curves of the selection's track as it is now.
     void recompute();
     void showCurves(SphereCurves curves);
+    void forgetCurves();
 
     // Gestures.
     void beginStroke(const QPointF& position);
