@@ -76,6 +76,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(&document_, &model::Document::filePathChanged, this, &MainWindow::updateTitle);
     updateTitle();
     updateRecentFilesMenu();
+    fillSamplesMenu();
 }
 
 MainWindow::~MainWindow() = default;
@@ -273,13 +274,33 @@ bool MainWindow::openProject(const QString& path)
     return true;
 }
 
-void MainWindow::openBundledSample()
+void MainWindow::openSample(const QString& resourcePath)
 {
-    // The sample is compiled in; failing to read it is a broken build, not a user error.
-    document_.loadAsUntitled(QStringLiteral(":/samples/l-cycle.gyre"));
-    // Its first control pose selected, so the inspector and the pose's handles show at once.
+    document_.loadAsUntitled(resourcePath);
+    // Its first key selected, so the inspector and the pose's handles show at once.
     selection_.selectKey(selection_.object(), 0);
     playback_.play();
+}
+
+void MainWindow::openBundledSample()
+{
+    openSample(QStringLiteral(":/samples/l-cycle.gyre"));
+}
+
+void MainWindow::fillSamplesMenu()
+{
+    const std::pair<QString, QString> samples[] = {
+        {tr("L-shaped cycle (ScrewBender)"), QStringLiteral(":/samples/l-cycle.gyre")},
+        {tr("Spinning top (sketched angular velocity)"), QStringLiteral(":/samples/spinning-top.gyre")},
+    };
+    for (const auto& [title, path] : samples) {
+        QAction* action = ui_->menuOpenSample->addAction(title);
+        action->setObjectName(QFileInfo(path).baseName());
+        connect(action, &QAction::triggered, this, [this, path] {
+            if (maybeSave())
+                openSample(path);
+        });
+    }
 }
 
 bool MainWindow::save()

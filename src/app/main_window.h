@@ -45,8 +45,11 @@ public:
     // into the current project. What the command line and dropped files go through.
     void openFile(const QString& path);
 
-    // Opens the bundled sample, the L-shaped cycle of the ScrewBender paper, as an untitled project, so
-    // that a newcomer sees a moving object at once.
+    // Opens a sample bundled in the resources (":/samples/...") as an untitled project, its first key
+    // selected, playing. The samples are compiled in: failing to read one is a broken build.
+    void openSample(const QString& resourcePath);
+    // Opens the first sample, the L-shaped cycle of the ScrewBender paper, so that a newcomer sees a
+    // moving object at once.
     void openBundledSample();
     // Offers to recover the work of a session that crashed, then autosaves this session's unsaved
     // work. Returns whether work was recovered into the document.
@@ -76,6 +79,7 @@ private:
     bool maybeSave();
     void addRecentFile(const QString& path);
     void updateRecentFilesMenu();
+    void fillSamplesMenu();
     void showAbout();
 
     std::unique_ptr<Ui::MainWindow> ui_;

@@ -9,6 +9,8 @@
 #include "core/screw.h"
 #include "core/subdivision.h"
 #include "fit/angular_velocity_fit.h"
+#include "jobs/sketch_fit.h"
+#include "samples/sample_scenes.h"
 #include "fit_test_support.h"
 
 #include "io/bvh_fixture.h"
@@ -196,6 +198,24 @@ void BM_Fit(benchmark::State& state)
     state.counters["largest_F_n"] = result.largestFragmentError;
 }
 BENCHMARK(BM_Fit)->Arg(20)->Arg(85)->Unit(benchmark::kMillisecond);
+
+// What the app's Fit button does on the bundled spinning top, between the click and the result: the
+// sketch turned into the fit's problem, then the fit.
+void BM_FitSpinningTopSample(benchmark::State& state)
+{
+    const gyre::model::MotionTrack track = gyre::samples::spinningTop().scene.objects.front().track;
+    gyre::fit::FitResult result;
+    for (auto _ : state) {
+        const gyre::jobs::SketchFitProblem problem = gyre::jobs::sketchFitProblem(track);
+        result = gyre::fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
+        benchmark::DoNotOptimize(result.controlPoints.data());
+    }
+    state.counters["rounds"] = result.rounds;
+    state.counters["iterations"] = result.iterations;
+    state.counters["variable_frames"] = result.variableFrames;
+    state.counters["largest_F_n"] = result.largestFragmentError;
+}
+BENCHMARK(BM_FitSpinningTopSample)->Unit(benchmark::kMillisecond);
 
 // A motion-capture file the size of CMU's 01_03.bvh: 31 joints, 4500 frames at 120 Hz, 139,500
 // rotation keys. Written once, into a folder removed at exit.
