@@ -250,30 +250,22 @@ void SphereView::scheduleRecompute()
 
 void SphereView::recompute()
 {
-    const std::uint64_t request = ++latestRequest_;
     const model::SceneObject* object = selection_.selectedObject();
     if (object == nullptr) {
+        sampler_.cancel();
         showCurves({});
         return;
     }
     const model::Scene& scene = document_.scene();
-    // The work has copies of what it reads; `this` is only the receiver of the queued result.
-    sampler_.post([this, request, track = object->track, start = scene.startTime,
-                   end = scene.endTime](const std::atomic<bool>&) {
-        SphereCurves curves;
-        try {
-            curves = sphereCurves(track, start, end);
-        } catch (const std::invalid_argument&) {
-            // A subdivision too large to hold (track_evaluation.h): no curves to show.
-        }
-        QMetaObject::invokeMethod(
-            this,
-            [this, request, curves = std::move(curves)]() mutable {
-                if (request == latestRequest_)
-                    showCurves(std::move(curves));
-            },
-            Qt::QueuedConnection);
-    });
+    sampler_.post<SphereCurves>(
+        [track = object->track, start = scene.startTime, end = scene.endTime] {
+            try {
+                return sphereCurves(track, start, end);
+            } catch (const std::invalid_argument&) {
+                return SphereCurves{}; // a subdivision too large to hold (track_evaluation.h): no curves
+            }
+        },
+        [this](SphereCurves curves) { showCurves(std::move(curves)); });
 }
 
 void SphereView::forgetCurves()

@@ -32,11 +32,11 @@
 // build, the L-cycle's screw motion 0.04 s, and a screw track's motion grows with 2^levels
 // (smoothness_panel.h). A stroke being drawn asks again at every move.
 
+#include "app/latest_result_job.h"
 #include "app/selection.h"
 #include "app/sketch/direction_curves.h"
 #include "app/sketch/sphere_projection.h"
 #include "app/undo_gesture.h"
-#include "jobs/job_thread.h"
 #include "model/document.h"
 
 #include <Eigen/Core>
@@ -160,9 +160,7 @@ private:
     std::optional<UndoGesture> gesture_;
 
     QTimer recomputeTimer_;
-    // The number of the latest request; a result that answers an older one is dropped.
-    std::uint64_t latestRequest_ = 0;
-    jobs::JobThread sampler_; // last: joined before the members its work uses are destroyed
+    LatestResultJob sampler_{*this}; // last: joined before the members its work uses are destroyed
 };
 
 } // namespace gyre::app
