@@ -2,6 +2,11 @@
 
 #include "app/inspector_widget.h"
 #include "app/screwbender_panel.h"
+#include "app/sketch/direction_sketch_panel.h"
+#include "app/sketch/fit_controller.h"
+#include "app/sketch/fit_panel.h"
+#include "app/sketch/fit_progress.h"
+#include "app/sketch/magnitude_plot.h"
 #include "app/smoothness_panel.h"
 #include "app/time_bar.h"
 #include "app/timeline_widget.h"
@@ -145,7 +150,7 @@ void MainWindow::setUpDocks()
     ui_->historyDockLayout->addWidget(history);
     ui_->historyDock->hide();
     for (QDockWidget* dock : {ui_->inspectorDock, ui_->screwBenderDock, ui_->historyDock, ui_->timelineDock,
-                              ui_->smoothnessDock})
+                              ui_->smoothnessDock, ui_->sphereDock, ui_->fitDock, ui_->magnitudeDock})
         ui_->menuPanels->addAction(dock->toggleViewAction());
     // The history dock has its own action in the Edit menu, kept in step with the dock.
     connect(ui_->actionUndoHistory, &QAction::toggled, ui_->historyDock, &QDockWidget::setVisible);
@@ -154,7 +159,11 @@ void MainWindow::setUpDocks()
     // inspector, leaving the bottom to the timeline.
     tabifyDockWidget(ui_->inspectorDock, ui_->smoothnessDock);
     tabifyDockWidget(ui_->inspectorDock, ui_->historyDock);
+    // The fit's settings are as tall as the inspector, and the sphere on the left needs that height.
+    tabifyDockWidget(ui_->inspectorDock, ui_->fitDock);
     ui_->inspectorDock->raise();
+    // The speed plot shares the timeline's time axis: above it, as wide as the window.
+    splitDockWidget(ui_->magnitudeDock, ui_->timelineDock, Qt::Vertical);
 }
 
 void MainWindow::createViews()
@@ -164,7 +173,30 @@ void MainWindow::createViews()
     ui_->timelineDockLayout->addWidget(new TimeBar(document_, ui_->timelineDockContents));
     ui_->timelineDockLayout->addWidget(new TimelineWidget(document_, selection_, playback_, ui_->timelineDockContents), 1);
     ui_->smoothnessDockLayout->addWidget(new SmoothnessPanel(document_, selection_, ui_->smoothnessDockContents));
+    ui_->magnitudeDockLayout->addWidget(new MagnitudePlot(document_, selection_, ui_->magnitudeDockContents));
+    createFitViews();
     createViewport();
+    createSphereView();
+}
+
+void MainWindow::createSphereView()
+{
+    if (Viewport::isSupported()) {
+        ui_->sphereDockLayout->addWidget(new DirectionSketchPanel(document_, selection_, ui_->sphereDockContents));
+        return;
+    }
+    auto* missing = new QLabel(tr("Drawing the direction on the sphere needs OpenGL 3.3, which this display does "
+                                  "not offer. The speed plot and the fit work without it."),
+                               ui_->sphereDockContents);
+    missing->setWordWrap(true);
+    ui_->sphereDockLayout->addWidget(missing);
+}
+
+void MainWindow::createFitViews()
+{
+    fitController_ = new FitController(document_, selection_, this);
+    ui_->fitDockLayout->addWidget(new FitPanel(document_, selection_, *fitController_, ui_->fitDockContents));
+    statusBar()->addPermanentWidget(new FitProgress(*fitController_, *statusBar(), statusBar()));
 }
 
 void MainWindow::createViewport()
@@ -193,6 +225,8 @@ void MainWindow::createViewport()
     connect(ui_->actionShowControlPoses, &QAction::toggled, viewport_, &Viewport::setShowControlPoses);
     connect(ui_->actionShowTrail, &QAction::toggled, viewport_, &Viewport::setShowTrail);
     connect(ui_->actionFrameAll, &QAction::triggered, viewport_, &Viewport::frameScene);
+    // A live fit's motion follows the pen while a stroke is drawn.
+    connect(fitController_, &FitController::previewChanged, viewport_, &Viewport::setPreviewTrack);
 
     auto* frameStats = new QLabel(statusBar());
     frameStats->setToolTip(tr("Viewport frame rate while drawing, and the time to subdivide the trail: "
@@ -218,7 +252,8 @@ void MainWindow::restoreLayout()
     QTimer::singleShot(0, this, [this] {
         resizeDocks({ui_->inspectorDock}, {420}, Qt::Horizontal);
         resizeDocks({ui_->inspectorDock, ui_->screwBenderDock}, {560, 300}, Qt::Vertical);
-        resizeDocks({ui_->timelineDock}, {130}, Qt::Vertical);
+        resizeDocks({ui_->timelineDock, ui_->magnitudeDock}, {130, 220}, Qt::Vertical);
+        resizeDocks({ui_->sphereDock}, {380}, Qt::Horizontal);
     });
 }
 

@@ -21,6 +21,7 @@ class MainWindow;
 
 namespace gyre::app {
 
+class FitController;
 class Viewport;
 
 class MainWindow : public QMainWindow {
@@ -64,6 +65,10 @@ private:
     void setUpActions();
     void setUpDocks();
     void createViews();
+    // The sphere to draw the angular velocity's direction on, or a note saying why there is none.
+    void createSphereView();
+    // The fit panel, and the fit's progress in the status bar, sharing one controller.
+    void createFitViews();
     // The 3D viewport in the middle, or a note saying why there is none.
     void createViewport();
     void restoreLayout();
@@ -88,6 +93,7 @@ private:
     Playback playback_;
     SceneFileActions* sceneFiles_ = nullptr;
     std::unique_ptr<model::Autosave> autosave_;
+    FitController* fitController_ = nullptr; // a child of the window, shared by the fit panel and status bar
     Viewport* viewport_ = nullptr; // owned by the central widget
 };
 

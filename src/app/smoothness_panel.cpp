@@ -218,30 +218,22 @@ void SmoothnessPanel::scheduleRecompute()
 
 void SmoothnessPanel::recompute()
 {
-    const std::uint64_t request = ++latestRequest_;
     const model::SceneObject* object = selection_.selectedObject();
     if (object == nullptr) {
+        sampler_.cancel();
         showTrajectory({});
         return;
     }
     const model::Scene& scene = document_.scene();
-    // The work has copies of what it reads; `this` is only the receiver of the queued result.
-    sampler_.post([this, request, track = object->track, localPoint = point(), start = scene.startTime,
-                   end = scene.endTime](const std::atomic<bool>&) {
-        model::PointTrajectory trajectory;
-        try {
-            trajectory = model::samplePointTrajectory(track, localPoint, start, end, kSampleCount);
-        } catch (const std::invalid_argument&) {
-            // A subdivision too large to hold (track_evaluation.h): no curves to show.
-        }
-        QMetaObject::invokeMethod(
-            this,
-            [this, request, trajectory = std::move(trajectory)] {
-                if (request == latestRequest_)
-                    showTrajectory(trajectory);
-            },
-            Qt::QueuedConnection);
-    });
+    sampler_.post<model::PointTrajectory>(
+        [track = object->track, localPoint = point(), start = scene.startTime, end = scene.endTime] {
+            try {
+                return model::samplePointTrajectory(track, localPoint, start, end, kSampleCount);
+            } catch (const std::invalid_argument&) {
+                return model::PointTrajectory{}; // a subdivision too large to hold (track_evaluation.h)
+            }
+        },
+        [this](const model::PointTrajectory& trajectory) { showTrajectory(trajectory); });
 }
 
 void SmoothnessPanel::showTrajectory(const model::PointTrajectory& trajectory)

@@ -13,7 +13,7 @@
 
 #include "model/point_trajectory.h"
 #include "app/selection.h"
-#include "jobs/job_thread.h"
+#include "app/latest_result_job.h"
 #include "model/document.h"
 
 #include <Eigen/Core>
@@ -78,8 +78,7 @@ private:
     QTimer recomputeTimer_;
     // The number of the latest request; a result that answers an older one is dropped, as a newer
     // one is on its way.
-    std::uint64_t latestRequest_ = 0;
-    jobs::JobThread sampler_; // last: joined before the members its work uses are destroyed
+    LatestResultJob sampler_{*this}; // last: joined before the members its work uses are destroyed
 };
 
 } // namespace gyre::app

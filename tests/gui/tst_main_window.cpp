@@ -12,6 +12,7 @@
 #include <QAbstractButton>
 #include <QAction>
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QMenu>
 #include <QMessageBox>
@@ -106,6 +107,38 @@ private slots:
         QVERIFY(document.filePath().isEmpty());
         QVERIFY(!document.isModified());
         QCOMPARE(sample.window.selection().key(), std::optional<std::size_t>(0));
+    }
+
+    // The sketch panels live in the window: the spinning top's sketch fits from the Fit dock's button,
+    // with progress in the status bar, as one undo step the viewport's motion follows.
+    void fitsTheSpinningTopSampleFromTheFitDock()
+    {
+        app::MainWindow window;
+        window.show();
+        window.openSample(QStringLiteral(":/samples/spinning-top.gyre"));
+        window.playback().pause();
+        for (const char* dock : {"sphereDock", "magnitudeDock", "fitDock"})
+            QVERIFY(window.findChild<QDockWidget*>(QLatin1String(dock)) != nullptr);
+        auto* fit = window.findChild<QAbstractButton*>(QStringLiteral("fitButton"));
+        QVERIFY(fit != nullptr && fit->isEnabled());
+        const model::ObjectId top = firstObject(window);
+        const model::MotionTrack before = window.document().object(top)->track;
+        QVERIFY(before.sketch.fittedCurve.empty());
+
+        QElapsedTimer clock;
+        clock.start();
+        fit->click();
+        QTRY_COMPARE_WITH_TIMEOUT(window.document().undoStack().count(), 1, 60000);
+        qInfo("Fit of the spinning-top sample, from the click to the applied step: %lld ms",
+              static_cast<long long>(clock.elapsed()));
+        QCOMPARE(window.document().undoStack().text(0), QStringLiteral("Apply angular velocity fit"));
+        const model::MotionTrack& after = window.document().object(top)->track;
+        QVERIFY(!after.sketch.fittedCurve.empty());
+        for (std::size_t i = 0; i < before.keys.size(); ++i)
+            if (before.keys[i].constrained)
+                QVERIFY(after.keys[i].pose.orientation.coeffs() == before.keys[i].pose.orientation.coeffs());
+        window.document().undoStack().undo();
+        QVERIFY(window.document().object(top)->track.sketch.fittedCurve.empty());
     }
 
     void anEditMarksTheTitleAndUndoClearsTheMark()

@@ -30,12 +30,6 @@ std::optional<std::pair<double, double>> keySpan(const model::MotionTrack& track
 
 } // namespace
 
-FitPanel::FitPanel(model::Document& document, Selection& selection, QWidget* parent)
-    : FitPanel(document, selection, *new FitController(document, selection), parent)
-{
-    controller_.setParent(this);
-}
-
 FitPanel::FitPanel(model::Document& document, Selection& selection, FitController& controller, QWidget* parent)
     : QWidget(parent)
     , ui_(std::make_unique<Ui::FitPanel>())

@@ -31,8 +31,6 @@ class FitPanel : public QWidget {
     Q_OBJECT
 
 public:
-    // With a controller of the panel's own, for a window that shows no fit progress elsewhere.
-    FitPanel(model::Document& document, Selection& selection, QWidget* parent = nullptr);
     // With `controller`, shared with the status bar's FitProgress.
     FitPanel(model::Document& document, Selection& selection, FitController& controller, QWidget* parent = nullptr);
     ~FitPanel() override;

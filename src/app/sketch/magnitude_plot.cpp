@@ -378,30 +378,22 @@ void MagnitudePlot::scheduleRecompute()
 
 void MagnitudePlot::recompute()
 {
-    const std::uint64_t request = ++latestRequest_;
     const model::SceneObject* object = selection_.selectedObject();
     if (object == nullptr) {
+        sampler_.cancel();
         showCurves({});
         return;
     }
     const model::Scene& scene = document_.scene();
-    // The work has copies of what it reads; `this` is only the receiver of the queued result.
-    sampler_.post([this, request, track = object->track, start = scene.startTime,
-                   end = scene.endTime](const std::atomic<bool>&) {
-        SampledCurves curves;
-        try {
-            curves = sampleTrack(track, start, end);
-        } catch (const std::invalid_argument&) {
-            // A subdivision too large to hold (track_evaluation.h): no curves to show.
-        }
-        QMetaObject::invokeMethod(
-            this,
-            [this, request, curves = std::move(curves)] {
-                if (request == latestRequest_)
-                    showCurves(curves);
-            },
-            Qt::QueuedConnection);
-    });
+    sampler_.post<SampledCurves>(
+        [track = object->track, start = scene.startTime, end = scene.endTime] {
+            try {
+                return sampleTrack(track, start, end);
+            } catch (const std::invalid_argument&) {
+                return SampledCurves{}; // a subdivision too large to hold (track_evaluation.h)
+            }
+        },
+        [this](const SampledCurves& curves) { showCurves(curves); });
 }
 
 void MagnitudePlot::showCurves(const SampledCurves& curves)

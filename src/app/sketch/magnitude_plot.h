@@ -25,7 +25,7 @@
 
 #include "app/selection.h"
 #include "app/undo_gesture.h"
-#include "jobs/job_thread.h"
+#include "app/latest_result_job.h"
 #include "model/document.h"
 
 #include <QPointF>
@@ -170,8 +170,7 @@ private:
 
     QTimer recomputeTimer_;
     // The number of the latest request; a result that answers an older one is dropped.
-    std::uint64_t latestRequest_ = 0;
-    jobs::JobThread sampler_; // last: joined before the members its work uses are destroyed
+    LatestResultJob sampler_{*this}; // last: joined before the members its work uses are destroyed
 };
 
 } // namespace gyre::app

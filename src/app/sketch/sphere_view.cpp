@@ -184,9 +184,9 @@ void SphereView::createActions()
     drawAction_->setChecked(true);
 
     resetViewAction_ = new QAction(tr("Reset View"), this);
-    resetViewAction_->setShortcut(Qt::Key_Home);
+    resetViewAction_->setShortcut(Qt::Key_R); // Home frames the 3D view, window-wide
     resetViewAction_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    resetViewAction_->setToolTip(tr("Turn the sphere back to its first view, z up (Home)"));
+    resetViewAction_->setToolTip(tr("Turn the sphere back to its first view, z up (R)"));
     addAction(resetViewAction_);
     connect(resetViewAction_, &QAction::triggered, this, [this] {
         projection_.setRotation(SphereProjection::defaultRotation());

@@ -75,7 +75,7 @@ public:
     QAction* drawAction() const { return drawAction_; }
     QAction* eraseAction() const { return eraseAction_; }
     QAction* patternAction() const { return patternAction_; }
-    // Turns the sphere back to its first view; shortcut Home.
+    // Turns the sphere back to its first view; shortcut R.
     QAction* resetViewAction() const { return resetViewAction_; }
 
     // Where a point of the sphere is drawn, in widget pixels; facesViewer says whether it is in front.

@@ -320,10 +320,17 @@ void Viewport::receiveMotion(std::uint64_t generation, std::shared_ptr<const Sce
     update();
 }
 
+// The trail and the control poses belong to ScrewBender's editing. Another track's keys may all sit
+// in one place (a spinning top's 85 keys at its tip), where they would only hide the object.
+bool Viewport::isScrewBenderTrack(const model::SceneObject* object)
+{
+    return object != nullptr && !object->track.keys.empty() && object->track.interpolation == InterpolationMethod::Screw;
+}
+
 void Viewport::requestTrail()
 {
     const model::SceneObject* object = selection_.selectedObject();
-    if (object == nullptr || object->track.keys.empty()) {
+    if (!isScrewBenderTrack(object)) {
         subdivision_.cancel();
         trailPoseCount_ = 0;
         trailMatrices_.clear();
@@ -334,7 +341,6 @@ void Viewport::requestTrail()
     controlPoses.reserve(object->track.keys.size());
     for (const model::Keyframe& key : object->track.keys)
         controlPoses.push_back(key.pose);
-    // Whatever the track's interpolation, the trail shows ScrewBender's subdivision of its keys.
     sinceTrailRequest_.start();
     subdivision_.request(std::move(controlPoses), object->track.subdivision);
 }
@@ -467,7 +473,7 @@ void Viewport::pickAt(const QPointF& position)
         keys.emplace_back();
     }
     const model::SceneObject* selected = selection_.selectedObject();
-    if (showControlPoses_ && selected != nullptr) {
+    if (showControlPoses_ && isScrewBenderTrack(selected)) {
         const Pose frame = sceneMotion.parentWorldPose(selected->id, scene.currentTime);
         for (std::size_t key = 0; key < selected->track.keys.size(); ++key) {
             placements.push_back({&meshOf(*selected), frame * selected->track.keys[key].pose, kControlPoseScale});
@@ -804,7 +810,7 @@ void Viewport::buildLines()
 
     first = static_cast<int>(lineVertices_.size());
     const model::SceneObject* selected = selection_.selectedObject();
-    if (showControlPoses_ && selected != nullptr) {
+    if (showControlPoses_ && isScrewBenderTrack(selected)) {
         const auto found = gpuMeshes_.find(&meshOf(*selected));
         const double axisLength = kControlPoseScale * (found != gpuMeshes_.end() ? double(found->second.radius) : 1.0);
         const Pose frame = motion().parentWorldPose(selected->id, document_.scene().currentTime);
@@ -955,7 +961,7 @@ void Viewport::paintGL()
         glDisable(GL_POLYGON_OFFSET_FILL);
         drawnTrailInstances_ = trailPoseCount_;
     }
-    if (showControlPoses_ && selected != nullptr && !selected->track.keys.empty()) {
+    if (showControlPoses_ && isScrewBenderTrack(selected)) {
         uploadControlPoses(*selected);
         setColors(kControlPoseColor, kControlPoseColor);
         meshProgram_->setUniformValue("uHighlightInstance", selection_.key() ? static_cast<int>(*selection_.key()) : -1);

@@ -153,6 +153,7 @@ private:
     void rebuildMotionInBackground();
     void receiveMotion(std::uint64_t generation, std::shared_ptr<const SceneMotion> motion);
     void requestTrail();
+    static bool isScrewBenderTrack(const model::SceneObject* object);
     void receiveTrail(std::uint64_t generation, const std::vector<Pose>& poses, qint64 nanoseconds);
     const SceneMotion& motion() const { return *motion_; }
 
