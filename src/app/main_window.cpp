@@ -28,6 +28,8 @@
 #include <QFileInfo>
 #include <QLabel>
 #include <QMessageBox>
+#include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStyle>
 #include <QTimer>
@@ -156,12 +158,14 @@ void MainWindow::setUpDocks()
     connect(ui_->actionUndoHistory, &QAction::toggled, ui_->historyDock, &QDockWidget::setVisible);
     connect(ui_->historyDock, &QDockWidget::visibilityChanged, ui_->actionUndoHistory, &QAction::setChecked);
     // Three smoothness plots need height more than width: they share the right side with the
-    // inspector, leaving the bottom to the timeline.
+    // inspector, leaving the bottom to the speed plot and the timeline.
     tabifyDockWidget(ui_->inspectorDock, ui_->smoothnessDock);
     tabifyDockWidget(ui_->inspectorDock, ui_->historyDock);
     // The fit's settings are as tall as the inspector, and the sphere on the left needs that height.
     tabifyDockWidget(ui_->inspectorDock, ui_->fitDock);
     ui_->inspectorDock->raise();
+    // The left column holds the motion's own tools: the sphere above ScrewBender's settings.
+    splitDockWidget(ui_->sphereDock, ui_->screwBenderDock, Qt::Vertical);
     // The speed plot shares the timeline's time axis: above it, as wide as the window.
     splitDockWidget(ui_->magnitudeDock, ui_->timelineDock, Qt::Vertical);
 }
@@ -195,7 +199,12 @@ void MainWindow::createSphereView()
 void MainWindow::createFitViews()
 {
     fitController_ = new FitController(document_, selection_, this);
-    ui_->fitDockLayout->addWidget(new FitPanel(document_, selection_, *fitController_, ui_->fitDockContents));
+    // Scrolled, like the inspector it shares its tabs with, so its height does not set the window's.
+    auto* scroll = new QScrollArea(ui_->fitDockContents);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(new FitPanel(document_, selection_, *fitController_, scroll));
+    ui_->fitDockLayout->addWidget(scroll);
     statusBar()->addPermanentWidget(new FitProgress(*fitController_, *statusBar(), statusBar()));
 }
 
@@ -244,16 +253,17 @@ void MainWindow::createViewport()
 void MainWindow::restoreLayout()
 {
     QSettings settings;
-    restoreGeometry(settings.value(kGeometryKey).toByteArray());
+    // The first start: most of the screen, since the viewport shares it with five panels.
+    if (!restoreGeometry(settings.value(kGeometryKey).toByteArray()) && screen() != nullptr)
+        resize(screen()->availableGeometry().size() * 0.9);
     if (restoreState(settings.value(kStateKey).toByteArray()))
         return;
     // The first start: most of the window for the viewport, panels at the sizes they need. Docks
     // take their sizes once the window is laid out, so this waits for the event loop.
     QTimer::singleShot(0, this, [this] {
-        resizeDocks({ui_->inspectorDock}, {420}, Qt::Horizontal);
-        resizeDocks({ui_->inspectorDock, ui_->screwBenderDock}, {560, 300}, Qt::Vertical);
+        resizeDocks({ui_->inspectorDock}, {400}, Qt::Horizontal);
         resizeDocks({ui_->timelineDock, ui_->magnitudeDock}, {130, 220}, Qt::Vertical);
-        resizeDocks({ui_->sphereDock}, {380}, Qt::Horizontal);
+        resizeDocks({ui_->sphereDock}, {340}, Qt::Horizontal);
     });
 }
 
