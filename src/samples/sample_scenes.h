@@ -21,6 +21,23 @@ struct SampleScene {
 // pattern asks the fit for the nutation of a top on rough ground.
 SampleScene spinningTop();
 
+// The sketch-editing paper's other Table 1 animations, each keyed by Hermite interpolation with a
+// sketch over part of it that asks the fit for a visible change (the artist presses Fit):
+// a letter M tumbling, its axis bent along a curve and its speed raised (Fig. 2; 240 frames, 49 keys);
+SampleScene letterM();
+// a hat tossed twice, flipping, its second flip leaning into a cartwheel (240 frames, 49 keys);
+SampleScene hat();
+// a leaf tumbling slowly down and sideways, a gust in the middle (800 frames, 81 keys);
+SampleScene fallingLeaf();
+// a pen spun and tossed, whirling faster at the top (121 frames, 25 keys; only the speed sketched).
+SampleScene pen();
+
+// ScrewBender's examples, cyclic screw tracks: the two-pose pendulum and the spinning block of its
+// Fig. 7, and a cycle that leaves the plane like the bunny of its Fig. 12.
+SampleScene pendulum();
+SampleScene spinningBlock();
+SampleScene critterCycle();
+
 std::vector<SampleScene> allSamples();
 
 } // namespace gyre::samples

@@ -3,6 +3,7 @@
 
 #include "jobs/sketch_fit.h"
 #include "model/project_file.h"
+#include "model/track_evaluation.h"
 #include "samples/sample_scenes.h"
 
 #include <QDir>
@@ -10,7 +11,10 @@
 #include <QObject>
 #include <QTest>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <numbers>
 
 using namespace gyre;
 
@@ -20,6 +24,10 @@ class TstSamples : public QObject {
 private slots:
     void bundledFilesAreWhatTheCodeMakes();
     void spinningTopIsTheTableOneTop();
+    void sketchSamplesHaveTheTableOneCounts_data();
+    void sketchSamplesHaveTheTableOneCounts();
+    void sketchedFitsConvergeAndKeepTheConstrainedKeys();
+    void screwSamplesAreScrewCycles();
     void meshNormalsPointOutOfTheirTriangles();
 };
 
@@ -48,6 +56,95 @@ void TstSamples::spinningTopIsTheTableOneTop()
     const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
     QVERIFY(problem.settings.window);
     QVERIFY(problem.settings.window->end > problem.settings.window->start);
+}
+
+void TstSamples::sketchSamplesHaveTheTableOneCounts_data()
+{
+    QTest::addColumn<int>("sample");
+    QTest::addColumn<long>("frames");
+    QTest::addColumn<int>("keys");
+    QTest::newRow("letter M") << 0 << 240L << 49;
+    QTest::newRow("hat") << 1 << 240L << 49;
+    QTest::newRow("leaves") << 2 << 800L << 81;
+    QTest::newRow("pen") << 3 << 121L << 25;
+}
+
+// The paper's Table 1 counts at 30 fps, Hermite keys, and a sketch the fit can take.
+void TstSamples::sketchSamplesHaveTheTableOneCounts()
+{
+    QFETCH(int, sample);
+    QFETCH(long, frames);
+    QFETCH(int, keys);
+    const std::array makers{samples::letterM, samples::hat, samples::fallingLeaf, samples::pen};
+    const model::Scene scene = makers.at(static_cast<std::size_t>(sample))().scene;
+    QCOMPARE(scene.fps, 30.0);
+    QCOMPARE(std::lround((scene.endTime - scene.startTime) * scene.fps), frames);
+    QCOMPARE(scene.objects.size(), std::size_t(1));
+    const model::MotionTrack& track = scene.objects[0].track;
+    QCOMPARE(track.keys.size(), static_cast<std::size_t>(keys));
+    QCOMPARE(track.interpolation, InterpolationMethod::Hermite);
+    QVERIFY(!track.sketch.directionStrokes.empty() || !track.sketch.magnitude.empty());
+    QVERIFY(track.sketch.fittedCurve.empty());
+    QVERIFY(jobs::editWindow(track));
+}
+
+// Every sketched sample's fit converges at its δ, keeps its constrained keys, and changes the motion
+// visibly: somewhere in the window the fitted orientation is more than 3° from the keyed one (the top's wobble is about 4°).
+void TstSamples::sketchedFitsConvergeAndKeepTheConstrainedKeys()
+{
+    int sketched = 0;
+    for (const samples::SampleScene& sample : samples::allSamples()) {
+        const model::MotionTrack& track = sample.scene.objects[0].track;
+        if (track.interpolation != InterpolationMethod::Hermite)
+            continue;
+        ++sketched;
+        const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
+        const fit::FitResult result = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
+        QVERIFY2(result.outcome == fit::FitOutcome::Converged,
+                 qPrintable(sample.fileName + QStringLiteral(": ") +
+                            QString::fromUtf8(nameOf(fit::kFitOutcomeNames, result.outcome)) +
+                            QStringLiteral(", largest fragment error %1").arg(result.largestFragmentError)));
+        QCOMPARE(result.keys.size(), problem.keys.size());
+        for (std::size_t i = 0; i < problem.keys.size(); ++i)
+            if (problem.keys[i].constrained)
+                QVERIFY(result.keys[i].rotation.coeffs() == problem.keys[i].rotation.coeffs());
+
+        const fit::FittedMotion fitted(problem.keys, result);
+        const model::TrackMotion keyed(track);
+        double largestChange = 0.0;
+        for (double time = result.window.start; time <= result.window.end; time += 0.05)
+            largestChange = std::max(largestChange,
+                                     fitted.sample(time).value.angularDistance(keyed.at(time).orientation));
+        QVERIFY2(largestChange > 3.0 * std::numbers::pi / 180.0, qPrintable(sample.fileName));
+    }
+    QCOMPARE(sketched, 5);
+}
+
+// ScrewBender's samples: cyclic screw tracks with their figure's scheme and number of control poses.
+void TstSamples::screwSamplesAreScrewCycles()
+{
+    const struct {
+        samples::SampleScene sample;
+        SubdivisionScheme scheme;
+        std::size_t controlPoses;
+    } expected[] = {
+        {samples::pendulum(), SubdivisionScheme::FourPoint, 2},
+        {samples::spinningBlock(), SubdivisionScheme::BSpline, 4},
+        {samples::critterCycle(), SubdivisionScheme::FourPoint, 6},
+    };
+    for (const auto& [sample, scheme, controlPoses] : expected) {
+        const model::MotionTrack& track = model::readProject(QDir(QStringLiteral(GYRE_SAMPLES_DIR)).filePath(sample.fileName))
+                                              .objects.at(0)
+                                              .track;
+        QCOMPARE(track.interpolation, InterpolationMethod::Screw);
+        QVERIFY(track.subdivision.cyclic);
+        QCOMPARE(track.subdivision.scheme, scheme);
+        QVERIFY(track.subdivision.levels >= 3);
+        QCOMPARE(track.keys.size(), controlPoses);
+    }
+    // The critter's cycle leaves the plane: its control positions are not all at one height.
+    const std::vector<model::Keyframe>& keys = samples::critterCycle().scene.objects[0].track.keys;
+    QVERIFY(std::abs(keys[0].pose.position.z() - keys[1].pose.position.z()) > 0.5);
 }
 
 void TstSamples::meshNormalsPointOutOfTheirTriangles()
