@@ -337,6 +337,13 @@ void MainWindow::fillSamplesMenu()
     const std::pair<QString, QString> samples[] = {
         {tr("L-shaped cycle (ScrewBender)"), QStringLiteral(":/samples/l-cycle.gyre")},
         {tr("Spinning top (sketched angular velocity)"), QStringLiteral(":/samples/spinning-top.gyre")},
+        {tr("Letter M (sketched angular velocity)"), QStringLiteral(":/samples/letter-m.gyre")},
+        {tr("Hat (sketched angular velocity)"), QStringLiteral(":/samples/hat.gyre")},
+        {tr("Falling leaf (sketched angular velocity)"), QStringLiteral(":/samples/falling-leaf.gyre")},
+        {tr("Pen (sketched angular speed)"), QStringLiteral(":/samples/pen.gyre")},
+        {tr("Pendulum (ScrewBender)"), QStringLiteral(":/samples/pendulum.gyre")},
+        {tr("Spinning block (ScrewBender)"), QStringLiteral(":/samples/spinning-block.gyre")},
+        {tr("Critter's non-planar cycle (ScrewBender)"), QStringLiteral(":/samples/critter-cycle.gyre")},
     };
     for (const auto& [title, path] : samples) {
         QAction* action = ui_->menuOpenSample->addAction(title);

@@ -7,13 +7,16 @@
 #include "io/bvh_fixture.h"
 #include "io/scene_export.h"
 #include "model/commands/set_keyframe_position_command.h"
+#include "model/project_file.h"
 #include "model/track_evaluation.h"
 
 #include <QAbstractButton>
 #include <QAction>
+#include <QDir>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
@@ -109,6 +112,26 @@ private slots:
         QVERIFY(document.filePath().isEmpty());
         QVERIFY(!document.isModified());
         QCOMPARE(sample.window.selection().key(), std::optional<std::size_t>(0));
+    }
+
+    // Every project bundled in :/samples has its entry in File ▸ Open Sample, named after the file,
+    // and the entry opens that project untitled.
+    void everyBundledSampleHasAMenuEntryThatOpensIt()
+    {
+        SampleWindow sample;
+        const QStringList files = QDir(QStringLiteral(":/samples")).entryList({QStringLiteral("*.gyre")});
+        QCOMPARE(files.size(), 9);
+        for (const QString& file : files) {
+            const QString resourcePath = QStringLiteral(":/samples/") + file;
+            action(sample.window, qPrintable(QFileInfo(file).baseName()))->trigger();
+            const model::Document& document = sample.window.document();
+            const model::Scene bundled = model::readProject(resourcePath);
+            QCOMPARE(document.scene().objects.size(), bundled.objects.size());
+            QCOMPARE(document.scene().objects.front().name, bundled.objects.front().name);
+            QCOMPARE(document.scene().objects.front().track.keys.size(), bundled.objects.front().track.keys.size());
+            QVERIFY(document.filePath().isEmpty());
+            QVERIFY(!document.isModified());
+        }
     }
 
     // The sketch panels live in the window: the spinning top's sketch fits from the Fit dock's button,
