@@ -133,9 +133,8 @@ void TstSamples::screwSamplesAreScrewCycles()
         {samples::critterCycle(), SubdivisionScheme::FourPoint, 6},
     };
     for (const auto& [sample, scheme, controlPoses] : expected) {
-        const model::MotionTrack& track = model::readProject(QDir(QStringLiteral(GYRE_SAMPLES_DIR)).filePath(sample.fileName))
-                                              .objects.at(0)
-                                              .track;
+        const model::Scene scene = model::readProject(QDir(QStringLiteral(GYRE_SAMPLES_DIR)).filePath(sample.fileName));
+        const model::MotionTrack& track = scene.objects.at(0).track;
         QCOMPARE(track.interpolation, InterpolationMethod::Screw);
         QVERIFY(track.subdivision.cyclic);
         QCOMPARE(track.subdivision.scheme, scheme);
@@ -143,7 +142,8 @@ void TstSamples::screwSamplesAreScrewCycles()
         QCOMPARE(track.keys.size(), controlPoses);
     }
     // The critter's cycle leaves the plane: its control positions are not all at one height.
-    const std::vector<model::Keyframe>& keys = samples::critterCycle().scene.objects[0].track.keys;
+    const samples::SampleScene critter = samples::critterCycle();
+    const std::vector<model::Keyframe>& keys = critter.scene.objects[0].track.keys;
     QVERIFY(std::abs(keys[0].pose.position.z() - keys[1].pose.position.z()) > 0.5);
 }
 
