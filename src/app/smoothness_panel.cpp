@@ -91,6 +91,14 @@ SmoothnessPanel::SmoothnessPanel(model::Document& document, Selection& selection
     , document_(document)
     , selection_(selection)
     , plot_(new QCustomPlot(this))
+    , sampler_(
+          *this, selection, document,
+          [this](const model::SceneObject& object, const model::Scene& scene) {
+              return [track = object.track, localPoint = point(), start = scene.startTime, end = scene.endTime] {
+                  return model::samplePointTrajectory(track, localPoint, start, end, kSampleCount);
+              };
+          },
+          [this](const model::PointTrajectory& trajectory) { showTrajectory(trajectory); })
 {
     auto* pointRow = new QHBoxLayout;
     pointRow->setContentsMargins(6, 2, 6, 2);
@@ -105,7 +113,7 @@ SmoothnessPanel::SmoothnessPanel(model::Document& document, Selection& selection
         box->setKeyboardTracking(false);
         box->setObjectName(QString::fromLatin1(kPointBoxNames[axis]));
         box->setToolTip(tr("The %1 coordinate of the plotted point, in the object's frame").arg(axisNames[axis]));
-        connect(box, &QDoubleSpinBox::valueChanged, this, &SmoothnessPanel::scheduleRecompute);
+        connect(box, &QDoubleSpinBox::valueChanged, this, [this] { sampler_.schedule(); });
         pointRow->addWidget(box);
         pointBoxes_[axis] = box;
     }
@@ -120,28 +128,25 @@ SmoothnessPanel::SmoothnessPanel(model::Document& document, Selection& selection
     plot_->setMinimumSize(kMinimumPlotWidth, kMinimumPlotHeight);
     setUpPlot();
 
-    recomputeTimer_.setSingleShot(true);
-    recomputeTimer_.setInterval(kRecomputeMilliseconds);
-    connect(&recomputeTimer_, &QTimer::timeout, this, &SmoothnessPanel::recompute);
     auto recomputeFor = [this](model::ObjectId id) {
         if (id == selection_.object())
-            scheduleRecompute();
+            sampler_.schedule();
     };
     connect(&document_, &model::Document::keyframesChanged, this, recomputeFor);
     connect(&document_, &model::Document::trackSettingsChanged, this, recomputeFor);
     // A fit changes the orientation between the keys.
     connect(&document_, &model::Document::sketchChanged, this, recomputeFor);
-    connect(&document_, &model::Document::sceneReset, this, &SmoothnessPanel::scheduleRecompute);
-    connect(&document_, &model::Document::sceneSettingsChanged, this, &SmoothnessPanel::scheduleRecompute);
+    connect(&document_, &model::Document::sceneReset, this, [this] { sampler_.schedule(); });
+    connect(&document_, &model::Document::sceneSettingsChanged, this, [this] { sampler_.schedule(); });
     connect(&document_, &model::Document::currentTimeChanged, this, &SmoothnessPanel::moveCursor);
     // Selecting another key of the same object leaves the curves as they are.
     connect(&selection_, &Selection::changed, this, [this, shown = selection.object()]() mutable {
         if (selection_.object() != shown) {
             shown = selection_.object();
-            scheduleRecompute();
+            sampler_.schedule();
         }
     });
-    scheduleRecompute();
+    sampler_.schedule();
 }
 
 Eigen::Vector3d SmoothnessPanel::point() const
@@ -206,34 +211,6 @@ void SmoothnessPanel::setUpPlot()
             end->setAxes(axisRects_[q]->axis(QCPAxis::atBottom), axisRects_[q]->axis(QCPAxis::atLeft));
         cursors_[q] = cursor;
     }
-}
-
-void SmoothnessPanel::scheduleRecompute()
-{
-    // Not restarted by later changes: during a drag the curves follow every kRecomputeMilliseconds
-    // instead of waiting for the drag to end.
-    if (!recomputeTimer_.isActive())
-        recomputeTimer_.start();
-}
-
-void SmoothnessPanel::recompute()
-{
-    const model::SceneObject* object = selection_.selectedObject();
-    if (object == nullptr) {
-        sampler_.cancel();
-        showTrajectory({});
-        return;
-    }
-    const model::Scene& scene = document_.scene();
-    sampler_.post<model::PointTrajectory>(
-        [track = object->track, localPoint = point(), start = scene.startTime, end = scene.endTime] {
-            try {
-                return model::samplePointTrajectory(track, localPoint, start, end, kSampleCount);
-            } catch (const std::invalid_argument&) {
-                return model::PointTrajectory{}; // a subdivision too large to hold (track_evaluation.h)
-            }
-        },
-        [this](const model::PointTrajectory& trajectory) { showTrajectory(trajectory); });
 }
 
 void SmoothnessPanel::showTrajectory(const model::PointTrajectory& trajectory)

@@ -6,14 +6,14 @@
 // only C⁰ or C¹. A vertical line marks the current time. Drag to pan, wheel to zoom.
 //
 // The curves follow the selection and the track's keys and settings, asked for at most every
-// kRecomputeMilliseconds while they change (a key being dragged changes them at every mouse move).
-// They are sampled on a job thread of the panel's own: 2000 samples of the bundled sample's screw
+// SelectedTrackSampler::kIntervalMilliseconds while they change (a dragged key changes them at every
+// mouse move). They are sampled on a job thread of the panel's own: 2000 samples of the bundled sample's screw
 // motion took 20–40 ms in a Debug build, and building a TrackMotion grows with 2^levels (0.2 s at 8
 // subdivision levels, seconds at 12 and more), far beyond what the UI thread can spare.
 
 #include "model/point_trajectory.h"
 #include "app/selection.h"
-#include "app/latest_result_job.h"
+#include "app/selected_track_sampler.h"
 #include "model/document.h"
 
 #include <Eigen/Core>
@@ -40,7 +40,6 @@ public:
     enum class Component { X, Y, Z, Magnitude };
     // Samples over the scene's range: smooth curves at any zoom a dock allows.
     static constexpr int kSampleCount = 2000;
-    static constexpr int kRecomputeMilliseconds = 50;
 
     SmoothnessPanel(model::Document& document, Selection& selection, QWidget* parent = nullptr);
 
@@ -59,9 +58,6 @@ private:
     static constexpr int kComponentCount = 4;
 
     void setUpPlot();
-    void scheduleRecompute();
-    // Asks the job thread for the curves of the selection, keys and point as they are now.
-    void recompute();
     void showTrajectory(const model::PointTrajectory& trajectory);
     void showTimeRange();
     void moveCursor();
@@ -75,10 +71,8 @@ private:
     std::array<QCPItemStraightLine*, kQuantityCount> cursors_{};
     // The scene's range the time axis was last set to, start and end in seconds.
     std::pair<double, double> shownSceneRange_{0.0, 0.0};
-    QTimer recomputeTimer_;
-    // The number of the latest request; a result that answers an older one is dropped, as a newer
-    // one is on its way.
-    LatestResultJob sampler_{*this}; // last: joined before the members its work uses are destroyed
+    // The curves of the selection, keys and point as they are at the newest request.
+    SelectedTrackSampler<model::PointTrajectory> sampler_; // last: joined before the members its work uses are destroyed
 };
 
 } // namespace gyre::app

@@ -137,6 +137,14 @@ MagnitudePlot::MagnitudePlot(model::Document& document, Selection& selection, QW
     , stack_(new QStackedLayout)
     , placeholder_(new QLabel(tr("Select an object to see and sketch the speed of its rotation."), this))
     , plot_(new QCustomPlot(this))
+    , sampler_(
+          *this, selection, document,
+          [](const model::SceneObject& object, const model::Scene& scene) {
+              return [track = object.track, start = scene.startTime, end = scene.endTime] {
+                  return sampleTrack(track, start, end);
+              };
+          },
+          [this](const SampledCurves& curves) { showCurves(curves); })
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -149,9 +157,6 @@ MagnitudePlot::MagnitudePlot(model::Document& document, Selection& selection, QW
     layout->addLayout(stack_, 1);
     setUpPlot();
 
-    recomputeTimer_.setSingleShot(true);
-    recomputeTimer_.setInterval(kRecomputeMilliseconds);
-    connect(&recomputeTimer_, &QTimer::timeout, this, &MagnitudePlot::recompute);
     followDocument();
     showSelection();
 }
@@ -313,17 +318,17 @@ void MagnitudePlot::followDocument()
     connect(&document_, &model::Document::sketchChanged, this, forSelected([this] {
                 showSketch();
                 showWindow();
-                scheduleRecompute(); // a fit changes the motion
+                sampler_.schedule(); // a fit changes the motion
             }));
     connect(&document_, &model::Document::keyframesChanged, this, forSelected([this] {
                 showWindow();
-                scheduleRecompute();
+                sampler_.schedule();
             }));
     connect(&document_, &model::Document::trackSettingsChanged, this,
-            forSelected([this] { scheduleRecompute(); }));
+            forSelected([this] { sampler_.schedule(); }));
     connect(&document_, &model::Document::sceneSettingsChanged, this, [this] {
         fitViewOnNextCurves_ = true;
-        scheduleRecompute();
+        sampler_.schedule();
     });
     connect(&document_, &model::Document::sceneReset, this, [this] {
         endGesture();
@@ -354,7 +359,7 @@ void MagnitudePlot::showSelection()
     showSketch();
     showWindow();
     moveCursor();
-    scheduleRecompute();
+    sampler_.schedule();
 }
 
 void MagnitudePlot::setTool(bool drawing)
@@ -367,33 +372,6 @@ void MagnitudePlot::setTool(bool drawing)
 void MagnitudePlot::showToolCursor()
 {
     plot_->setCursor(drawAction_->isChecked() ? Qt::CrossCursor : Qt::OpenHandCursor);
-}
-
-void MagnitudePlot::scheduleRecompute()
-{
-    // Not restarted by later changes: during a drag the curves follow every kRecomputeMilliseconds.
-    if (!recomputeTimer_.isActive())
-        recomputeTimer_.start();
-}
-
-void MagnitudePlot::recompute()
-{
-    const model::SceneObject* object = selection_.selectedObject();
-    if (object == nullptr) {
-        sampler_.cancel();
-        showCurves({});
-        return;
-    }
-    const model::Scene& scene = document_.scene();
-    sampler_.post<SampledCurves>(
-        [track = object->track, start = scene.startTime, end = scene.endTime] {
-            try {
-                return sampleTrack(track, start, end);
-            } catch (const std::invalid_argument&) {
-                return SampledCurves{}; // a subdivision too large to hold (track_evaluation.h)
-            }
-        },
-        [this](const SampledCurves& curves) { showCurves(curves); });
 }
 
 void MagnitudePlot::showCurves(const SampledCurves& curves)

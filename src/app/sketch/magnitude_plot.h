@@ -3,8 +3,8 @@
 // across over the scene's range, the angular speed |ω| up in rad/s (the right axis in °/s).
 //
 // - The current curve |ω(t)| of the track's motion, sampled on a job thread of the plot's own (a
-//   screw track with many subdivision levels is slow to build), at most every kRecomputeMilliseconds
-//   while the track changes; the keys on it, filled where constrained and hollow where the fit may
+//   screw track with many subdivision levels is slow to build), at most every
+//   SelectedTrackSampler::kIntervalMilliseconds while the track changes; the keys on it, filled where constrained and hollow where the fit may
 //   move them, as the timeline draws them.
 // - The current time as a vertical line.
 // - The edit window as a shaded band: the sketch's own window solid; the one the fit would take
@@ -25,7 +25,7 @@
 
 #include "app/selection.h"
 #include "app/undo_gesture.h"
-#include "app/latest_result_job.h"
+#include "app/selected_track_sampler.h"
 #include "model/document.h"
 
 #include <QPointF>
@@ -56,7 +56,6 @@ public:
     // Samples of the current curve over the scene's range, and of the fitted curves over the fit's span.
     static constexpr int kSampleCount = 2000;
     static constexpr int kFittedSampleCount = 600;
-    static constexpr int kRecomputeMilliseconds = 50;
     // The grip strip along the top of the window band, and how near an edge a press takes it, pixels.
     static constexpr int kGripHeight = 16;
     static constexpr int kEdgeReach = 5;
@@ -117,8 +116,6 @@ private:
 
     // Throws std::invalid_argument for a track TrackMotion refuses.
     static SampledCurves sampleTrack(const model::MotionTrack& track, double start, double end);
-    void scheduleRecompute();
-    void recompute();
     void showCurves(const SampledCurves& curves);
     void showSketch();
     void showKeys(const SampledCurves& curves);
@@ -168,9 +165,7 @@ private:
     std::optional<WindowDrag> windowDrag_;
     std::optional<Stroke> stroke_;
 
-    QTimer recomputeTimer_;
-    // The number of the latest request; a result that answers an older one is dropped.
-    LatestResultJob sampler_{*this}; // last: joined before the members its work uses are destroyed
+    SelectedTrackSampler<SampledCurves> sampler_; // last: joined before the members its work uses are destroyed
 };
 
 } // namespace gyre::app

@@ -119,6 +119,14 @@ SphereView::SphereView(model::Document& document, Selection& selection, QWidget*
     , document_(document)
     , selection_(selection)
     , toolGroup_(new QActionGroup(this))
+    , sampler_(
+          *this, selection, document,
+          [](const model::SceneObject& object, const model::Scene& scene) {
+              return [track = object.track, start = scene.startTime, end = scene.endTime] {
+                  return sphereCurves(track, start, end);
+              };
+          },
+          [this](const SphereCurves& curves) { showCurves(curves); })
 {
     // QPainter draws smooth lines on an OpenGL surface only with multisampling.
     QSurfaceFormat surface = format();
@@ -128,26 +136,23 @@ SphereView::SphereView(model::Document& document, Selection& selection, QWidget*
     setCursor(Qt::CrossCursor);
     createActions();
 
-    recomputeTimer_.setSingleShot(true);
-    recomputeTimer_.setInterval(kRecomputeMilliseconds);
-    connect(&recomputeTimer_, &QTimer::timeout, this, &SphereView::recompute);
     auto recomputeFor = [this](model::ObjectId id) {
         if (id == selection_.object())
-            scheduleRecompute();
+            sampler_.schedule();
     };
     connect(&document_, &model::Document::keyframesChanged, this, recomputeFor);
     connect(&document_, &model::Document::trackSettingsChanged, this, recomputeFor);
     connect(&document_, &model::Document::sketchChanged, this, [this](model::ObjectId id) {
         if (id == selection_.object()) {
             update(); // the strokes as drawn, at once; the patterned ones and a new fit follow
-            scheduleRecompute();
+            sampler_.schedule();
         }
     });
-    connect(&document_, &model::Document::sceneSettingsChanged, this, &SphereView::scheduleRecompute);
+    connect(&document_, &model::Document::sceneSettingsChanged, this, [this] { sampler_.schedule(); });
     connect(&document_, &model::Document::sceneReset, this, [this] {
         endDrag();
         forgetCurves();
-        scheduleRecompute();
+        sampler_.schedule();
     });
     connect(&document_, &model::Document::currentTimeChanged, this, [this] { update(); });
     connect(&selection_, &Selection::changed, this, [this, shown = selection.object()]() mutable {
@@ -156,9 +161,9 @@ SphereView::SphereView(model::Document& document, Selection& selection, QWidget*
         shown = selection_.object();
         endDrag();
         forgetCurves();
-        scheduleRecompute();
+        sampler_.schedule();
     });
-    scheduleRecompute();
+    sampler_.schedule();
 }
 
 SphereView::~SphereView() = default;
@@ -239,34 +244,6 @@ QString SphereView::message() const
 
 // ---------------------------------------------------------------------------------------------
 // Curves
-
-void SphereView::scheduleRecompute()
-{
-    // Not restarted by later changes: while a stroke is drawn the curves follow every
-    // kRecomputeMilliseconds instead of waiting for the pen to stop.
-    if (!recomputeTimer_.isActive())
-        recomputeTimer_.start();
-}
-
-void SphereView::recompute()
-{
-    const model::SceneObject* object = selection_.selectedObject();
-    if (object == nullptr) {
-        sampler_.cancel();
-        showCurves({});
-        return;
-    }
-    const model::Scene& scene = document_.scene();
-    sampler_.post<SphereCurves>(
-        [track = object->track, start = scene.startTime, end = scene.endTime] {
-            try {
-                return sphereCurves(track, start, end);
-            } catch (const std::invalid_argument&) {
-                return SphereCurves{}; // a subdivision too large to hold (track_evaluation.h): no curves
-            }
-        },
-        [this](SphereCurves curves) { showCurves(std::move(curves)); });
-}
 
 void SphereView::forgetCurves()
 {

@@ -27,12 +27,12 @@
 // Escape during a stroke or an erasing drag undoes what it did so far.
 //
 // The curves follow the selection, the track and the scene's range, recomputed at most every
-// kRecomputeMilliseconds on a job thread of the view's own. They are not cheap: the bundled spinning
-// top's (14 s at kSamplesPerSecond, with its fit and its patterned sketch) took 0.22 s in a Debug
+// SelectedTrackSampler::kIntervalMilliseconds on a job thread of the view's own. They are not
+// cheap: the bundled spinning top's (14 s at kSamplesPerSecond, with its fit and its patterned sketch) took 0.22 s in a Debug
 // build, the L-cycle's screw motion 0.04 s, and a screw track's motion grows with 2^levels
 // (smoothness_panel.h). A stroke being drawn asks again at every move.
 
-#include "app/latest_result_job.h"
+#include "app/selected_track_sampler.h"
 #include "app/selection.h"
 #include "app/sketch/direction_curves.h"
 #include "app/sketch/sphere_projection.h"
@@ -62,7 +62,6 @@ class SphereView final : public QOpenGLWidget {
 public:
     enum class Tool { Draw, Erase, Pattern };
 
-    static constexpr int kRecomputeMilliseconds = 50;
     static constexpr double kStrokeStepRadians = 0.008; // about half a degree
     static constexpr double kEraseRadiusPixels = 10.0;
 
@@ -85,7 +84,7 @@ public:
     double sphereRadius() const;
     // The point of the sphere's front under a widget point, as the pen draws it.
     Eigen::Vector3d sphereAt(const QPointF& widgetPoint) const;
-    // The curves drawn, as the latest recompute gave them.
+    // The curves drawn, as the newest sampling gave them.
     const SphereCurves& curves() const { return curves_; }
     // The line of text the view shows when there is nothing to sketch on, else empty.
     QString message() const;
@@ -111,9 +110,6 @@ private:
     enum class Side { Back, Front };
 
     void createActions();
-    void scheduleRecompute();
-    // Asks the job thread for the curves of the selection's track as it is now.
-    void recompute();
     void showCurves(SphereCurves curves);
     void forgetCurves();
 
@@ -159,8 +155,7 @@ private:
     std::optional<std::size_t> strokeIndex_; // of the stroke being drawn, once it is in the document
     std::optional<UndoGesture> gesture_;
 
-    QTimer recomputeTimer_;
-    LatestResultJob sampler_{*this}; // last: joined before the members its work uses are destroyed
+    SelectedTrackSampler<SphereCurves> sampler_; // last: joined before the members its work uses are destroyed
 };
 
 } // namespace gyre::app

@@ -1,0 +1,81 @@
+#pragma once
+// Curves of the selected object's motion for a view, sampled off the UI thread: building a track's
+// motion grows with 2^levels for a screw track, far beyond what the UI thread can spare. Requests are
+// coalesced to one every kIntervalMilliseconds; the timer is not restarted by later requests, so while
+// a key or a stroke is dragged the curves follow every interval instead of waiting for the drag to end.
+// Only the newest request's curves are shown (LatestResultJob).
+
+#include "app/latest_result_job.h"
+#include "app/selection.h"
+#include "model/document.h"
+
+#include <QObject>
+#include <QTimer>
+
+#include <functional>
+#include <stdexcept>
+#include <utility>
+
+namespace gyre::app {
+
+template <class Curves>
+class SelectedTrackSampler {
+public:
+    static constexpr int kIntervalMilliseconds = 50;
+
+    // Called on the UI thread with the selected object and the scene; returns the sampling to run on
+    // the job thread, holding copies of what it reads. The sampling may throw std::invalid_argument
+    // for a track too large to evaluate (track_evaluation.h): the view then shows no curves.
+    using MakeSampling = std::function<std::function<Curves()>(const model::SceneObject&, const model::Scene&)>;
+    using Show = std::function<void(const Curves&)>;
+
+    // `receiver` owns the sampler (it is a member), so the sampler outlives every call queued on it.
+    SelectedTrackSampler(QObject& receiver, const Selection& selection, const model::Document& document,
+                         MakeSampling makeSampling, Show show)
+        : selection_(selection)
+        , document_(document)
+        , makeSampling_(std::move(makeSampling))
+        , show_(std::move(show))
+        , job_(receiver)
+    {
+        timer_.setSingleShot(true);
+        timer_.setInterval(kIntervalMilliseconds);
+        QObject::connect(&timer_, &QTimer::timeout, &receiver, [this] { sampleNow(); });
+    }
+
+    // Samples the selected object's track within kIntervalMilliseconds.
+    void schedule()
+    {
+        if (!timer_.isActive())
+            timer_.start();
+    }
+
+private:
+    void sampleNow()
+    {
+        const model::SceneObject* object = selection_.selectedObject();
+        if (object == nullptr) {
+            job_.cancel();
+            show_(Curves{});
+            return;
+        }
+        job_.post<Curves>(
+            [sampling = makeSampling_(*object, document_.scene())] {
+                try {
+                    return sampling();
+                } catch (const std::invalid_argument&) {
+                    return Curves{};
+                }
+            },
+            show_);
+    }
+
+    const Selection& selection_;
+    const model::Document& document_;
+    MakeSampling makeSampling_;
+    Show show_;
+    QTimer timer_;
+    LatestResultJob job_; // last: joined before the members its work uses are destroyed
+};
+
+} // namespace gyre::app
