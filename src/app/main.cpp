@@ -1,5 +1,6 @@
 // gyre, the desktop application: opens the file named on the command line, or the bundled sample.
 
+#include "app/app_icon.h"
 #include "app/main_window.h"
 
 #include <QApplication>
@@ -39,6 +40,9 @@ int main(int argc, char* argv[])
     QApplication::setOrganizationName(QStringLiteral("Gyre"));
     QApplication::setApplicationName(QStringLiteral("Gyre"));
     QApplication::setApplicationVersion(QStringLiteral(GYRE_VERSION));
+    QApplication::setWindowIcon(gyre::app::appIcon());
+    // Wayland compositors find the window's icon and name through the installed desktop entry.
+    QGuiApplication::setDesktopFileName(QStringLiteral(GYRE_APP_ID));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QApplication::translate("main", "Edit the rotations of animated rigid objects."));
