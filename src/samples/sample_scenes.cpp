@@ -1,5 +1,8 @@
 #include "samples/sample_scenes.h"
 
+#include "fit/angular_velocity_fit.h"
+#include "jobs/sketch_fit.h"
+
 #include <Eigen/Geometry>
 
 #include <array>
@@ -7,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <numbers>
+#include <stdexcept>
 
 namespace gyre::samples {
 
@@ -500,7 +504,20 @@ SampleScene critterCycle()
                           std::move(track), frames);
 }
 
-std::vector<SampleScene> allSamples()
+SampleScene withFitApplied(SampleScene sample)
+{
+    model::MotionTrack& track = sample.scene.objects.front().track;
+    const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
+    const fit::FitResult result = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
+    if (result.outcome != fit::FitOutcome::Converged)
+        throw std::runtime_error(sample.fileName.toStdString() + ": the sketch's fit does not converge");
+    model::FitResult applied = jobs::appliedFitResult(track, result);
+    track.keys = std::move(applied.keys);
+    track.sketch.fittedCurve = std::move(applied.curve);
+    return sample;
+}
+
+std::vector<SampleScene> sketchedSamples()
 {
     std::vector<SampleScene> samples;
     samples.push_back(spinningTop());
@@ -508,6 +525,14 @@ std::vector<SampleScene> allSamples()
     samples.push_back(hat());
     samples.push_back(fallingLeaf());
     samples.push_back(pen());
+    return samples;
+}
+
+std::vector<SampleScene> allSamples()
+{
+    std::vector<SampleScene> samples;
+    for (SampleScene& sketched : sketchedSamples())
+        samples.push_back(withFitApplied(std::move(sketched)));
     samples.push_back(pendulum());
     samples.push_back(spinningBlock());
     samples.push_back(critterCycle());

@@ -22,7 +22,7 @@ struct SampleScene {
 SampleScene spinningTop();
 
 // The sketch-editing paper's other Table 1 animations, each keyed by Hermite interpolation with a
-// sketch over part of it that asks the fit for a visible change (the artist presses Fit):
+// sketch over part of it that asks the fit for a visible change:
 // a letter M tumbling, its axis bent along a curve and its speed raised (Fig. 2; 240 frames, 49 keys);
 SampleScene letterM();
 // a hat tossed twice, flipping, its second flip leaning into a cartwheel (240 frames, 49 keys);
@@ -38,6 +38,17 @@ SampleScene pendulum();
 SampleScene spinningBlock();
 SampleScene critterCycle();
 
+// The five sketched samples above, as keyed and sketched, before any fit.
+std::vector<SampleScene> sketchedSamples();
+
+// The sample with its sketch's fit applied as the Fit button applies it (ApplyFitResultCommand with
+// jobs::appliedFitResult): the bundled file opens on the paper's edited motion, its keyed motion
+// drawn as "before fit", and Remove Fit returns to it. Throws std::runtime_error naming the sample if
+// the fit does not converge.
+SampleScene withFitApplied(SampleScene sample);
+
+// Every bundled sample as gyre-samples writes it: the sketched ones with their fit applied, then
+// ScrewBender's.
 std::vector<SampleScene> allSamples();
 
 } // namespace gyre::samples

@@ -134,8 +134,8 @@ private slots:
         }
     }
 
-    // The sketch panels live in the window: the spinning top's sketch fits from the Fit dock's button,
-    // with progress in the status bar, as one undo step the viewport's motion follows.
+    // The sketch panels live in the window: the spinning top opens on its fitted motion, and its sketch
+    // fits again from the Fit dock's button, with progress in the status bar, as one undo step.
     void fitsTheSpinningTopSampleFromTheFitDock()
     {
         app::MainWindow window;
@@ -148,7 +148,7 @@ private slots:
         QVERIFY(fit != nullptr && fit->isEnabled());
         const model::ObjectId top = firstObject(window);
         const model::MotionTrack before = window.document().object(top)->track;
-        QVERIFY(before.sketch.fittedCurve.empty());
+        QVERIFY(!before.sketch.fittedCurve.empty());
 
         // The views sample the new scene's curves on their threads first; the click comes after.
         QTest::qWait(2000);
@@ -167,7 +167,10 @@ private slots:
             if (before.keys[i].constrained)
                 QVERIFY(after.keys[i].pose.orientation.coeffs() == before.keys[i].pose.orientation.coeffs());
         window.document().undoStack().undo();
-        QVERIFY(window.document().object(top)->track.sketch.fittedCurve.empty());
+        const model::MotionTrack& undone = window.document().object(top)->track;
+        QCOMPARE(undone.sketch.fittedCurve.size(), before.sketch.fittedCurve.size());
+        for (std::size_t i = 0; i < before.sketch.fittedCurve.size(); ++i)
+            QVERIFY(undone.sketch.fittedCurve[i].value.coeffs() == before.sketch.fittedCurve[i].value.coeffs());
     }
 
     void anEditMarksTheTitleAndUndoClearsTheMark()
