@@ -9,6 +9,7 @@
 
 #include "app/main_window.h"
 #include "app/sketch/magnitude_plot.h"
+#include "app/sketch/pattern_pad.h"
 #include "app/sketch/sphere_view.h"
 #include "app/smoothness_panel.h"
 #include "app/timeline_widget.h"
@@ -29,6 +30,7 @@
 #include <QRegularExpression>
 #include <QSet>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QTest>
 #include <QToolBar>
@@ -317,7 +319,18 @@ private slots:
 
     // The sketch samples: Fit on the Fit tab converges, and the sphere and the speed plot show the
     // fitted motion beside the motion before the fit.
-    void fitsTheSpinningTop() { fitSketchSample("spinning-top", 7.0, QStringLiteral("guide-spinning-top.png")); }
+    // The spinning top's picture shows the Pattern tool, its pad holding the sketch's wiggle and its
+    // repeat count.
+    void fitsTheSpinningTop()
+    {
+        fitSketchSample("spinning-top", 7.0, QStringLiteral("guide-spinning-top.png"), [](GuideWindow& guide) {
+            guide.child<app::SphereView>()->patternAction()->trigger();
+            auto* pad = guide.child<app::PatternPad>();
+            QVERIFY(pad->isVisible());
+            QCOMPARE(pad->canvas()->pattern().size(), guide.track().sketch.pattern.size());
+            QCOMPARE(pad->repeatBox()->value(), 30);
+        });
+    }
     void fitsTheLetterM() { fitSketchSample("letter-m", 4.0, QStringLiteral("guide-letter-m.png")); }
     void fitsTheHat() { fitSketchSample("hat", 4.5, QStringLiteral("guide-hat.png")); }
     void fitsTheFallingLeaf() { fitSketchSample("falling-leaf", 12.0, QStringLiteral("guide-falling-leaf.png")); }
@@ -396,7 +409,10 @@ private slots:
     }
 
 private:
-    void fitSketchSample(const char* entry, double time, const QString& picture)
+    // Opens the sample, fits it from the Fit tab and checks what the guide says of the result; `prepare`
+    // then sets up the picture.
+    template <class Prepare>
+    void fitSketchSample(const char* entry, double time, const QString& picture, Prepare prepare)
     {
         GuideWindow guide;
         guide.openSample(entry, time);
@@ -409,7 +425,14 @@ private:
         QVERIFY(guide.child<app::SphereView>()->curves().fitSpan.has_value());
         QVERIFY(guide.child<app::MagnitudePlot>()->graph(app::MagnitudePlot::Curve::Fitted)->dataCount() > 0);
         QVERIFY(guide.child<app::MagnitudePlot>()->graph(app::MagnitudePlot::Curve::BeforeFit)->dataCount() > 0);
+        prepare(guide);
+        if (QTest::currentTestFailed())
+            return;
         guide.picture(picture);
+    }
+    void fitSketchSample(const char* entry, double time, const QString& picture)
+    {
+        fitSketchSample(entry, time, picture, [](GuideWindow&) {});
     }
 };
 
