@@ -1,8 +1,9 @@
 // The user guide (docs/user-guide.md) against the repository and the real gyre-cli: every picture and
 // document it links to exists, and every picture is a PNG at most kMostPictureWidth pixels wide; every
 // fenced block that runs gyre-cli is marked as an example, and runs as written, with gyre-cli on the
-// PATH, from a folder that holds the bundled samples where the repository does, exiting 0; and every
-// verb that gyre-cli --help lists has an example.
+// PATH, from a folder that holds the bundled samples where the repository does, exiting 0 and, where
+// the guide shows what it prints, printing exactly that; and every verb that gyre-cli --help lists has
+// an example.
 
 #include <QDir>
 #include <QFile>
@@ -35,7 +36,26 @@ struct CodeBlock {
     int line = 0; // of the opening fence, from 1
     bool markedAsExample = false;
     QString text;
+    // What the guide says the block prints: the indented block after a line "prints" that follows it.
+    QString printed;
 };
+
+// The indented block after the line "prints" at or after `index`, past blank lines; empty without one.
+QString printedAfter(const QStringList& lines, qsizetype index)
+{
+    const auto skipBlankLines = [&lines](qsizetype i) {
+        while (i < lines.size() && lines[i].trimmed().isEmpty())
+            ++i;
+        return i;
+    };
+    qsizetype i = skipBlankLines(index);
+    if (i >= lines.size() || lines[i] != QLatin1String("prints"))
+        return {};
+    QString printed;
+    for (i = skipBlankLines(i + 1); i < lines.size() && lines[i].startsWith(QLatin1String("    ")); ++i)
+        printed += lines[i].mid(4) + QLatin1Char('\n');
+    return printed;
+}
 
 // The guide's fenced code blocks, each with whether the line before it is kExampleMark.
 std::vector<CodeBlock> codeBlocks()
@@ -50,6 +70,7 @@ std::vector<CodeBlock> codeBlocks()
         block.markedAsExample = i > 0 && lines[i - 1].trimmed() == kExampleMark;
         for (++i; i < lines.size() && !lines[i].startsWith(QLatin1String("```")); ++i)
             block.text += lines[i] + QLatin1Char('\n');
+        block.printed = printedAfter(lines, i + 1);
         blocks.push_back(block);
     }
     return blocks;
@@ -125,6 +146,7 @@ private slots:
         environment.insert(QStringLiteral("PATH"), QFileInfo(QStringLiteral(GYRE_CLI_PATH)).absolutePath()
                                                        + QLatin1Char(':') + environment.value(QStringLiteral("PATH")));
         int examples = 0;
+        int printing = 0;
         for (const CodeBlock& block : codeBlocks()) {
             if (!block.markedAsExample)
                 continue;
@@ -137,9 +159,13 @@ private slots:
                                         .arg(block.line)
                                         .arg(QString::fromUtf8(shell.readAllStandardError()));
             QVERIFY2(shell.exitStatus() == QProcess::NormalExit && shell.exitCode() == 0, qPrintable(failure));
+            if (!block.printed.isEmpty())
+                QCOMPARE(QString::fromUtf8(shell.readAllStandardOutput()), block.printed);
+            printing += block.printed.isEmpty() ? 0 : 1;
             ++examples;
         }
         QVERIFY(examples > 0);
+        QVERIFY(printing > 0);
     }
 
     void everyVerbHasAnExample()
