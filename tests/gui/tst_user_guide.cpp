@@ -218,19 +218,18 @@ public:
     }
 
     // The window as it is on screen, saved as the guide's picture `name` when GYRE_GUIDE_IMAGES names
-    // a folder; `annotate` may draw on it first.
+    // a folder; `annotate` may draw on it first. Fails the test if the guide does not show `name`.
     template <class Annotate>
     void picture(const QString& name, Annotate annotate)
     {
-        if (!guideText().contains(QStringLiteral("(images/") + name + QLatin1Char(')')))
-            qFatal("The guide does not show %s", qPrintable(name));
+        QVERIFY2(guideText().contains(QStringLiteral("(images/") + name + QLatin1Char(')')),
+                 qPrintable(QStringLiteral("The guide does not show ") + name));
         const QString folder = qEnvironmentVariable("GYRE_GUIDE_IMAGES");
         if (folder.isEmpty())
             return;
         QImage image = window_.grab().toImage();
         annotate(image);
-        if (!image.save(QDir(folder).filePath(name)))
-            qFatal("Cannot write %s", qPrintable(QDir(folder).filePath(name)));
+        QVERIFY2(image.save(QDir(folder).filePath(name)), qPrintable(QDir(folder).filePath(name)));
     }
     void picture(const QString& name)
     {
