@@ -4,6 +4,7 @@
 #include <QApplication>
 #include <QFileDialog>
 #include <QMessageBox>
+#include <QMouseEvent>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTest>
@@ -63,6 +64,28 @@ void answerMessageBox(int standardButton, QString* text)
             qFatal("The message box has no such button");
         button->click();
     });
+}
+
+void sendMove(QWidget* widget, const QPointF& position, Qt::MouseButtons buttons)
+{
+    QMouseEvent move(QEvent::MouseMove, position, widget->mapToGlobal(position), Qt::NoButton, buttons, Qt::NoModifier);
+    QApplication::sendEvent(widget, &move);
+}
+
+void dragAlong(QWidget* widget, const std::vector<QPointF>& path)
+{
+    QTest::mousePress(widget, Qt::LeftButton, Qt::NoModifier, path.front().toPoint());
+    for (std::size_t i = 1; i < path.size(); ++i)
+        sendMove(widget, path[i], Qt::LeftButton);
+    QTest::mouseRelease(widget, Qt::LeftButton, Qt::NoModifier, path.back().toPoint());
+}
+
+std::vector<QPointF> straightPath(const QPointF& from, const QPointF& to, int steps)
+{
+    std::vector<QPointF> path;
+    for (int i = 0; i <= steps; ++i)
+        path.push_back(from + (to - from) * (double(i) / steps));
+    return path;
 }
 
 } // namespace gyre::test

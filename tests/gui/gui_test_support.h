@@ -2,10 +2,12 @@
 // What the GUI tests share: answering the modal dialogs the real code paths open, and settings kept
 // apart from the user's.
 
+#include <QPointF>
 #include <QString>
 #include <QWidget>
 
 #include <functional>
+#include <vector>
 
 namespace gyre::test {
 
@@ -23,5 +25,15 @@ void answerFileDialog(const QString& path);
 // Presses the button with this role (QMessageBox::StandardButton) on the next message box, and keeps
 // its text in `text` if given.
 void answerMessageBox(int standardButton, QString* text = nullptr);
+
+// Sends a mouse move to `widget` with `buttons` held: QTest::mouseMove does not say which buttons are
+// held, and a drag needs them.
+void sendMove(QWidget* widget, const QPointF& position, Qt::MouseButtons buttons);
+
+// Presses at `path[0]`, moves through the rest with the left button held, and releases at the end.
+void dragAlong(QWidget* widget, const std::vector<QPointF>& path);
+
+// `steps` + 1 points from `from` to `to`, evenly spaced.
+std::vector<QPointF> straightPath(const QPointF& from, const QPointF& to, int steps);
 
 } // namespace gyre::test

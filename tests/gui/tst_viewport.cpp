@@ -44,30 +44,6 @@ struct Session {
     const model::Keyframe& key(std::size_t index) { return window.document().object(object)->track.keys[index]; }
 };
 
-void sendMove(QWidget* widget, const QPointF& position, Qt::MouseButtons buttons)
-{
-    // QTest::mouseMove does not say which buttons are held; a drag needs them.
-    QMouseEvent move(QEvent::MouseMove, position, widget->mapToGlobal(position), Qt::NoButton, buttons, Qt::NoModifier);
-    QApplication::sendEvent(widget, &move);
-}
-
-// Presses at `path[0]`, moves through the rest with the left button held, and releases at the end.
-void dragAlong(QWidget* widget, const std::vector<QPointF>& path)
-{
-    QTest::mousePress(widget, Qt::LeftButton, Qt::NoModifier, path.front().toPoint());
-    for (std::size_t i = 1; i < path.size(); ++i)
-        sendMove(widget, path[i], Qt::LeftButton);
-    QTest::mouseRelease(widget, Qt::LeftButton, Qt::NoModifier, path.back().toPoint());
-}
-
-std::vector<QPointF> straightPath(const QPointF& from, const QPointF& to, int steps)
-{
-    std::vector<QPointF> path;
-    for (int i = 0; i <= steps; ++i)
-        path.push_back(from + (to - from) * (double(i) / steps));
-    return path;
-}
-
 // From `from`, an arc of `radians` (counter-clockwise on screen) about `centre`.
 std::vector<QPointF> arcPath(const QPointF& centre, const QPointF& from, double radians, int steps)
 {
@@ -109,7 +85,7 @@ private slots:
         const Eigen::Quaterniond orientation = session.key(0).pose.orientation;
 
         const QPointF grab = *session.viewport->handleScreenPosition(Handle::MoveX);
-        dragAlong(session.viewport, straightPath(grab, pastTheXArrow(*session.viewport), 8));
+        test::dragAlong(session.viewport, test::straightPath(grab, pastTheXArrow(*session.viewport), 8));
 
         const Eigen::Vector3d after = session.key(0).pose.position;
         QVERIFY(after.x() > before.x() + 0.1);
@@ -124,7 +100,7 @@ private slots:
 
         // The next drag is an undo step of its own.
         const QPointF again = *session.viewport->handleScreenPosition(Handle::MoveX);
-        dragAlong(session.viewport, straightPath(again, again + QPointF(0, 40), 4));
+        test::dragAlong(session.viewport, test::straightPath(again, again + QPointF(0, 40), 4));
         QCOMPARE(stack.count(), stepsBefore + 2);
         stack.undo();
         QVERIFY(session.key(0).pose.position == after);
@@ -141,7 +117,7 @@ private slots:
 
         const QPointF centre = *session.viewport->controlPoseScreenPosition(1);
         const QPointF grab = *session.viewport->handleScreenPosition(Handle::RotateZ);
-        dragAlong(session.viewport, arcPath(centre, grab, std::numbers::pi / 4, 6));
+        test::dragAlong(session.viewport, arcPath(centre, grab, std::numbers::pi / 4, 6));
 
         const Pose after = session.key(1).pose;
         QVERIFY(after.position == before.position);
@@ -203,7 +179,7 @@ private slots:
         QVERIFY(!session.viewport->drewGhost());
         session.window.selection().selectKey(session.object, 0);
         const QPointF grab = *session.viewport->handleScreenPosition(Handle::MoveX);
-        dragAlong(session.viewport, straightPath(grab, pastTheXArrow(*session.viewport), 4));
+        test::dragAlong(session.viewport, test::straightPath(grab, pastTheXArrow(*session.viewport), 4));
         QTRY_VERIFY(session.viewport->drewGhost());
         session.window.document().undoStack().undo();
         QTRY_VERIFY(!session.viewport->drewGhost());
@@ -215,7 +191,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&session.window));
         const Eigen::Vector3d eye = session.viewport->camera().eye();
         const int steps = session.window.document().undoStack().count();
-        dragAlong(session.viewport, straightPath(QPointF(20, 20), QPointF(120, 60), 5));
+        test::dragAlong(session.viewport, test::straightPath(QPointF(20, 20), QPointF(120, 60), 5));
         QVERIFY((session.viewport->camera().eye() - eye).norm() > 0.1);
         QCOMPARE(session.window.document().undoStack().count(), steps);
 
@@ -263,7 +239,7 @@ private slots:
         clock.start();
         for (int move = 1; move <= kMoves; ++move) {
             const std::uint64_t drawn = session.viewport->framesDrawn();
-            sendMove(session.viewport, corner + QPointF(move % 2 == 0 ? 0 : 4, 0), Qt::LeftButton);
+            test::sendMove(session.viewport, corner + QPointF(move % 2 == 0 ? 0 : 4, 0), Qt::LeftButton);
             waitForFrame(drawn);
         }
         const double orbitSeconds = double(clock.nsecsElapsed()) / 1e9;
@@ -278,7 +254,7 @@ private slots:
             // Back and forth along the arrow, a frame drawn after each move, as fast as it goes.
             const double phase = 0.5 - 0.5 * std::cos(2 * std::numbers::pi * move / 30.0);
             const std::uint64_t drawn = session.viewport->framesDrawn();
-            sendMove(session.viewport, grab + (end - grab) * phase, Qt::LeftButton);
+            test::sendMove(session.viewport, grab + (end - grab) * phase, Qt::LeftButton);
             waitForFrame(drawn);
         }
         const double dragSeconds = double(clock.nsecsElapsed()) / 1e9;

@@ -1,0 +1,439 @@
+// The user guide (docs/user-guide.md) held to the window it describes. Its tables of keyboard
+// shortcuts list exactly the shortcuts of the window's actions and buttons, plus keys that a panel
+// handles itself; and every state of a sample that the guide pictures is reached the way the guide
+// tells (the sample from File ▸ Open Sample, Fit pressed, a control pose dragged, ...) and shows what
+// the guide says of it.
+//
+// With GYRE_GUIDE_IMAGES set to a folder, each of those states is also saved there as the guide's
+// picture, named as the guide names it: scripts/user-guide-screenshots.sh regenerates them so.
+
+#include "app/main_window.h"
+#include "app/sketch/magnitude_plot.h"
+#include "app/sketch/pattern_pad.h"
+#include "app/sketch/sphere_view.h"
+#include "app/smoothness_panel.h"
+#include "app/timeline_widget.h"
+#include "app/viewport/viewport.h"
+#include "gui_test_support.h"
+#include "inspected_window.h"
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QCheckBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QMenuBar>
+#include <QMetaEnum>
+#include <QPainter>
+#include <QRegularExpression>
+#include <QSet>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTest>
+#include <QToolBar>
+#include <QUndoStack>
+#include <qcustomplot.h>
+
+#include <cstdint>
+#include <initializer_list>
+#include <memory>
+#include <utility>
+#include <vector>
+
+using namespace gyre;
+
+namespace {
+
+constexpr int kFitTimeoutMilliseconds = 60'000;
+// The middle of the pendulum sample's bob, on its local z axis.
+constexpr double kPendulumBob = -1.1;
+
+QString readText(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
+        qFatal("Cannot read %s", qPrintable(path));
+    return QString::fromUtf8(file.readAll());
+}
+
+QString guideText()
+{
+    return readText(QStringLiteral(GYRE_USER_GUIDE));
+}
+
+QString portable(const QKeySequence& keys)
+{
+    return keys.toString(QKeySequence::PortableText);
+}
+
+// The keys in the first cell of every table row under the guide's "Keyboard shortcuts" heading, each
+// `quoted`, in Qt's portable text.
+QStringList guideShortcuts()
+{
+    const QString guide = guideText();
+    const qsizetype start = guide.indexOf(QStringLiteral("\n## Keyboard shortcuts\n"));
+    if (start < 0)
+        qFatal("The guide has no Keyboard shortcuts section");
+    const qsizetype end = guide.indexOf(QStringLiteral("\n## "), start + 1);
+    const QStringList lines = guide.mid(start, end - start).split(QLatin1Char('\n'));
+    static const QRegularExpression quoted(QStringLiteral("`([^`]+)`"));
+    QStringList keys;
+    for (const QString& line : lines) {
+        if (!line.startsWith(QLatin1Char('|')))
+            continue;
+        const QString firstCell = line.section(QLatin1Char('|'), 1, 1);
+        for (const QRegularExpressionMatch& match : quoted.globalMatch(firstCell))
+            keys.append(portable(QKeySequence(match.captured(1))));
+    }
+    return keys;
+}
+
+// Whether the sequence is a menu or button mnemonic (Alt and the underlined letter) rather than a
+// shortcut: Qt gives every "&Name" button one.
+bool isMnemonic(const QKeySequence& keys)
+{
+    return keys.count() == 1 && keys[0].keyboardModifiers() == Qt::AltModifier;
+}
+
+// Every shortcut of the window's actions and buttons, in portable text.
+QSet<QString> windowShortcuts(const QMainWindow& window)
+{
+    QSet<QString> shortcuts;
+    for (const QAction* action : window.findChildren<QAction*>())
+        for (const QKeySequence& keys : action->shortcuts())
+            shortcuts.insert(portable(keys));
+    for (const QAbstractButton* button : window.findChildren<QAbstractButton*>())
+        if (!button->shortcut().isEmpty() && !isMnemonic(button->shortcut()))
+            shortcuts.insert(portable(button->shortcut()));
+    return shortcuts;
+}
+
+// Whether a widget of the app handles the key itself in a key press handler: `Qt::Key_End` in its source.
+bool appSourceHandlesKey(const QKeySequence& keys)
+{
+    if (keys.count() != 1 || keys[0].keyboardModifiers() != Qt::NoModifier)
+        return false;
+    const char* name = QMetaEnum::fromType<Qt::Key>().valueToKey(keys[0].key());
+    if (name == nullptr)
+        return false;
+    const QRegularExpression handled(QStringLiteral("case Qt::%1:|key\\(\\) == Qt::%1\\b").arg(QLatin1String(name)));
+    const QDir sources(QStringLiteral(GYRE_APP_SOURCES));
+    for (const QString& folder : {QStringLiteral("."), QStringLiteral("sketch"), QStringLiteral("viewport")}) {
+        const QDir directory(sources.filePath(folder));
+        for (const QString& file : directory.entryList({QStringLiteral("*.cpp")}, QDir::Files))
+            if (readText(directory.filePath(file)).contains(handled))
+                return true;
+    }
+    return false;
+}
+
+// A numbered badge over `widget`'s top edge at `offset` from its top-left corner, as the guide's
+// list of the window's parts numbers them.
+void drawBadge(QPainter& painter, const QWidget& window, const QWidget& widget, QPoint offset, int number)
+{
+    constexpr int kRadius = 11;
+    const QPoint centre = widget.mapTo(&window, offset);
+    painter.setPen(QPen(Qt::white, 2));
+    painter.setBrush(QColor(215, 45, 35));
+    painter.drawEllipse(centre, kRadius, kRadius);
+    QFont font = painter.font();
+    font.setBold(true);
+    font.setPixelSize(14);
+    painter.setFont(font);
+    painter.drawText(QRect(centre - QPoint(kRadius, kRadius), QSize(2 * kRadius, 2 * kRadius)), Qt::AlignCenter,
+                     QString::number(number));
+}
+
+// The main window as the guide shows it: its first-start layout (test settings are empty), shown.
+class GuideWindow {
+public:
+    GuideWindow()
+    {
+        window_.show();
+        if (!QTest::qWaitForWindowExposed(&window_))
+            qFatal("The main window was not shown");
+    }
+
+    app::MainWindow& window() { return window_; }
+    model::ObjectId object() const { return window_.selection().object(); }
+    const model::MotionTrack& track() const { return window_.document().object(object())->track; }
+
+    template <class Widget>
+    Widget* child(const char* name = nullptr) const
+    {
+        auto* widget = name == nullptr ? window_.findChild<Widget*>() : window_.findChild<Widget*>(QLatin1String(name));
+        if (widget == nullptr)
+            qFatal("The main window has no %s", name == nullptr ? Widget::staticMetaObject.className() : name);
+        return widget;
+    }
+
+    // Opens the sample from File ▸ Open Sample, by its menu entry, and pauses it at `time`.
+    void openSample(const char* entry, double time)
+    {
+        child<QAction>(entry)->trigger();
+        window_.playback().pause();
+        window_.document().setCurrentTime(time);
+    }
+
+    void raiseDock(const char* dock) { child<QDockWidget>(dock)->raise(); }
+
+    // Presses Fit on the Fit tab and waits for the fit's undo step; the status bar's message after it.
+    QString fitFromTheFitTab()
+    {
+        raiseDock("fitDock");
+        QUndoStack& stack = window_.document().undoStack();
+        const int stepsBefore = stack.count();
+        child<QAbstractButton>("fitButton")->click();
+        if (!QTest::qWaitFor([&] { return stack.count() == stepsBefore + 1; }, kFitTimeoutMilliseconds))
+            qFatal("The fit did not finish");
+        if (stack.text(stepsBefore) != QLatin1String("Apply angular velocity fit"))
+            qFatal("The fit's undo step is %s", qPrintable(stack.text(stepsBefore)));
+        return window_.statusBar()->currentMessage();
+    }
+
+    // Waits until the sphere, the speed plot and the smoothness plots show the track as it is now (each
+    // has a recompute pending after a change of the track or the selection), and the viewport has drawn it.
+    void settle()
+    {
+        waitForCurves({child<app::SphereView>(), child<app::MagnitudePlot>(), child<app::SmoothnessPanel>()});
+        auto* viewport = child<app::Viewport>();
+        const std::uint64_t framesBefore = viewport->framesDrawn();
+        viewport->update();
+        if (!QTest::qWaitFor([&] { return viewport->framesDrawn() > framesBefore; }))
+            qFatal("The viewport did not draw");
+    }
+
+    // Waits until each of `views` has sent curvesUpdated.
+    static void waitForCurves(std::initializer_list<const QObject*> views)
+    {
+        std::vector<std::unique_ptr<QSignalSpy>> updates;
+        for (const QObject* view : views)
+            updates.push_back(std::make_unique<QSignalSpy>(view, SIGNAL(curvesUpdated())));
+        for (const auto& updated : updates)
+            if (updated->count() == 0 && !updated->wait(10'000))
+                qFatal("A view did not update its curves");
+    }
+
+    // The window as it is on screen, saved as the guide's picture `name` when GYRE_GUIDE_IMAGES names
+    // a folder; `annotate` may draw on it first. Fails the test if the guide does not show `name`.
+    template <class Annotate>
+    void picture(const QString& name, Annotate annotate)
+    {
+        QVERIFY2(guideText().contains(QStringLiteral("(images/") + name + QLatin1Char(')')),
+                 qPrintable(QStringLiteral("The guide does not show ") + name));
+        const QString folder = qEnvironmentVariable("GYRE_GUIDE_IMAGES");
+        if (folder.isEmpty())
+            return;
+        QImage image = window_.grab().toImage();
+        annotate(image);
+        QVERIFY2(image.save(QDir(folder).filePath(name)), qPrintable(QDir(folder).filePath(name)));
+    }
+    void picture(const QString& name)
+    {
+        picture(name, [](QImage&) {});
+    }
+
+private:
+    app::MainWindow window_;
+};
+
+QCPGraph* smoothnessGraph(const GuideWindow& guide, app::SmoothnessPanel::Quantity quantity)
+{
+    return guide.child<app::SmoothnessPanel>()->graph(quantity, app::SmoothnessPanel::Component::Magnitude);
+}
+
+} // namespace
+
+class TestUserGuide : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { test::useTestSettings(); }
+
+    // Every key the table lists does something in the window, and every shortcut of the window is listed.
+    void shortcutTableListsExactlyTheWindowsShortcuts()
+    {
+        GuideWindow guide;
+        const QSet<QString> window = windowShortcuts(guide.window());
+        QVERIFY(window.contains(QStringLiteral("Ctrl+F"))); // a button's, on the Fit tab
+        QVERIFY(window.contains(QStringLiteral("R")));      // the sphere's, while it has the focus
+        const QStringList listed = guideShortcuts();
+        for (const QString& keys : listed)
+            QVERIFY2(window.contains(keys) || appSourceHandlesKey(QKeySequence(keys)),
+                     qPrintable(QStringLiteral("The guide lists %1, which nothing in the window handles").arg(keys)));
+        for (const QString& keys : window)
+            QVERIFY2(listed.contains(keys), qPrintable(QStringLiteral("The guide does not list %1").arg(keys)));
+    }
+
+    // End, listed for the focused timeline, goes to the scene's last frame.
+    void endOnTheFocusedTimelineGoesToTheLastFrame()
+    {
+        GuideWindow guide;
+        guide.openSample("l-cycle", 1.0);
+        guide.window().activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&guide.window()));
+        auto* timeline = guide.child<app::TimelineWidget>();
+        timeline->setFocus();
+        QTest::keyClick(timeline, Qt::Key_End);
+        const model::Scene& scene = guide.window().document().scene();
+        QCOMPARE(scene.currentTime, scene.endTime);
+    }
+
+    // First launch: the L-shaped cycle, playing, its first key selected; the parts of the window numbered.
+    void firstLaunchOpensTheLCycleWithItsFirstKeySelected()
+    {
+        GuideWindow guide;
+        app::MainWindow& window = guide.window();
+        window.openBundledSample();
+        QVERIFY(window.playback().isPlaying());
+        QCOMPARE(window.selection().key(), std::optional<std::size_t>(0));
+        QCOMPARE(window.document().object(guide.object())->name, QStringLiteral("L-cycle block"));
+        window.playback().pause();
+        window.document().setCurrentTime(1.5);
+        guide.settle();
+        QVERIFY(guide.child<app::Viewport>()->trailInstanceCount() > 0);
+
+        guide.picture(QStringLiteral("guide-window.png"), [&](QImage& image) {
+            QPainter painter(&image);
+            painter.setRenderHint(QPainter::Antialiasing);
+            const QMenuBar& menus = *window.menuBar();
+            const QRect lastMenu = menus.actionGeometry(menus.actions().constLast());
+            drawBadge(painter, window, menus, {lastMenu.right() + 20, menus.height() / 2}, 1);
+            const auto& toolBar = *guide.child<QToolBar>("playbackToolBar");
+            const QRect lastTool = toolBar.actionGeometry(toolBar.actions().constLast());
+            drawBadge(painter, window, toolBar, {lastTool.right() + 20, toolBar.height() / 2}, 2);
+            const std::pair<const char*, int> docks[] = {{"sphereDock", 3}, {"screwBenderDock", 4}, {"inspectorDock", 6},
+                                                         {"magnitudeDock", 7}, {"timelineDock", 8}};
+            for (const auto& [name, number] : docks) {
+                const auto& dock = *guide.child<QDockWidget>(name);
+                drawBadge(painter, window, dock, {dock.width() - 70, 11}, number);
+            }
+            drawBadge(painter, window, *guide.child<app::Viewport>(), {24, 24}, 5);
+            drawBadge(painter, window, *window.statusBar(), {30, window.statusBar()->height() / 2}, 9);
+        });
+    }
+
+    // The sketch samples: Fit on the Fit tab converges, and the sphere and the speed plot show the
+    // fitted motion beside the motion before the fit.
+    // The spinning top's picture shows the Pattern tool, its pad holding the sketch's wiggle and its
+    // repeat count.
+    void fitsTheSpinningTop()
+    {
+        fitSketchSample("spinning-top", 7.0, QStringLiteral("guide-spinning-top.png"), [](GuideWindow& guide) {
+            guide.child<app::SphereView>()->patternAction()->trigger();
+            auto* pad = guide.child<app::PatternPad>();
+            QVERIFY(pad->isVisible());
+            QCOMPARE(pad->canvas()->pattern().size(), guide.track().sketch.pattern.size());
+            QCOMPARE(pad->repeatBox()->value(), 30);
+        });
+    }
+    void fitsTheLetterM() { fitSketchSample("letter-m", 4.0, QStringLiteral("guide-letter-m.png")); }
+    void fitsTheHat() { fitSketchSample("hat", 4.5, QStringLiteral("guide-hat.png")); }
+    void fitsTheFallingLeaf() { fitSketchSample("falling-leaf", 12.0, QStringLiteral("guide-falling-leaf.png")); }
+    void fitsThePen() { fitSketchSample("pen", 2.0, QStringLiteral("guide-pen.png")); }
+
+    // The L-cycle: dragging the selected control pose's x arrow moves it in one undo step, the trail
+    // follows, and the ghost shows the motion as it was opened.
+    void dragsAControlPoseOfTheLCycle()
+    {
+        GuideWindow guide;
+        guide.openSample("l-cycle", 2.3);
+        guide.window().selection().selectKey(guide.object(), 2);
+        guide.settle();
+        auto* viewport = guide.child<app::Viewport>();
+        const Eigen::Vector3d before = guide.track().keys[2].pose.position;
+        const QPointF grab = *viewport->handleScreenPosition(app::Viewport::Handle::MoveX);
+        const QPointF base = *viewport->controlPoseScreenPosition(2);
+        test::dragAlong(viewport, test::straightPath(grab, grab + 0.8 * (grab - base), 10));
+        QCOMPARE(guide.window().document().undoStack().count(), 1);
+        QVERIFY(guide.track().keys[2].pose.position.x() > before.x() + 0.2);
+        guide.settle();
+        QVERIFY(viewport->drewGhost());
+        QVERIFY(viewport->trailInstanceCount() > 0);
+        guide.picture(QStringLiteral("guide-l-cycle.png"));
+    }
+
+    // The pendulum on the Smoothness tab: position, velocity and acceleration of the middle of its bob.
+    void plotsThePendulumsSmoothness()
+    {
+        GuideWindow guide;
+        guide.openSample("pendulum", 1.25);
+        guide.raiseDock("smoothnessDock");
+        guide.settle();
+        guide.child<QDoubleSpinBox>("pointZBox")->setValue(kPendulumBob);
+        GuideWindow::waitForCurves({guide.child<app::SmoothnessPanel>()});
+        using Quantity = app::SmoothnessPanel::Quantity;
+        // The bob swings: its speed and acceleration are far from the rounding noise of a still point.
+        for (Quantity quantity : {Quantity::Velocity, Quantity::Acceleration}) {
+            bool found = false;
+            const QCPRange range = smoothnessGraph(guide, quantity)->getValueRange(found);
+            QVERIFY(found && range.upper > 0.5);
+        }
+        guide.picture(QStringLiteral("guide-pendulum.png"));
+    }
+
+    // The spinning block as it opens; then Decoupled, for comparison, ticked: one undo step, the track
+    // decoupled, and the ghost showing the screw motion it started from.
+    void decouplesTheSpinningBlock()
+    {
+        GuideWindow guide;
+        guide.openSample("spinning-block", 0.6);
+        guide.settle();
+        QVERIFY(guide.child<app::Viewport>()->trailInstanceCount() > 0);
+        guide.picture(QStringLiteral("guide-spinning-block.png"));
+
+        QVERIFY(!guide.track().subdivision.decoupled);
+        test::clickIndicator(guide.child<QCheckBox>("decoupledCheck"));
+        QVERIFY(guide.track().subdivision.decoupled);
+        QCOMPARE(guide.window().document().undoStack().count(), 1);
+        guide.settle();
+        QVERIFY(guide.child<app::Viewport>()->drewGhost());
+    }
+
+    // The critter's cycle as it opens: a screw track of six keys, 4-point subdivided, cyclic.
+    void opensTheCrittersCycle()
+    {
+        GuideWindow guide;
+        guide.openSample("critter-cycle", 2.5);
+        QCOMPARE(guide.track().keys.size(), std::size_t(6));
+        QCOMPARE(guide.track().interpolation, InterpolationMethod::Screw);
+        QCOMPARE(guide.track().subdivision.scheme, SubdivisionScheme::FourPoint);
+        QVERIFY(guide.track().subdivision.cyclic);
+        guide.settle();
+        QVERIFY(guide.child<app::Viewport>()->trailInstanceCount() > 0);
+        guide.picture(QStringLiteral("guide-critter-cycle.png"));
+    }
+
+private:
+    // Opens the sample, fits it from the Fit tab and checks what the guide says of the result; `prepare`
+    // then sets up the picture.
+    template <class Prepare>
+    void fitSketchSample(const char* entry, double time, const QString& picture, Prepare prepare)
+    {
+        GuideWindow guide;
+        guide.openSample(entry, time);
+        guide.settle();
+        QVERIFY(guide.track().sketch.fittedCurve.empty());
+        const QString message = guide.fitFromTheFitTab();
+        QVERIFY2(message.startsWith(QStringLiteral("Fit converged")), qPrintable(message));
+        QVERIFY(!guide.track().sketch.fittedCurve.empty());
+        guide.settle();
+        QVERIFY(guide.child<app::SphereView>()->curves().fitSpan.has_value());
+        QVERIFY(guide.child<app::MagnitudePlot>()->graph(app::MagnitudePlot::Curve::Fitted)->dataCount() > 0);
+        QVERIFY(guide.child<app::MagnitudePlot>()->graph(app::MagnitudePlot::Curve::BeforeFit)->dataCount() > 0);
+        prepare(guide);
+        if (QTest::currentTestFailed())
+            return;
+        guide.picture(picture);
+    }
+    void fitSketchSample(const char* entry, double time, const QString& picture)
+    {
+        fitSketchSample(entry, time, picture, [](GuideWindow&) {});
+    }
+};
+
+QTEST_MAIN(TestUserGuide)
+#include "tst_user_guide.moc"
