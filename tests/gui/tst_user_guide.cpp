@@ -180,6 +180,17 @@ public:
 
     void raiseDock(const char* dock) { child<QDockWidget>(dock)->raise(); }
 
+    // Presses Remove fit on the Fit tab: one undo step that takes the track back to its keys.
+    void removeFitFromTheFitTab()
+    {
+        raiseDock("fitDock");
+        QUndoStack& stack = window_.document().undoStack();
+        const int stepsBefore = stack.count();
+        child<QAbstractButton>("removeFitButton")->click();
+        QCOMPARE(stack.count(), stepsBefore + 1);
+        QVERIFY(track().sketch.fittedCurve.empty());
+    }
+
     // Presses Fit on the Fit tab and waits for the fit's undo step; the status bar's message after it.
     QString fitFromTheFitTab()
     {
@@ -408,22 +419,35 @@ private slots:
     }
 
 private:
-    // Opens the sample, fits it from the Fit tab and checks what the guide says of the result; `prepare`
-    // then sets up the picture.
+    // The sphere and the speed plot show a fitted track's fit and its motion before the fit.
+    static void checkShowsTheFit(GuideWindow& guide)
+    {
+        QVERIFY(guide.child<app::SphereView>()->curves().fitSpan.has_value());
+        QVERIFY(guide.child<app::MagnitudePlot>()->graph(app::MagnitudePlot::Curve::Fitted)->dataCount() > 0);
+        QVERIFY(guide.child<app::MagnitudePlot>()->graph(app::MagnitudePlot::Curve::BeforeFit)->dataCount() > 0);
+    }
+
+    // Opens the sample, which shows its fit; Remove fit takes it back to the keys and Fit fits it again,
+    // as the guide says; `prepare` then sets up the picture.
     template <class Prepare>
     void fitSketchSample(const char* entry, double time, const QString& picture, Prepare prepare)
     {
         GuideWindow guide;
         guide.openSample(entry, time);
         guide.settle();
-        QVERIFY(guide.track().sketch.fittedCurve.empty());
+        QVERIFY(!guide.track().sketch.fittedCurve.empty());
+        checkShowsTheFit(guide);
+        guide.removeFitFromTheFitTab();
+        if (QTest::currentTestFailed())
+            return;
+        guide.settle();
         const QString message = guide.fitFromTheFitTab();
         QVERIFY2(message.startsWith(QStringLiteral("Fit converged")), qPrintable(message));
         QVERIFY(!guide.track().sketch.fittedCurve.empty());
         guide.settle();
-        QVERIFY(guide.child<app::SphereView>()->curves().fitSpan.has_value());
-        QVERIFY(guide.child<app::MagnitudePlot>()->graph(app::MagnitudePlot::Curve::Fitted)->dataCount() > 0);
-        QVERIFY(guide.child<app::MagnitudePlot>()->graph(app::MagnitudePlot::Curve::BeforeFit)->dataCount() > 0);
+        checkShowsTheFit(guide);
+        if (QTest::currentTestFailed())
+            return;
         prepare(guide);
         if (QTest::currentTestFailed())
             return;
