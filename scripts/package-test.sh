@@ -23,7 +23,8 @@ echo "package-test: built $package"
 contents="$(dpkg-deb --contents "$package")"
 expected=(./usr/bin/gyre ./usr/bin/gyre-cli "./usr/share/applications/$app_id.desktop"
     "./usr/share/metainfo/$app_id.metainfo.xml" "./usr/share/mime/packages/$app_id.xml"
-    "./usr/share/icons/hicolor/scalable/apps/$app_id.svg")
+    "./usr/share/icons/hicolor/scalable/apps/$app_id.svg" ./usr/share/doc/gyre/user-guide.md
+    ./usr/share/doc/gyre/images/guide-window.png)
 for size in 16 22 24 32 48 64 128 256 512; do
     expected+=("./usr/share/icons/hicolor/${size}x${size}/apps/$app_id.png")
 done
