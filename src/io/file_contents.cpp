@@ -10,7 +10,7 @@ namespace {
 
 OutputError writeError(const QSaveFile& file)
 {
-    return OutputError(file.fileName(), "cannot write: " + file.errorString().toStdString());
+    return OutputError(file.fileName(), FileError::tr("cannot write: %1").arg(file.errorString()).toStdString());
 }
 
 } // namespace

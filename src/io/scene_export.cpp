@@ -293,10 +293,10 @@ void writeWhole(const QString& path, const aiExportDataBlob& blob)
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        throw OutputError(path, "cannot write: " + file.errorString().toStdString());
+        throw OutputError(path, FileError::tr("cannot write: %1").arg(file.errorString()).toStdString());
     const auto size = static_cast<qint64>(blob.size);
     if (file.write(static_cast<const char*>(blob.data), size) != size || !file.commit())
-        throw OutputError(path, "cannot write: " + file.errorString().toStdString());
+        throw OutputError(path, FileError::tr("cannot write: %1").arg(file.errorString()).toStdString());
 }
 
 // Assimp writes into memory (a BlobIOSystem named after the destination, so that the files a format
@@ -309,11 +309,14 @@ ExportReport writeWithAssimp(const aiScene& scene, const QString& path, SceneFor
     exporter.SetIOHandler(memory); // the exporter owns it
     if (exporter.Export(&scene, assimpFormatId(format), target) != aiReturn_SUCCESS) {
         const std::string reason = exporter.GetErrorString();
-        throw OutputError(path, "Assimp cannot write it" + (reason.empty() ? std::string() : ": " + reason));
+        throw OutputError(path, reason.empty() ? FileError::tr("Assimp cannot write it").toStdString()
+                                               : FileError::tr("Assimp cannot write it: %1")
+                                                     .arg(QString::fromStdString(reason))
+                                                     .toStdString());
     }
     const std::unique_ptr<aiExportDataBlob> main(memory->GetBlobChain());
     if (!main)
-        throw OutputError(path, "Assimp wrote nothing");
+        throw OutputError(path, FileError::tr("Assimp wrote nothing").toStdString());
     for (const aiExportDataBlob* other = main->next; other; other = other->next) {
         const QString otherPath = QFile::decodeName(other->name.C_Str());
         writeWhole(otherPath, *other);
@@ -336,12 +339,12 @@ bool keepsMotion(SceneFormat format) { return format != SceneFormat::Obj; }
 ExportReport exportScene(const model::Scene& scene, const QString& path, SceneFormat format, double fps)
 {
     if (!(std::isfinite(fps) && fps > 0.0))
-        throw OutputError(path, "the frame rate must be a finite number above zero");
+        throw OutputError(path, FileError::tr("the frame rate must be a finite number above zero").toStdString());
     if (!(std::isfinite(scene.startTime) && std::isfinite(scene.endTime) && scene.startTime <= scene.endTime))
-        throw OutputError(path, "the scene's time range is empty or not finite");
+        throw OutputError(path, FileError::tr("the scene's time range is empty or not finite").toStdString());
     ExportReport report;
     if (format == SceneFormat::Obj && std::ranges::none_of(scene.objects, hasTriangles))
-        throw OutputError(path, "the scene has no meshes, and OBJ holds nothing else");
+        throw OutputError(path, FileError::tr("the scene has no meshes, and OBJ holds nothing else").toStdString());
     if (!keepsMotion(format))
         report.warnings << QStringLiteral("OBJ holds no motion: the meshes are written as posed at the start time");
     const std::unique_ptr<const aiScene> assimpScene =

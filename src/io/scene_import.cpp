@@ -48,13 +48,13 @@ void requireReadableFile(const QString& path)
 {
     const QFileInfo info(path);
     if (!info.exists())
-        throw InputError(path, "no such file");
+        throw InputError(path, FileError::tr("no such file").toStdString());
     if (info.isDir())
-        throw InputError(path, "is a directory, not a scene file");
+        throw InputError(path, FileError::tr("is a directory, not a scene file").toStdString());
     if (!info.isReadable())
-        throw InputError(path, "cannot be read (permission denied)");
+        throw InputError(path, FileError::tr("cannot be read (permission denied)").toStdString());
     if (info.size() == 0)
-        throw InputError(path, "the file is empty");
+        throw InputError(path, FileError::tr("the file is empty").toStdString());
 }
 
 const aiScene& readWithAssimp(Assimp::Importer& importer, const QString& path)
@@ -65,7 +65,7 @@ const aiScene& readWithAssimp(Assimp::Importer& importer, const QString& path)
     importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
     const aiScene* scene = importer.ReadFile(QFile::encodeName(path).toStdString(), 0);
     if (scene && scene->mNumMeshes == 0 && scene->mNumAnimations == 0)
-        throw InputError(path, "the file holds no meshes and no animation");
+        throw InputError(path, FileError::tr("the file holds no meshes and no animation").toStdString());
     if (scene && scene->mNumMeshes == 0) {
         // A skeleton with its motion and no mesh is a whole scene to Gyre. Assimp's flag for such
         // files lets validation pass them; the importer owns the scene and allows changing it.
@@ -74,9 +74,11 @@ const aiScene& readWithAssimp(Assimp::Importer& importer, const QString& path)
     if (scene)
         scene = importer.ApplyPostProcessing(kPostProcessing);
     if (!scene)
-        throw InputError(path, "not a scene Gyre can read: " + std::string(importer.GetErrorString()));
+        throw InputError(path, FileError::tr("not a scene Gyre can read: %1")
+                                   .arg(QString::fromUtf8(importer.GetErrorString()))
+                                   .toStdString());
     if (!scene->mRootNode)
-        throw InputError(path, "the file holds no scene nodes");
+        throw InputError(path, FileError::tr("the file holds no scene nodes").toStdString());
     return *scene;
 }
 
@@ -415,8 +417,10 @@ const aiAnimation* chosenAnimation(const QString& path, const aiScene& scene, co
     if (scene.mNumAnimations == 0)
         return nullptr;
     if (options.animationIndex >= scene.mNumAnimations)
-        throw InputError(path, "the file has " + std::to_string(scene.mNumAnimations) + " animations; there is no animation " +
-                                   std::to_string(options.animationIndex));
+        throw InputError(path, FileError::tr("the file has %1 animations; there is no animation %2")
+                                   .arg(scene.mNumAnimations)
+                                   .arg(options.animationIndex)
+                                   .toStdString());
     return scene.mAnimations[options.animationIndex];
 }
 

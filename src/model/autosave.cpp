@@ -33,7 +33,7 @@ void writeInfo(const QString& path, const QString& documentPath)
     QSaveFile file(path);
     const QByteArray json = QJsonDocument(QJsonObject{{kDocumentPathKey, documentPath}}).toJson();
     if (!file.open(QIODevice::WriteOnly) || file.write(json) != json.size() || !file.commit())
-        throw OutputError(path, "cannot write: " + file.errorString().toStdString());
+        throw OutputError(path, FileError::tr("cannot write: %1").arg(file.errorString()).toStdString());
 }
 
 // The document path an info file names; empty if it is missing or unreadable, which costs the user
@@ -65,7 +65,7 @@ Autosave::Autosave(Document& document, const QString& directory, std::chrono::mi
     , document_(document)
 {
     if (!QDir().mkpath(directory))
-        throw OutputError(directory, "cannot create the autosave directory");
+        throw OutputError(directory, FileError::tr("cannot create the autosave directory").toStdString());
     const QString session = QDir(directory).filePath(QUuid::createUuid().toString(QUuid::WithoutBraces));
     recoveryPath_ = session + kCopySuffix;
     infoPath_ = session + kInfoSuffix;
@@ -73,7 +73,7 @@ Autosave::Autosave(Document& document, const QString& directory, std::chrono::mi
     // A session lasts as long as the app runs: its lock is stale only when its process is gone.
     lock_->setStaleLockTime(0);
     if (!lock_->tryLock(0))
-        throw OutputError(lock_->fileName(), "cannot take the autosave lock");
+        throw OutputError(lock_->fileName(), FileError::tr("cannot take the autosave lock").toStdString());
 
     // A document that arrives with unsaved changes is copied at the first tick.
     changedSinceCopy_ = document_.isModified();

@@ -4,6 +4,7 @@
 // field, as `path: objects[2].name: what`. The model owns them because the project file is read here
 // and io, which reads the other formats, depends on the model.
 
+#include <QCoreApplication>
 #include <QString>
 
 #include <cstdint>
@@ -12,6 +13,12 @@
 #include <string_view>
 
 namespace gyre {
+
+// The words of these errors in the user's language, as FileError::tr("..."): the desktop app installs
+// its translations, gyre-cli none, so what pipelines read of gyre-cli stays English.
+class FileError {
+    Q_DECLARE_TR_FUNCTIONS(gyre::FileError)
+};
 
 // A file that cannot be read, or whose contents are not what the format allows.
 class InputError : public std::runtime_error {

@@ -416,11 +416,12 @@ Scene sceneIn(const JsonField& root)
 QByteArray contentsOf(const QString& path)
 {
     if (QFileInfo(path).isDir())
-        throw InputError(path, "is a directory, not a file");
+        throw InputError(path, FileError::tr("is a directory, not a file").toStdString());
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        throw InputError(path, "cannot open: " + file.errorString().toStdString());
-    const InputError tooLarge(path, "is larger than 1 GiB, the most a project file may hold");
+        throw InputError(path, FileError::tr("cannot open: %1").arg(file.errorString()).toStdString());
+    const InputError tooLarge(path,
+                              FileError::tr("is larger than 1 GiB, the most a project file may hold").toStdString());
     if (file.size() > kMaxProjectBytes)
         throw tooLarge;
     QByteArray contents;
@@ -433,7 +434,7 @@ QByteArray contentsOf(const QString& path)
             throw tooLarge;
     }
     if (file.error() != QFileDevice::NoError)
-        throw InputError(path, "cannot read: " + file.errorString().toStdString());
+        throw InputError(path, FileError::tr("cannot read: %1").arg(file.errorString()).toStdString());
     return contents;
 }
 
@@ -444,13 +445,15 @@ QByteArray projectJson(const Scene& scene) { return QJsonDocument(projectObject(
 Scene parseProject(const QByteArray& json, const QString& path)
 {
     if (json.trimmed().isEmpty())
-        throw InputError(path, "is empty; a project file holds a JSON object");
+        throw InputError(path, FileError::tr("is empty; a project file holds a JSON object").toStdString());
     QJsonParseError error;
     // Qt refuses nesting deeper than 1024 (DeepNesting) rather than recursing further.
     const QJsonDocument document = QJsonDocument::fromJson(json, &error);
     if (error.error != QJsonParseError::NoError)
-        throw InputError(path, "not valid JSON: " + error.errorString().toStdString() + " at byte " +
-                                   std::to_string(error.offset));
+        throw InputError(path, FileError::tr("not valid JSON: %1 at byte %2")
+                                   .arg(error.errorString())
+                                   .arg(error.offset)
+                                   .toStdString());
     try {
         return sceneIn(JsonField(document.isObject() ? QJsonValue(document.object()) : QJsonValue(document.array()),
                                  QString()));
@@ -467,14 +470,16 @@ void writeProject(const QString& path, const Scene& scene)
     try {
         sceneIn(JsonField(project, QString()));
     } catch (const FieldError& problem) {
-        throw OutputError(path, std::string("not saved, because the file would not read back: ") + problem.what());
+        throw OutputError(path, FileError::tr("not saved, because the file would not read back: %1")
+                                    .arg(QString::fromUtf8(problem.what()))
+                                    .toStdString());
     }
     const QByteArray json = QJsonDocument(project).toJson();
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        throw OutputError(path, "cannot write: " + file.errorString().toStdString());
+        throw OutputError(path, FileError::tr("cannot write: %1").arg(file.errorString()).toStdString());
     if (file.write(json) != json.size() || !file.commit())
-        throw OutputError(path, "cannot write: " + file.errorString().toStdString());
+        throw OutputError(path, FileError::tr("cannot write: %1").arg(file.errorString()).toStdString());
 }
 
 } // namespace gyre::model

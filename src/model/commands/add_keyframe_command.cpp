@@ -34,7 +34,8 @@ AddKeyframeCommand::AddKeyframeCommand(Document& document, ObjectId object, Keyf
 
 AddKeyframeCommand::AddKeyframeCommand(Document& document, ObjectId object, std::pair<std::size_t, Keyframe> placed,
                                        QUndoCommand* parent)
-    : ListEntryCommand(document, object, placed.first, placed.second, Direction::Insert, commandText("Add Keyframe"),
+    : ListEntryCommand(document, object, placed.first, placed.second, Direction::Insert,
+                       commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Add Keyframe")),
                        parent)
 {
 }

@@ -7,7 +7,8 @@ namespace gyre::model {
 
 AddStrokeCommand::AddStrokeCommand(Document& document, ObjectId object, DirectionStroke stroke, QUndoCommand* parent)
     : ListEntryCommand(document, object, requireObject(document, object).track.sketch.directionStrokes.size(),
-                       checked(std::move(stroke), checkStroke), Direction::Insert, commandText("Add Stroke"), parent)
+                       checked(std::move(stroke), checkStroke), Direction::Insert,
+                       commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Add Stroke")), parent)
 {
 }
 

@@ -21,7 +21,7 @@ KeyframesAndSketchField::Value withFit(const Document& document, ObjectId object
 ApplyFitResultCommand::ApplyFitResultCommand(Document& document, ObjectId object, FitResult result,
                                              QUndoCommand* parent)
     : ChangeValueCommand(document, {object, 0}, withFit(document, object, std::move(result)),
-                         commandText("Apply angular velocity fit"), parent)
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Apply angular velocity fit")), parent)
 {
 }
 

@@ -30,7 +30,8 @@ Value checked(Value value, Check check)
     return value;
 }
 
-// The text that the undo history shows for a command, translatable.
+// The text that the undo history shows for a command, in the user's language. Each command marks its
+// text with QT_TRANSLATE_NOOP("gyre::model::Command", ...), so that lupdate finds it in that context.
 inline QString commandText(const char* text) { return QCoreApplication::translate("gyre::model::Command", text); }
 
 } // namespace gyre::model

@@ -21,7 +21,8 @@ std::vector<PlacedObject> placedSubtree(const Document& document, ObjectId objec
 } // namespace
 
 DeleteObjectCommand::DeleteObjectCommand(Document& document, ObjectId object, QUndoCommand* parent)
-    : ObjectBatchCommand(document, placedSubtree(document, object), Direction::Remove, commandText("Delete Object"),
+    : ObjectBatchCommand(document, placedSubtree(document, object), Direction::Remove,
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Delete Object")),
                          parent)
 {
 }

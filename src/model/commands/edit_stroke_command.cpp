@@ -8,7 +8,7 @@ namespace gyre::model {
 EditStrokeCommand::EditStrokeCommand(Document& document, ObjectId object, std::size_t stroke, DirectionStroke edited,
                                      QUndoCommand* parent)
     : ChangeValueCommand(document, strokeTarget(document, object, stroke), checked(std::move(edited), checkStroke),
-                         commandText("Edit Stroke"), parent)
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Edit Stroke")), parent)
 {
 }
 

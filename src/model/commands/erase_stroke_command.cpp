@@ -6,7 +6,7 @@ namespace gyre::model {
 
 EraseStrokeCommand::EraseStrokeCommand(Document& document, ObjectId object, std::size_t stroke, QUndoCommand* parent)
     : ListEntryCommand(document, object, stroke, requireStroke(document, object, stroke), Direction::Remove,
-                       commandText("Erase Stroke"), parent)
+                       commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Erase Stroke")), parent)
 {
 }
 

@@ -64,7 +64,8 @@ ImportObjectsCommand::ImportObjectsCommand(Document& document, std::vector<Scene
 }
 
 ImportObjectsCommand::ImportObjectsCommand(Document& document, std::vector<PlacedObject> placed, QUndoCommand* parent)
-    : ObjectBatchCommand(document, placed, Direction::Insert, commandText("Import Objects"), parent)
+    : ObjectBatchCommand(document, placed, Direction::Insert,
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Import Objects")), parent)
     , ids_(idsOf(placed))
 {
 }

@@ -30,7 +30,7 @@ double timeBetweenNeighbours(const Document& document, ObjectId object, std::siz
 MoveKeyframeCommand::MoveKeyframeCommand(Document& document, ObjectId object, std::size_t key, double time,
                                          QUndoCommand* parent)
     : ChangeValueCommand(document, {object, key}, timeBetweenNeighbours(document, object, key, time),
-                         commandText("Move Keyframe"), parent)
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Move Keyframe")), parent)
 {
 }
 

@@ -7,7 +7,7 @@ namespace gyre::model {
 RemoveKeyframeCommand::RemoveKeyframeCommand(Document& document, ObjectId object, std::size_t key,
                                              QUndoCommand* parent)
     : ListEntryCommand(document, object, key, requireKeyframe(document, object, key), Direction::Remove,
-                       commandText("Remove Keyframe"), parent)
+                       commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Remove Keyframe")), parent)
 {
 }
 

@@ -6,7 +6,8 @@ namespace gyre::model {
 
 RenameObjectCommand::RenameObjectCommand(Document& document, ObjectId object, const QString& name,
                                          QUndoCommand* parent)
-    : ChangeValueCommand(document, objectTarget(document, object), name, commandText("Rename Object"), parent)
+    : ChangeValueCommand(document, objectTarget(document, object), name,
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Rename Object")), parent)
 {
 }
 

@@ -36,7 +36,7 @@ ParentField::Value reparented(const Document& document, ObjectId object, ObjectI
 ReparentObjectCommand::ReparentObjectCommand(Document& document, ObjectId object, ObjectId newParent,
                                              QUndoCommand* parent)
     : ChangeValueCommand(document, {object, 0}, reparented(document, object, newParent),
-                         commandText("Reparent Object"), parent)
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Reparent Object")), parent)
 {
 }
 

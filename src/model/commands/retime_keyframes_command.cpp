@@ -40,7 +40,7 @@ KeyframesAndSketchField::Value retimed(const Document& document, ObjectId object
 RetimeKeyframesCommand::RetimeKeyframesCommand(Document& document, ObjectId object, double scale, double offset,
                                                QUndoCommand* parent)
     : ChangeValueCommand(document, {object, 0}, retimed(document, object, scale, offset),
-                         commandText("Retime Keyframes"), parent)
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Retime Keyframes")), parent)
 {
 }
 

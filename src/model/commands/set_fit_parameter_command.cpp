@@ -22,7 +22,7 @@ FieldTarget parameterTarget(const Document& document, ObjectId object, FitParame
 SetFitParameterCommand::SetFitParameterCommand(Document& document, ObjectId object, FitParameter parameter,
                                                double value, QUndoCommand* parent)
     : ChangeValueCommand(document, parameterTarget(document, object, parameter), checkedParameter(parameter, value),
-                         commandText("Set Fit Parameter"), parent)
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Set Fit Parameter")), parent)
 {
 }
 

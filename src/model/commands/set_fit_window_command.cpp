@@ -8,7 +8,7 @@ namespace gyre::model {
 SetFitWindowCommand::SetFitWindowCommand(Document& document, ObjectId object,
                                          std::optional<std::pair<double, double>> window, QUndoCommand* parent)
     : ChangeValueCommand(document, objectTarget(document, object), checked(window, checkWindow),
-                         commandText("Set Fit Window"), parent)
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Set Fit Window")), parent)
 {
 }
 

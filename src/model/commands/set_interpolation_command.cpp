@@ -6,7 +6,8 @@ namespace gyre::model {
 
 SetInterpolationCommand::SetInterpolationCommand(Document& document, ObjectId object, InterpolationMethod method,
                                                  QUndoCommand* parent)
-    : ChangeValueCommand(document, objectTarget(document, object), method, commandText("Set Interpolation"), parent)
+    : ChangeValueCommand(document, objectTarget(document, object), method,
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Set Interpolation")), parent)
 {
 }
 

@@ -9,7 +9,8 @@ SetKeyframeOrientationCommand::SetKeyframeOrientationCommand(Document& document,
                                                              const Eigen::Quaterniond& orientation,
                                                              QUndoCommand* parent)
     : ChangeValueCommand(document, keyframeTarget(document, object, key),
-                         unitQuaternion(orientation), commandText("Rotate Keyframe"), parent)
+                         unitQuaternion(orientation),
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Rotate Keyframe")), parent)
 {
 }
 

@@ -8,7 +8,7 @@ namespace gyre::model {
 SetKeyframePositionCommand::SetKeyframePositionCommand(Document& document, ObjectId object, std::size_t key,
                                                        const Eigen::Vector3d& position, QUndoCommand* parent)
     : ChangeValueCommand(document, keyframeTarget(document, object, key), finiteVector(position),
-                         commandText("Move Keyframe Position"), parent)
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Move Keyframe Position")), parent)
 {
 }
 

@@ -8,7 +8,7 @@ namespace gyre::model {
 SetMagnitudeCurveCommand::SetMagnitudeCurveCommand(Document& document, ObjectId object,
                                                    std::vector<MagnitudePoint> curve, QUndoCommand* parent)
     : ChangeValueCommand(document, objectTarget(document, object), checked(std::move(curve), checkMagnitudeCurve),
-                         commandText("Draw Magnitude Curve"), parent)
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Draw Magnitude Curve")), parent)
 {
 }
 

@@ -18,7 +18,7 @@ PatternField::Value checkedPattern(std::vector<Eigen::Vector2d> pattern, int rep
 SetPatternCommand::SetPatternCommand(Document& document, ObjectId object, std::vector<Eigen::Vector2d> pattern,
                                      int repeat, QUndoCommand* parent)
     : ChangeValueCommand(document, objectTarget(document, object), checkedPattern(std::move(pattern), repeat),
-                         commandText("Draw Pattern"), parent)
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Draw Pattern")), parent)
 {
 }
 

@@ -8,7 +8,7 @@ namespace gyre::model {
 SetSubdivisionCommand::SetSubdivisionCommand(Document& document, ObjectId object, const SubdivisionSettings& settings,
                                              QUndoCommand* parent)
     : ChangeValueCommand(document, objectTarget(document, object), checked(settings, checkSubdivision),
-                         commandText("Set Subdivision"), parent)
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Set Subdivision")), parent)
 {
 }
 

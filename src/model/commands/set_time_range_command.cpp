@@ -16,7 +16,8 @@ TimeRange checkedRange(const TimeRange& range)
 } // namespace
 
 SetTimeRangeCommand::SetTimeRangeCommand(Document& document, const TimeRange& range, QUndoCommand* parent)
-    : ChangeValueCommand(document, {kNoObject, 0}, checkedRange(range), commandText("Set Time Range"), parent)
+    : ChangeValueCommand(document, {kNoObject, 0}, checkedRange(range),
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Set Time Range")), parent)
 {
 }
 

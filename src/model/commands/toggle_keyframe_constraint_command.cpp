@@ -7,7 +7,7 @@ namespace gyre::model {
 ToggleKeyframeConstraintCommand::ToggleKeyframeConstraintCommand(Document& document, ObjectId object,
                                                                  std::size_t key, QUndoCommand* parent)
     : ChangeValueCommand(document, {object, key}, !requireKeyframe(document, object, key).constrained,
-                         commandText("Toggle Keyframe Constraint"), parent)
+                         commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Toggle Keyframe Constraint")), parent)
 {
 }
 
