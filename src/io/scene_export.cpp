@@ -85,7 +85,8 @@ aiMesh* assimpMesh(const model::Mesh& mesh, const QString& objectName, const QSt
 {
     for (const std::uint32_t index : mesh.indices)
         if (index >= mesh.positions.size())
-            throw OutputError(path, "the mesh of '" + objectName.toStdString() + "' has an index past its vertices");
+            throw OutputError(
+                path, FileError::tr("the mesh of '%1' has an index past its vertices").arg(objectName).toStdString());
     auto result = std::make_unique<aiMesh>();
     result->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
     result->mMaterialIndex = 0;
@@ -191,12 +192,16 @@ private:
     {
         samples_ += static_cast<std::size_t>(model::bakeSampleBound(range_, object.track.keys.size()));
         if (samples_ > kMaxExportSamples)
-            throw OutputError(path_, "baking at " + formatNumber(range_.fps) + " fps gives more than " +
-                                         std::to_string(kMaxExportSamples) + " samples");
+            throw OutputError(path_, FileError::tr("baking at %1 fps gives more than %2 samples")
+                                         .arg(QString::fromStdString(formatNumber(range_.fps)))
+                                         .arg(kMaxExportSamples)
+                                         .toStdString());
         try {
             return model::bakeTrack(object.track, range_);
         } catch (const std::invalid_argument& error) {
-            throw OutputError(path_, "the motion of '" + object.name.toStdString() + "' cannot be baked: " + error.what());
+            throw OutputError(path_, FileError::tr("the motion of '%1' cannot be baked: %2")
+                                         .arg(object.name, QString::fromUtf8(error.what()))
+                                         .toStdString());
         }
     }
 
@@ -206,7 +211,9 @@ private:
         try {
             node->mTransformation = assimp_math::toAssimpMatrix(model::TrackMotion(object.track).at(scene_.startTime));
         } catch (const std::invalid_argument& error) {
-            throw OutputError(path_, "the motion of '" + object.name.toStdString() + "' cannot be evaluated: " + error.what());
+            throw OutputError(path_, FileError::tr("the motion of '%1' cannot be evaluated: %2")
+                                         .arg(object.name, QString::fromUtf8(error.what()))
+                                         .toStdString());
         }
         if (hasTriangles(object)) {
             node->mNumMeshes = 1;

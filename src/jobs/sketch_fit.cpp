@@ -86,7 +86,10 @@ std::vector<StrokeDirection> strokeDirections(const std::vector<std::vector<fit:
             const double end = stroke.back().time;
             directions.push_back({start, end, fit::AngularVelocityTarget::fromSketch(stroke, {{start, 1.0}, {end, 1.0}})});
         } catch (const std::invalid_argument& problem) {
-            throw SketchFitError("Direction stroke " + std::to_string(i + 1) + " cannot be followed: " + problem.what());
+            throw SketchFitError(SketchFitError::tr("Direction stroke %1 cannot be followed: %2")
+                                     .arg(i + 1)
+                                     .arg(QString::fromUtf8(problem.what()))
+                                     .toStdString());
         }
     }
     return directions;
@@ -187,18 +190,22 @@ std::vector<std::vector<fit::TimedVector>> timedStrokes(const model::MotionTrack
 SketchFitProblem sketchFitProblem(const model::MotionTrack& track)
 {
     if (track.keys.size() < 2)
-        throw SketchFitError("The fit needs at least two keyframes on the selected object.");
+        throw SketchFitError(
+            SketchFitError::tr("The fit needs at least two keyframes on the selected object.").toStdString());
     if (track.interpolation != InterpolationMethod::Hermite)
-        throw SketchFitError("The fit bends the Hermite spline through the keys: choose Hermite interpolation "
-                             "for this object first.");
+        throw SketchFitError(SketchFitError::tr("The fit bends the Hermite spline through the keys: choose Hermite "
+                                                "interpolation for this object first.")
+                                 .toStdString());
     const model::SketchState& sketch = track.sketch;
     if (sketch.directionStrokes.empty() && sketch.magnitude.empty())
-        throw SketchFitError("Nothing is sketched yet: draw the direction of the angular velocity on the sphere, "
-                             "or its magnitude on the plot.");
+        throw SketchFitError(SketchFitError::tr("Nothing is sketched yet: draw the direction of the angular velocity "
+                                                "on the sphere, or its magnitude on the plot.")
+                                 .toStdString());
     const std::optional<fit::TimeWindow> window = editWindow(track);
     if (!window)
-        throw SketchFitError("The edit window has no length inside the keys' span: widen it, or sketch between "
-                             "the first and the last key.");
+        throw SketchFitError(SketchFitError::tr("The edit window has no length inside the keys' span: widen it, or "
+                                                "sketch between the first and the last key.")
+                                 .toStdString());
 
     std::vector<fit::FitKey> keys;
     keys.reserve(track.keys.size());

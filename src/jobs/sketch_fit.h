@@ -19,6 +19,8 @@
 #include "model/commands/apply_fit_result_command.h"
 #include "model/scene.h"
 
+#include <QCoreApplication>
+
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -27,6 +29,9 @@ namespace gyre::jobs {
 
 // A sketch that cannot be fitted. The message says what the artist should do, as it stands.
 class SketchFitError : public std::invalid_argument {
+    // The fit panel shows these messages: they are worded in the user's language.
+    Q_DECLARE_TR_FUNCTIONS(gyre::jobs::SketchFitError)
+
 public:
     using std::invalid_argument::invalid_argument;
 };
