@@ -1,6 +1,7 @@
 // gyre, the desktop application: opens the file named on the command line, or the bundled sample.
 
 #include "app/app_icon.h"
+#include "app/language.h"
 #include "app/main_window.h"
 
 #include <QApplication>
@@ -8,6 +9,7 @@
 #include <QTimer>
 
 #include <cstdio>
+#include <memory>
 
 namespace {
 
@@ -20,7 +22,8 @@ void screenshotAndQuit(QWidget& window, const QString& path, int delayMillisecon
             QApplication::exit(0);
             return;
         }
-        std::fprintf(stderr, "gyre: %s: cannot write the screenshot\n", qPrintable(path));
+        std::fprintf(stderr, "gyre: %s\n",
+                     qPrintable(QApplication::translate("main", "%1: cannot write the screenshot").arg(path)));
         QApplication::exit(1);
     });
 }
@@ -43,6 +46,8 @@ int main(int argc, char* argv[])
     QApplication::setWindowIcon(gyre::app::appIcon());
     // Wayland compositors find the window's icon and name through the installed desktop entry.
     QGuiApplication::setDesktopFileName(QStringLiteral(GYRE_APP_ID));
+    // The language chosen in the preferences, so that even --help speaks it; --language may replace it.
+    auto translations = std::make_unique<gyre::app::Translations>(gyre::app::languageSetting());
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QApplication::translate("main", "Edit the rotations of animated rigid objects."));
@@ -58,7 +63,12 @@ int main(int argc, char* argv[])
     const QCommandLineOption delay(QStringLiteral("delay"),
                                    QApplication::translate("main", "Wait <ms> milliseconds before the screenshot."),
                                    QStringLiteral("ms"), QStringLiteral("3000"));
-    parser.addOptions({screenshot, delay});
+    const QCommandLineOption language(
+        QStringLiteral("language"),
+        QApplication::translate("main", "Speak <language> (%1) instead of the one chosen in the preferences.")
+            .arg(gyre::app::languageCodes().join(QStringLiteral(", "))),
+        QStringLiteral("language"));
+    parser.addOptions({screenshot, delay, language});
     parser.process(application);
     bool delayIsNumber = false;
     const int delayMilliseconds = parser.value(delay).toInt(&delayIsNumber);
@@ -67,6 +77,12 @@ int main(int argc, char* argv[])
                                     .arg(parser.value(delay)));
     if (parser.positionalArguments().size() > 1)
         return commandLineError(QApplication::translate("main", "give at most one file to open."));
+    if (parser.isSet(language)) {
+        translations.reset(); // its translators leave before the new ones come
+        translations = std::make_unique<gyre::app::Translations>(parser.value(language));
+    }
+    if (!translations->warning().isEmpty())
+        std::fprintf(stderr, "gyre: %s\n", qPrintable(translations->warning()));
 
     gyre::app::MainWindow window;
     window.show();

@@ -1,6 +1,7 @@
 #include "app/main_window.h"
 
 #include "app/inspector_widget.h"
+#include "app/preferences_dialog.h"
 #include "app/screwbender_panel.h"
 #include "app/sketch/direction_sketch_panel.h"
 #include "app/sketch/fit_controller.h"
@@ -99,6 +100,7 @@ void MainWindow::setUpActions()
     ui_->actionSave->setIcon(style->standardIcon(QStyle::SP_DialogSaveButton));
     ui_->actionSaveAs->setShortcut(QKeySequence::SaveAs);
     ui_->actionQuit->setShortcut(QKeySequence::Quit);
+    ui_->actionPreferences->setShortcut(QKeySequence::Preferences);
     ui_->actionPlay->setIcon(style->standardIcon(QStyle::SP_MediaPlay));
     ui_->actionStepForward->setIcon(style->standardIcon(QStyle::SP_MediaSeekForward));
     ui_->actionStepBackward->setIcon(style->standardIcon(QStyle::SP_MediaSeekBackward));
@@ -112,6 +114,7 @@ void MainWindow::setUpActions()
     connect(ui_->actionSaveAs, &QAction::triggered, this, &MainWindow::saveAs);
     connect(ui_->actionQuit, &QAction::triggered, this, &QWidget::close);
     connect(ui_->actionAbout, &QAction::triggered, this, &MainWindow::showAbout);
+    connect(ui_->actionPreferences, &QAction::triggered, this, [this] { PreferencesDialog(this).exec(); });
 
     sceneFiles_ = new SceneFileActions(document_, selection_, this, statusBar(), this);
     connect(ui_->actionImportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToImport);

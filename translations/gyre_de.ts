@@ -1,0 +1,2104 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de_DE">
+<context>
+    <name>FitPanel</name>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="9"/>
+        <source>Select an object to fit its rotation to the sketched angular velocity.</source>
+        <translation>Wählen Sie ein Objekt, um seine Rotation an die skizzierte Winkelgeschwindigkeit anzupassen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="41"/>
+        <source>Energy E = αW_T + βW_A</source>
+        <translation>Energie E = αW_T + βW_A</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="45"/>
+        <source>&amp;α (smoothness)</source>
+        <translation>&amp;α (Glätte)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="51"/>
+        <source>Weight of the tangential acceleration W_T: larger is smoother, further from the sketch. The paper uses 0.001–0.005.</source>
+        <translation>Gewicht der Tangentialbeschleunigung W_T: größer ist glatter, aber weiter von der Skizze entfernt. Der Artikel verwendet 0,001–0,005.</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="61"/>
+        <source>&amp;β (follow the sketch)</source>
+        <translation>&amp;β (der Skizze folgen)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="67"/>
+        <source>Weight of W_A, the deviation of the angular velocity from the sketch</source>
+        <translation>Gewicht von W_A, der Abweichung der Winkelgeschwindigkeit von der Skizze</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="77"/>
+        <source>&amp;δ (rad²/s)</source>
+        <translation>&amp;δ (rad²/s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="83"/>
+        <source>The largest error accepted on a fragment of the window; above it the fit inserts variable frames</source>
+        <translation>Der größte zulässige Fehler auf einem Abschnitt des Fensters; darüber fügt die Anpassung variable Frames ein</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="96"/>
+        <source>Edited window</source>
+        <translation>Bearbeitetes Fenster</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="100"/>
+        <source>&amp;Whole sketch</source>
+        <translation>&amp;Ganze Skizze</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="101"/>
+        <source>Refit the span the sketch covers; clear to choose the window</source>
+        <translation>Den Bereich neu anpassen, den die Skizze abdeckt; abwählen, um das Fenster selbst zu wählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="106"/>
+        <source>&amp;Start</source>
+        <translation>&amp;Anfang</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="112"/>
+        <source>Where the refitted span begins</source>
+        <translation>Wo der neu angepasste Bereich beginnt</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="115"/>
+        <location filename="../ui/fit_panel.ui" line="130"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="121"/>
+        <source>E&amp;nd</source>
+        <translation>&amp;Ende</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="127"/>
+        <source>Where the refitted span ends</source>
+        <translation>Wo der neu angepasste Bereich endet</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="139"/>
+        <source>Keyframes kept exactly</source>
+        <translation>Exakt gehaltene Schlüsselbilder</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="143"/>
+        <source>A checked key keeps its orientation; the fit may turn a cleared one</source>
+        <translation>Ein angehaktes Schlüsselbild behält seine Orientierung; ein nicht angehaktes darf die Anpassung drehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="149"/>
+        <source>Time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="150"/>
+        <source>Constrained</source>
+        <translation>Fixiert</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="160"/>
+        <source>Fit</source>
+        <translation>Anpassen</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="161"/>
+        <source>Fit the rotation to the sketch (Ctrl+F)</source>
+        <translation>Die Rotation an die Skizze anpassen (Ctrl+F)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="167"/>
+        <source>&amp;Cancel</source>
+        <translation>&amp;Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="168"/>
+        <source>Stop the running fit; the motion stays as it is</source>
+        <translation>Die laufende Anpassung anhalten; die Bewegung bleibt, wie sie ist</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="173"/>
+        <source>&amp;Remove fit</source>
+        <translation>Anpassung &amp;entfernen</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="174"/>
+        <source>Go back to the interpolation through the keys</source>
+        <translation>Zur Interpolation durch die Schlüsselbilder zurückkehren</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="181"/>
+        <source>&amp;Live: refit while the sketch changes</source>
+        <translation>&amp;Live: bei jeder Änderung der Skizze neu anpassen</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="182"/>
+        <source>Refit at every change of the sketch, keys or settings; while drawing, the view previews the fit</source>
+        <translation>Bei jeder Änderung der Skizze, der Schlüsselbilder oder der Einstellungen neu anpassen; beim Zeichnen zeigt die Ansicht eine Vorschau der Anpassung</translation>
+    </message>
+</context>
+<context>
+    <name>InspectorWidget</name>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="9"/>
+        <source>Select a keyframe on the timeline or in the viewport to inspect it.</source>
+        <translation>Wählen Sie ein Schlüsselbild in der Zeitleiste oder im Ansichtsfenster, um es zu untersuchen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="52"/>
+        <source>Keyframe</source>
+        <translation>Schlüsselbild</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="56"/>
+        <source>&amp;Time (s)</source>
+        <translation>&amp;Zeit (s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="62"/>
+        <source>Time in seconds</source>
+        <translation>Zeit in Sekunden</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="67"/>
+        <source>&amp;Constrained: the fit keeps this key exactly</source>
+        <translation>&amp;Fixiert: die Anpassung hält dieses Schlüsselbild exakt</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="75"/>
+        <source>Position</source>
+        <translation>Position</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="97"/>
+        <source>Position x</source>
+        <translation>Position x</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="102"/>
+        <source>Position y</source>
+        <translation>Position y</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="107"/>
+        <source>Position z</source>
+        <translation>Position z</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="115"/>
+        <source>Quaternion</source>
+        <translation>Quaternion</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="143"/>
+        <source>Quaternion w</source>
+        <translation>Quaternion w</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="148"/>
+        <source>Quaternion x</source>
+        <translation>Quaternion x</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="153"/>
+        <source>Quaternion y</source>
+        <translation>Quaternion y</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="158"/>
+        <source>Quaternion z</source>
+        <translation>Quaternion z</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="166"/>
+        <source>Rotation matrix</source>
+        <translation>Rotationsmatrix</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="170"/>
+        <source>Matrix row 1, column 1</source>
+        <translation>Matrix Zeile 1, Spalte 1</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="175"/>
+        <source>Matrix row 1, column 2</source>
+        <translation>Matrix Zeile 1, Spalte 2</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="180"/>
+        <source>Matrix row 1, column 3</source>
+        <translation>Matrix Zeile 1, Spalte 3</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="185"/>
+        <source>Matrix row 2, column 1</source>
+        <translation>Matrix Zeile 2, Spalte 1</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="190"/>
+        <source>Matrix row 2, column 2</source>
+        <translation>Matrix Zeile 2, Spalte 2</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="195"/>
+        <source>Matrix row 2, column 3</source>
+        <translation>Matrix Zeile 2, Spalte 3</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="200"/>
+        <source>Matrix row 3, column 1</source>
+        <translation>Matrix Zeile 3, Spalte 1</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="205"/>
+        <source>Matrix row 3, column 2</source>
+        <translation>Matrix Zeile 3, Spalte 2</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="210"/>
+        <source>Matrix row 3, column 3</source>
+        <translation>Matrix Zeile 3, Spalte 3</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="218"/>
+        <source>Axis-angle</source>
+        <translation>Achse-Winkel</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="222"/>
+        <source>axis x</source>
+        <translation>Achse x</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="228"/>
+        <source>axis y</source>
+        <translation>Achse y</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="234"/>
+        <source>axis z</source>
+        <translation>Achse z</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="240"/>
+        <source>angle (°)</source>
+        <translation>Winkel (°)</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="246"/>
+        <source>Axis x</source>
+        <translation>Achse x</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="251"/>
+        <source>Axis y</source>
+        <translation>Achse y</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="256"/>
+        <source>Axis z</source>
+        <translation>Achse z</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="261"/>
+        <source>Angle in degrees</source>
+        <translation>Winkel in Grad</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="269"/>
+        <source>Euler angles</source>
+        <translation>Euler-Winkel</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="275"/>
+        <source>&amp;Order</source>
+        <translation>&amp;Reihenfolge</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="281"/>
+        <source>The axes the three angles turn about, first to last</source>
+        <translation>Die Achsen, um die die drei Winkel drehen, vom ersten bis zum letzten</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="286"/>
+        <source>Extrinsic angles turn about the fixed world axes; intrinsic ones about the axes as they have been turned so far</source>
+        <translation>Extrinsische Winkel drehen um die festen Weltachsen, intrinsische um die Achsen, wie sie bis dahin gedreht wurden</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="309"/>
+        <source>Euler angle 1 in degrees</source>
+        <translation>Euler-Winkel 1 in Grad</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="314"/>
+        <source>Euler angle 2 in degrees</source>
+        <translation>Euler-Winkel 2 in Grad</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="319"/>
+        <source>Euler angle 3 in degrees</source>
+        <translation>Euler-Winkel 3 in Grad</translation>
+    </message>
+</context>
+<context>
+    <name>MainWindow</name>
+    <message>
+        <location filename="../ui/main_window.ui" line="18"/>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="19"/>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="20"/>
+        <source>Open Sa&amp;mple</source>
+        <translation>Beis&amp;piel öffnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="34"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="40"/>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="41"/>
+        <source>&amp;Panels</source>
+        <translation>Bedien&amp;felder</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="52"/>
+        <source>&amp;Motion</source>
+        <translation>Be&amp;wegung</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="65"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="75"/>
+        <source>File</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="83"/>
+        <source>Edit</source>
+        <translation>Bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="88"/>
+        <source>Playback</source>
+        <translation>Wiedergabe</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="100"/>
+        <source>Inspector</source>
+        <translation>Inspektor</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="112"/>
+        <source>ScrewBender</source>
+        <translation>ScrewBender</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="124"/>
+        <source>Undo History</source>
+        <translation>Rückgängig-Verlauf</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="136"/>
+        <source>Timeline</source>
+        <translation>Zeitleiste</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="148"/>
+        <source>Smoothness</source>
+        <translation>Glätte</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="160"/>
+        <source>Angular Velocity Direction</source>
+        <translation>Richtung der Winkelgeschwindigkeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="172"/>
+        <source>Fit</source>
+        <translation>Anpassung</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="184"/>
+        <source>Angular Speed</source>
+        <translation>Betrag der Winkelgeschwindigkeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="196"/>
+        <source>&amp;New</source>
+        <translation>&amp;Neu</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="197"/>
+        <source>Start a new, empty project</source>
+        <translation>Ein neues, leeres Projekt beginnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="200"/>
+        <source>&amp;Open…</source>
+        <translation>Ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="201"/>
+        <source>Open a Gyre project</source>
+        <translation>Ein Gyre-Projekt öffnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="204"/>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="205"/>
+        <source>Save the project</source>
+        <translation>Das Projekt speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="208"/>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="209"/>
+        <source>Save the project under a new name</source>
+        <translation>Das Projekt unter einem neuen Namen speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="212"/>
+        <source>&amp;Import Scene…</source>
+        <translation>Szene &amp;importieren…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="213"/>
+        <source>Add the objects and motion of an FBX, glTF, Collada, OBJ, BVH or other scene file</source>
+        <translation>Die Objekte und die Bewegung einer FBX-, glTF-, Collada-, OBJ-, BVH- oder anderen Szenendatei hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="217"/>
+        <source>&amp;Export Scene…</source>
+        <translation>Szene &amp;exportieren…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="218"/>
+        <source>Write the scene with its motion baked to glTF, Collada, FBX or OBJ</source>
+        <translation>Die Szene mit gebackener Bewegung als glTF, Collada, FBX oder OBJ schreiben</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="222"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="223"/>
+        <source>Quit Gyre</source>
+        <translation>Gyre beenden</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="227"/>
+        <source>Undo &amp;History</source>
+        <translation>Rückgängig-&amp;Verlauf</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="228"/>
+        <source>Show every step of the undo history</source>
+        <translation>Jeden Schritt des Rückgängig-Verlaufs zeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="232"/>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Einstellungen…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="233"/>
+        <source>Choose the language Gyre speaks</source>
+        <translation>Die Sprache wählen, die Gyre spricht</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="239"/>
+        <source>Original Motion as &amp;Ghost</source>
+        <translation>Ursprüngliche Bewegung als &amp;Geisterbild</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="240"/>
+        <source>Show the motion as it was when the project was opened or saved, faintly</source>
+        <translation>Die Bewegung blass zeigen, wie sie beim Öffnen oder Speichern des Projekts war</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="245"/>
+        <source>Centre &amp;Trajectory</source>
+        <translation>&amp;Bahn des Mittelpunkts</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="246"/>
+        <source>Show the path of the selected object&apos;s centre</source>
+        <translation>Die Bahn des Mittelpunkts des gewählten Objekts zeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="251"/>
+        <source>&amp;Control Poses</source>
+        <translation>&amp;Kontrollposen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="252"/>
+        <source>Show the keyframe poses of the selected object in place</source>
+        <translation>Die Posen der Schlüsselbilder des gewählten Objekts an Ort und Stelle zeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="257"/>
+        <source>&amp;Stroboscopic Trail</source>
+        <translation>&amp;Stroboskopspur</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="258"/>
+        <source>Show many copies of the selected object along its subdivided motion</source>
+        <translation>Viele Kopien des gewählten Objekts entlang seiner unterteilten Bewegung zeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="261"/>
+        <source>&amp;Frame Scene</source>
+        <translation>Szene ein&amp;passen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="262"/>
+        <source>Point the camera at the whole scene</source>
+        <translation>Die Kamera auf die ganze Szene richten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="267"/>
+        <source>&amp;Play</source>
+        <translation>&amp;Abspielen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="268"/>
+        <source>Play or pause the animation</source>
+        <translation>Die Animation abspielen oder anhalten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="272"/>
+        <source>Step &amp;Forward</source>
+        <translation>Einen Schritt &amp;vor</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="273"/>
+        <source>One frame later</source>
+        <translation>Ein Frame später</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="277"/>
+        <source>Step &amp;Backward</source>
+        <translation>Einen Schritt &amp;zurück</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="278"/>
+        <source>One frame earlier</source>
+        <translation>Ein Frame früher</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="282"/>
+        <source>Go to &amp;Start</source>
+        <translation>Zum A&amp;nfang</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="283"/>
+        <source>Go to the first frame</source>
+        <translation>Zum ersten Frame gehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="287"/>
+        <source>Go to &amp;End</source>
+        <translation>Zum &amp;Ende</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="288"/>
+        <source>Go to the last frame</source>
+        <translation>Zum letzten Frame gehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="294"/>
+        <source>&amp;Loop</source>
+        <translation>&amp;Schleife</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="295"/>
+        <source>Start again from the beginning at the end</source>
+        <translation>Am Ende wieder von vorn beginnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="298"/>
+        <source>&amp;Add Keyframe</source>
+        <translation>Schlüsselbild &amp;hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="299"/>
+        <source>Key the selected object&apos;s pose at the current time</source>
+        <translation>Die Pose des gewählten Objekts zur aktuellen Zeit als Schlüsselbild setzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="303"/>
+        <source>&amp;Delete Keyframe</source>
+        <translation>Schlüsselbild &amp;löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="304"/>
+        <source>Delete the selected keyframe</source>
+        <translation>Das gewählte Schlüsselbild löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="310"/>
+        <source>&amp;Constrain Keyframe</source>
+        <translation>Schlüsselbild &amp;fixieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="311"/>
+        <source>Keep the selected keyframe exactly when fitting, or free it</source>
+        <translation>Das gewählte Schlüsselbild bei der Anpassung exakt halten oder freigeben</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="315"/>
+        <source>&amp;About Gyre</source>
+        <translation>&amp;Über Gyre</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="316"/>
+        <source>Version, licence and the libraries Gyre is built on</source>
+        <translation>Version, Lizenz und die Bibliotheken, auf denen Gyre aufbaut</translation>
+    </message>
+</context>
+<context>
+    <name>PreferencesDialog</name>
+    <message>
+        <location filename="../ui/preferences_dialog.ui" line="5"/>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <location filename="../ui/preferences_dialog.ui" line="11"/>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <location filename="../ui/preferences_dialog.ui" line="17"/>
+        <source>The language of Gyre&apos;s menus, panels and messages</source>
+        <translation>Die Sprache der Menüs, Bedienfelder und Meldungen von Gyre</translation>
+    </message>
+    <message>
+        <location filename="../ui/preferences_dialog.ui" line="22"/>
+        <source>The language changes when Gyre next starts.</source>
+        <translation>Die Sprache wechselt beim nächsten Start von Gyre.</translation>
+    </message>
+</context>
+<context>
+    <name>ScrewBenderPanel</name>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="9"/>
+        <source>Select an object to choose how its track is interpolated.</source>
+        <translation>Wählen Sie ein Objekt, um zu bestimmen, wie seine Spur interpoliert wird.</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="41"/>
+        <source>Interpolation</source>
+        <translation>Interpolation</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="45"/>
+        <source>&amp;Method</source>
+        <translation>&amp;Verfahren</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="51"/>
+        <source>How the track&apos;s orientation is interpolated between its keyframes</source>
+        <translation>Wie die Orientierung der Spur zwischen ihren Schlüsselbildern interpoliert wird</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="59"/>
+        <source>Subdivision</source>
+        <translation>Unterteilung</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="63"/>
+        <source>Used when the method is screw motion.</source>
+        <translation>Wird verwendet, wenn das Verfahren Schraubbewegung ist.</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="69"/>
+        <source>&amp;Scheme</source>
+        <translation>&amp;Schema</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="75"/>
+        <source>The Split&amp;Tweak rule that smooths the polyscrew at each level</source>
+        <translation>Die Split&amp;Tweak-Regel, die die Polyschraube auf jeder Stufe glättet</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="80"/>
+        <source>&amp;Levels</source>
+        <translation>S&amp;tufen</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="86"/>
+        <source>Each level doubles the poses</source>
+        <translation>Jede Stufe verdoppelt die Posen</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="92"/>
+        <source>Sequence</source>
+        <translation>Folge</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="99"/>
+        <source>C&amp;yclic</source>
+        <translation>&amp;Zyklisch</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="100"/>
+        <source>The last keyframe joins the first: a closed loop</source>
+        <translation>Das letzte Schlüsselbild schließt an das erste an: eine geschlossene Schleife</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="105"/>
+        <source>&amp;Open</source>
+        <translation>&amp;Offen</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="106"/>
+        <source>The motion starts at the first keyframe and ends at the last</source>
+        <translation>Die Bewegung beginnt beim ersten Schlüsselbild und endet beim letzten</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="113"/>
+        <source>&amp;Decoupled, for comparison</source>
+        <translation>&amp;Entkoppelt, zum Vergleich</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="114"/>
+        <source>The alternative the paper compares against: orientations by slerp, positions by the linear scheme, each subdivided on its own</source>
+        <translation>Die Alternative, mit der der Artikel vergleicht: Orientierungen per Slerp, Positionen nach dem linearen Schema, jeweils für sich unterteilt</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="119"/>
+        <source>Poses</source>
+        <translation>Posen</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::FileError</name>
+    <message>
+        <location filename="../src/model/autosave.cpp" line="36"/>
+        <location filename="../src/model/project_file.cpp" line="480"/>
+        <location filename="../src/model/project_file.cpp" line="482"/>
+        <location filename="../src/io/file_contents.cpp" line="13"/>
+        <location filename="../src/io/scene_export.cpp" line="303"/>
+        <location filename="../src/io/scene_export.cpp" line="306"/>
+        <source>cannot write: %1</source>
+        <translation>kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/autosave.cpp" line="68"/>
+        <source>cannot create the autosave directory</source>
+        <translation>das Verzeichnis für die automatische Sicherung kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location filename="../src/model/autosave.cpp" line="76"/>
+        <source>cannot take the autosave lock</source>
+        <translation>die Sperre der automatischen Sicherung kann nicht übernommen werden</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="419"/>
+        <source>is a directory, not a file</source>
+        <translation>ist ein Verzeichnis, keine Datei</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="422"/>
+        <source>cannot open: %1</source>
+        <translation>kann nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="424"/>
+        <source>is larger than 1 GiB, the most a project file may hold</source>
+        <translation>ist größer als 1 GiB, das Höchstmaß für eine Projektdatei</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="437"/>
+        <source>cannot read: %1</source>
+        <translation>kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="448"/>
+        <source>is empty; a project file holds a JSON object</source>
+        <translation>ist leer; eine Projektdatei enthält ein JSON-Objekt</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="453"/>
+        <source>not valid JSON: %1 at byte %2</source>
+        <translation>kein gültiges JSON: %1 bei Byte %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="473"/>
+        <source>not saved, because the file would not read back: %1</source>
+        <translation>nicht gespeichert, weil sich die Datei nicht wieder lesen ließe: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="89"/>
+        <source>the mesh of &apos;%1&apos; has an index past its vertices</source>
+        <translation>das Mesh von „%1“ hat einen Index jenseits seiner Vertices</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="195"/>
+        <source>baking at %1 fps gives more than %2 samples</source>
+        <translation>Backen mit %1 fps ergibt mehr als %2 Abtastwerte</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="202"/>
+        <source>the motion of &apos;%1&apos; cannot be baked: %2</source>
+        <translation>die Bewegung von „%1“ kann nicht gebacken werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="214"/>
+        <source>the motion of &apos;%1&apos; cannot be evaluated: %2</source>
+        <translation>die Bewegung von „%1“ kann nicht ausgewertet werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="319"/>
+        <source>Assimp cannot write it</source>
+        <translation>Assimp kann sie nicht schreiben</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="320"/>
+        <source>Assimp cannot write it: %1</source>
+        <translation>Assimp kann sie nicht schreiben: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="326"/>
+        <source>Assimp wrote nothing</source>
+        <translation>Assimp hat nichts geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="349"/>
+        <source>the frame rate must be a finite number above zero</source>
+        <translation>die Bildrate muss eine endliche Zahl über null sein</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="351"/>
+        <source>the scene&apos;s time range is empty or not finite</source>
+        <translation>der Zeitbereich der Szene ist leer oder nicht endlich</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="354"/>
+        <source>the scene has no meshes, and OBJ holds nothing else</source>
+        <translation>die Szene hat keine Meshes, und OBJ enthält nichts anderes</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="51"/>
+        <source>no such file</source>
+        <translation>Datei nicht vorhanden</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="53"/>
+        <source>is a directory, not a scene file</source>
+        <translation>ist ein Verzeichnis, keine Szenendatei</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="55"/>
+        <source>cannot be read (permission denied)</source>
+        <translation>kann nicht gelesen werden (keine Berechtigung)</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="57"/>
+        <source>the file is empty</source>
+        <translation>die Datei ist leer</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="68"/>
+        <source>the file holds no meshes and no animation</source>
+        <translation>die Datei enthält weder Meshes noch Animation</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="77"/>
+        <source>not a scene Gyre can read: %1</source>
+        <translation>keine Szene, die Gyre lesen kann: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="81"/>
+        <source>the file holds no scene nodes</source>
+        <translation>die Datei enthält keine Szenenknoten</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="420"/>
+        <source>the file has %1 animations; there is no animation %2</source>
+        <translation>die Datei hat %1 Animationen; Animation %2 gibt es nicht</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::FitController</name>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="16"/>
+        <source>Fit converged</source>
+        <translation>Anpassung konvergiert</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="17"/>
+        <source>Fit stopped (%1)</source>
+        <translation>Anpassung angehalten (%1)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="18"/>
+        <source>%1: %2 rounds, %3 iterations, largest fragment error %4 rad²/s, %5 s.</source>
+        <translation>%1: %2 Runden, %3 Iterationen, größter Abschnittsfehler %4 rad²/s, %5 s.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="45"/>
+        <source>Fit failed: %1</source>
+        <translation>Anpassung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="47"/>
+        <source>Fit cancelled.</source>
+        <translation>Anpassung abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="118"/>
+        <source>Fit dropped: the track changed while it ran.</source>
+        <translation>Anpassung verworfen: die Spur hat sich währenddessen geändert.</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::FitPanel</name>
+    <message>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="65"/>
+        <source>Fitting…</source>
+        <translation>Anpassung läuft…</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="225"/>
+        <source>Remove angular velocity fit</source>
+        <translation>Anpassung der Winkelgeschwindigkeit entfernen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="235"/>
+        <source>Not changed: %1.</source>
+        <translation>Nicht geändert: %1.</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::FitProgress</name>
+    <message>
+        <location filename="../src/app/sketch/fit_progress.cpp" line="20"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_progress.cpp" line="26"/>
+        <source>Stop the fit; the motion stays as it is</source>
+        <translation>Die Anpassung anhalten; die Bewegung bleibt, wie sie ist</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_progress.cpp" line="43"/>
+        <source>Fitting…</source>
+        <translation>Anpassung läuft…</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_progress.cpp" line="53"/>
+        <source>Fit: round %v of %m, largest error %1 rad²/s</source>
+        <translation>Anpassung: Runde %v von %m, größter Fehler %1 rad²/s</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_progress.cpp" line="54"/>
+        <source>Fit: round %v of %m</source>
+        <translation>Anpassung: Runde %v von %m</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::InspectorWidget</name>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="75"/>
+        <source>time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="77"/>
+        <source>position x</source>
+        <translation>Position x</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="77"/>
+        <source>position y</source>
+        <translation>Position y</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="77"/>
+        <source>position z</source>
+        <translation>Position z</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <source>quaternion w</source>
+        <translation>Quaternion w</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <source>quaternion x</source>
+        <translation>Quaternion x</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <source>quaternion y</source>
+        <translation>Quaternion y</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <source>quaternion z</source>
+        <translation>Quaternion z</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="87"/>
+        <source>matrix row %1, column %2</source>
+        <translation>Matrix Zeile %1, Spalte %2</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <source>axis x</source>
+        <translation>Achse x</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <source>axis y</source>
+        <translation>Achse y</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <source>axis z</source>
+        <translation>Achse z</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <source>angle</source>
+        <translation>Winkel</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <source>first angle</source>
+        <translation>erster Winkel</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <source>second angle</source>
+        <translation>zweiter Winkel</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <source>third angle</source>
+        <translation>dritter Winkel</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="134"/>
+        <source>extrinsic (fixed axes)</source>
+        <translation>extrinsisch (feste Achsen)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="135"/>
+        <source>intrinsic (moving axes)</source>
+        <translation>intrinsisch (mitbewegte Achsen)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="157"/>
+        <source>about %1 (°)</source>
+        <translation>um %1 (°)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="171"/>
+        <source>%1, keyframe %2 of %3</source>
+        <translation>%1, Schlüsselbild %2 von %3</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="205"/>
+        <source>Near gimbal lock (%1° from it): the first and third angles turn about almost the same axis, so only their sum (or difference) is determined. Small changes of the rotation can swing them widely.</source>
+        <translation>Nahe am Gimbal Lock (kardanische Blockade, %1° entfernt): Der erste und der dritte Winkel drehen fast um dieselbe Achse, daher ist nur ihre Summe (oder Differenz) bestimmt. Kleine Änderungen der Rotation können sie stark ausschlagen lassen.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="240"/>
+        <source>The keyframe was not moved: %1.</source>
+        <translation>Das Schlüsselbild wurde nicht verschoben: %1.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="251"/>
+        <source>The constraint was not changed: %1.</source>
+        <translation>Die Fixierung wurde nicht geändert: %1.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="260"/>
+        <source>The position was not changed: %1.</source>
+        <translation>Die Position wurde nicht geändert: %1.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="273"/>
+        <location filename="../src/app/inspector_widget.cpp" line="296"/>
+        <location filename="../src/app/inspector_widget.cpp" line="322"/>
+        <location filename="../src/app/inspector_widget.cpp" line="345"/>
+        <source>The rotation was not changed: %1.</source>
+        <translation>Die Rotation wurde nicht geändert: %1.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="278"/>
+        <source>The rotation was not changed: the zero quaternion is no rotation.</source>
+        <translation>Die Rotation wurde nicht geändert: Das Null-Quaternion ist keine Rotation.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="286"/>
+        <source>The quaternion had length %1; it was scaled to length 1.</source>
+        <translation>Das Quaternion hatte die Länge %1; es wurde auf Länge 1 skaliert.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="303"/>
+        <source>The rotation was not changed: the matrix has determinant %1, so it flattens or mirrors space and is not a rotation.</source>
+        <translation>Die Rotation wurde nicht geändert: Die Matrix hat die Determinante %1, sie staucht oder spiegelt also den Raum und ist keine Rotation.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="311"/>
+        <source>The matrix was not a rotation (its rows were up to %1 from orthonormal); the nearest rotation was used.</source>
+        <translation>Die Matrix war keine Rotation (ihre Zeilen wichen um bis zu %1 von orthonormal ab); die nächstgelegene Rotation wurde verwendet.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="328"/>
+        <source>The rotation was not changed: a zero axis names no direction to turn about.</source>
+        <translation>Die Rotation wurde nicht geändert: Eine Nullachse gibt keine Drehrichtung an.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="333"/>
+        <source>The axis had length %1; it was scaled to length 1.</source>
+        <translation>Die Achse hatte die Länge %1; sie wurde auf Länge 1 skaliert.</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::KeyframeActions</name>
+    <message>
+        <location filename="../src/app/keyframe_actions.cpp" line="54"/>
+        <source>Cannot add a keyframe: %1</source>
+        <translation>Schlüsselbild kann nicht hinzugefügt werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::MagnitudePlot</name>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="138"/>
+        <source>Select an object to see and sketch the speed of its rotation.</source>
+        <translation>Wählen Sie ein Objekt, um die Geschwindigkeit seiner Rotation zu sehen und zu skizzieren.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="205"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="210"/>
+        <source>Draw</source>
+        <translation>Zeichnen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="211"/>
+        <source>Left-drag draws the magnitude |ω| over time; going back erases</source>
+        <translation>Ziehen mit der linken Maustaste zeichnet den Betrag |ω| über der Zeit; zurückziehen radiert</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="212"/>
+        <source>Pan</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="212"/>
+        <source>Left-drag pans the view</source>
+        <translation>Ziehen mit der linken Maustaste verschiebt die Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="221"/>
+        <source>Fit View</source>
+        <translation>Ansicht einpassen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="222"/>
+        <source>Show the scene&apos;s time range and the curves&apos; height; double-click does too</source>
+        <translation>Den Zeitbereich der Szene und die Höhe der Kurven zeigen; ein Doppelklick tut das auch</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="224"/>
+        <source>Clear Magnitude</source>
+        <translation>Betrag löschen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="225"/>
+        <source>Remove the sketched magnitude curve</source>
+        <translation>Die skizzierte Betragskurve entfernen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="239"/>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="240"/>
+        <source>|ω| (rad/s)</source>
+        <translation>|ω| (rad/s)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="243"/>
+        <source>|ω| (°/s)</source>
+        <translation>|ω| (°/s)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="256"/>
+        <source>before fit</source>
+        <translation>vor der Anpassung</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="257"/>
+        <source>current</source>
+        <translation>aktuell</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="258"/>
+        <source>fitted</source>
+        <translation>angepasst</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="259"/>
+        <source>sketched</source>
+        <translation>skizziert</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="260"/>
+        <source>constrained keys</source>
+        <translation>fixierte Schlüsselbilder</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="262"/>
+        <source>free keys</source>
+        <translation>freie Schlüsselbilder</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::MainWindow</name>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="65"/>
+        <source>Gyre projects (*.gyre)</source>
+        <translation>Gyre-Projekte (*.gyre)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="126"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="130"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="154"/>
+        <source>&lt;opened&gt;</source>
+        <translation>&lt;geöffnet&gt;</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="195"/>
+        <source>Drawing the direction on the sphere needs OpenGL 3.3, which this display does not offer. The speed plot and the fit work without it.</source>
+        <translation>Das Zeichnen der Richtung auf der Kugel braucht OpenGL 3.3, das diese Anzeige nicht bietet. Das Geschwindigkeitsdiagramm und die Anpassung funktionieren ohne.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="218"/>
+        <source>The 3D viewport needs OpenGL 3.3, which this display does not offer. Editing, the panels and the timeline work without it.</source>
+        <translation>Das 3D-Ansichtsfenster braucht OpenGL 3.3, das diese Anzeige nicht bietet. Bearbeiten, die Bedienfelder und die Zeitleiste funktionieren ohne.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="244"/>
+        <source>Viewport frame rate while drawing, and the time to subdivide the trail: on the worker, and from the request to its arrival</source>
+        <translation>Bildrate des Ansichtsfensters beim Zeichnen und die Zeit für die Unterteilung der Spur: im Hintergrund-Thread und von der Anforderung bis zur Ankunft</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="249"/>
+        <source>%1 fps · subdivision %2 ms (%3 ms to arrive)</source>
+        <translation>%1 fps · Unterteilung %2 ms (%3 ms bis zur Ankunft)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="283"/>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="285"/>
+        <source>%1[*] — Gyre</source>
+        <translation>%1[*] — Gyre</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="300"/>
+        <source>Open Project</source>
+        <translation>Projekt öffnen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="318"/>
+        <source>Cannot open the project</source>
+        <translation>Das Projekt kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="341"/>
+        <source>L-shaped cycle (ScrewBender)</source>
+        <translation>L-förmiger Zyklus (ScrewBender)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="342"/>
+        <source>Spinning top (sketched angular velocity)</source>
+        <translation>Kreisel (skizzierte Winkelgeschwindigkeit)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="343"/>
+        <source>Letter M (sketched angular velocity)</source>
+        <translation>Buchstabe M (skizzierte Winkelgeschwindigkeit)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="344"/>
+        <source>Hat (sketched angular velocity)</source>
+        <translation>Hut (skizzierte Winkelgeschwindigkeit)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="345"/>
+        <source>Falling leaf (sketched angular velocity)</source>
+        <translation>Fallendes Blatt (skizzierte Winkelgeschwindigkeit)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="346"/>
+        <source>Pen (sketched angular speed)</source>
+        <translation>Stift (skizzierter Betrag der Winkelgeschwindigkeit)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="347"/>
+        <source>Pendulum (ScrewBender)</source>
+        <translation>Pendel (ScrewBender)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="348"/>
+        <source>Spinning block (ScrewBender)</source>
+        <translation>Rotierender Block (ScrewBender)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="349"/>
+        <source>Critter&apos;s non-planar cycle (ScrewBender)</source>
+        <translation>Nicht-ebener Zyklus eines Tierchens (ScrewBender)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="368"/>
+        <source>Save Project As</source>
+        <translation>Projekt speichern unter</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="381"/>
+        <source>Cannot save the project</source>
+        <translation>Das Projekt kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="385"/>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="394"/>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="394"/>
+        <source>The project has unsaved changes. Save them first?</source>
+        <translation>Das Projekt hat ungespeicherte Änderungen. Zuerst speichern?</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="433"/>
+        <source>About Gyre</source>
+        <translation>Über Gyre</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="434"/>
+        <source>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Edit the rotations of animated rigid objects: every way of writing an orientation, interpolation that behaves, sketched angular velocity, and ScrewBender motions.&lt;/p&gt;&lt;p&gt;Built on Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 and QCustomPlot %8.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Rotationen animierter starrer Objekte bearbeiten: jede Schreibweise einer Orientierung, Interpolation, die sich gut verhält, skizzierte Winkelgeschwindigkeit und ScrewBender-Bewegungen.&lt;/p&gt;&lt;p&gt;Aufgebaut auf Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 und QCustomPlot %8.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="454"/>
+        <source>an untitled project</source>
+        <translation>ein unbenanntes Projekt</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="457"/>
+        <source>Recover unsaved work</source>
+        <translation>Ungesicherte Arbeit wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="458"/>
+        <source>Gyre ended without saving changes to %1 (last copy %2). Recover them?</source>
+        <translation>Gyre wurde beendet, ohne Änderungen an %1 zu speichern (letzte Kopie %2). Wiederherstellen?</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="466"/>
+        <source>Cannot recover</source>
+        <translation>Wiederherstellen nicht möglich</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="475"/>
+        <source>Autosave is off: %1</source>
+        <translation>Automatische Sicherung ist aus: %1</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::NumberFields</name>
+    <message>
+        <location filename="../src/app/number_fields.cpp" line="49"/>
+        <source>Exact value: %1</source>
+        <translation>Exakter Wert: %1</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::PatternCanvas</name>
+    <message>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="34"/>
+        <source>Draw the pattern once, left to right: x along the strokes, y across them</source>
+        <translation>Das Muster einmal von links nach rechts zeichnen: x entlang der Striche, y quer dazu</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::PatternPad</name>
+    <message>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="145"/>
+        <source>Clear Pattern</source>
+        <translation>Muster löschen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="148"/>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="149"/>
+        <source>How many times the pattern repeats along the direction curve; off: not applied</source>
+        <translation>Wie oft sich das Muster entlang der Richtungskurve wiederholt; aus: nicht angewendet</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="150"/>
+        <source>Take the pattern away</source>
+        <translation>Das Muster entfernen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="151"/>
+        <source>&amp;Repeat:</source>
+        <translation>&amp;Wiederholen:</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::PreferencesDialog</name>
+    <message>
+        <location filename="../src/app/preferences_dialog.cpp" line="22"/>
+        <source>System default</source>
+        <translation>Systemstandard</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::SceneFileActions</name>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="27"/>
+        <source>Scenes (*.fbx *.gltf *.glb *.dae *.obj *.bvh *.3ds *.x *.ase *.ply *.stl);;All files (*)</source>
+        <translation>Szenen (*.fbx *.gltf *.glb *.dae *.obj *.bvh *.3ds *.x *.ase *.ply *.stl);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="33"/>
+        <source>glTF 2.0 (*.gltf);;glTF 2.0 binary (*.glb);;Collada (*.dae);;FBX (*.fbx);;OBJ, meshes only (*.obj)</source>
+        <translation>glTF 2.0 (*.gltf);;glTF 2.0 binär (*.glb);;Collada (*.dae);;FBX (*.fbx);;OBJ, nur Meshes (*.obj)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="58"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="75"/>
+        <source>Import of %1 cancelled</source>
+        <translation>Import von %1 abgebrochen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="81"/>
+        <source>Import Scene</source>
+        <translation>Szene importieren</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="89"/>
+        <source>Export Scene</source>
+        <translation>Szene exportieren</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="103"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="121"/>
+        <source>Wait for the scene file being read or written first</source>
+        <translation>Warten Sie zuerst, bis die Szenendatei gelesen oder geschrieben ist</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="106"/>
+        <source>Importing %1…</source>
+        <translation>%1 wird importiert…</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="113"/>
+        <source>Cannot export</source>
+        <translation>Export nicht möglich</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="114"/>
+        <source>%1: Gyre writes .gltf, .glb, .dae, .fbx and .obj scenes; the file name&apos;s extension says which.</source>
+        <translation>%1: Gyre schreibt Szenen als .gltf, .glb, .dae, .fbx und .obj; die Endung des Dateinamens bestimmt das Format.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="124"/>
+        <source>Exporting %1…</source>
+        <translation>%1 wird exportiert…</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="132"/>
+        <source>%1: the file holds no objects.</source>
+        <translation>%1: Die Datei enthält keine Objekte.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="135"/>
+        <source>Import %1</source>
+        <translation>%1 importieren</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/app/scene_file_actions.cpp" line="149"/>
+        <source>Imported %n object(s) from %1</source>
+        <translation>
+            <numerusform>%n Objekt aus %1 importiert</numerusform>
+            <numerusform>%n Objekte aus %1 importiert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="152"/>
+        <source>Imported %1</source>
+        <translation>%1 importiert</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="158"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="159"/>
+        <source>Exported %1</source>
+        <translation>%1 exportiert</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="165"/>
+        <source>Scene file</source>
+        <translation>Szenendatei</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/app/scene_file_actions.cpp" line="174"/>
+        <source>Done, with %n warning(s) about what the file could not keep.</source>
+        <translation>
+            <numerusform>Fertig, mit %n Warnung dazu, was die Datei nicht aufnehmen konnte.</numerusform>
+            <numerusform>Fertig, mit %n Warnungen dazu, was die Datei nicht aufnehmen konnte.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::ScrewBenderPanel</name>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="24"/>
+        <source>Slerp (great arcs)</source>
+        <translation>Slerp (Großkreisbögen)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="26"/>
+        <source>Nlerp (normalised straight lines)</source>
+        <translation>Nlerp (normierte Geraden)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="28"/>
+        <source>Squad (smooth quaternion curve)</source>
+        <translation>Squad (glatte Quaternion-Kurve)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="30"/>
+        <source>Hermite quaternion spline</source>
+        <translation>Hermite-Quaternion-Spline</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="32"/>
+        <source>Euler angles, linearly</source>
+        <translation>Euler-Winkel, linear</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="34"/>
+        <source>Screw motion (ScrewBender)</source>
+        <translation>Schraubbewegung (ScrewBender)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="44"/>
+        <source>Four-point</source>
+        <translation>Vierpunkt</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="46"/>
+        <source>Four-point B</source>
+        <translation>Vierpunkt B</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="48"/>
+        <source>Cubic B-spline</source>
+        <translation>Kubischer B-Spline</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="50"/>
+        <source>Jarek</source>
+        <translation>Jarek</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="127"/>
+        <source>%1 from %2 keyframes</source>
+        <translation>%1 aus %2 Schlüsselbildern</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="128"/>
+        <source>too many to hold, from %1 keyframes</source>
+        <translation>zu viele zum Speichern, aus %1 Schlüsselbildern</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="140"/>
+        <source>The interpolation was not changed: %1.</source>
+        <translation>Die Interpolation wurde nicht geändert: %1.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="159"/>
+        <source>The subdivision was not changed: %1.</source>
+        <translation>Die Unterteilung wurde nicht geändert: %1.</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::SmoothnessPanel</name>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="29"/>
+        <source>position
+(units)</source>
+        <translation>Position
+(Einheiten)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="31"/>
+        <source>velocity
+(units/s)</source>
+        <translation>Geschwindigkeit
+(Einheiten/s)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="33"/>
+        <source>acceleration
+(units/s²)</source>
+        <translation>Beschleunigung
+(Einheiten/s²)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="42"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="99"/>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="44"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="99"/>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="46"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="99"/>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="48"/>
+        <source>magnitude</source>
+        <translation>Betrag</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="97"/>
+        <source>Point of the object (local):</source>
+        <translation>Punkt des Objekts (lokal):</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="104"/>
+        <source>%1 </source>
+        <translation>%1 </translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
+        <source>The %1 coordinate of the plotted point, in the object&apos;s frame</source>
+        <translation>Die %1-Koordinate des dargestellten Punkts im Koordinatensystem des Objekts</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="170"/>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::SphereView</name>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="179"/>
+        <source>Draw</source>
+        <translation>Zeichnen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="180"/>
+        <source>Draw the direction of the angular velocity on the front of the sphere</source>
+        <translation>Die Richtung der Winkelgeschwindigkeit auf die Vorderseite der Kugel zeichnen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="181"/>
+        <source>Erase</source>
+        <translation>Radieren</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="181"/>
+        <source>Erase the strokes&apos; points under the pointer</source>
+        <translation>Die Punkte der Striche unter dem Zeiger radieren</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="182"/>
+        <source>Pattern</source>
+        <translation>Muster</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="183"/>
+        <source>Draw a pattern to repeat along the strokes, on the pad</source>
+        <translation>Auf dem Feld ein Muster zeichnen, das sich entlang der Striche wiederholt</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="186"/>
+        <source>Reset View</source>
+        <translation>Ansicht zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="189"/>
+        <source>Turn the sphere back to its first view, z up (R)</source>
+        <translation>Die Kugel in ihre erste Ansicht zurückdrehen, z oben (R)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="233"/>
+        <source>Select an object to sketch the direction of its angular velocity.</source>
+        <translation>Wählen Sie ein Objekt, um die Richtung seiner Winkelgeschwindigkeit zu skizzieren.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="235"/>
+        <source>%1 does not turn: key it in two orientations to give it an angular velocity to sketch.</source>
+        <translation>%1 dreht sich nicht: Setzen Sie Schlüsselbilder in zwei Orientierungen, damit es eine Winkelgeschwindigkeit zum Skizzieren hat.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="583"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="618"/>
+        <source>motion: ω/|ω|</source>
+        <translation>Bewegung: ω/|ω|</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="620"/>
+        <source>fitted</source>
+        <translation>angepasst</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="621"/>
+        <source>before the fit</source>
+        <translation>vor der Anpassung</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="623"/>
+        <source>sketch as drawn</source>
+        <translation>Skizze wie gezeichnet</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="624"/>
+        <source>sketch as fitted, pattern applied</source>
+        <translation>Skizze wie angepasst, mit Muster</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::TimeBar</name>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="26"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="45"/>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="52"/>
+        <source>Frames per second</source>
+        <translation>Frames pro Sekunde</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="53"/>
+        <source>Where the scene starts</source>
+        <translation>Wo die Szene beginnt</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="54"/>
+        <source>Where the scene ends</source>
+        <translation>Wo die Szene endet</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="56"/>
+        <location filename="../src/app/time_bar.cpp" line="94"/>
+        <source>Time %1 s</source>
+        <translation>Zeit %1 s</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="57"/>
+        <location filename="../src/app/time_bar.cpp" line="96"/>
+        <source>Frame %1</source>
+        <translation>Frame %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="64"/>
+        <source>Rate</source>
+        <translation>Bildrate</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="64"/>
+        <source>Start</source>
+        <translation>Anfang</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="64"/>
+        <source>End</source>
+        <translation>Ende</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::TimelineWidget</name>
+    <message>
+        <location filename="../src/app/timeline_widget.cpp" line="88"/>
+        <location filename="../src/app/timeline_widget.cpp" line="191"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../src/app/timeline_widget.cpp" line="93"/>
+        <source>%1 f</source>
+        <translation>%1 f</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::Translations</name>
+    <message>
+        <location filename="../src/app/language.cpp" line="57"/>
+        <source>Gyre does not speak the language &quot;%1&quot; and speaks English instead.</source>
+        <translation>Gyre spricht die Sprache „%1“ nicht und spricht stattdessen Englisch.</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::jobs::SketchFitError</name>
+    <message>
+        <location filename="../src/jobs/sketch_fit.cpp" line="89"/>
+        <source>Direction stroke %1 cannot be followed: %2</source>
+        <translation>Dem Richtungsstrich %1 kann nicht gefolgt werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../src/jobs/sketch_fit.cpp" line="194"/>
+        <source>The fit needs at least two keyframes on the selected object.</source>
+        <translation>Die Anpassung braucht mindestens zwei Schlüsselbilder am gewählten Objekt.</translation>
+    </message>
+    <message>
+        <location filename="../src/jobs/sketch_fit.cpp" line="196"/>
+        <source>The fit bends the Hermite spline through the keys: choose Hermite interpolation for this object first.</source>
+        <translation>Die Anpassung verbiegt den Hermite-Spline durch die Schlüsselbilder: Wählen Sie für dieses Objekt zuerst die Hermite-Interpolation.</translation>
+    </message>
+    <message>
+        <location filename="../src/jobs/sketch_fit.cpp" line="201"/>
+        <source>Nothing is sketched yet: draw the direction of the angular velocity on the sphere, or its magnitude on the plot.</source>
+        <translation>Noch ist nichts skizziert: Zeichnen Sie die Richtung der Winkelgeschwindigkeit auf die Kugel oder ihren Betrag in das Diagramm.</translation>
+    </message>
+    <message>
+        <location filename="../src/jobs/sketch_fit.cpp" line="206"/>
+        <source>The edit window has no length inside the keys&apos; span: widen it, or sketch between the first and the last key.</source>
+        <translation>Das Bearbeitungsfenster hat innerhalb des Bereichs der Schlüsselbilder keine Länge: Erweitern Sie es oder skizzieren Sie zwischen dem ersten und dem letzten Schlüsselbild.</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::model::Command</name>
+    <message>
+        <location filename="../src/model/commands/add_keyframe_command.cpp" line="38"/>
+        <source>Add Keyframe</source>
+        <translation>Schlüsselbild hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/add_stroke_command.cpp" line="11"/>
+        <source>Add Stroke</source>
+        <translation>Strich hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/apply_fit_result_command.cpp" line="24"/>
+        <source>Apply angular velocity fit</source>
+        <translation>Anpassung der Winkelgeschwindigkeit anwenden</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/delete_object_command.cpp" line="25"/>
+        <source>Delete Object</source>
+        <translation>Objekt löschen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/edit_stroke_command.cpp" line="11"/>
+        <source>Edit Stroke</source>
+        <translation>Strich bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/erase_stroke_command.cpp" line="9"/>
+        <source>Erase Stroke</source>
+        <translation>Strich radieren</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/import_objects_command.cpp" line="68"/>
+        <source>Import Objects</source>
+        <translation>Objekte importieren</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/move_keyframe_command.cpp" line="33"/>
+        <source>Move Keyframe</source>
+        <translation>Schlüsselbild verschieben</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/remove_keyframe_command.cpp" line="10"/>
+        <source>Remove Keyframe</source>
+        <translation>Schlüsselbild entfernen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/rename_object_command.cpp" line="10"/>
+        <source>Rename Object</source>
+        <translation>Objekt umbenennen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/reparent_object_command.cpp" line="39"/>
+        <source>Reparent Object</source>
+        <translation>Objekt umhängen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/retime_keyframes_command.cpp" line="43"/>
+        <source>Retime Keyframes</source>
+        <translation>Schlüsselbilder neu timen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_fit_parameter_command.cpp" line="25"/>
+        <source>Set Fit Parameter</source>
+        <translation>Anpassungsparameter setzen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_fit_window_command.cpp" line="11"/>
+        <source>Set Fit Window</source>
+        <translation>Anpassungsfenster setzen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_interpolation_command.cpp" line="10"/>
+        <source>Set Interpolation</source>
+        <translation>Interpolation setzen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_keyframe_orientation_command.cpp" line="13"/>
+        <source>Rotate Keyframe</source>
+        <translation>Schlüsselbild drehen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_keyframe_position_command.cpp" line="11"/>
+        <source>Move Keyframe Position</source>
+        <translation>Position des Schlüsselbilds verschieben</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_magnitude_curve_command.cpp" line="11"/>
+        <source>Draw Magnitude Curve</source>
+        <translation>Betragskurve zeichnen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_pattern_command.cpp" line="21"/>
+        <source>Draw Pattern</source>
+        <translation>Muster zeichnen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_subdivision_command.cpp" line="11"/>
+        <source>Set Subdivision</source>
+        <translation>Unterteilung setzen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_time_range_command.cpp" line="20"/>
+        <source>Set Time Range</source>
+        <translation>Zeitbereich setzen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/toggle_keyframe_constraint_command.cpp" line="10"/>
+        <source>Toggle Keyframe Constraint</source>
+        <translation>Fixierung des Schlüsselbilds umschalten</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <location filename="../src/app/main.cpp" line="25"/>
+        <source>%1: cannot write the screenshot</source>
+        <translation>%1: Das Bildschirmfoto kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main.cpp" line="49"/>
+        <source>Edit the rotations of animated rigid objects.</source>
+        <translation>Rotationen animierter starrer Objekte bearbeiten.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main.cpp" line="54"/>
+        <source>A Gyre project to open, or a scene file (FBX, glTF, ...) to import.</source>
+        <translation>Ein zu öffnendes Gyre-Projekt oder eine zu importierende Szenendatei (FBX, glTF, ...).</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main.cpp" line="57"/>
+        <source>Save a picture of the window to &lt;file&gt; after a few seconds, then quit.</source>
+        <translation>Nach einigen Sekunden ein Bild des Fensters in &lt;file&gt; speichern und dann beenden.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main.cpp" line="60"/>
+        <source>Wait &lt;ms&gt; milliseconds before the screenshot.</source>
+        <translation>Vor dem Bildschirmfoto &lt;ms&gt; Millisekunden warten.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main.cpp" line="64"/>
+        <source>Speak &lt;language&gt; (%1) instead of the one chosen in the preferences.</source>
+        <translation>&lt;language&gt; sprechen (%1) statt der in den Einstellungen gewählten Sprache.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main.cpp" line="72"/>
+        <source>--delay takes a number of milliseconds, not &quot;%1&quot;.</source>
+        <translation>--delay erwartet eine Anzahl Millisekunden, nicht „%1“.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main.cpp" line="75"/>
+        <source>give at most one file to open.</source>
+        <translation>geben Sie höchstens eine Datei zum Öffnen an.</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,2102 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>FitPanel</name>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="9"/>
+        <source>Select an object to fit its rotation to the sketched angular velocity.</source>
+        <translation>选择一个对象，将其旋转拟合到草图绘制的角速度。</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="41"/>
+        <source>Energy E = αW_T + βW_A</source>
+        <translation>能量 E = αW_T + βW_A</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="45"/>
+        <source>&amp;α (smoothness)</source>
+        <translation>α（平滑度）(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="51"/>
+        <source>Weight of the tangential acceleration W_T: larger is smoother, further from the sketch. The paper uses 0.001–0.005.</source>
+        <translation>切向加速度 W_T 的权重：越大越平滑，但离草图越远。论文使用 0.001–0.005。</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="61"/>
+        <source>&amp;β (follow the sketch)</source>
+        <translation>β（贴合草图）(&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="67"/>
+        <source>Weight of W_A, the deviation of the angular velocity from the sketch</source>
+        <translation>W_A 的权重，即角速度与草图的偏差</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="77"/>
+        <source>&amp;δ (rad²/s)</source>
+        <translation>δ（rad²/s）(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="83"/>
+        <source>The largest error accepted on a fragment of the window; above it the fit inserts variable frames</source>
+        <translation>窗口中每个片段允许的最大误差；超过它时，拟合会插入可变帧</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="96"/>
+        <source>Edited window</source>
+        <translation>编辑窗口</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="100"/>
+        <source>&amp;Whole sketch</source>
+        <translation>整个草图(&amp;W)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="101"/>
+        <source>Refit the span the sketch covers; clear to choose the window</source>
+        <translation>重新拟合草图覆盖的区间；取消勾选以自行选择窗口</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="106"/>
+        <source>&amp;Start</source>
+        <translation>开始(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="112"/>
+        <source>Where the refitted span begins</source>
+        <translation>重新拟合区间的起点</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="115"/>
+        <location filename="../ui/fit_panel.ui" line="130"/>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="121"/>
+        <source>E&amp;nd</source>
+        <translation>结束(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="127"/>
+        <source>Where the refitted span ends</source>
+        <translation>重新拟合区间的终点</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="139"/>
+        <source>Keyframes kept exactly</source>
+        <translation>精确保持的关键帧</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="143"/>
+        <source>A checked key keeps its orientation; the fit may turn a cleared one</source>
+        <translation>勾选的关键帧保持其朝向；未勾选的关键帧可能被拟合旋转</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="149"/>
+        <source>Time (s)</source>
+        <translation>时间（秒）</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="150"/>
+        <source>Constrained</source>
+        <translation>约束</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="160"/>
+        <source>Fit</source>
+        <translation>拟合</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="161"/>
+        <source>Fit the rotation to the sketch (Ctrl+F)</source>
+        <translation>将旋转拟合到草图（Ctrl+F）</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="167"/>
+        <source>&amp;Cancel</source>
+        <translation>取消(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="168"/>
+        <source>Stop the running fit; the motion stays as it is</source>
+        <translation>停止正在进行的拟合；运动保持不变</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="173"/>
+        <source>&amp;Remove fit</source>
+        <translation>移除拟合(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="174"/>
+        <source>Go back to the interpolation through the keys</source>
+        <translation>回到经过关键帧的插值</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="181"/>
+        <source>&amp;Live: refit while the sketch changes</source>
+        <translation>实时：草图变化时重新拟合(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="182"/>
+        <source>Refit at every change of the sketch, keys or settings; while drawing, the view previews the fit</source>
+        <translation>草图、关键帧或设置每次变化时都重新拟合；绘制时视图会预览拟合结果</translation>
+    </message>
+</context>
+<context>
+    <name>InspectorWidget</name>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="9"/>
+        <source>Select a keyframe on the timeline or in the viewport to inspect it.</source>
+        <translation>在时间轴或视口中选择一个关键帧以查看它。</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="52"/>
+        <source>Keyframe</source>
+        <translation>关键帧</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="56"/>
+        <source>&amp;Time (s)</source>
+        <translation>时间（秒）(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="62"/>
+        <source>Time in seconds</source>
+        <translation>以秒为单位的时间</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="67"/>
+        <source>&amp;Constrained: the fit keeps this key exactly</source>
+        <translation>约束：拟合精确保持此关键帧(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="75"/>
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="97"/>
+        <source>Position x</source>
+        <translation>位置 x</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="102"/>
+        <source>Position y</source>
+        <translation>位置 y</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="107"/>
+        <source>Position z</source>
+        <translation>位置 z</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="115"/>
+        <source>Quaternion</source>
+        <translation>四元数</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="143"/>
+        <source>Quaternion w</source>
+        <translation>四元数 w</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="148"/>
+        <source>Quaternion x</source>
+        <translation>四元数 x</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="153"/>
+        <source>Quaternion y</source>
+        <translation>四元数 y</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="158"/>
+        <source>Quaternion z</source>
+        <translation>四元数 z</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="166"/>
+        <source>Rotation matrix</source>
+        <translation>旋转矩阵</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="170"/>
+        <source>Matrix row 1, column 1</source>
+        <translation>矩阵第 1 行第 1 列</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="175"/>
+        <source>Matrix row 1, column 2</source>
+        <translation>矩阵第 1 行第 2 列</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="180"/>
+        <source>Matrix row 1, column 3</source>
+        <translation>矩阵第 1 行第 3 列</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="185"/>
+        <source>Matrix row 2, column 1</source>
+        <translation>矩阵第 2 行第 1 列</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="190"/>
+        <source>Matrix row 2, column 2</source>
+        <translation>矩阵第 2 行第 2 列</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="195"/>
+        <source>Matrix row 2, column 3</source>
+        <translation>矩阵第 2 行第 3 列</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="200"/>
+        <source>Matrix row 3, column 1</source>
+        <translation>矩阵第 3 行第 1 列</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="205"/>
+        <source>Matrix row 3, column 2</source>
+        <translation>矩阵第 3 行第 2 列</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="210"/>
+        <source>Matrix row 3, column 3</source>
+        <translation>矩阵第 3 行第 3 列</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="218"/>
+        <source>Axis-angle</source>
+        <translation>轴角</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="222"/>
+        <source>axis x</source>
+        <translation>轴 x</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="228"/>
+        <source>axis y</source>
+        <translation>轴 y</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="234"/>
+        <source>axis z</source>
+        <translation>轴 z</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="240"/>
+        <source>angle (°)</source>
+        <translation>角度（°）</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="246"/>
+        <source>Axis x</source>
+        <translation>轴 x</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="251"/>
+        <source>Axis y</source>
+        <translation>轴 y</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="256"/>
+        <source>Axis z</source>
+        <translation>轴 z</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="261"/>
+        <source>Angle in degrees</source>
+        <translation>以度为单位的角度</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="269"/>
+        <source>Euler angles</source>
+        <translation>欧拉角</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="275"/>
+        <source>&amp;Order</source>
+        <translation>顺序(&amp;O)</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="281"/>
+        <source>The axes the three angles turn about, first to last</source>
+        <translation>三个角依次绕其旋转的轴，从第一个到最后一个</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="286"/>
+        <source>Extrinsic angles turn about the fixed world axes; intrinsic ones about the axes as they have been turned so far</source>
+        <translation>外旋角绕固定的世界坐标轴旋转；内旋角绕到此为止已转动的轴旋转</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="309"/>
+        <source>Euler angle 1 in degrees</source>
+        <translation>欧拉角 1，以度为单位</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="314"/>
+        <source>Euler angle 2 in degrees</source>
+        <translation>欧拉角 2，以度为单位</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="319"/>
+        <source>Euler angle 3 in degrees</source>
+        <translation>欧拉角 3，以度为单位</translation>
+    </message>
+</context>
+<context>
+    <name>MainWindow</name>
+    <message>
+        <location filename="../ui/main_window.ui" line="18"/>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="19"/>
+        <source>Open &amp;Recent</source>
+        <translation>最近打开(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="20"/>
+        <source>Open Sa&amp;mple</source>
+        <translation>打开示例(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="34"/>
+        <source>&amp;Edit</source>
+        <translation>编辑(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="40"/>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="41"/>
+        <source>&amp;Panels</source>
+        <translation>面板(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="52"/>
+        <source>&amp;Motion</source>
+        <translation>运动(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="65"/>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="75"/>
+        <source>File</source>
+        <translation>文件</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="83"/>
+        <source>Edit</source>
+        <translation>编辑</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="88"/>
+        <source>Playback</source>
+        <translation>播放</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="100"/>
+        <source>Inspector</source>
+        <translation>检查器</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="112"/>
+        <source>ScrewBender</source>
+        <translation>ScrewBender</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="124"/>
+        <source>Undo History</source>
+        <translation>撤销历史</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="136"/>
+        <source>Timeline</source>
+        <translation>时间轴</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="148"/>
+        <source>Smoothness</source>
+        <translation>平滑度</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="160"/>
+        <source>Angular Velocity Direction</source>
+        <translation>角速度方向</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="172"/>
+        <source>Fit</source>
+        <translation>拟合</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="184"/>
+        <source>Angular Speed</source>
+        <translation>角速度大小</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="196"/>
+        <source>&amp;New</source>
+        <translation>新建(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="197"/>
+        <source>Start a new, empty project</source>
+        <translation>新建一个空项目</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="200"/>
+        <source>&amp;Open…</source>
+        <translation>打开(&amp;O)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="201"/>
+        <source>Open a Gyre project</source>
+        <translation>打开 Gyre 项目</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="204"/>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="205"/>
+        <source>Save the project</source>
+        <translation>保存项目</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="208"/>
+        <source>Save &amp;As…</source>
+        <translation>另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="209"/>
+        <source>Save the project under a new name</source>
+        <translation>以新名称保存项目</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="212"/>
+        <source>&amp;Import Scene…</source>
+        <translation>导入场景(&amp;I)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="213"/>
+        <source>Add the objects and motion of an FBX, glTF, Collada, OBJ, BVH or other scene file</source>
+        <translation>添加 FBX、glTF、Collada、OBJ、BVH 或其他场景文件中的对象和运动</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="217"/>
+        <source>&amp;Export Scene…</source>
+        <translation>导出场景(&amp;E)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="218"/>
+        <source>Write the scene with its motion baked to glTF, Collada, FBX or OBJ</source>
+        <translation>将场景及其烘焙后的运动写出为 glTF、Collada、FBX 或 OBJ</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="222"/>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="223"/>
+        <source>Quit Gyre</source>
+        <translation>退出 Gyre</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="227"/>
+        <source>Undo &amp;History</source>
+        <translation>撤销历史(&amp;H)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="228"/>
+        <source>Show every step of the undo history</source>
+        <translation>显示撤销历史中的每一步</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="232"/>
+        <source>&amp;Preferences…</source>
+        <translation>首选项(&amp;P)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="233"/>
+        <source>Choose the language Gyre speaks</source>
+        <translation>选择 Gyre 使用的语言</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="239"/>
+        <source>Original Motion as &amp;Ghost</source>
+        <translation>以虚影显示原始运动(&amp;G)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="240"/>
+        <source>Show the motion as it was when the project was opened or saved, faintly</source>
+        <translation>淡淡地显示项目打开或保存时的运动</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="245"/>
+        <source>Centre &amp;Trajectory</source>
+        <translation>中心轨迹(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="246"/>
+        <source>Show the path of the selected object&apos;s centre</source>
+        <translation>显示所选对象中心的路径</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="251"/>
+        <source>&amp;Control Poses</source>
+        <translation>控制姿态(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="252"/>
+        <source>Show the keyframe poses of the selected object in place</source>
+        <translation>在原位显示所选对象的关键帧姿态</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="257"/>
+        <source>&amp;Stroboscopic Trail</source>
+        <translation>频闪轨迹(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="258"/>
+        <source>Show many copies of the selected object along its subdivided motion</source>
+        <translation>沿细分后的运动显示所选对象的多个副本</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="261"/>
+        <source>&amp;Frame Scene</source>
+        <translation>显示整个场景(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="262"/>
+        <source>Point the camera at the whole scene</source>
+        <translation>将相机对准整个场景</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="267"/>
+        <source>&amp;Play</source>
+        <translation>播放(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="268"/>
+        <source>Play or pause the animation</source>
+        <translation>播放或暂停动画</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="272"/>
+        <source>Step &amp;Forward</source>
+        <translation>前进一帧(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="273"/>
+        <source>One frame later</source>
+        <translation>后一帧</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="277"/>
+        <source>Step &amp;Backward</source>
+        <translation>后退一帧(&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="278"/>
+        <source>One frame earlier</source>
+        <translation>前一帧</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="282"/>
+        <source>Go to &amp;Start</source>
+        <translation>转到开头(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="283"/>
+        <source>Go to the first frame</source>
+        <translation>转到第一帧</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="287"/>
+        <source>Go to &amp;End</source>
+        <translation>转到结尾(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="288"/>
+        <source>Go to the last frame</source>
+        <translation>转到最后一帧</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="294"/>
+        <source>&amp;Loop</source>
+        <translation>循环(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="295"/>
+        <source>Start again from the beginning at the end</source>
+        <translation>到结尾时从头重新开始</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="298"/>
+        <source>&amp;Add Keyframe</source>
+        <translation>添加关键帧(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="299"/>
+        <source>Key the selected object&apos;s pose at the current time</source>
+        <translation>在当前时间为所选对象的姿态设置关键帧</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="303"/>
+        <source>&amp;Delete Keyframe</source>
+        <translation>删除关键帧(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="304"/>
+        <source>Delete the selected keyframe</source>
+        <translation>删除所选关键帧</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="310"/>
+        <source>&amp;Constrain Keyframe</source>
+        <translation>约束关键帧(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="311"/>
+        <source>Keep the selected keyframe exactly when fitting, or free it</source>
+        <translation>拟合时精确保持所选关键帧，或将其释放</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="315"/>
+        <source>&amp;About Gyre</source>
+        <translation>关于 Gyre(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="316"/>
+        <source>Version, licence and the libraries Gyre is built on</source>
+        <translation>版本、许可证以及 Gyre 所基于的库</translation>
+    </message>
+</context>
+<context>
+    <name>PreferencesDialog</name>
+    <message>
+        <location filename="../ui/preferences_dialog.ui" line="5"/>
+        <source>Preferences</source>
+        <translation>首选项</translation>
+    </message>
+    <message>
+        <location filename="../ui/preferences_dialog.ui" line="11"/>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/preferences_dialog.ui" line="17"/>
+        <source>The language of Gyre&apos;s menus, panels and messages</source>
+        <translation>Gyre 的菜单、面板和消息所用的语言</translation>
+    </message>
+    <message>
+        <location filename="../ui/preferences_dialog.ui" line="22"/>
+        <source>The language changes when Gyre next starts.</source>
+        <translation>语言将在 Gyre 下次启动时更改。</translation>
+    </message>
+</context>
+<context>
+    <name>ScrewBenderPanel</name>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="9"/>
+        <source>Select an object to choose how its track is interpolated.</source>
+        <translation>选择一个对象以设置其轨道的插值方式。</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="41"/>
+        <source>Interpolation</source>
+        <translation>插值</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="45"/>
+        <source>&amp;Method</source>
+        <translation>方法(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="51"/>
+        <source>How the track&apos;s orientation is interpolated between its keyframes</source>
+        <translation>轨道的朝向在关键帧之间如何插值</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="59"/>
+        <source>Subdivision</source>
+        <translation>细分</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="63"/>
+        <source>Used when the method is screw motion.</source>
+        <translation>当方法为螺旋运动时使用。</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="69"/>
+        <source>&amp;Scheme</source>
+        <translation>方案(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="75"/>
+        <source>The Split&amp;Tweak rule that smooths the polyscrew at each level</source>
+        <translation>在每一层平滑多段螺旋的 Split&amp;Tweak 规则</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="80"/>
+        <source>&amp;Levels</source>
+        <translation>层数(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="86"/>
+        <source>Each level doubles the poses</source>
+        <translation>每一层使姿态数加倍</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="92"/>
+        <source>Sequence</source>
+        <translation>序列</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="99"/>
+        <source>C&amp;yclic</source>
+        <translation>循环(&amp;Y)</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="100"/>
+        <source>The last keyframe joins the first: a closed loop</source>
+        <translation>最后一个关键帧连接到第一个：闭合循环</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="105"/>
+        <source>&amp;Open</source>
+        <translation>开放(&amp;O)</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="106"/>
+        <source>The motion starts at the first keyframe and ends at the last</source>
+        <translation>运动从第一个关键帧开始，到最后一个关键帧结束</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="113"/>
+        <source>&amp;Decoupled, for comparison</source>
+        <translation>解耦，用于比较(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="114"/>
+        <source>The alternative the paper compares against: orientations by slerp, positions by the linear scheme, each subdivided on its own</source>
+        <translation>论文用作对比的方案：朝向用 slerp，位置用线性方案，各自单独细分</translation>
+    </message>
+    <message>
+        <location filename="../ui/screwbender_panel.ui" line="119"/>
+        <source>Poses</source>
+        <translation>姿态</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::FileError</name>
+    <message>
+        <location filename="../src/model/autosave.cpp" line="36"/>
+        <location filename="../src/model/project_file.cpp" line="480"/>
+        <location filename="../src/model/project_file.cpp" line="482"/>
+        <location filename="../src/io/file_contents.cpp" line="13"/>
+        <location filename="../src/io/scene_export.cpp" line="303"/>
+        <location filename="../src/io/scene_export.cpp" line="306"/>
+        <source>cannot write: %1</source>
+        <translation>无法写入：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/autosave.cpp" line="68"/>
+        <source>cannot create the autosave directory</source>
+        <translation>无法创建自动保存目录</translation>
+    </message>
+    <message>
+        <location filename="../src/model/autosave.cpp" line="76"/>
+        <source>cannot take the autosave lock</source>
+        <translation>无法获取自动保存锁</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="419"/>
+        <source>is a directory, not a file</source>
+        <translation>是目录，不是文件</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="422"/>
+        <source>cannot open: %1</source>
+        <translation>无法打开：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="424"/>
+        <source>is larger than 1 GiB, the most a project file may hold</source>
+        <translation>大于 1 GiB，超出项目文件的上限</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="437"/>
+        <source>cannot read: %1</source>
+        <translation>无法读取：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="448"/>
+        <source>is empty; a project file holds a JSON object</source>
+        <translation>为空；项目文件应包含一个 JSON 对象</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="453"/>
+        <source>not valid JSON: %1 at byte %2</source>
+        <translation>不是有效的 JSON：%1（位于第 %2 字节）</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="473"/>
+        <source>not saved, because the file would not read back: %1</source>
+        <translation>未保存，因为该文件无法被重新读取：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="89"/>
+        <source>the mesh of &apos;%1&apos; has an index past its vertices</source>
+        <translation>“%1”的网格有超出其顶点范围的索引</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="195"/>
+        <source>baking at %1 fps gives more than %2 samples</source>
+        <translation>以 %1 fps 烘焙会产生超过 %2 个采样</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="202"/>
+        <source>the motion of &apos;%1&apos; cannot be baked: %2</source>
+        <translation>无法烘焙“%1”的运动：%2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="214"/>
+        <source>the motion of &apos;%1&apos; cannot be evaluated: %2</source>
+        <translation>无法计算“%1”的运动：%2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="319"/>
+        <source>Assimp cannot write it</source>
+        <translation>Assimp 无法写入</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="320"/>
+        <source>Assimp cannot write it: %1</source>
+        <translation>Assimp 无法写入：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="326"/>
+        <source>Assimp wrote nothing</source>
+        <translation>Assimp 没有写出任何内容</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="349"/>
+        <source>the frame rate must be a finite number above zero</source>
+        <translation>帧率必须是大于零的有限数</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="351"/>
+        <source>the scene&apos;s time range is empty or not finite</source>
+        <translation>场景的时间范围为空或不是有限值</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="354"/>
+        <source>the scene has no meshes, and OBJ holds nothing else</source>
+        <translation>场景没有网格，而 OBJ 不能保存其他内容</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="51"/>
+        <source>no such file</source>
+        <translation>文件不存在</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="53"/>
+        <source>is a directory, not a scene file</source>
+        <translation>是目录，不是场景文件</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="55"/>
+        <source>cannot be read (permission denied)</source>
+        <translation>无法读取（权限不足）</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="57"/>
+        <source>the file is empty</source>
+        <translation>文件为空</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="68"/>
+        <source>the file holds no meshes and no animation</source>
+        <translation>文件既没有网格也没有动画</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="77"/>
+        <source>not a scene Gyre can read: %1</source>
+        <translation>不是 Gyre 能读取的场景：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="81"/>
+        <source>the file holds no scene nodes</source>
+        <translation>文件不含场景节点</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="420"/>
+        <source>the file has %1 animations; there is no animation %2</source>
+        <translation>文件有 %1 个动画；不存在动画 %2</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::FitController</name>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="16"/>
+        <source>Fit converged</source>
+        <translation>拟合已收敛</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="17"/>
+        <source>Fit stopped (%1)</source>
+        <translation>拟合已停止（%1）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="18"/>
+        <source>%1: %2 rounds, %3 iterations, largest fragment error %4 rad²/s, %5 s.</source>
+        <translation>%1：%2 轮，%3 次迭代，最大片段误差 %4 rad²/s，%5 秒。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="45"/>
+        <source>Fit failed: %1</source>
+        <translation>拟合失败：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="47"/>
+        <source>Fit cancelled.</source>
+        <translation>拟合已取消。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="118"/>
+        <source>Fit dropped: the track changed while it ran.</source>
+        <translation>拟合已丢弃：运行期间轨道发生了变化。</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::FitPanel</name>
+    <message>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="65"/>
+        <source>Fitting…</source>
+        <translation>正在拟合…</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="225"/>
+        <source>Remove angular velocity fit</source>
+        <translation>移除角速度拟合</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="235"/>
+        <source>Not changed: %1.</source>
+        <translation>未更改：%1。</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::FitProgress</name>
+    <message>
+        <location filename="../src/app/sketch/fit_progress.cpp" line="20"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_progress.cpp" line="26"/>
+        <source>Stop the fit; the motion stays as it is</source>
+        <translation>停止拟合；运动保持不变</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_progress.cpp" line="43"/>
+        <source>Fitting…</source>
+        <translation>正在拟合…</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_progress.cpp" line="53"/>
+        <source>Fit: round %v of %m, largest error %1 rad²/s</source>
+        <translation>拟合：第 %v 轮，共 %m 轮，最大误差 %1 rad²/s</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_progress.cpp" line="54"/>
+        <source>Fit: round %v of %m</source>
+        <translation>拟合：第 %v 轮，共 %m 轮</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::InspectorWidget</name>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="75"/>
+        <source>time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="77"/>
+        <source>position x</source>
+        <translation>位置 x</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="77"/>
+        <source>position y</source>
+        <translation>位置 y</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="77"/>
+        <source>position z</source>
+        <translation>位置 z</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <source>quaternion w</source>
+        <translation>四元数 w</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <source>quaternion x</source>
+        <translation>四元数 x</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <source>quaternion y</source>
+        <translation>四元数 y</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <source>quaternion z</source>
+        <translation>四元数 z</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="87"/>
+        <source>matrix row %1, column %2</source>
+        <translation>矩阵第 %1 行第 %2 列</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <source>axis x</source>
+        <translation>轴 x</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <source>axis y</source>
+        <translation>轴 y</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <source>axis z</source>
+        <translation>轴 z</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <source>angle</source>
+        <translation>角度</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <source>first angle</source>
+        <translation>第一个角</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <source>second angle</source>
+        <translation>第二个角</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <source>third angle</source>
+        <translation>第三个角</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="134"/>
+        <source>extrinsic (fixed axes)</source>
+        <translation>外旋（固定轴）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="135"/>
+        <source>intrinsic (moving axes)</source>
+        <translation>内旋（随动轴）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="157"/>
+        <source>about %1 (°)</source>
+        <translation>绕 %1（°）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="171"/>
+        <source>%1, keyframe %2 of %3</source>
+        <translation>%1，第 %2 个关键帧，共 %3 个</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="205"/>
+        <source>Near gimbal lock (%1° from it): the first and third angles turn about almost the same axis, so only their sum (or difference) is determined. Small changes of the rotation can swing them widely.</source>
+        <translation>接近万向节锁（相差 %1°）：第一个角和第三个角几乎绕同一根轴旋转，因此只有它们的和（或差）是确定的。旋转的微小变化可能使它们大幅摆动。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="240"/>
+        <source>The keyframe was not moved: %1.</source>
+        <translation>关键帧未移动：%1。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="251"/>
+        <source>The constraint was not changed: %1.</source>
+        <translation>约束未更改：%1。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="260"/>
+        <source>The position was not changed: %1.</source>
+        <translation>位置未更改：%1。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="273"/>
+        <location filename="../src/app/inspector_widget.cpp" line="296"/>
+        <location filename="../src/app/inspector_widget.cpp" line="322"/>
+        <location filename="../src/app/inspector_widget.cpp" line="345"/>
+        <source>The rotation was not changed: %1.</source>
+        <translation>旋转未更改：%1。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="278"/>
+        <source>The rotation was not changed: the zero quaternion is no rotation.</source>
+        <translation>旋转未更改：零四元数不表示旋转。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="286"/>
+        <source>The quaternion had length %1; it was scaled to length 1.</source>
+        <translation>四元数的长度为 %1；已缩放为长度 1。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="303"/>
+        <source>The rotation was not changed: the matrix has determinant %1, so it flattens or mirrors space and is not a rotation.</source>
+        <translation>旋转未更改：矩阵的行列式为 %1，它会压扁或镜像空间，不是旋转。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="311"/>
+        <source>The matrix was not a rotation (its rows were up to %1 from orthonormal); the nearest rotation was used.</source>
+        <translation>该矩阵不是旋转（其各行与正交归一最多相差 %1）；已改用最接近的旋转。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="328"/>
+        <source>The rotation was not changed: a zero axis names no direction to turn about.</source>
+        <translation>旋转未更改：零轴没有给出旋转方向。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="333"/>
+        <source>The axis had length %1; it was scaled to length 1.</source>
+        <translation>轴的长度为 %1；已缩放为长度 1。</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::KeyframeActions</name>
+    <message>
+        <location filename="../src/app/keyframe_actions.cpp" line="54"/>
+        <source>Cannot add a keyframe: %1</source>
+        <translation>无法添加关键帧：%1</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::MagnitudePlot</name>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="138"/>
+        <source>Select an object to see and sketch the speed of its rotation.</source>
+        <translation>选择一个对象以查看并绘制其旋转速度的草图。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="205"/>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="210"/>
+        <source>Draw</source>
+        <translation>绘制</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="211"/>
+        <source>Left-drag draws the magnitude |ω| over time; going back erases</source>
+        <translation>按住左键拖动可绘制 |ω| 随时间的大小；往回拖动则擦除</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="212"/>
+        <source>Pan</source>
+        <translation>平移</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="212"/>
+        <source>Left-drag pans the view</source>
+        <translation>按住左键拖动可平移视图</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="221"/>
+        <source>Fit View</source>
+        <translation>适应视图</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="222"/>
+        <source>Show the scene&apos;s time range and the curves&apos; height; double-click does too</source>
+        <translation>显示场景的时间范围和曲线的高度；双击也可以</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="224"/>
+        <source>Clear Magnitude</source>
+        <translation>清除大小</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="225"/>
+        <source>Remove the sketched magnitude curve</source>
+        <translation>移除草图绘制的大小曲线</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="239"/>
+        <source>time (s)</source>
+        <translation>时间（秒）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="240"/>
+        <source>|ω| (rad/s)</source>
+        <translation>|ω|（rad/s）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="243"/>
+        <source>|ω| (°/s)</source>
+        <translation>|ω|（°/s）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="256"/>
+        <source>before fit</source>
+        <translation>拟合前</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="257"/>
+        <source>current</source>
+        <translation>当前</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="258"/>
+        <source>fitted</source>
+        <translation>拟合后</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="259"/>
+        <source>sketched</source>
+        <translation>草图</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="260"/>
+        <source>constrained keys</source>
+        <translation>约束的关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="262"/>
+        <source>free keys</source>
+        <translation>自由的关键帧</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::MainWindow</name>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="65"/>
+        <source>Gyre projects (*.gyre)</source>
+        <translation>Gyre 项目 (*.gyre)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="126"/>
+        <source>&amp;Undo</source>
+        <translation>撤销(&amp;U)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="130"/>
+        <source>&amp;Redo</source>
+        <translation>重做(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="154"/>
+        <source>&lt;opened&gt;</source>
+        <translation>&lt;已打开&gt;</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="195"/>
+        <source>Drawing the direction on the sphere needs OpenGL 3.3, which this display does not offer. The speed plot and the fit work without it.</source>
+        <translation>在球面上绘制方向需要 OpenGL 3.3，而此显示环境不支持。速度图和拟合无需它也能工作。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="218"/>
+        <source>The 3D viewport needs OpenGL 3.3, which this display does not offer. Editing, the panels and the timeline work without it.</source>
+        <translation>3D 视口需要 OpenGL 3.3，而此显示环境不支持。编辑、面板和时间轴无需它也能工作。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="244"/>
+        <source>Viewport frame rate while drawing, and the time to subdivide the trail: on the worker, and from the request to its arrival</source>
+        <translation>绘制时视口的帧率，以及细分轨迹所需的时间：在工作线程上的耗时，和从请求到结果到达的耗时</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="249"/>
+        <source>%1 fps · subdivision %2 ms (%3 ms to arrive)</source>
+        <translation>%1 fps · 细分 %2 毫秒（%3 毫秒后到达）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="283"/>
+        <source>Untitled</source>
+        <translation>未命名</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="285"/>
+        <source>%1[*] — Gyre</source>
+        <translation>%1[*] — Gyre</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="300"/>
+        <source>Open Project</source>
+        <translation>打开项目</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="318"/>
+        <source>Cannot open the project</source>
+        <translation>无法打开项目</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="341"/>
+        <source>L-shaped cycle (ScrewBender)</source>
+        <translation>L 形循环（ScrewBender）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="342"/>
+        <source>Spinning top (sketched angular velocity)</source>
+        <translation>陀螺（草图绘制的角速度）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="343"/>
+        <source>Letter M (sketched angular velocity)</source>
+        <translation>字母 M（草图绘制的角速度）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="344"/>
+        <source>Hat (sketched angular velocity)</source>
+        <translation>帽子（草图绘制的角速度）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="345"/>
+        <source>Falling leaf (sketched angular velocity)</source>
+        <translation>飘落的树叶（草图绘制的角速度）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="346"/>
+        <source>Pen (sketched angular speed)</source>
+        <translation>笔（草图绘制的角速度大小）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="347"/>
+        <source>Pendulum (ScrewBender)</source>
+        <translation>摆（ScrewBender）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="348"/>
+        <source>Spinning block (ScrewBender)</source>
+        <translation>旋转的方块（ScrewBender）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="349"/>
+        <source>Critter&apos;s non-planar cycle (ScrewBender)</source>
+        <translation>小动物的非平面循环（ScrewBender）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="368"/>
+        <source>Save Project As</source>
+        <translation>项目另存为</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="381"/>
+        <source>Cannot save the project</source>
+        <translation>无法保存项目</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="385"/>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="394"/>
+        <source>Unsaved changes</source>
+        <translation>未保存的更改</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="394"/>
+        <source>The project has unsaved changes. Save them first?</source>
+        <translation>项目有未保存的更改。要先保存吗？</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="433"/>
+        <source>About Gyre</source>
+        <translation>关于 Gyre</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="434"/>
+        <source>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Edit the rotations of animated rigid objects: every way of writing an orientation, interpolation that behaves, sketched angular velocity, and ScrewBender motions.&lt;/p&gt;&lt;p&gt;Built on Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 and QCustomPlot %8.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;编辑动画刚体的旋转：各种朝向表示方式、表现良好的插值、草图绘制的角速度，以及 ScrewBender 运动。&lt;/p&gt;&lt;p&gt;基于 Qt %2、Eigen %3.%4.%5、Ceres Solver %6、Assimp %7 和 QCustomPlot %8 构建。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="454"/>
+        <source>an untitled project</source>
+        <translation>一个未命名项目</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="457"/>
+        <source>Recover unsaved work</source>
+        <translation>恢复未保存的工作</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="458"/>
+        <source>Gyre ended without saving changes to %1 (last copy %2). Recover them?</source>
+        <translation>Gyre 结束时未保存对 %1 的更改（最后一次副本 %2）。要恢复吗？</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="466"/>
+        <source>Cannot recover</source>
+        <translation>无法恢复</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="475"/>
+        <source>Autosave is off: %1</source>
+        <translation>自动保存已关闭：%1</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::NumberFields</name>
+    <message>
+        <location filename="../src/app/number_fields.cpp" line="49"/>
+        <source>Exact value: %1</source>
+        <translation>精确值：%1</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::PatternCanvas</name>
+    <message>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="34"/>
+        <source>Draw the pattern once, left to right: x along the strokes, y across them</source>
+        <translation>从左到右绘制一次图案：x 沿笔画方向，y 垂直于笔画</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::PatternPad</name>
+    <message>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="145"/>
+        <source>Clear Pattern</source>
+        <translation>清除图案</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="148"/>
+        <source>off</source>
+        <translation>关</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="149"/>
+        <source>How many times the pattern repeats along the direction curve; off: not applied</source>
+        <translation>图案沿方向曲线重复的次数；关：不应用</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="150"/>
+        <source>Take the pattern away</source>
+        <translation>移除图案</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="151"/>
+        <source>&amp;Repeat:</source>
+        <translation>重复(&amp;R)：</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::PreferencesDialog</name>
+    <message>
+        <location filename="../src/app/preferences_dialog.cpp" line="22"/>
+        <source>System default</source>
+        <translation>系统默认</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::SceneFileActions</name>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="27"/>
+        <source>Scenes (*.fbx *.gltf *.glb *.dae *.obj *.bvh *.3ds *.x *.ase *.ply *.stl);;All files (*)</source>
+        <translation>场景 (*.fbx *.gltf *.glb *.dae *.obj *.bvh *.3ds *.x *.ase *.ply *.stl);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="33"/>
+        <source>glTF 2.0 (*.gltf);;glTF 2.0 binary (*.glb);;Collada (*.dae);;FBX (*.fbx);;OBJ, meshes only (*.obj)</source>
+        <translation>glTF 2.0 (*.gltf);;glTF 2.0 二进制 (*.glb);;Collada (*.dae);;FBX (*.fbx);;OBJ，仅网格 (*.obj)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="58"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="75"/>
+        <source>Import of %1 cancelled</source>
+        <translation>已取消导入 %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="81"/>
+        <source>Import Scene</source>
+        <translation>导入场景</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="89"/>
+        <source>Export Scene</source>
+        <translation>导出场景</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="103"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="121"/>
+        <source>Wait for the scene file being read or written first</source>
+        <translation>请先等待正在读取或写入的场景文件完成</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="106"/>
+        <source>Importing %1…</source>
+        <translation>正在导入 %1…</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="113"/>
+        <source>Cannot export</source>
+        <translation>无法导出</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="114"/>
+        <source>%1: Gyre writes .gltf, .glb, .dae, .fbx and .obj scenes; the file name&apos;s extension says which.</source>
+        <translation>%1：Gyre 可写出 .gltf、.glb、.dae、.fbx 和 .obj 场景；由文件扩展名决定格式。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="124"/>
+        <source>Exporting %1…</source>
+        <translation>正在导出 %1…</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="132"/>
+        <source>%1: the file holds no objects.</source>
+        <translation>%1：文件不含任何对象。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="135"/>
+        <source>Import %1</source>
+        <translation>导入 %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/app/scene_file_actions.cpp" line="149"/>
+        <source>Imported %n object(s) from %1</source>
+        <translation>
+            <numerusform>已从 %1 导入 %n 个对象</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="152"/>
+        <source>Imported %1</source>
+        <translation>已导入 %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="158"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="159"/>
+        <source>Exported %1</source>
+        <translation>已导出 %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/scene_file_actions.cpp" line="165"/>
+        <source>Scene file</source>
+        <translation>场景文件</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/app/scene_file_actions.cpp" line="174"/>
+        <source>Done, with %n warning(s) about what the file could not keep.</source>
+        <translation>
+            <numerusform>已完成，有 %n 条关于文件无法保留内容的警告。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::ScrewBenderPanel</name>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="24"/>
+        <source>Slerp (great arcs)</source>
+        <translation>Slerp（大圆弧）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="26"/>
+        <source>Nlerp (normalised straight lines)</source>
+        <translation>Nlerp（归一化直线）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="28"/>
+        <source>Squad (smooth quaternion curve)</source>
+        <translation>Squad（平滑四元数曲线）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="30"/>
+        <source>Hermite quaternion spline</source>
+        <translation>Hermite 四元数样条</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="32"/>
+        <source>Euler angles, linearly</source>
+        <translation>欧拉角，线性</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="34"/>
+        <source>Screw motion (ScrewBender)</source>
+        <translation>螺旋运动（ScrewBender）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="44"/>
+        <source>Four-point</source>
+        <translation>四点</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="46"/>
+        <source>Four-point B</source>
+        <translation>四点 B</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="48"/>
+        <source>Cubic B-spline</source>
+        <translation>三次 B 样条</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="50"/>
+        <source>Jarek</source>
+        <translation>Jarek</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="127"/>
+        <source>%1 from %2 keyframes</source>
+        <translation>%1，来自 %2 个关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="128"/>
+        <source>too many to hold, from %1 keyframes</source>
+        <translation>过多无法容纳，来自 %1 个关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="140"/>
+        <source>The interpolation was not changed: %1.</source>
+        <translation>插值未更改：%1。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="159"/>
+        <source>The subdivision was not changed: %1.</source>
+        <translation>细分未更改：%1。</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::SmoothnessPanel</name>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="29"/>
+        <source>position
+(units)</source>
+        <translation>位置
+（单位）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="31"/>
+        <source>velocity
+(units/s)</source>
+        <translation>速度
+（单位/秒）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="33"/>
+        <source>acceleration
+(units/s²)</source>
+        <translation>加速度
+（单位/秒²）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="42"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="99"/>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="44"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="99"/>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="46"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="99"/>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="48"/>
+        <source>magnitude</source>
+        <translation>大小</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="97"/>
+        <source>Point of the object (local):</source>
+        <translation>对象上的点（局部）：</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="104"/>
+        <source>%1 </source>
+        <translation>%1 </translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
+        <source>The %1 coordinate of the plotted point, in the object&apos;s frame</source>
+        <translation>所绘制点在对象坐标系中的 %1 坐标</translation>
+    </message>
+    <message>
+        <location filename="../src/app/smoothness_panel.cpp" line="170"/>
+        <source>time (s)</source>
+        <translation>时间（秒）</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::SphereView</name>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="179"/>
+        <source>Draw</source>
+        <translation>绘制</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="180"/>
+        <source>Draw the direction of the angular velocity on the front of the sphere</source>
+        <translation>在球的正面绘制角速度的方向</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="181"/>
+        <source>Erase</source>
+        <translation>擦除</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="181"/>
+        <source>Erase the strokes&apos; points under the pointer</source>
+        <translation>擦除指针下的笔画点</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="182"/>
+        <source>Pattern</source>
+        <translation>图案</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="183"/>
+        <source>Draw a pattern to repeat along the strokes, on the pad</source>
+        <translation>在画板上绘制沿笔画重复的图案</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="186"/>
+        <source>Reset View</source>
+        <translation>重置视图</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="189"/>
+        <source>Turn the sphere back to its first view, z up (R)</source>
+        <translation>将球转回初始视图，z 朝上（R）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="233"/>
+        <source>Select an object to sketch the direction of its angular velocity.</source>
+        <translation>选择一个对象以绘制其角速度方向的草图。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="235"/>
+        <source>%1 does not turn: key it in two orientations to give it an angular velocity to sketch.</source>
+        <translation>%1 没有转动：请在两个朝向上设置关键帧，使其具有可绘制的角速度。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="583"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="618"/>
+        <source>motion: ω/|ω|</source>
+        <translation>运动：ω/|ω|</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="620"/>
+        <source>fitted</source>
+        <translation>拟合后</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="621"/>
+        <source>before the fit</source>
+        <translation>拟合前</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="623"/>
+        <source>sketch as drawn</source>
+        <translation>绘制的草图</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="624"/>
+        <source>sketch as fitted, pattern applied</source>
+        <translation>拟合后的草图，已应用图案</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::TimeBar</name>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="26"/>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="45"/>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="52"/>
+        <source>Frames per second</source>
+        <translation>每秒帧数</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="53"/>
+        <source>Where the scene starts</source>
+        <translation>场景的开始时间</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="54"/>
+        <source>Where the scene ends</source>
+        <translation>场景的结束时间</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="56"/>
+        <location filename="../src/app/time_bar.cpp" line="94"/>
+        <source>Time %1 s</source>
+        <translation>时间 %1 秒</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="57"/>
+        <location filename="../src/app/time_bar.cpp" line="96"/>
+        <source>Frame %1</source>
+        <translation>第 %1 帧</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="64"/>
+        <source>Rate</source>
+        <translation>帧率</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="64"/>
+        <source>Start</source>
+        <translation>开始</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="64"/>
+        <source>End</source>
+        <translation>结束</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::TimelineWidget</name>
+    <message>
+        <location filename="../src/app/timeline_widget.cpp" line="88"/>
+        <location filename="../src/app/timeline_widget.cpp" line="191"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../src/app/timeline_widget.cpp" line="93"/>
+        <source>%1 f</source>
+        <translation>%1 帧</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::Translations</name>
+    <message>
+        <location filename="../src/app/language.cpp" line="57"/>
+        <source>Gyre does not speak the language &quot;%1&quot; and speaks English instead.</source>
+        <translation>Gyre 不支持语言“%1”，将改用英语。</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::jobs::SketchFitError</name>
+    <message>
+        <location filename="../src/jobs/sketch_fit.cpp" line="89"/>
+        <source>Direction stroke %1 cannot be followed: %2</source>
+        <translation>无法沿方向笔画 %1 拟合：%2</translation>
+    </message>
+    <message>
+        <location filename="../src/jobs/sketch_fit.cpp" line="194"/>
+        <source>The fit needs at least two keyframes on the selected object.</source>
+        <translation>拟合需要所选对象至少有两个关键帧。</translation>
+    </message>
+    <message>
+        <location filename="../src/jobs/sketch_fit.cpp" line="196"/>
+        <source>The fit bends the Hermite spline through the keys: choose Hermite interpolation for this object first.</source>
+        <translation>拟合会弯曲经过关键帧的 Hermite 样条：请先为此对象选择 Hermite 插值。</translation>
+    </message>
+    <message>
+        <location filename="../src/jobs/sketch_fit.cpp" line="201"/>
+        <source>Nothing is sketched yet: draw the direction of the angular velocity on the sphere, or its magnitude on the plot.</source>
+        <translation>尚未绘制草图：请在球面上绘制角速度的方向，或在图中绘制其大小。</translation>
+    </message>
+    <message>
+        <location filename="../src/jobs/sketch_fit.cpp" line="206"/>
+        <source>The edit window has no length inside the keys&apos; span: widen it, or sketch between the first and the last key.</source>
+        <translation>编辑窗口在关键帧范围内的长度为零：请扩大它，或在第一个和最后一个关键帧之间绘制草图。</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::model::Command</name>
+    <message>
+        <location filename="../src/model/commands/add_keyframe_command.cpp" line="38"/>
+        <source>Add Keyframe</source>
+        <translation>添加关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/add_stroke_command.cpp" line="11"/>
+        <source>Add Stroke</source>
+        <translation>添加笔画</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/apply_fit_result_command.cpp" line="24"/>
+        <source>Apply angular velocity fit</source>
+        <translation>应用角速度拟合</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/delete_object_command.cpp" line="25"/>
+        <source>Delete Object</source>
+        <translation>删除对象</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/edit_stroke_command.cpp" line="11"/>
+        <source>Edit Stroke</source>
+        <translation>编辑笔画</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/erase_stroke_command.cpp" line="9"/>
+        <source>Erase Stroke</source>
+        <translation>擦除笔画</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/import_objects_command.cpp" line="68"/>
+        <source>Import Objects</source>
+        <translation>导入对象</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/move_keyframe_command.cpp" line="33"/>
+        <source>Move Keyframe</source>
+        <translation>移动关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/remove_keyframe_command.cpp" line="10"/>
+        <source>Remove Keyframe</source>
+        <translation>移除关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/rename_object_command.cpp" line="10"/>
+        <source>Rename Object</source>
+        <translation>重命名对象</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/reparent_object_command.cpp" line="39"/>
+        <source>Reparent Object</source>
+        <translation>更改对象的父级</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/retime_keyframes_command.cpp" line="43"/>
+        <source>Retime Keyframes</source>
+        <translation>重新调整关键帧时间</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_fit_parameter_command.cpp" line="25"/>
+        <source>Set Fit Parameter</source>
+        <translation>设置拟合参数</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_fit_window_command.cpp" line="11"/>
+        <source>Set Fit Window</source>
+        <translation>设置拟合窗口</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_interpolation_command.cpp" line="10"/>
+        <source>Set Interpolation</source>
+        <translation>设置插值</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_keyframe_orientation_command.cpp" line="13"/>
+        <source>Rotate Keyframe</source>
+        <translation>旋转关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_keyframe_position_command.cpp" line="11"/>
+        <source>Move Keyframe Position</source>
+        <translation>移动关键帧位置</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_magnitude_curve_command.cpp" line="11"/>
+        <source>Draw Magnitude Curve</source>
+        <translation>绘制大小曲线</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_pattern_command.cpp" line="21"/>
+        <source>Draw Pattern</source>
+        <translation>绘制图案</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_subdivision_command.cpp" line="11"/>
+        <source>Set Subdivision</source>
+        <translation>设置细分</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_time_range_command.cpp" line="20"/>
+        <source>Set Time Range</source>
+        <translation>设置时间范围</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/toggle_keyframe_constraint_command.cpp" line="10"/>
+        <source>Toggle Keyframe Constraint</source>
+        <translation>切换关键帧约束</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <location filename="../src/app/main.cpp" line="25"/>
+        <source>%1: cannot write the screenshot</source>
+        <translation>%1：无法写入截图</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main.cpp" line="49"/>
+        <source>Edit the rotations of animated rigid objects.</source>
+        <translation>编辑动画刚体的旋转。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main.cpp" line="54"/>
+        <source>A Gyre project to open, or a scene file (FBX, glTF, ...) to import.</source>
+        <translation>要打开的 Gyre 项目，或要导入的场景文件（FBX、glTF 等）。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main.cpp" line="57"/>
+        <source>Save a picture of the window to &lt;file&gt; after a few seconds, then quit.</source>
+        <translation>几秒后将窗口截图保存到 &lt;file&gt;，然后退出。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main.cpp" line="60"/>
+        <source>Wait &lt;ms&gt; milliseconds before the screenshot.</source>
+        <translation>截图前等待 &lt;ms&gt; 毫秒。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main.cpp" line="64"/>
+        <source>Speak &lt;language&gt; (%1) instead of the one chosen in the preferences.</source>
+        <translation>使用 &lt;language&gt;（%1），而不是首选项中选择的语言。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main.cpp" line="72"/>
+        <source>--delay takes a number of milliseconds, not &quot;%1&quot;.</source>
+        <translation>--delay 需要毫秒数，而不是“%1”。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main.cpp" line="75"/>
+        <source>give at most one file to open.</source>
+        <translation>最多只能指定一个要打开的文件。</translation>
+    </message>
+</context>
+</TS>
