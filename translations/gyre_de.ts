@@ -689,22 +689,22 @@
 <context>
     <name>PreferencesDialog</name>
     <message>
-        <location filename="../ui/preferences_dialog.ui" line="5"/>
+        <location filename="../ui/preferences_dialog.ui" line="6"/>
         <source>Preferences</source>
         <translation>Einstellungen</translation>
     </message>
     <message>
-        <location filename="../ui/preferences_dialog.ui" line="11"/>
+        <location filename="../ui/preferences_dialog.ui" line="12"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/preferences_dialog.ui" line="17"/>
+        <location filename="../ui/preferences_dialog.ui" line="18"/>
         <source>The language of Gyre&apos;s menus, panels and messages</source>
         <translation>Die Sprache der Menüs, Bedienfelder und Meldungen von Gyre</translation>
     </message>
     <message>
-        <location filename="../ui/preferences_dialog.ui" line="22"/>
+        <location filename="../ui/preferences_dialog.ui" line="23"/>
         <source>The language changes when Gyre next starts.</source>
         <translation>Die Sprache wechselt beim nächsten Start von Gyre.</translation>
     </message>
@@ -1792,7 +1792,7 @@
     <message>
         <location filename="../src/app/sketch/sphere_view.cpp" line="186"/>
         <source>Reset View</source>
-        <translation>Ansicht zurücksetzen</translation>
+        <translation>Zurücksetzen</translation>
     </message>
     <message>
         <location filename="../src/app/sketch/sphere_view.cpp" line="189"/>

@@ -689,22 +689,22 @@
 <context>
     <name>PreferencesDialog</name>
     <message>
-        <location filename="../ui/preferences_dialog.ui" line="5"/>
+        <location filename="../ui/preferences_dialog.ui" line="6"/>
         <source>Preferences</source>
         <translation>首选项</translation>
     </message>
     <message>
-        <location filename="../ui/preferences_dialog.ui" line="11"/>
+        <location filename="../ui/preferences_dialog.ui" line="12"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/preferences_dialog.ui" line="17"/>
+        <location filename="../ui/preferences_dialog.ui" line="18"/>
         <source>The language of Gyre&apos;s menus, panels and messages</source>
         <translation>Gyre 的菜单、面板和消息所用的语言</translation>
     </message>
     <message>
-        <location filename="../ui/preferences_dialog.ui" line="22"/>
+        <location filename="../ui/preferences_dialog.ui" line="23"/>
         <source>The language changes when Gyre next starts.</source>
         <translation>语言将在 Gyre 下次启动时更改。</translation>
     </message>
