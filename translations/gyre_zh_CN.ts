@@ -115,6 +115,12 @@
         <translation>将旋转拟合到草图（Ctrl+F）</translation>
     </message>
     <message>
+        <location filename="../ui/fit_panel.ui" line="162"/>
+        <source>Ctrl+F</source>
+        <extracomment>A keyboard shortcut: keep it as it is. It stays translatable because uic then sets it after the button text, which would otherwise clear it.</extracomment>
+        <translation>Ctrl+F</translation>
+    </message>
+    <message>
         <location filename="../ui/fit_panel.ui" line="167"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
