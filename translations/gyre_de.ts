@@ -1212,92 +1212,92 @@
         <translation>Wählen Sie ein Objekt, um die Geschwindigkeit seiner Rotation zu sehen und zu skizzieren.</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="205"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="210"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="210"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="215"/>
         <source>Draw</source>
         <translation>Zeichnen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="211"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="216"/>
         <source>Left-drag draws the magnitude |ω| over time; going back erases</source>
         <translation>Ziehen mit der linken Maustaste zeichnet den Betrag |ω| über der Zeit; zurückziehen radiert</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="212"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="217"/>
         <source>Pan</source>
         <translation>Verschieben</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="212"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="217"/>
         <source>Left-drag pans the view</source>
         <translation>Ziehen mit der linken Maustaste verschiebt die Ansicht</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="221"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="226"/>
         <source>Fit View</source>
         <translation>Ansicht einpassen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="222"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="227"/>
         <source>Show the scene&apos;s time range and the curves&apos; height; double-click does too</source>
         <translation>Den Zeitbereich der Szene und die Höhe der Kurven zeigen; ein Doppelklick tut das auch</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="224"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="229"/>
         <source>Clear Magnitude</source>
         <translation>Betrag löschen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="225"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="230"/>
         <source>Remove the sketched magnitude curve</source>
         <translation>Die skizzierte Betragskurve entfernen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="239"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="244"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="240"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="245"/>
         <source>|ω| (rad/s)</source>
         <translation>|ω| (rad/s)</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="243"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="248"/>
         <source>|ω| (°/s)</source>
         <translation>|ω| (°/s)</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="256"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="261"/>
         <source>before fit</source>
         <translation>vor der Anpassung</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="257"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="262"/>
         <source>current</source>
         <translation>aktuell</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="258"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="263"/>
         <source>fitted</source>
         <translation>angepasst</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="259"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="264"/>
         <source>sketched</source>
         <translation>skizziert</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="260"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="265"/>
         <source>constrained keys</source>
         <translation>fixierte Schlüsselbilder</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="262"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="267"/>
         <source>free keys</source>
         <translation>freie Schlüsselbilder</translation>
     </message>
@@ -1721,19 +1721,19 @@
     </message>
     <message>
         <location filename="../src/app/smoothness_panel.cpp" line="42"/>
-        <location filename="../src/app/smoothness_panel.cpp" line="99"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
         <location filename="../src/app/smoothness_panel.cpp" line="44"/>
-        <location filename="../src/app/smoothness_panel.cpp" line="99"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
         <location filename="../src/app/smoothness_panel.cpp" line="46"/>
-        <location filename="../src/app/smoothness_panel.cpp" line="99"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
         <source>z</source>
         <translation>z</translation>
     </message>
@@ -1743,22 +1743,22 @@
         <translation>Betrag</translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="97"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="105"/>
         <source>Point of the object (local):</source>
         <translation>Punkt des Objekts (lokal):</translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="104"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="112"/>
         <source>%1 </source>
         <translation>%1 </translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="115"/>
         <source>The %1 coordinate of the plotted point, in the object&apos;s frame</source>
         <translation>Die %1-Koordinate des dargestellten Punkts im Koordinatensystem des Objekts</translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="170"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="175"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
@@ -1766,82 +1766,82 @@
 <context>
     <name>gyre::app::SphereView</name>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="179"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="184"/>
         <source>Draw</source>
         <translation>Zeichnen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="180"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="185"/>
         <source>Draw the direction of the angular velocity on the front of the sphere</source>
         <translation>Die Richtung der Winkelgeschwindigkeit auf die Vorderseite der Kugel zeichnen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="181"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="186"/>
         <source>Erase</source>
         <translation>Radieren</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="181"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="186"/>
         <source>Erase the strokes&apos; points under the pointer</source>
         <translation>Die Punkte der Striche unter dem Zeiger radieren</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="182"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="187"/>
         <source>Pattern</source>
         <translation>Muster</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="183"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="188"/>
         <source>Draw a pattern to repeat along the strokes, on the pad</source>
         <translation>Auf dem Feld ein Muster zeichnen, das sich entlang der Striche wiederholt</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="186"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="191"/>
         <source>Reset View</source>
         <translation>Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="189"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="194"/>
         <source>Turn the sphere back to its first view, z up (R)</source>
         <translation>Die Kugel in ihre erste Ansicht zurückdrehen, z oben (R)</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="233"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="238"/>
         <source>Select an object to sketch the direction of its angular velocity.</source>
         <translation>Wählen Sie ein Objekt, um die Richtung seiner Winkelgeschwindigkeit zu skizzieren.</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="235"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="240"/>
         <source>%1 does not turn: key it in two orientations to give it an angular velocity to sketch.</source>
         <translation>%1 dreht sich nicht: Setzen Sie Schlüsselbilder in zwei Orientierungen, damit es eine Winkelgeschwindigkeit zum Skizzieren hat.</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="583"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="560"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="618"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="595"/>
         <source>motion: ω/|ω|</source>
         <translation>Bewegung: ω/|ω|</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="620"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="597"/>
         <source>fitted</source>
         <translation>angepasst</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="621"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="598"/>
         <source>before the fit</source>
         <translation>vor der Anpassung</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="623"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="600"/>
         <source>sketch as drawn</source>
         <translation>Skizze wie gezeichnet</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="624"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="601"/>
         <source>sketch as fitted, pattern applied</source>
         <translation>Skizze wie angepasst, mit Muster</translation>
     </message>
@@ -2067,42 +2067,42 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../src/app/main.cpp" line="25"/>
+        <location filename="../src/app/main.cpp" line="26"/>
         <source>%1: cannot write the screenshot</source>
         <translation>%1: Das Bildschirmfoto kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../src/app/main.cpp" line="49"/>
+        <location filename="../src/app/main.cpp" line="53"/>
         <source>Edit the rotations of animated rigid objects.</source>
         <translation>Rotationen animierter starrer Objekte bearbeiten.</translation>
     </message>
     <message>
-        <location filename="../src/app/main.cpp" line="54"/>
+        <location filename="../src/app/main.cpp" line="58"/>
         <source>A Gyre project to open, or a scene file (FBX, glTF, ...) to import.</source>
         <translation>Ein zu öffnendes Gyre-Projekt oder eine zu importierende Szenendatei (FBX, glTF, ...).</translation>
     </message>
     <message>
-        <location filename="../src/app/main.cpp" line="57"/>
+        <location filename="../src/app/main.cpp" line="61"/>
         <source>Save a picture of the window to &lt;file&gt; after a few seconds, then quit.</source>
         <translation>Nach einigen Sekunden ein Bild des Fensters in &lt;file&gt; speichern und dann beenden.</translation>
     </message>
     <message>
-        <location filename="../src/app/main.cpp" line="60"/>
+        <location filename="../src/app/main.cpp" line="64"/>
         <source>Wait &lt;ms&gt; milliseconds before the screenshot.</source>
         <translation>Vor dem Bildschirmfoto &lt;ms&gt; Millisekunden warten.</translation>
     </message>
     <message>
-        <location filename="../src/app/main.cpp" line="64"/>
+        <location filename="../src/app/main.cpp" line="68"/>
         <source>Speak &lt;language&gt; (%1) instead of the one chosen in the preferences.</source>
         <translation>&lt;language&gt; sprechen (%1) statt der in den Einstellungen gewählten Sprache.</translation>
     </message>
     <message>
-        <location filename="../src/app/main.cpp" line="72"/>
+        <location filename="../src/app/main.cpp" line="76"/>
         <source>--delay takes a number of milliseconds, not &quot;%1&quot;.</source>
         <translation>--delay erwartet eine Anzahl Millisekunden, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../src/app/main.cpp" line="75"/>
+        <location filename="../src/app/main.cpp" line="79"/>
         <source>give at most one file to open.</source>
         <translation>geben Sie höchstens eine Datei zum Öffnen an.</translation>
     </message>

@@ -1212,92 +1212,92 @@
         <translation>选择一个对象以查看并绘制其旋转速度的草图。</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="205"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="210"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="210"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="215"/>
         <source>Draw</source>
         <translation>绘制</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="211"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="216"/>
         <source>Left-drag draws the magnitude |ω| over time; going back erases</source>
         <translation>按住左键拖动可绘制 |ω| 随时间的大小；往回拖动则擦除</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="212"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="217"/>
         <source>Pan</source>
         <translation>平移</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="212"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="217"/>
         <source>Left-drag pans the view</source>
         <translation>按住左键拖动可平移视图</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="221"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="226"/>
         <source>Fit View</source>
         <translation>适应视图</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="222"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="227"/>
         <source>Show the scene&apos;s time range and the curves&apos; height; double-click does too</source>
         <translation>显示场景的时间范围和曲线的高度；双击也可以</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="224"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="229"/>
         <source>Clear Magnitude</source>
         <translation>清除大小</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="225"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="230"/>
         <source>Remove the sketched magnitude curve</source>
         <translation>移除草图绘制的大小曲线</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="239"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="244"/>
         <source>time (s)</source>
         <translation>时间（秒）</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="240"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="245"/>
         <source>|ω| (rad/s)</source>
         <translation>|ω|（rad/s）</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="243"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="248"/>
         <source>|ω| (°/s)</source>
         <translation>|ω|（°/s）</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="256"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="261"/>
         <source>before fit</source>
         <translation>拟合前</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="257"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="262"/>
         <source>current</source>
         <translation>当前</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="258"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="263"/>
         <source>fitted</source>
         <translation>拟合后</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="259"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="264"/>
         <source>sketched</source>
         <translation>草图</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="260"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="265"/>
         <source>constrained keys</source>
         <translation>约束的关键帧</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="262"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="267"/>
         <source>free keys</source>
         <translation>自由的关键帧</translation>
     </message>
@@ -1719,19 +1719,19 @@
     </message>
     <message>
         <location filename="../src/app/smoothness_panel.cpp" line="42"/>
-        <location filename="../src/app/smoothness_panel.cpp" line="99"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
         <location filename="../src/app/smoothness_panel.cpp" line="44"/>
-        <location filename="../src/app/smoothness_panel.cpp" line="99"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
         <location filename="../src/app/smoothness_panel.cpp" line="46"/>
-        <location filename="../src/app/smoothness_panel.cpp" line="99"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
         <source>z</source>
         <translation>z</translation>
     </message>
@@ -1741,22 +1741,22 @@
         <translation>大小</translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="97"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="105"/>
         <source>Point of the object (local):</source>
         <translation>对象上的点（局部）：</translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="104"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="112"/>
         <source>%1 </source>
         <translation>%1 </translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="115"/>
         <source>The %1 coordinate of the plotted point, in the object&apos;s frame</source>
         <translation>所绘制点在对象坐标系中的 %1 坐标</translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="170"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="175"/>
         <source>time (s)</source>
         <translation>时间（秒）</translation>
     </message>
@@ -1764,82 +1764,82 @@
 <context>
     <name>gyre::app::SphereView</name>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="179"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="184"/>
         <source>Draw</source>
         <translation>绘制</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="180"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="185"/>
         <source>Draw the direction of the angular velocity on the front of the sphere</source>
         <translation>在球的正面绘制角速度的方向</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="181"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="186"/>
         <source>Erase</source>
         <translation>擦除</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="181"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="186"/>
         <source>Erase the strokes&apos; points under the pointer</source>
         <translation>擦除指针下的笔画点</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="182"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="187"/>
         <source>Pattern</source>
         <translation>图案</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="183"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="188"/>
         <source>Draw a pattern to repeat along the strokes, on the pad</source>
         <translation>在画板上绘制沿笔画重复的图案</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="186"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="191"/>
         <source>Reset View</source>
         <translation>重置视图</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="189"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="194"/>
         <source>Turn the sphere back to its first view, z up (R)</source>
         <translation>将球转回初始视图，z 朝上（R）</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="233"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="238"/>
         <source>Select an object to sketch the direction of its angular velocity.</source>
         <translation>选择一个对象以绘制其角速度方向的草图。</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="235"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="240"/>
         <source>%1 does not turn: key it in two orientations to give it an angular velocity to sketch.</source>
         <translation>%1 没有转动：请在两个朝向上设置关键帧，使其具有可绘制的角速度。</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="583"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="560"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="618"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="595"/>
         <source>motion: ω/|ω|</source>
         <translation>运动：ω/|ω|</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="620"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="597"/>
         <source>fitted</source>
         <translation>拟合后</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="621"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="598"/>
         <source>before the fit</source>
         <translation>拟合前</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="623"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="600"/>
         <source>sketch as drawn</source>
         <translation>绘制的草图</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="624"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="601"/>
         <source>sketch as fitted, pattern applied</source>
         <translation>拟合后的草图，已应用图案</translation>
     </message>
@@ -2065,42 +2065,42 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../src/app/main.cpp" line="25"/>
+        <location filename="../src/app/main.cpp" line="26"/>
         <source>%1: cannot write the screenshot</source>
         <translation>%1：无法写入截图</translation>
     </message>
     <message>
-        <location filename="../src/app/main.cpp" line="49"/>
+        <location filename="../src/app/main.cpp" line="53"/>
         <source>Edit the rotations of animated rigid objects.</source>
         <translation>编辑动画刚体的旋转。</translation>
     </message>
     <message>
-        <location filename="../src/app/main.cpp" line="54"/>
+        <location filename="../src/app/main.cpp" line="58"/>
         <source>A Gyre project to open, or a scene file (FBX, glTF, ...) to import.</source>
         <translation>要打开的 Gyre 项目，或要导入的场景文件（FBX、glTF 等）。</translation>
     </message>
     <message>
-        <location filename="../src/app/main.cpp" line="57"/>
+        <location filename="../src/app/main.cpp" line="61"/>
         <source>Save a picture of the window to &lt;file&gt; after a few seconds, then quit.</source>
         <translation>几秒后将窗口截图保存到 &lt;file&gt;，然后退出。</translation>
     </message>
     <message>
-        <location filename="../src/app/main.cpp" line="60"/>
+        <location filename="../src/app/main.cpp" line="64"/>
         <source>Wait &lt;ms&gt; milliseconds before the screenshot.</source>
         <translation>截图前等待 &lt;ms&gt; 毫秒。</translation>
     </message>
     <message>
-        <location filename="../src/app/main.cpp" line="64"/>
+        <location filename="../src/app/main.cpp" line="68"/>
         <source>Speak &lt;language&gt; (%1) instead of the one chosen in the preferences.</source>
         <translation>使用 &lt;language&gt;（%1），而不是首选项中选择的语言。</translation>
     </message>
     <message>
-        <location filename="../src/app/main.cpp" line="72"/>
+        <location filename="../src/app/main.cpp" line="76"/>
         <source>--delay takes a number of milliseconds, not &quot;%1&quot;.</source>
         <translation>--delay 需要毫秒数，而不是“%1”。</translation>
     </message>
     <message>
-        <location filename="../src/app/main.cpp" line="75"/>
+        <location filename="../src/app/main.cpp" line="79"/>
         <source>give at most one file to open.</source>
         <translation>最多只能指定一个要打开的文件。</translation>
     </message>
