@@ -866,6 +866,11 @@
         <translation>nicht gespeichert, weil sich die Datei nicht wieder lesen ließe: %1</translation>
     </message>
     <message>
+        <location filename="../src/io/scene_export.cpp" line="74"/>
+        <source>object %1 &apos;%2&apos; is written as &apos;%3&apos; so that its name is unique</source>
+        <translation>Objekt %1 „%2“ wird als „%3“ geschrieben, damit sein Name eindeutig ist</translation>
+    </message>
+    <message>
         <location filename="../src/io/scene_export.cpp" line="89"/>
         <source>the mesh of &apos;%1&apos; has an index past its vertices</source>
         <translation>das Mesh von „%1“ hat einen Index jenseits seiner Vertices</translation>
@@ -884,6 +889,11 @@
         <location filename="../src/io/scene_export.cpp" line="214"/>
         <source>the motion of &apos;%1&apos; cannot be evaluated: %2</source>
         <translation>die Bewegung von „%1“ kann nicht ausgewertet werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="249"/>
+        <source>object %1 names parent %2, which does not come before it; it is written at the top level</source>
+        <translation>Objekt %1 nennt das Elternobjekt %2, das nicht vor ihm steht; es wird auf oberster Ebene geschrieben</translation>
     </message>
     <message>
         <location filename="../src/io/scene_export.cpp" line="319"/>
@@ -914,6 +924,11 @@
         <location filename="../src/io/scene_export.cpp" line="354"/>
         <source>the scene has no meshes, and OBJ holds nothing else</source>
         <translation>die Szene hat keine Meshes, und OBJ enthält nichts anderes</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="356"/>
+        <source>OBJ holds no motion: the meshes are written as posed at the start time</source>
+        <translation>OBJ enthält keine Bewegung: die Netze werden so geschrieben, wie sie zur Startzeit stehen</translation>
     </message>
     <message>
         <location filename="../src/io/scene_import.cpp" line="51"/>
@@ -951,9 +966,44 @@
         <translation>die Datei enthält keine Szenenknoten</translation>
     </message>
     <message>
+        <location filename="../src/io/scene_import.cpp" line="238"/>
+        <source>mesh &apos;%1&apos; is skinned; skinning is not imported, so it shows in its bind pose</source>
+        <translation>Netz „%1“ ist geskinnt; Skinning wird nicht importiert, daher erscheint es in seiner Bindungspose</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="324"/>
+        <source>node &apos;%1&apos; has more than one channel; the first is used</source>
+        <translation>Knoten „%1“ hat mehr als einen Kanal; der erste wird verwendet</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="362"/>
+        <source>node &apos;%1&apos; has a non-uniform scale; its children get the mean scale</source>
+        <translation>Knoten „%1“ hat eine ungleichmäßige Skalierung; seine Kinder erhalten die mittlere Skalierung</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="391"/>
+        <source>node &apos;%1&apos;: its scale changes over time; Gyre&apos;s motion is rigid, so the scale of its first key is kept</source>
+        <translation>Knoten „%1“: seine Skalierung ändert sich mit der Zeit; Gyres Bewegung ist starr, daher wird die Skalierung seines ersten Schlüssels beibehalten</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="403"/>
+        <source>the animation moves &apos;%1&apos;, which is not in the scene</source>
+        <translation>die Animation bewegt „%1“, das nicht in der Szene ist</translation>
+    </message>
+    <message>
         <location filename="../src/io/scene_import.cpp" line="420"/>
         <source>the file has %1 animations; there is no animation %2</source>
         <translation>die Datei hat %1 Animationen; Animation %2 gibt es nicht</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="430"/>
+        <source>mesh and morph animation is not imported; only node motion is</source>
+        <translation>Netz- und Morph-Animation wird nicht importiert, nur die Bewegung der Knoten</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="432"/>
+        <source>cameras and lights are not imported</source>
+        <translation>Kameras und Lichter werden nicht importiert</translation>
     </message>
 </context>
 <context>
@@ -1592,7 +1642,7 @@
     </message>
     <message numerus="yes">
         <location filename="../src/app/scene_file_actions.cpp" line="149"/>
-        <source>Imported %n object(s) from %1</source>
+        <source>Objects imported from %1: %n</source>
         <translation>
             <numerusform>%n Objekt aus %1 importiert</numerusform>
             <numerusform>%n Objekte aus %1 importiert</numerusform>
@@ -1616,7 +1666,7 @@
     </message>
     <message numerus="yes">
         <location filename="../src/app/scene_file_actions.cpp" line="174"/>
-        <source>Done, with %n warning(s) about what the file could not keep.</source>
+        <source>Done. Warnings about what the file could not keep: %n.</source>
         <translation>
             <numerusform>Fertig, mit %n Warnung dazu, was die Datei nicht aufnehmen konnte.</numerusform>
             <numerusform>Fertig, mit %n Warnungen dazu, was die Datei nicht aufnehmen konnte.</numerusform>

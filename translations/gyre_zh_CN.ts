@@ -866,6 +866,11 @@
         <translation>未保存，因为该文件无法被重新读取：%1</translation>
     </message>
     <message>
+        <location filename="../src/io/scene_export.cpp" line="74"/>
+        <source>object %1 &apos;%2&apos; is written as &apos;%3&apos; so that its name is unique</source>
+        <translation>对象 %1“%2”写为“%3”，以使其名称唯一</translation>
+    </message>
+    <message>
         <location filename="../src/io/scene_export.cpp" line="89"/>
         <source>the mesh of &apos;%1&apos; has an index past its vertices</source>
         <translation>“%1”的网格有超出其顶点范围的索引</translation>
@@ -884,6 +889,11 @@
         <location filename="../src/io/scene_export.cpp" line="214"/>
         <source>the motion of &apos;%1&apos; cannot be evaluated: %2</source>
         <translation>无法计算“%1”的运动：%2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="249"/>
+        <source>object %1 names parent %2, which does not come before it; it is written at the top level</source>
+        <translation>对象 %1 指定的父对象 %2 不在它之前；它被写在顶层</translation>
     </message>
     <message>
         <location filename="../src/io/scene_export.cpp" line="319"/>
@@ -914,6 +924,11 @@
         <location filename="../src/io/scene_export.cpp" line="354"/>
         <source>the scene has no meshes, and OBJ holds nothing else</source>
         <translation>场景没有网格，而 OBJ 不能保存其他内容</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="356"/>
+        <source>OBJ holds no motion: the meshes are written as posed at the start time</source>
+        <translation>OBJ 不包含运动：网格按起始时间的姿态写出</translation>
     </message>
     <message>
         <location filename="../src/io/scene_import.cpp" line="51"/>
@@ -951,9 +966,44 @@
         <translation>文件不含场景节点</translation>
     </message>
     <message>
+        <location filename="../src/io/scene_import.cpp" line="238"/>
+        <source>mesh &apos;%1&apos; is skinned; skinning is not imported, so it shows in its bind pose</source>
+        <translation>网格“%1”带有蒙皮；蒙皮不会被导入，因此它以绑定姿态显示</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="324"/>
+        <source>node &apos;%1&apos; has more than one channel; the first is used</source>
+        <translation>节点“%1”有多个通道；使用第一个</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="362"/>
+        <source>node &apos;%1&apos; has a non-uniform scale; its children get the mean scale</source>
+        <translation>节点“%1”的缩放不均匀；其子节点使用平均缩放</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="391"/>
+        <source>node &apos;%1&apos;: its scale changes over time; Gyre&apos;s motion is rigid, so the scale of its first key is kept</source>
+        <translation>节点“%1”：其缩放随时间变化；Gyre 的运动是刚体运动，因此保留其第一个关键帧的缩放</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="403"/>
+        <source>the animation moves &apos;%1&apos;, which is not in the scene</source>
+        <translation>动画移动了“%1”，但它不在场景中</translation>
+    </message>
+    <message>
         <location filename="../src/io/scene_import.cpp" line="420"/>
         <source>the file has %1 animations; there is no animation %2</source>
         <translation>文件有 %1 个动画；不存在动画 %2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="430"/>
+        <source>mesh and morph animation is not imported; only node motion is</source>
+        <translation>网格动画和变形动画不会被导入；只导入节点运动</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="432"/>
+        <source>cameras and lights are not imported</source>
+        <translation>摄像机和灯光不会被导入</translation>
     </message>
 </context>
 <context>
@@ -1592,7 +1642,7 @@
     </message>
     <message numerus="yes">
         <location filename="../src/app/scene_file_actions.cpp" line="149"/>
-        <source>Imported %n object(s) from %1</source>
+        <source>Objects imported from %1: %n</source>
         <translation>
             <numerusform>已从 %1 导入 %n 个对象</numerusform>
         </translation>
@@ -1615,7 +1665,7 @@
     </message>
     <message numerus="yes">
         <location filename="../src/app/scene_file_actions.cpp" line="174"/>
-        <source>Done, with %n warning(s) about what the file could not keep.</source>
+        <source>Done. Warnings about what the file could not keep: %n.</source>
         <translation>
             <numerusform>已完成，有 %n 条关于文件无法保留内容的警告。</numerusform>
         </translation>

@@ -146,7 +146,7 @@ void SceneFileActions::addImportedObjects(const QString& path, const std::shared
     const model::ObjectId first = objects->ids().front();
     pushAlone(document_.undoStack(), step);
     selection_.selectObject(first);
-    statusBar_->showMessage(tr("Imported %n object(s) from %1", nullptr, static_cast<int>(imported->scene.objects.size()))
+    statusBar_->showMessage(tr("Objects imported from %1: %n", nullptr, static_cast<int>(imported->scene.objects.size()))
                                 .arg(name),
                             kMessageMilliseconds);
     showWarnings(tr("Imported %1").arg(name), imported->warnings);
@@ -171,7 +171,7 @@ void SceneFileActions::showWarnings(const QString& title, const QStringList& war
         return;
     // Not modal: the artist reads it beside the result.
     auto* box = new QMessageBox(QMessageBox::Information, title,
-                                tr("Done, with %n warning(s) about what the file could not keep.", nullptr,
+                                tr("Done. Warnings about what the file could not keep: %n.", nullptr,
                                    static_cast<int>(warnings.size())),
                                 QMessageBox::Ok, window_);
     box->setDetailedText(warnings.join(QLatin1Char('\n')));

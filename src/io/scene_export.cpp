@@ -71,7 +71,7 @@ public:
         for (int n = 2; !used_.insert(name).second; ++n)
             name = wanted + '_' + std::to_string(n);
         if (name != wanted || object.name.isEmpty())
-            warnings << QStringLiteral("object %1 '%2' is written as '%3' so that its name is unique")
+            warnings << gyre::FileError::tr("object %1 '%2' is written as '%3' so that its name is unique")
                             .arg(object.id)
                             .arg(object.name, QString::fromStdString(name));
         return name;
@@ -246,8 +246,8 @@ private:
                 if (const auto found = indexOfId.find(parentOf_[i]); found != indexOfId.end())
                     parent = found->second;
                 else
-                    report_.warnings << QStringLiteral("object %1 names parent %2, which does not come before it; "
-                                                       "it is written at the top level")
+                    report_.warnings << FileError::tr("object %1 names parent %2, which does not come before it; "
+                                                      "it is written at the top level")
                                             .arg(idOf_[i])
                                             .arg(parentOf_[i]);
             }
@@ -353,7 +353,7 @@ ExportReport exportScene(const model::Scene& scene, const QString& path, SceneFo
     if (format == SceneFormat::Obj && std::ranges::none_of(scene.objects, hasTriangles))
         throw OutputError(path, FileError::tr("the scene has no meshes, and OBJ holds nothing else").toStdString());
     if (!keepsMotion(format))
-        report.warnings << QStringLiteral("OBJ holds no motion: the meshes are written as posed at the start time");
+        report.warnings << FileError::tr("OBJ holds no motion: the meshes are written as posed at the start time");
     const std::unique_ptr<const aiScene> assimpScene =
         AssimpSceneBuilder(scene, path, fps, report).build(keepsMotion(format));
     return writeWithAssimp(*assimpScene, path, format, std::move(report));

@@ -235,7 +235,7 @@ private:
             if (!(part.mPrimitiveTypes & aiPrimitiveType_TRIANGLE))
                 continue; // points and lines: nothing to shade
             if (part.mNumBones > 0 && skinnedWarned_.insert(node.mMeshes[i]).second)
-                warnings << QStringLiteral("mesh '%1' is skinned; skinning is not imported, so it shows in its bind pose")
+                warnings << FileError::tr("mesh '%1' is skinned; skinning is not imported, so it shows in its bind pose")
                                 .arg(nameOf(part.mName));
             allHaveNormals = allHaveNormals && part.mNormals;
             append(part, scale, *mesh);
@@ -321,7 +321,7 @@ private:
         for (unsigned i = 0; i < animation_->mNumChannels; ++i) {
             const aiNodeAnim& channel = *animation_->mChannels[i];
             if (!channels_.try_emplace(viewOf(channel.mNodeName), &channel).second)
-                result_.warnings << QStringLiteral("node '%1' has more than one channel; the first is used")
+                result_.warnings << FileError::tr("node '%1' has more than one channel; the first is used")
                                         .arg(nameOf(channel.mNodeName));
         }
     }
@@ -359,7 +359,7 @@ private:
         object.track.interpolation = InterpolationMethod::Slerp;
         object.mesh = meshes_.meshOf(node, inheritedScale * scale, result_.warnings);
         if (!isUniform(scale) && node.mNumChildren > 0)
-            result_.warnings << QStringLiteral("node '%1' has a non-uniform scale; its children get the mean scale")
+            result_.warnings << FileError::tr("node '%1' has a non-uniform scale; its children get the mean scale")
                                     .arg(object.name);
         const double childScale = inheritedScale * std::cbrt(scale.prod());
         result_.scene.objects.push_back(std::move(object));
@@ -388,8 +388,8 @@ private:
         const Eigen::Vector3d first = toEigen(channel.mScalingKeys[0].mValue);
         for (unsigned i = 1; i < channel.mNumScalingKeys; ++i)
             if ((toEigen(channel.mScalingKeys[i].mValue) - first).norm() > kScaleTolerance * first.norm()) {
-                result_.warnings << QStringLiteral("node '%1': its scale changes over time; Gyre's motion is rigid, "
-                                                   "so the scale of its first key is kept")
+                result_.warnings << gyre::FileError::tr("node '%1': its scale changes over time; Gyre's motion is rigid, "
+                                                        "so the scale of its first key is kept")
                                         .arg(nameOf(node.mName));
                 break;
             }
@@ -400,7 +400,7 @@ private:
     {
         for (const auto& [name, channel] : channels_)
             if (!used_.contains(name))
-                result_.warnings << QStringLiteral("the animation moves '%1', which is not in the scene")
+                result_.warnings << FileError::tr("the animation moves '%1', which is not in the scene")
                                         .arg(nameOf(channel->mNodeName));
     }
 
@@ -427,9 +427,9 @@ const aiAnimation* chosenAnimation(const QString& path, const aiScene& scene, co
 void warnAboutWhatIsLeftOut(const aiScene& scene, const aiAnimation* animation, QStringList& warnings)
 {
     if (animation && (animation->mNumMeshChannels > 0 || animation->mNumMorphMeshChannels > 0))
-        warnings << QStringLiteral("mesh and morph animation is not imported; only node motion is");
+        warnings << FileError::tr("mesh and morph animation is not imported; only node motion is");
     if (scene.mNumCameras > 0 || scene.mNumLights > 0)
-        warnings << QStringLiteral("cameras and lights are not imported");
+        warnings << FileError::tr("cameras and lights are not imported");
 }
 
 // The span of the motion: from the earliest key to the latest key or the animation's end.
