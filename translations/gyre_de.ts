@@ -812,8 +812,8 @@
     <name>gyre::FileError</name>
     <message>
         <location filename="../src/model/autosave.cpp" line="36"/>
-        <location filename="../src/model/project_file.cpp" line="480"/>
-        <location filename="../src/model/project_file.cpp" line="482"/>
+        <location filename="../src/model/project_file.cpp" line="483"/>
+        <location filename="../src/model/project_file.cpp" line="485"/>
         <location filename="../src/io/file_contents.cpp" line="13"/>
         <location filename="../src/io/scene_export.cpp" line="303"/>
         <location filename="../src/io/scene_export.cpp" line="306"/>
@@ -831,37 +831,93 @@
         <translation>die Sperre der automatischen Sicherung kann nicht übernommen werden</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="419"/>
+        <location filename="../src/model/project_file.cpp" line="171"/>
+        <source>unknown value &quot;%1&quot;; expected one of %2</source>
+        <translation>unbekannter Wert „%1“; erwartet wird einer von %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="209"/>
+        <source>%1 bytes are not a whole number of %2-byte items</source>
+        <translation>%1 Bytes sind keine ganze Zahl von %2-Byte-Einträgen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="266"/>
+        <location filename="../src/model/value_checks.cpp" line="116"/>
+        <source>a stroke needs at least one point</source>
+        <translation>ein Strich braucht mindestens einen Punkt</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="268"/>
+        <source>%1 times for %2 points; give none or one per point</source>
+        <translation>%1 Zeiten für %2 Punkte; geben Sie keine oder eine je Punkt an</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="333"/>
+        <source>the file has no meshes</source>
+        <translation>die Datei hat keine Meshes</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="352"/>
+        <source>%1 is also the id of objects[%2]</source>
+        <translation>%1 ist auch die ID von objects[%2]</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="355"/>
+        <source>no object has id %1</source>
+        <translation>kein Objekt hat die ID %1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="364"/>
+        <source>object %1 is its own ancestor</source>
+        <translation>Objekt %1 ist sein eigener Vorfahr</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="377"/>
+        <source>object %1 comes after it in the file; parents come before their children</source>
+        <translation>Objekt %1 steht in der Datei nach ihm; Eltern stehen vor ihren Kindern</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="385"/>
+        <source>expected &quot;%1&quot;, found &quot;%2&quot;; this is not a Gyre project</source>
+        <translation>erwartet „%1“, gefunden „%2“; dies ist kein Gyre-Projekt</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="390"/>
+        <source>the file has version %1, newer than this build of Gyre reads (%2 and older); open it with a newer Gyre</source>
+        <translation>die Datei hat Version %1, neuer als diese Gyre-Version lesen kann (%2 und älter); öffnen Sie sie mit einem neueren Gyre</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="422"/>
         <source>is a directory, not a file</source>
         <translation>ist ein Verzeichnis, keine Datei</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="422"/>
+        <location filename="../src/model/project_file.cpp" line="425"/>
         <source>cannot open: %1</source>
         <translation>kann nicht geöffnet werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="424"/>
+        <location filename="../src/model/project_file.cpp" line="427"/>
         <source>is larger than 1 GiB, the most a project file may hold</source>
         <translation>ist größer als 1 GiB, das Höchstmaß für eine Projektdatei</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="437"/>
+        <location filename="../src/model/project_file.cpp" line="440"/>
         <source>cannot read: %1</source>
         <translation>kann nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="448"/>
+        <location filename="../src/model/project_file.cpp" line="451"/>
         <source>is empty; a project file holds a JSON object</source>
         <translation>ist leer; eine Projektdatei enthält ein JSON-Objekt</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="453"/>
+        <location filename="../src/model/project_file.cpp" line="456"/>
         <source>not valid JSON: %1 at byte %2</source>
         <translation>kein gültiges JSON: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="473"/>
+        <location filename="../src/model/project_file.cpp" line="476"/>
         <source>not saved, because the file would not read back: %1</source>
         <translation>nicht gespeichert, weil sich die Datei nicht wieder lesen ließe: %1</translation>
     </message>
@@ -928,7 +984,7 @@
     <message>
         <location filename="../src/io/scene_export.cpp" line="356"/>
         <source>OBJ holds no motion: the meshes are written as posed at the start time</source>
-        <translation>OBJ enthält keine Bewegung: die Netze werden so geschrieben, wie sie zur Startzeit stehen</translation>
+        <translation>OBJ enthält keine Bewegung: die Meshes werden so geschrieben, wie sie zur Startzeit stehen</translation>
     </message>
     <message>
         <location filename="../src/io/scene_import.cpp" line="51"/>
@@ -966,44 +1022,253 @@
         <translation>die Datei enthält keine Szenenknoten</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="238"/>
-        <source>mesh &apos;%1&apos; is skinned; skinning is not imported, so it shows in its bind pose</source>
-        <translation>Netz „%1“ ist geskinnt; Skinning wird nicht importiert, daher erscheint es in seiner Bindungspose</translation>
+        <location filename="../src/io/scene_import.cpp" line="120"/>
+        <source>%1 key %2 is not finite</source>
+        <translation>%1schlüssel %2 ist nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="324"/>
+        <location filename="../src/io/scene_import.cpp" line="123"/>
+        <source>%1 key %2 is not a rotation (a zero quaternion)</source>
+        <translation>%1schlüssel %2 ist keine Rotation (ein Null-Quaternion)</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="126"/>
+        <source>%1 key %2 is not after the key before it</source>
+        <translation>%1schlüssel %2 liegt nicht nach dem Schlüssel davor</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="134"/>
+        <source>node &apos;%1&apos;: %2</source>
+        <translation>Knoten „%1“: %2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="245"/>
+        <source>mesh &apos;%1&apos; is skinned; skinning is not imported, so it shows in its bind pose</source>
+        <translation>Mesh „%1“ ist geskinnt; Skinning wird nicht importiert, daher erscheint es in seiner Bindungspose</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="331"/>
         <source>node &apos;%1&apos; has more than one channel; the first is used</source>
         <translation>Knoten „%1“ hat mehr als einen Kanal; der erste wird verwendet</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="362"/>
+        <location filename="../src/io/scene_import.cpp" line="369"/>
         <source>node &apos;%1&apos; has a non-uniform scale; its children get the mean scale</source>
         <translation>Knoten „%1“ hat eine ungleichmäßige Skalierung; seine Kinder erhalten die mittlere Skalierung</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="391"/>
-        <source>node &apos;%1&apos;: its scale changes over time; Gyre&apos;s motion is rigid, so the scale of its first key is kept</source>
-        <translation>Knoten „%1“: seine Skalierung ändert sich mit der Zeit; Gyres Bewegung ist starr, daher wird die Skalierung seines ersten Schlüssels beibehalten</translation>
+        <location filename="../src/io/scene_import.cpp" line="380"/>
+        <source>rotation</source>
+        <translation>Rotations</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="403"/>
+        <location filename="../src/io/scene_import.cpp" line="383"/>
+        <source>position</source>
+        <translation>Positions</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="395"/>
+        <source>scaling</source>
+        <translation>Skalierungs</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="401"/>
+        <source>node &apos;%1&apos;: its scale changes over time; Gyre&apos;s motion is rigid, so the scale of its first key is kept</source>
+        <translation>Knoten „%1“: seine Skalierung ändert sich mit der Zeit; Gyres Bewegung ist starr, daher wird die Skalierung seines ersten Animationsschlüssels beibehalten</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="413"/>
         <source>the animation moves &apos;%1&apos;, which is not in the scene</source>
         <translation>die Animation bewegt „%1“, das nicht in der Szene ist</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="420"/>
+        <location filename="../src/io/scene_import.cpp" line="430"/>
         <source>the file has %1 animations; there is no animation %2</source>
         <translation>die Datei hat %1 Animationen; Animation %2 gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="430"/>
+        <location filename="../src/io/scene_import.cpp" line="440"/>
         <source>mesh and morph animation is not imported; only node motion is</source>
-        <translation>Netz- und Morph-Animation wird nicht importiert, nur die Bewegung der Knoten</translation>
+        <translation>Mesh- und Morph-Animation wird nicht importiert, nur die Bewegung der Knoten</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="432"/>
+        <location filename="../src/io/scene_import.cpp" line="442"/>
         <source>cameras and lights are not imported</source>
         <translation>Kameras und Lichter werden nicht importiert</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="24"/>
+        <source>a boolean</source>
+        <translation>ein Wahrheitswert</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="26"/>
+        <location filename="../src/model/json_field.cpp" line="48"/>
+        <source>a number</source>
+        <translation>eine Zahl</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="29"/>
+        <source>the string &quot;%1&quot;</source>
+        <translation>die Zeichenkette „%1“</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="33"/>
+        <location filename="../src/model/json_field.cpp" line="52"/>
+        <source>an array</source>
+        <translation>ein Array</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="35"/>
+        <location filename="../src/model/json_field.cpp" line="54"/>
+        <source>an object</source>
+        <translation>ein Objekt</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="39"/>
+        <source>nothing</source>
+        <translation>nichts</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="46"/>
+        <source>true or false</source>
+        <translation>true oder false</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="50"/>
+        <source>a string</source>
+        <translation>eine Zeichenkette</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="70"/>
+        <source>the top level</source>
+        <translation>die oberste Ebene</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="77"/>
+        <source>expected %1, found %2</source>
+        <translation>erwartet: %1, gefunden: %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="88"/>
+        <source>missing</source>
+        <translation>fehlt</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="116"/>
+        <location filename="../src/model/value_checks.cpp" line="60"/>
+        <source>%1 is not a finite number</source>
+        <translation>%1 ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="124"/>
+        <source>%1 is not a whole number</source>
+        <translation>%1 ist keine ganze Zahl</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="126"/>
+        <source>%1 is outside %2 to %3</source>
+        <translation>%1 liegt außerhalb von %2 bis %3</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="146"/>
+        <source>not valid base64</source>
+        <translation>kein gültiges Base64</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="155"/>
+        <source>expected %1 numbers, found %2</source>
+        <translation>erwartet: %1 Zahlen, gefunden: %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="24"/>
+        <source>not all components are finite</source>
+        <translation>nicht alle Komponenten sind endlich</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="34"/>
+        <source>the %1 is zero</source>
+        <translation>%1 ist null</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="36"/>
+        <source>the %1 has length %2; it must have length 1</source>
+        <translation>%1 hat die Länge %2; die Länge muss 1 sein</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="67"/>
+        <source>%1 is negative</source>
+        <translation>%1 ist negativ</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="74"/>
+        <source>%1 is not positive</source>
+        <translation>%1 ist nicht positiv</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="80"/>
+        <source>direction</source>
+        <translation>die Richtung</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="84"/>
+        <source>quaternion</source>
+        <translation>das Quaternion</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="95"/>
+        <source>time %1 does not come after the time before it, %2</source>
+        <translation>die Zeit %1 liegt nicht nach der Zeit davor, %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="120"/>
+        <source>a stroke has no times or one per point</source>
+        <translation>ein Strich hat keine Zeiten oder eine je Punkt</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="136"/>
+        <source>the pattern&apos;s repeat count %1 is negative</source>
+        <translation>die Wiederholungszahl %1 des Musters ist negativ</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="170"/>
+        <source>subdivision levels %1 are outside 0 to %2</source>
+        <translation>die Unterteilungsstufen %1 liegen außerhalb von 0 bis %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="183"/>
+        <source>a frame rate of %1 is above %2</source>
+        <translation>eine Bildrate von %1 liegt über %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="191"/>
+        <source>the end time %1 does not come after the start time %2</source>
+        <translation>die Endzeit %1 liegt nicht nach der Startzeit %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="199"/>
+        <source>a mesh position is not finite</source>
+        <translation>eine Mesh-Position ist nicht endlich</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="202"/>
+        <source>a mesh normal is not finite</source>
+        <translation>eine Mesh-Normale ist nicht endlich</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="204"/>
+        <source>the mesh has %1 normals for %2 positions</source>
+        <translation>das Mesh hat %1 Normalen für %2 Positionen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="206"/>
+        <source>the mesh&apos;s %1 indices do not make whole triangles</source>
+        <translation>die %1 Indizes des Meshes ergeben keine ganzen Dreiecke</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="209"/>
+        <source>mesh index %1 is beyond its %2 positions</source>
+        <translation>der Mesh-Index %1 liegt jenseits seiner %2 Positionen</translation>
     </message>
 </context>
 <context>

@@ -812,8 +812,8 @@
     <name>gyre::FileError</name>
     <message>
         <location filename="../src/model/autosave.cpp" line="36"/>
-        <location filename="../src/model/project_file.cpp" line="480"/>
-        <location filename="../src/model/project_file.cpp" line="482"/>
+        <location filename="../src/model/project_file.cpp" line="483"/>
+        <location filename="../src/model/project_file.cpp" line="485"/>
         <location filename="../src/io/file_contents.cpp" line="13"/>
         <location filename="../src/io/scene_export.cpp" line="303"/>
         <location filename="../src/io/scene_export.cpp" line="306"/>
@@ -831,37 +831,93 @@
         <translation>无法获取自动保存锁</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="419"/>
+        <location filename="../src/model/project_file.cpp" line="171"/>
+        <source>unknown value &quot;%1&quot;; expected one of %2</source>
+        <translation>未知的值“%1”；应为以下之一：%2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="209"/>
+        <source>%1 bytes are not a whole number of %2-byte items</source>
+        <translation>%1 字节不是 %2 字节条目的整数倍</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="266"/>
+        <location filename="../src/model/value_checks.cpp" line="116"/>
+        <source>a stroke needs at least one point</source>
+        <translation>笔画至少需要一个点</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="268"/>
+        <source>%1 times for %2 points; give none or one per point</source>
+        <translation>%1 个时间对应 %2 个点；请不给时间或每个点给一个</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="333"/>
+        <source>the file has no meshes</source>
+        <translation>文件中没有网格</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="352"/>
+        <source>%1 is also the id of objects[%2]</source>
+        <translation>%1 也是 objects[%2] 的 ID</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="355"/>
+        <source>no object has id %1</source>
+        <translation>没有 ID 为 %1 的对象</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="364"/>
+        <source>object %1 is its own ancestor</source>
+        <translation>对象 %1 是它自己的祖先</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="377"/>
+        <source>object %1 comes after it in the file; parents come before their children</source>
+        <translation>对象 %1 在文件中位于它之后；父对象须在子对象之前</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="385"/>
+        <source>expected &quot;%1&quot;, found &quot;%2&quot;; this is not a Gyre project</source>
+        <translation>应为“%1”，实际为“%2”；这不是 Gyre 项目</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="390"/>
+        <source>the file has version %1, newer than this build of Gyre reads (%2 and older); open it with a newer Gyre</source>
+        <translation>文件版本为 %1，比此 Gyre 版本可读取的版本（%2 及更早）更新；请用更新的 Gyre 打开</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="422"/>
         <source>is a directory, not a file</source>
         <translation>是目录，不是文件</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="422"/>
+        <location filename="../src/model/project_file.cpp" line="425"/>
         <source>cannot open: %1</source>
         <translation>无法打开：%1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="424"/>
+        <location filename="../src/model/project_file.cpp" line="427"/>
         <source>is larger than 1 GiB, the most a project file may hold</source>
         <translation>大于 1 GiB，超出项目文件的上限</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="437"/>
+        <location filename="../src/model/project_file.cpp" line="440"/>
         <source>cannot read: %1</source>
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="448"/>
+        <location filename="../src/model/project_file.cpp" line="451"/>
         <source>is empty; a project file holds a JSON object</source>
         <translation>为空；项目文件应包含一个 JSON 对象</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="453"/>
+        <location filename="../src/model/project_file.cpp" line="456"/>
         <source>not valid JSON: %1 at byte %2</source>
         <translation>不是有效的 JSON：%1（位于第 %2 字节）</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="473"/>
+        <location filename="../src/model/project_file.cpp" line="476"/>
         <source>not saved, because the file would not read back: %1</source>
         <translation>未保存，因为该文件无法被重新读取：%1</translation>
     </message>
@@ -966,44 +1022,253 @@
         <translation>文件不含场景节点</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="238"/>
+        <location filename="../src/io/scene_import.cpp" line="120"/>
+        <source>%1 key %2 is not finite</source>
+        <translation>%1关键帧 %2 不是有限值</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="123"/>
+        <source>%1 key %2 is not a rotation (a zero quaternion)</source>
+        <translation>%1关键帧 %2 不是旋转（零四元数）</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="126"/>
+        <source>%1 key %2 is not after the key before it</source>
+        <translation>%1关键帧 %2 不在前一个关键帧之后</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="134"/>
+        <source>node &apos;%1&apos;: %2</source>
+        <translation>节点“%1”：%2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="245"/>
         <source>mesh &apos;%1&apos; is skinned; skinning is not imported, so it shows in its bind pose</source>
         <translation>网格“%1”带有蒙皮；蒙皮不会被导入，因此它以绑定姿态显示</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="324"/>
+        <location filename="../src/io/scene_import.cpp" line="331"/>
         <source>node &apos;%1&apos; has more than one channel; the first is used</source>
         <translation>节点“%1”有多个通道；使用第一个</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="362"/>
+        <location filename="../src/io/scene_import.cpp" line="369"/>
         <source>node &apos;%1&apos; has a non-uniform scale; its children get the mean scale</source>
         <translation>节点“%1”的缩放不均匀；其子节点使用平均缩放</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="391"/>
+        <location filename="../src/io/scene_import.cpp" line="380"/>
+        <source>rotation</source>
+        <translation>旋转</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="383"/>
+        <source>position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="395"/>
+        <source>scaling</source>
+        <translation>缩放</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="401"/>
         <source>node &apos;%1&apos;: its scale changes over time; Gyre&apos;s motion is rigid, so the scale of its first key is kept</source>
         <translation>节点“%1”：其缩放随时间变化；Gyre 的运动是刚体运动，因此保留其第一个关键帧的缩放</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="403"/>
+        <location filename="../src/io/scene_import.cpp" line="413"/>
         <source>the animation moves &apos;%1&apos;, which is not in the scene</source>
         <translation>动画移动了“%1”，但它不在场景中</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="420"/>
+        <location filename="../src/io/scene_import.cpp" line="430"/>
         <source>the file has %1 animations; there is no animation %2</source>
         <translation>文件有 %1 个动画；不存在动画 %2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="430"/>
+        <location filename="../src/io/scene_import.cpp" line="440"/>
         <source>mesh and morph animation is not imported; only node motion is</source>
         <translation>网格动画和变形动画不会被导入；只导入节点运动</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="432"/>
+        <location filename="../src/io/scene_import.cpp" line="442"/>
         <source>cameras and lights are not imported</source>
         <translation>摄像机和灯光不会被导入</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="24"/>
+        <source>a boolean</source>
+        <translation>布尔值</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="26"/>
+        <location filename="../src/model/json_field.cpp" line="48"/>
+        <source>a number</source>
+        <translation>数字</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="29"/>
+        <source>the string &quot;%1&quot;</source>
+        <translation>字符串“%1”</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="33"/>
+        <location filename="../src/model/json_field.cpp" line="52"/>
+        <source>an array</source>
+        <translation>数组</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="35"/>
+        <location filename="../src/model/json_field.cpp" line="54"/>
+        <source>an object</source>
+        <translation>对象</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="39"/>
+        <source>nothing</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="46"/>
+        <source>true or false</source>
+        <translation>true 或 false</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="50"/>
+        <source>a string</source>
+        <translation>字符串</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="70"/>
+        <source>the top level</source>
+        <translation>顶层</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="77"/>
+        <source>expected %1, found %2</source>
+        <translation>应为%1，实际为%2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="88"/>
+        <source>missing</source>
+        <translation>缺失</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="116"/>
+        <location filename="../src/model/value_checks.cpp" line="60"/>
+        <source>%1 is not a finite number</source>
+        <translation>%1 不是有限数</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="124"/>
+        <source>%1 is not a whole number</source>
+        <translation>%1 不是整数</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="126"/>
+        <source>%1 is outside %2 to %3</source>
+        <translation>%1 超出 %2 到 %3 的范围</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="146"/>
+        <source>not valid base64</source>
+        <translation>不是有效的 Base64</translation>
+    </message>
+    <message>
+        <location filename="../src/model/json_field.cpp" line="155"/>
+        <source>expected %1 numbers, found %2</source>
+        <translation>应为 %1 个数字，实际为 %2 个</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="24"/>
+        <source>not all components are finite</source>
+        <translation>并非所有分量都是有限值</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="34"/>
+        <source>the %1 is zero</source>
+        <translation>%1为零</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="36"/>
+        <source>the %1 has length %2; it must have length 1</source>
+        <translation>%1的长度为 %2；长度必须为 1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="67"/>
+        <source>%1 is negative</source>
+        <translation>%1 为负数</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="74"/>
+        <source>%1 is not positive</source>
+        <translation>%1 不是正数</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="80"/>
+        <source>direction</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="84"/>
+        <source>quaternion</source>
+        <translation>四元数</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="95"/>
+        <source>time %1 does not come after the time before it, %2</source>
+        <translation>时间 %1 不在前一个时间 %2 之后</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="120"/>
+        <source>a stroke has no times or one per point</source>
+        <translation>笔画要么没有时间，要么每个点有一个时间</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="136"/>
+        <source>the pattern&apos;s repeat count %1 is negative</source>
+        <translation>图案的重复次数 %1 为负数</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="170"/>
+        <source>subdivision levels %1 are outside 0 to %2</source>
+        <translation>细分层级 %1 超出 0 到 %2 的范围</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="183"/>
+        <source>a frame rate of %1 is above %2</source>
+        <translation>帧率 %1 高于 %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="191"/>
+        <source>the end time %1 does not come after the start time %2</source>
+        <translation>结束时间 %1 不在开始时间 %2 之后</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="199"/>
+        <source>a mesh position is not finite</source>
+        <translation>网格的某个位置不是有限值</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="202"/>
+        <source>a mesh normal is not finite</source>
+        <translation>网格的某个法线不是有限值</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="204"/>
+        <source>the mesh has %1 normals for %2 positions</source>
+        <translation>网格有 %1 个法线，却有 %2 个位置</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="206"/>
+        <source>the mesh&apos;s %1 indices do not make whole triangles</source>
+        <translation>网格的 %1 个索引不能组成完整的三角形</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="209"/>
+        <source>mesh index %1 is beyond its %2 positions</source>
+        <translation>网格索引 %1 超出其 %2 个位置</translation>
     </message>
 </context>
 <context>

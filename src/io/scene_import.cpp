@@ -109,22 +109,29 @@ bool isFinite(const aiQuaternion& q)
     return std::isfinite(q.w) && std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z);
 }
 
-// "" when the keys are finite, rotations nonzero and times strictly increasing; else what is wrong.
+// Empty when the keys are finite, rotations nonzero and times strictly increasing; else what is wrong.
+// `kind` names the keys, marked with QT_TRANSLATE_NOOP("gyre::FileError", ...).
 template <class Key>
-std::string keyProblem(const Key* keys, unsigned count, std::string_view kind)
+QString keyProblem(const Key* keys, unsigned count, const char* kind)
 {
     for (unsigned i = 0; i < count; ++i) {
-        const std::string key = std::string(kind) + " key " + std::to_string(i);
+        const auto problem = [&](const char* text) { return FileError::tr(text).arg(FileError::tr(kind)).arg(i); };
         if (!std::isfinite(keys[i].mTime) || !isFinite(keys[i].mValue))
-            return key + " is not finite";
+            return problem(QT_TRANSLATE_NOOP("gyre::FileError", "%1 key %2 is not finite"));
         if constexpr (std::is_same_v<Key, aiQuatKey>) {
             if (toEigen(keys[i].mValue).squaredNorm() == 0.0)
-                return key + " is not a rotation (a zero quaternion)";
+                return problem(QT_TRANSLATE_NOOP("gyre::FileError", "%1 key %2 is not a rotation (a zero quaternion)"));
         }
         if (i > 0 && !(keys[i].mTime > keys[i - 1].mTime))
-            return key + " is not after the key before it";
+            return problem(QT_TRANSLATE_NOOP("gyre::FileError", "%1 key %2 is not after the key before it"));
     }
     return {};
+}
+
+// The error for a node whose keys keyProblem() refuses.
+InputError nodeKeyError(const QString& path, const aiNode& node, const QString& problem)
+{
+    return InputError(path, FileError::tr("node '%1': %2").arg(nameOf(node.mName), problem).toStdString());
 }
 
 // A node's local transform split into the parts Gyre keeps: a rigid pose and a scale.
@@ -369,11 +376,13 @@ private:
     std::vector<model::Keyframe> animatedKeys(const aiNode& node, const aiNodeAnim& channel, const Pose& nodePose,
                                               double positionScale) const
     {
-        std::string problem = keyProblem(channel.mRotationKeys, channel.mNumRotationKeys, "rotation");
-        if (problem.empty())
-            problem = keyProblem(channel.mPositionKeys, channel.mNumPositionKeys, "position");
-        if (!problem.empty())
-            throw InputError(path_, "node '" + std::string(viewOf(node.mName)) + "': " + problem);
+        QString problem =
+            keyProblem(channel.mRotationKeys, channel.mNumRotationKeys, QT_TRANSLATE_NOOP("gyre::FileError", "rotation"));
+        if (problem.isEmpty())
+            problem = keyProblem(channel.mPositionKeys, channel.mNumPositionKeys,
+                                 QT_TRANSLATE_NOOP("gyre::FileError", "position"));
+        if (!problem.isEmpty())
+            throw nodeKeyError(path_, node, problem);
         return keyframesOf(channel, ticksPerSecond(*animation_), nodePose, positionScale);
     }
 
@@ -382,9 +391,10 @@ private:
     {
         if (channel.mNumScalingKeys == 0)
             return nodeScale;
-        const std::string problem = keyProblem(channel.mScalingKeys, channel.mNumScalingKeys, "scaling");
-        if (!problem.empty())
-            throw InputError(path_, "node '" + std::string(viewOf(node.mName)) + "': " + problem);
+        const QString problem =
+            keyProblem(channel.mScalingKeys, channel.mNumScalingKeys, QT_TRANSLATE_NOOP("gyre::FileError", "scaling"));
+        if (!problem.isEmpty())
+            throw nodeKeyError(path_, node, problem);
         const Eigen::Vector3d first = toEigen(channel.mScalingKeys[0].mValue);
         for (unsigned i = 1; i < channel.mNumScalingKeys; ++i)
             if ((toEigen(channel.mScalingKeys[i].mValue) - first).norm() > kScaleTolerance * first.norm()) {

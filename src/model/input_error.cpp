@@ -1,6 +1,10 @@
 #include "model/input_error.h"
 
+#include "core/number_text.h"
+
 namespace gyre {
+
+QString FileError::number(double value) { return QString::fromStdString(formatNumber(value)); }
 
 InputError::InputError(const QString& path, std::string_view message)
     : std::runtime_error(path.toStdString() + ": " + std::string(message))

@@ -18,6 +18,10 @@ namespace gyre {
 // its translations, gyre-cli none, so what pipelines read of gyre-cli stays English.
 class FileError {
     Q_DECLARE_TR_FUNCTIONS(gyre::FileError)
+
+public:
+    // A number as the messages write it: the shortest text that reads back exactly (formatNumber).
+    static QString number(double value);
 };
 
 // A file that cannot be read, or whose contents are not what the format allows.

@@ -1,6 +1,6 @@
 #include "model/json_field.h"
 
-#include "core/number_text.h"
+#include "model/input_error.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
@@ -15,46 +15,45 @@ namespace {
 // Enough to recognise a wrong string in a message without echoing a whole runaway field.
 constexpr qsizetype kQuotedLength = 40;
 
-std::string typeName(const QJsonValue& value)
+QString typeName(const QJsonValue& value)
 {
     switch (value.type()) {
     case QJsonValue::Null:
-        return "null";
+        return QStringLiteral("null");
     case QJsonValue::Bool:
-        return "a boolean";
+        return FileError::tr("a boolean");
     case QJsonValue::Double:
-        return "a number";
+        return FileError::tr("a number");
     case QJsonValue::String: {
         const QString text = value.toString();
-        return "the string \"" +
-               (text.size() > kQuotedLength ? text.left(kQuotedLength) + QStringLiteral("…") : text).toStdString() +
-               "\"";
+        return FileError::tr("the string \"%1\"")
+            .arg(text.size() > kQuotedLength ? text.left(kQuotedLength) + QStringLiteral("…") : text);
     }
     case QJsonValue::Array:
-        return "an array";
+        return FileError::tr("an array");
     case QJsonValue::Object:
-        return "an object";
+        return FileError::tr("an object");
     case QJsonValue::Undefined:
         break;
     }
-    return "nothing";
+    return FileError::tr("nothing");
 }
 
-std::string expectedName(QJsonValue::Type type)
+QString expectedName(QJsonValue::Type type)
 {
     switch (type) {
     case QJsonValue::Bool:
-        return "true or false";
+        return FileError::tr("true or false");
     case QJsonValue::Double:
-        return "a number";
+        return FileError::tr("a number");
     case QJsonValue::String:
-        return "a string";
+        return FileError::tr("a string");
     case QJsonValue::Array:
-        return "an array";
+        return FileError::tr("an array");
     case QJsonValue::Object:
-        return "an object";
+        return FileError::tr("an object");
     default:
-        return "null";
+        return QStringLiteral("null");
     }
 }
 
@@ -66,16 +65,16 @@ JsonField::JsonField(QJsonValue value, QString path)
 {
 }
 
-void JsonField::fail(std::string_view message) const
+void JsonField::fail(const QString& message) const
 {
-    const QString where = path_.isEmpty() ? QStringLiteral("the top level") : path_;
-    throw FieldError(where.toStdString() + ": " + std::string(message));
+    const QString where = path_.isEmpty() ? FileError::tr("the top level") : path_;
+    throw FieldError((where + QStringLiteral(": ") + message).toStdString());
 }
 
 void JsonField::requireType(QJsonValue::Type type) const
 {
     if (value_.type() != type)
-        fail("expected " + expectedName(type) + ", found " + typeName(value_));
+        fail(FileError::tr("expected %1, found %2").arg(expectedName(type), typeName(value_)));
 }
 
 JsonField JsonField::member(const char* key) const
@@ -86,7 +85,7 @@ JsonField JsonField::member(const char* key) const
     const QJsonObject object = value_.toObject();
     const auto found = object.constFind(name);
     if (found == object.constEnd())
-        JsonField(QJsonValue(), path).fail("missing");
+        JsonField(QJsonValue(), path).fail(FileError::tr("missing"));
     return JsonField(*found, path);
 }
 
@@ -114,7 +113,7 @@ double JsonField::number() const
     // is checked through this reader too, and it may hold one.
     const double value = value_.toDouble();
     if (!std::isfinite(value))
-        fail(formatNumber(value) + " is not a finite number");
+        fail(FileError::tr("%1 is not a finite number").arg(FileError::number(value)));
     return value;
 }
 
@@ -122,9 +121,9 @@ qint64 JsonField::integer(qint64 min, qint64 max) const
 {
     const double value = number();
     if (value != std::trunc(value))
-        fail(formatNumber(value) + " is not a whole number");
+        fail(FileError::tr("%1 is not a whole number").arg(FileError::number(value)));
     if (value < static_cast<double>(min) || value > static_cast<double>(max))
-        fail(formatNumber(value) + " is outside " + std::to_string(min) + " to " + std::to_string(max));
+        fail(FileError::tr("%1 is outside %2 to %3").arg(FileError::number(value)).arg(min).arg(max));
     return value_.toInteger(static_cast<qint64>(value));
 }
 
@@ -144,7 +143,7 @@ QByteArray JsonField::base64() const
 {
     const auto decoded = QByteArray::fromBase64Encoding(string().toLatin1(), QByteArray::AbortOnBase64DecodingErrors);
     if (!decoded)
-        fail("not valid base64");
+        fail(FileError::tr("not valid base64"));
     return *decoded;
 }
 
@@ -153,7 +152,7 @@ Eigen::Matrix<double, Count, 1> JsonField::numbers() const
 {
     const std::vector<JsonField> fields = elements();
     if (fields.size() != Count)
-        fail("expected " + std::to_string(Count) + " numbers, found " + std::to_string(fields.size()));
+        fail(FileError::tr("expected %1 numbers, found %2").arg(Count).arg(fields.size()));
     Eigen::Matrix<double, Count, 1> values;
     for (int i = 0; i < Count; ++i)
         values[i] = fields[static_cast<std::size_t>(i)].number();

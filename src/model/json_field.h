@@ -58,11 +58,12 @@ public:
         try {
             return check();
         } catch (const std::invalid_argument& problem) {
-            fail(problem.what());
+            fail(QString::fromUtf8(problem.what()));
         }
     }
 
-    [[noreturn]] void fail(std::string_view message) const;
+    // Throws a FieldError naming this field: `path: message`.
+    [[noreturn]] void fail(const QString& message) const;
 
 private:
     // The elements of an array of exactly `count` numbers.

@@ -10,6 +10,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSaveFile>
+#include <QStringList>
 #include <QtEndian>
 
 #include <algorithm>
@@ -164,10 +165,10 @@ Enum named(const JsonField& field, const NameTable<Enum, N>& names)
     const QString name = field.string();
     if (const std::optional<Enum> value = valueNamed(names, name.toStdString()))
         return *value;
-    std::string known;
+    QStringList known;
     for (const auto& entry : names)
-        known += (known.empty() ? "" : ", ") + std::string(entry.second);
-    field.fail("unknown value \"" + name.toStdString() + "\"; expected one of " + known);
+        known.append(QString::fromLatin1(entry.second));
+    field.fail(FileError::tr("unknown value \"%1\"; expected one of %2").arg(name, known.join(QStringLiteral(", "))));
 }
 
 // Reads each element, checking that the times `timeOf` gives strictly increase; `timeKey` names the
@@ -205,8 +206,7 @@ std::vector<Value> littleEndianValues(const JsonField& field, std::size_t values
     const QByteArray bytes = field.base64();
     const auto itemBytes = static_cast<qsizetype>(valuesPerItem * sizeof(Value));
     if (bytes.size() % itemBytes != 0)
-        field.fail(std::to_string(bytes.size()) + " bytes are not a whole number of " + std::to_string(itemBytes) +
-                   "-byte items");
+        field.fail(FileError::tr("%1 bytes are not a whole number of %2-byte items").arg(bytes.size()).arg(itemBytes));
     std::vector<Value> values(static_cast<std::size_t>(bytes.size()) / sizeof(Value));
     if (!values.empty()) // as in base64Json
         qFromLittleEndian<Value>(bytes.constData(), static_cast<qsizetype>(values.size()), values.data());
@@ -263,10 +263,11 @@ DirectionStroke strokeIn(const JsonField& field)
     stroke.times = timedItems<double>(times, nullptr, [](const JsonField& time) { return time.number(); },
                                       [](double time) { return time; });
     if (stroke.points.empty())
-        field.member("points").fail("a stroke needs at least one point");
+        field.member("points").fail(FileError::tr("a stroke needs at least one point"));
     if (!stroke.times.empty() && stroke.times.size() != stroke.points.size())
-        times.fail(std::to_string(stroke.times.size()) + " times for " + std::to_string(stroke.points.size()) +
-                   " points; give none or one per point");
+        times.fail(FileError::tr("%1 times for %2 points; give none or one per point")
+                       .arg(stroke.times.size())
+                       .arg(stroke.points.size()));
     return stroke;
 }
 
@@ -329,7 +330,7 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
     object.parent = optionalId(field.member("parent"));
     if (const JsonField mesh = field.member("mesh"); !mesh.isNull()) {
         if (meshes.empty())
-            mesh.fail("the file has no meshes");
+            mesh.fail(FileError::tr("the file has no meshes"));
         object.mesh = meshes[static_cast<std::size_t>(mesh.integer(0, static_cast<qint64>(meshes.size()) - 1))];
     }
     object.track.interpolation = named(field.member("interpolation"), kInterpolationMethodNames);
@@ -348,11 +349,10 @@ void checkHierarchy(const std::vector<JsonField>& fields, const std::vector<Scen
     std::map<ObjectId, std::size_t> indexOf;
     for (std::size_t i = 0; i < objects.size(); ++i)
         if (const auto [at, added] = indexOf.emplace(objects[i].id, i); !added)
-            fields[i].member("id").fail(std::to_string(objects[i].id) + " is also the id of objects[" +
-                                        std::to_string(at->second) + "]");
+            fields[i].member("id").fail(FileError::tr("%1 is also the id of objects[%2]").arg(objects[i].id).arg(at->second));
     for (std::size_t i = 0; i < objects.size(); ++i)
         if (objects[i].parent != kNoObject && !indexOf.contains(objects[i].parent))
-            fields[i].member("parent").fail("no object has id " + std::to_string(objects[i].parent));
+            fields[i].member("parent").fail(FileError::tr("no object has id %1").arg(objects[i].parent));
     // Follow each chain of parents until it reaches a root or an object known to lead to one; meeting
     // an object of the chain being followed again is a cycle. Each object is followed once.
     enum class Mark { Unvisited, OnChain, LeadsToRoot };
@@ -361,7 +361,7 @@ void checkHierarchy(const std::vector<JsonField>& fields, const std::vector<Scen
         std::vector<std::size_t> chain;
         for (std::size_t i = start; marks[i] != Mark::LeadsToRoot;) {
             if (marks[i] == Mark::OnChain)
-                fields[i].member("parent").fail("object " + std::to_string(objects[i].id) + " is its own ancestor");
+                fields[i].member("parent").fail(FileError::tr("object %1 is its own ancestor").arg(objects[i].id));
             marks[i] = Mark::OnChain;
             chain.push_back(i);
             if (objects[i].parent == kNoObject)
@@ -373,21 +373,24 @@ void checkHierarchy(const std::vector<JsonField>& fields, const std::vector<Scen
     }
     for (std::size_t i = 0; i < objects.size(); ++i)
         if (objects[i].parent != kNoObject && indexOf.at(objects[i].parent) > i)
-            fields[i].member("parent").fail("object " + std::to_string(objects[i].parent) +
-                                            " comes after it in the file; parents come before their children");
+            fields[i].member("parent").fail(
+                FileError::tr("object %1 comes after it in the file; parents come before their children")
+                    .arg(objects[i].parent));
 }
 
 int versionIn(const JsonField& root)
 {
     const JsonField format = root.member("format");
     if (format.string() != QLatin1String(kProjectFormat))
-        format.fail("expected \"" + std::string(kProjectFormat) + "\", found \"" + format.string().toStdString() +
-                    "\"; this is not a Gyre project");
+        format.fail(FileError::tr("expected \"%1\", found \"%2\"; this is not a Gyre project")
+                        .arg(QLatin1String(kProjectFormat), format.string()));
     const JsonField version = root.member("version");
     const qint64 number = version.integer(1, std::numeric_limits<int>::max());
     if (number > kProjectVersion)
-        version.fail("the file has version " + std::to_string(number) + ", newer than this build of Gyre reads (" +
-                     std::to_string(kProjectVersion) + " and older); open it with a newer Gyre");
+        version.fail(FileError::tr("the file has version %1, newer than this build of Gyre reads (%2 and older); "
+                                   "open it with a newer Gyre")
+                         .arg(number)
+                         .arg(kProjectVersion));
     return static_cast<int>(number);
 }
 

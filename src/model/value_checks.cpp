@@ -1,6 +1,6 @@
 #include "model/value_checks.h"
 
-#include "core/number_text.h"
+#include "model/input_error.h"
 
 #include <cmath>
 #include <functional>
@@ -15,13 +15,13 @@ namespace {
 // How far from 1 the computed length of a unit vector may be through rounding alone.
 constexpr double kRoundingTolerance = 4 * std::numeric_limits<double>::epsilon();
 
-[[noreturn]] void refuse(const std::string& message) { throw std::invalid_argument(message); }
+[[noreturn]] void refuse(const QString& message) { throw std::invalid_argument(message.toStdString()); }
 
 template <class Vector>
 Vector finiteCoefficients(const Vector& value)
 {
     if (!value.allFinite())
-        refuse("not all components are finite");
+        refuse(FileError::tr("not all components are finite"));
     return value;
 }
 
@@ -31,9 +31,9 @@ Vector normalisedNearUnit(const Vector& value, const char* what)
 {
     const double length = finiteCoefficients(value).norm();
     if (length == 0.0)
-        refuse(std::string("the ") + what + " is zero");
+        refuse(FileError::tr("the %1 is zero").arg(FileError::tr(what)));
     if (!(std::abs(length - 1.0) <= kUnitLengthTolerance))
-        refuse(std::string("the ") + what + " has length " + formatNumber(length) + "; it must have length 1");
+        refuse(FileError::tr("the %1 has length %2; it must have length 1").arg(FileError::tr(what), FileError::number(length)));
     // Unit up to rounding: left as it is, so that a value read back is the value written.
     if (std::abs(length - 1.0) <= kRoundingTolerance)
         return value;
@@ -57,31 +57,31 @@ void checkIncreasingTimes(const std::vector<Item>& items, TimeOf timeOf)
 double finiteNumber(double value)
 {
     if (!std::isfinite(value))
-        refuse(formatNumber(value) + " is not a finite number");
+        refuse(FileError::tr("%1 is not a finite number").arg(FileError::number(value)));
     return value;
 }
 
 double nonNegativeNumber(double value)
 {
     if (!(finiteNumber(value) >= 0.0))
-        refuse(formatNumber(value) + " is negative");
+        refuse(FileError::tr("%1 is negative").arg(FileError::number(value)));
     return value;
 }
 
 double positiveNumber(double value)
 {
     if (!(finiteNumber(value) > 0.0))
-        refuse(formatNumber(value) + " is not positive");
+        refuse(FileError::tr("%1 is not positive").arg(FileError::number(value)));
     return value;
 }
 
 Eigen::Vector3d finiteVector(const Eigen::Vector3d& value) { return finiteCoefficients(value); }
 Eigen::Vector2d finiteVector(const Eigen::Vector2d& value) { return finiteCoefficients(value); }
-Eigen::Vector3d unitVector(const Eigen::Vector3d& value) { return normalisedNearUnit(value, "direction"); }
+Eigen::Vector3d unitVector(const Eigen::Vector3d& value) { return normalisedNearUnit(value, QT_TRANSLATE_NOOP("gyre::FileError", "direction")); }
 
 Eigen::Quaterniond unitQuaternion(const Eigen::Quaterniond& value)
 {
-    return Eigen::Quaterniond(normalisedNearUnit(Eigen::Vector4d(value.coeffs()), "quaternion"));
+    return Eigen::Quaterniond(normalisedNearUnit(Eigen::Vector4d(value.coeffs()), QT_TRANSLATE_NOOP("gyre::FileError", "quaternion")));
 }
 
 Eigen::Quaterniond finiteQuaternion(const Eigen::Quaterniond& value)
@@ -92,7 +92,7 @@ Eigen::Quaterniond finiteQuaternion(const Eigen::Quaterniond& value)
 double timeAfter(double time, double previous)
 {
     if (!(finiteNumber(time) > previous))
-        refuse("time " + formatNumber(time) + " does not come after the time before it, " + formatNumber(previous));
+        refuse(FileError::tr("time %1 does not come after the time before it, %2").arg(FileError::number(time), FileError::number(previous)));
     return time;
 }
 
@@ -113,11 +113,11 @@ void checkKeyframes(std::vector<Keyframe>& keys)
 void checkStroke(DirectionStroke& stroke)
 {
     if (stroke.points.empty())
-        refuse("a stroke needs at least one point");
+        refuse(FileError::tr("a stroke needs at least one point"));
     for (Eigen::Vector3d& point : stroke.points)
         point = unitVector(point);
     if (!stroke.times.empty() && stroke.times.size() != stroke.points.size())
-        refuse("a stroke has no times or one per point");
+        refuse(FileError::tr("a stroke has no times or one per point"));
     checkIncreasingTimes(stroke.times, std::identity{});
 }
 
@@ -133,7 +133,7 @@ void checkPattern(const std::vector<Eigen::Vector2d>& pattern, int repeat)
     for (const Eigen::Vector2d& point : pattern)
         finiteVector(point);
     if (repeat < 0)
-        refuse("the pattern's repeat count " + std::to_string(repeat) + " is negative");
+        refuse(FileError::tr("the pattern's repeat count %1 is negative").arg(repeat));
 }
 
 void checkWindow(const std::optional<std::pair<double, double>>& window)
@@ -167,8 +167,7 @@ void checkSketch(SketchState& sketch)
 void checkSubdivision(const SubdivisionSettings& settings)
 {
     if (settings.levels < 0 || settings.levels > kMaxSubdivisionLevels)
-        refuse("subdivision levels " + std::to_string(settings.levels) + " are outside 0 to " +
-               std::to_string(kMaxSubdivisionLevels));
+        refuse(FileError::tr("subdivision levels %1 are outside 0 to %2").arg(settings.levels).arg(kMaxSubdivisionLevels));
 }
 
 void checkTrack(MotionTrack& track)
@@ -181,7 +180,7 @@ void checkTrack(MotionTrack& track)
 double frameRate(double fps)
 {
     if (!(positiveNumber(fps) <= kMaxFps))
-        refuse("a frame rate of " + formatNumber(fps) + " is above " + formatNumber(kMaxFps));
+        refuse(FileError::tr("a frame rate of %1 is above %2").arg(FileError::number(fps), FileError::number(kMaxFps)));
     return fps;
 }
 
@@ -189,27 +188,25 @@ void checkTimeRange(double fps, double startTime, double endTime)
 {
     frameRate(fps);
     if (!(finiteNumber(endTime) > finiteNumber(startTime)))
-        refuse("the end time " + formatNumber(endTime) + " does not come after the start time " +
-               formatNumber(startTime));
+        refuse(FileError::tr("the end time %1 does not come after the start time %2")
+                   .arg(FileError::number(endTime), FileError::number(startTime)));
 }
 
 void checkMesh(const Mesh& mesh)
 {
     for (const Eigen::Vector3f& position : mesh.positions)
         if (!position.allFinite())
-            refuse("a mesh position is not finite");
+            refuse(FileError::tr("a mesh position is not finite"));
     for (const Eigen::Vector3f& normal : mesh.normals)
         if (!normal.allFinite())
-            refuse("a mesh normal is not finite");
+            refuse(FileError::tr("a mesh normal is not finite"));
     if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
-        refuse("the mesh has " + std::to_string(mesh.normals.size()) + " normals for " +
-               std::to_string(mesh.positions.size()) + " positions");
+        refuse(FileError::tr("the mesh has %1 normals for %2 positions").arg(mesh.normals.size()).arg(mesh.positions.size()));
     if (mesh.indices.size() % 3 != 0)
-        refuse("the mesh's " + std::to_string(mesh.indices.size()) + " indices do not make whole triangles");
+        refuse(FileError::tr("the mesh's %1 indices do not make whole triangles").arg(mesh.indices.size()));
     for (std::uint32_t index : mesh.indices)
         if (index >= mesh.positions.size())
-            refuse("mesh index " + std::to_string(index) + " is beyond its " + std::to_string(mesh.positions.size()) +
-                   " positions");
+            refuse(FileError::tr("mesh index %1 is beyond its %2 positions").arg(index).arg(mesh.positions.size()));
 }
 
 } // namespace gyre::model
