@@ -58,8 +58,8 @@ in_root() {
 in_root apt-get update -q
 in_root apt-get install -y -q -o Dpkg::Use-Pty=0 "/tmp/$(basename "$package")" xvfb xauth
 
-version="$(sed -n 's/^project(Gyre VERSION \([0-9.]*\).*/\1/p' "$here/CMakeLists.txt")"
-[[ "$(in_root gyre-cli --version)" == "gyre-cli $version" ]] || fail "the installed gyre-cli is not version $version"
+version="$(dpkg-deb --field "$package" Version)"
+[[ "$(in_root gyre-cli --version)" == "gyre-cli $version" ]] || fail "the installed gyre-cli is not the package's version, $version"
 in_root sh -c 'printf "time,qw,qx,qy,qz\n0,1,0,0,0\n1,0,0,0,1\n" >/tmp/keys.csv'
 in_root gyre-cli interpolate /tmp/keys.csv -o /tmp/frames.csv --method slerp --fps 10
 [[ "$(in_root sh -c 'grep -c "^[0-9]" /tmp/frames.csv')" -eq 11 ]] || fail "the installed gyre-cli wrote no 11 frames"

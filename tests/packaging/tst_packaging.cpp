@@ -56,12 +56,9 @@ QString newestReleaseVersion(const QString& path)
     if (!file.open(QIODevice::ReadOnly))
         return {};
     QXmlStreamReader xml(&file);
-    while (xml.readNextStartElement() || !xml.atEnd()) {
-        if (xml.isStartElement() && xml.name() == QLatin1String("release"))
+    while (!xml.atEnd())
+        if (xml.readNext() == QXmlStreamReader::StartElement && xml.name() == QLatin1String("release"))
             return xml.attributes().value(QLatin1String("version")).toString();
-        if (xml.isStartElement() && xml.name() != QLatin1String("component") && xml.name() != QLatin1String("releases"))
-            xml.skipCurrentElement();
-    }
     return {};
 }
 
