@@ -24,7 +24,7 @@ MotionTrack steadySpin()
     MotionTrack track;
     track.interpolation = InterpolationMethod::Hermite;
     for (int second = 0; second <= 4; ++second)
-        track.keys.push_back({double(second), {Eigen::Quaterniond(Eigen::AngleAxisd(second, Eigen::Vector3d::UnitZ())), {}}, true});
+        track.keys.push_back({double(second), {Eigen::Quaterniond(Eigen::AngleAxisd(second, Eigen::Vector3d::UnitZ())), Eigen::Vector3d::Zero()}, true});
     return track;
 }
 
