@@ -20,11 +20,18 @@ const SinCosTable kSinCosTable = [] {
     return table;
 }();
 
-const std::array<std::uint8_t, kAngleBins * 3 / 4> kAngleIndex = [] {
-    std::array<std::uint8_t, kAngleBins * 3 / 4> table{};
-    for (std::size_t b = 0; b < table.size(); ++b) {
-        const long double lowest = std::min(static_cast<long double>(b) / kAngleBins, 1.0L);
-        table[b] = static_cast<std::uint8_t>(std::floor(std::asin(lowest) / kStepLong));
+const std::array<TableAngle, 2 * kAngleBinsPerHalf> kAngleTable = [] {
+    std::array<TableAngle, 2 * kAngleBinsPerHalf> table{};
+    const auto entry = [](long double exact) {
+        const double angle = static_cast<double>(exact);
+        const long double rounded = angle; // sine and cosine of the double actually stored
+        return TableAngle{angle, static_cast<double>(std::sin(rounded)), static_cast<double>(std::cos(rounded))};
+    };
+    for (std::size_t b = 0; b < kAngleBinsPerHalf; ++b) {
+        const long double low = static_cast<long double>(b) / kAngleBins;
+        const long double high = std::min(static_cast<long double>(b + 1) / kAngleBins, 1.0L);
+        table[b] = entry(std::asin(low));
+        table[kAngleBinsPerHalf + b] = entry(kPiLong / 2 - std::asin(high));
     }
     return table;
 }();

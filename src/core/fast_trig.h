@@ -7,6 +7,7 @@
 // needs; unlike glibc's, sin does not keep its relative precision at its zeros far from 0.
 // Inline, so that the screw's code keeps its values in registers.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -22,15 +23,24 @@ struct SinCos {
 namespace fast_trig_detail {
 
 constexpr int kStepsPerTurn = 256; // sin and cos tabulated at k·π/128
-constexpr int kAngleBins = 256;    // the angle table's bins in sin α, α ≤ π/4
+constexpr int kAngleBins = 256;    // bins of width 1/256 in sin a (a ≤ π/4) or in cos a (a > π/4)
+constexpr int kAngleBinsPerHalf = kAngleBins * 3 / 4; // up to 0.75, past 1/√2 for a little drift
 
 struct SinCosTable {
     std::array<double, kStepsPerTurn> sin;
     std::array<double, kStepsPerTurn> cos;
 };
 extern const SinCosTable kSinCosTable;
-// For sin α in [b/256, (b+1)/256), the largest j with j·π/128 ≤ α.
-extern const std::array<std::uint8_t, kAngleBins * 3 / 4> kAngleIndex;
+
+// An angle θ of the unit circle, a double, with the doubles nearest its sine and cosine.
+struct TableAngle {
+    double angle;
+    double sin;
+    double cos;
+};
+// For bin b of the first half, θ = asin(b/256): the lowest angle whose sine falls in the bin. For bin
+// b of the second half, θ = π/2 − asin((b+1)/256): the lowest angle whose cosine falls in bin b.
+extern const std::array<TableAngle, 2 * kAngleBinsPerHalf> kAngleTable;
 
 constexpr double kStepsPerRadian = 128.0 / std::numbers::pi;
 constexpr double kLargestReduced = 1024.0; // beyond, k·(error of π) exceeds 1e-16
@@ -48,7 +58,7 @@ constexpr double kRoundingShift = 6755399441055744.0;
 inline SinCos fastSinCos(double x)
 {
     using namespace fast_trig_detail;
-    if (!(std::abs(x) <= kLargestReduced))
+    if (!(std::abs(x) <= kLargestReduced)) [[unlikely]]
         return {std::sin(x), std::cos(x)};
     const double k = (x * kStepsPerRadian + kRoundingShift) - kRoundingShift;
     const double r = (x - k * kStepHead) - k * kStepTail; // |r| ≤ π/256
@@ -66,26 +76,21 @@ inline SinCos fastSinCos(double x)
 }
 
 // The angle a ∈ [0, π/2] of the point (cos a, sin a) of the unit circle, both coordinates
-// non-negative: atan2(sine, cosine), to a few ulp. Measured from the nearer axis, the angle α ≤ π/4
-// is θⱼ + asin(sin α·cos θⱼ − cos α·sin θⱼ), with θⱼ = j·π/128 the table angle just below α: the
-// series argument lies in [0, 0.028), and the two terms, both positive, cannot cancel.
+// non-negative: atan2(sine, cosine), to a few ulp. a = θ + asin(sin a·cos θ − cos a·sin θ), with θ
+// the table angle just below a, found from whichever of sin a and cos a is the smaller: the series
+// argument lies in [0, 0.0056), and the two terms, both positive, cannot cancel. No branch on which
+// coordinate is the smaller: it is random in a screw's hot path, so min and an index offset instead.
 inline double fastAngleOnUnitCircle(double cosine, double sine)
 {
     using namespace fast_trig_detail;
-    const bool steep = sine > cosine; // a > π/4: measure from the y axis
-    const double u = steep ? cosine : sine;
-    const double v = steep ? sine : cosine;
-    const std::size_t j = kAngleIndex[static_cast<std::size_t>(u * kAngleBins)];
-    const double sigma = u * kSinCosTable.cos[j] - v * kSinCosTable.sin[j];
-    // asin σ = σ + σ³/6 + 3σ⁵/40 + 5σ⁷/112 + 35σ⁹/1152 + 63σ¹¹/2816; the first term left out,
-    // 231σ¹³/13312, is below 1e-22.
+    const bool steep = sine > cosine; // a > π/4
+    const auto bin = static_cast<std::size_t>(static_cast<std::int64_t>(std::min(sine, cosine) * kAngleBins));
+    const TableAngle& below = kAngleTable[bin + (steep ? kAngleBinsPerHalf : 0)];
+    const double sigma = sine * below.cos - cosine * below.sin;
+    // asin σ = σ + σ³/6 + 3σ⁵/40 + 5σ⁷/112; the first term left out, 35σ⁹/1152, is below 2e-22.
     const double s2 = sigma * sigma;
-    const double s4 = s2 * s2;
-    const double series = (1.0 / 6 + s2 * (3.0 / 40)) + s4 * (5.0 / 112 + s2 * (35.0 / 1152)) + (s4 * s4) * (63.0 / 2816);
-    const double asinSigma = sigma + (sigma * s2) * series;
-    const double step = static_cast<double>(j);
-    const double alpha = (step * kStepHead + asinSigma) + step * kStepTail;
-    return steep ? 0.5 * std::numbers::pi - alpha : alpha;
+    const double series = (1.0 / 6 + s2 * (3.0 / 40)) + (s2 * s2) * (5.0 / 112);
+    return below.angle + (sigma + (sigma * s2) * series);
 }
 
 } // namespace gyre

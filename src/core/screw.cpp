@@ -6,8 +6,9 @@ std::optional<Eigen::Vector3d> Screw::axisPoint() const
 {
     if (sinHalfAngle_ == 0.0)
         return std::nullopt;
-    // P = (c⊥ + cot(a)·S×c⊥)/2 solves (I − R)P = c⊥ with P ⊥ S.
-    return 0.5 * (perpendicular_ + (cosHalfAngle_ / sinHalfAngle_) * axis_.cross(perpendicular_));
+    // P = pa⊥ + V₁/2 = (pa⊥ + pb⊥)/2 + (cot a)/2·S×Δ: the chord's midpoint, moved across the chord
+    // to the centre of the circle on which the chord spans an arc of 2a. P ⊥ S.
+    return fromPosition_ - axis_.dot(fromPosition_) * axis_ + 0.5 * sinSquaredTerm_;
 }
 
 Pose screwInterpolate(const Pose& from, double t, const Pose& to)

@@ -51,25 +51,29 @@ private:
     // sin(ta)·cos(ta) = sinCos.
     Pose pose(double t, double sinT, double cosT, double sinSquared, double sinCos) const;
 
-    // With M = Lb·La⁻¹ = (R, c), R = (cos a, sin a·S) and c = c⊥ + d·S, the screw at time t moves La
-    // by R_t = (cos ta, sin ta·S) and c_t = (sin ta / sin a)·Rot(S, (t−1)a)·c⊥ + t·d·S. With
-    // s = sin ta, k = cos ta, and the angle-sum formulas, everything is linear in s, k, s², s·k and t:
-    //   orientation(t) = k·qa + s·(S·qa)
+    // With R = qb·qa⁻¹ = (cos a, sin a·S), taken on the short arc by its sign σ, and the chord
+    // Δ = pb − pa = d·S + Δ⊥, the screw at time t turns La by R_t = (cos ta, sin ta·S) about the axis
+    // and slides it by t·d along it. The poses' quaternions are unit, so R·qa = σqb. With s = sin ta,
+    // k = cos ta and the angle-sum formulas, everything is linear in s, k, s², s·k and t:
+    //   orientation(t) = (k − s·cot a)·qa + (s / sin a)·σqb   (slerp's sin((1−t)a)/sin a and sin(ta)/sin a)
     //   position(t)    = pa + t·d·S + s²·V₁ + s·k·V₂
-    //   V₁ = c⊥ − 2pa⊥ + cot a·S×c⊥,   V₂ = 2S×pa⊥ − S×c⊥ + cot a·c⊥
-    // where pa⊥ is the part of pa across S. As a → 0 the cot a terms grow like 1/a while s² and s·k
-    // shrink like a², so their products, and their rounding errors, stay small.
-    Eigen::Quaterniond fromOrientation_;   // qa
-    Eigen::Quaterniond turnedOrientation_; // (0, S)·qa
-    Eigen::Vector3d fromPosition_;         // pa
-    Eigen::Vector3d axis_;                 // S
-    Eigen::Vector3d sinSquaredTerm_;       // V₁
-    Eigen::Vector3d sinCosTerm_;           // V₂
-    Eigen::Vector3d perpendicular_;        // c⊥
-    double halfAngle_ = 0.0;               // a = r/2
+    //   V₁ = Δ⊥ + cot a·S×Δ,   V₂ = cot a·Δ⊥ − S×Δ
+    // Across S the chord Δ⊥ joins two points of a circle about the axis point P = pa⊥ + V₁/2, and
+    // position(t) turns pa's part across S about P by 2ta; at t = 1, s² + k² = 1 leaves pa + Δ. No
+    // term needs pa turned by R. As a → 0, cot a and 1/sin a grow like 1/a while s and s·k shrink
+    // like a and s² like a², so every product stays bounded, and so do their rounding errors.
+    Eigen::Quaterniond fromOrientation_; // qa
+    Eigen::Quaterniond toOrientation_;   // σqb, the end on qa's side of the short arc
+    Eigen::Vector3d fromPosition_;       // pa
+    Eigen::Vector3d axis_;               // S
+    Eigen::Vector3d sinSquaredTerm_;     // V₁
+    Eigen::Vector3d sinCosTerm_;         // V₂
+    double halfAngle_ = 0.0;             // a = r/2
     double cosHalfAngle_ = 1.0;
     double sinHalfAngle_ = 0.0;
-    double slide_ = 0.0;                   // d
+    double cotangent_ = 0.0;             // cot a; 0 without rotation, where s = 0 for every t
+    double inverseSin_ = 0.0;            // 1/sin a; likewise 0 without rotation
+    double slide_ = 0.0;                 // d
 };
 
 // Defined here, so that the subdivision's loop inlines them.
@@ -78,32 +82,28 @@ inline Screw::Screw(const Pose& from, const Pose& to, WithoutAngle)
     : fromOrientation_(from.orientation)
     , fromPosition_(from.position)
 {
-    // R = qb·qa⁻¹ on the short arc, c = pb − R·pa. The poses' quaternions are unit, so R's vector
-    // part and scalar are sin a·S and cos a.
-    const Eigen::Quaterniond relative = shortArc(to.orientation * from.orientation.conjugate());
-    const Eigen::Vector3d c = to.position - relative * from.position;
+    // σ by its sign rather than by a branch, which the random sign would mispredict half the time.
+    const Eigen::Quaterniond product = to.orientation * from.orientation.conjugate();
+    const double side = std::copysign(1.0, product.w());
+    const Eigen::Quaterniond relative = scaled(product, side);
+    toOrientation_ = scaled(to.orientation, side);
+    const Eigen::Vector3d chord = to.position - from.position;
     const double s = relative.vec().norm();
-    if (s > kNoRotation) {
-        axis_ = (1.0 / s) * relative.vec();
+    if (s > kNoRotation) [[likely]] {
+        inverseSin_ = 1.0 / s;
+        axis_ = inverseSin_ * relative.vec();
         sinHalfAngle_ = s;
         cosHalfAngle_ = relative.w();
+        cotangent_ = cosHalfAngle_ * inverseSin_;
     } else {
-        const double length = c.norm();
-        axis_ = length > 0.0 ? Eigen::Vector3d(c / length) : Eigen::Vector3d::UnitX();
+        const double length = chord.norm();
+        axis_ = length > 0.0 ? Eigen::Vector3d(chord / length) : Eigen::Vector3d::UnitX();
     }
-    slide_ = axis_.dot(c);
-    perpendicular_ = c - slide_ * axis_;
-    turnedOrientation_ = pureQuaternion(axis_) * fromOrientation_;
-    if (sinHalfAngle_ > 0.0) {
-        const double cotangent = cosHalfAngle_ / sinHalfAngle_;
-        const Eigen::Vector3d positionAcross = from.position - axis_.dot(from.position) * axis_;
-        const Eigen::Vector3d perpendicularTurned = axis_.cross(perpendicular_);
-        sinSquaredTerm_ = perpendicular_ - 2.0 * positionAcross + cotangent * perpendicularTurned;
-        sinCosTerm_ = 2.0 * axis_.cross(positionAcross) - perpendicularTurned + cotangent * perpendicular_;
-    } else {
-        sinSquaredTerm_.setZero(); // s = sin(ta) is 0 for every t
-        sinCosTerm_.setZero();
-    }
+    slide_ = axis_.dot(chord);
+    const Eigen::Vector3d chordAcross = chord - slide_ * axis_;
+    const Eigen::Vector3d chordTurned = axis_.cross(chord); // S×Δ = S×Δ⊥
+    sinSquaredTerm_ = chordAcross + cotangent_ * chordTurned;
+    sinCosTerm_ = cotangent_ * chordAcross - chordTurned;
 }
 
 inline Screw::Screw(const Pose& from, const Pose& to)
@@ -133,7 +133,7 @@ inline Pose Screw::midpoint(const Pose& from, const Pose& to)
 
 inline Pose Screw::pose(double t, double sinT, double cosT, double sinSquared, double sinCos) const
 {
-    return {linearCombination(cosT, fromOrientation_, sinT, turnedOrientation_),
+    return {linearCombination(cosT - sinT * cotangent_, fromOrientation_, sinT * inverseSin_, toOrientation_),
             fromPosition_ + (t * slide_) * axis_ + sinSquared * sinSquaredTerm_ + sinCos * sinCosTerm_};
 }
 
