@@ -53,27 +53,26 @@ private:
 
     // With R = qb·qa⁻¹ = (cos a, sin a·S), taken on the short arc by its sign σ, and the chord
     // Δ = pb − pa = d·S + Δ⊥, the screw at time t turns La by R_t = (cos ta, sin ta·S) about the axis
-    // and slides it by t·d along it. The poses' quaternions are unit, so R·qa = σqb. With s = sin ta,
-    // k = cos ta and the angle-sum formulas, everything is linear in s, k, s², s·k and t:
-    //   orientation(t) = (k − s·cot a)·qa + (s / sin a)·σqb   (slerp's sin((1−t)a)/sin a and sin(ta)/sin a)
+    // and slides it by t·d along it. With s = sin ta, k = cos ta and the angle-sum formulas,
+    // everything is linear in s, k, s², s·k and t:
+    //   orientation(t) = k·qa + s·(0, S)·qa,   (0, S)·qa = (σqb − cos a·qa) / sin a
     //   position(t)    = pa + t·d·S + s²·V₁ + s·k·V₂
     //   V₁ = Δ⊥ + cot a·S×Δ,   V₂ = cot a·Δ⊥ − S×Δ
     // Across S the chord Δ⊥ joins two points of a circle about the axis point P = pa⊥ + V₁/2, and
     // position(t) turns pa's part across S about P by 2ta; at t = 1, s² + k² = 1 leaves pa + Δ. No
-    // term needs pa turned by R. As a → 0, cot a and 1/sin a grow like 1/a while s and s·k shrink
+    // term needs pa turned by R, and as the poses' quaternions are unit, R·qa = σqb gives (0, S)·qa
+    // without a quaternion product. As a → 0, cot a and 1/sin a grow like 1/a while s and s·k shrink
     // like a and s² like a², so every product stays bounded, and so do their rounding errors.
-    Eigen::Quaterniond fromOrientation_; // qa
-    Eigen::Quaterniond toOrientation_;   // σqb, the end on qa's side of the short arc
-    Eigen::Vector3d fromPosition_;       // pa
-    Eigen::Vector3d axis_;               // S
-    Eigen::Vector3d sinSquaredTerm_;     // V₁
-    Eigen::Vector3d sinCosTerm_;         // V₂
-    double halfAngle_ = 0.0;             // a = r/2
+    Eigen::Quaterniond fromOrientation_;   // qa
+    Eigen::Quaterniond turnedOrientation_; // (0, S)·qa
+    Eigen::Vector3d fromPosition_;         // pa
+    Eigen::Vector3d axis_;                 // S
+    Eigen::Vector3d sinSquaredTerm_;       // V₁
+    Eigen::Vector3d sinCosTerm_;           // V₂
+    double halfAngle_ = 0.0;               // a = r/2
     double cosHalfAngle_ = 1.0;
     double sinHalfAngle_ = 0.0;
-    double cotangent_ = 0.0;             // cot a; 0 without rotation, where s = 0 for every t
-    double inverseSin_ = 0.0;            // 1/sin a; likewise 0 without rotation
-    double slide_ = 0.0;                 // d
+    double slide_ = 0.0;                   // d
 };
 
 // Defined here, so that the subdivision's loop inlines them.
@@ -86,15 +85,17 @@ inline Screw::Screw(const Pose& from, const Pose& to, WithoutAngle)
     const Eigen::Quaterniond product = to.orientation * from.orientation.conjugate();
     const double side = std::copysign(1.0, product.w());
     const Eigen::Quaterniond relative = scaled(product, side);
-    toOrientation_ = scaled(to.orientation, side);
     const Eigen::Vector3d chord = to.position - from.position;
     const double s = relative.vec().norm();
+    // 1/sin a and cot a stay 0 without rotation, where s = sin(ta) = 0 for every t.
+    double inverseSin = 0.0;
+    double cotangent = 0.0;
     if (s > kNoRotation) [[likely]] {
-        inverseSin_ = 1.0 / s;
-        axis_ = inverseSin_ * relative.vec();
+        inverseSin = 1.0 / s;
+        axis_ = inverseSin * relative.vec();
         sinHalfAngle_ = s;
         cosHalfAngle_ = relative.w();
-        cotangent_ = cosHalfAngle_ * inverseSin_;
+        cotangent = cosHalfAngle_ * inverseSin;
     } else {
         const double length = chord.norm();
         axis_ = length > 0.0 ? Eigen::Vector3d(chord / length) : Eigen::Vector3d::UnitX();
@@ -102,8 +103,9 @@ inline Screw::Screw(const Pose& from, const Pose& to, WithoutAngle)
     slide_ = axis_.dot(chord);
     const Eigen::Vector3d chordAcross = chord - slide_ * axis_;
     const Eigen::Vector3d chordTurned = axis_.cross(chord); // S×Δ = S×Δ⊥
-    sinSquaredTerm_ = chordAcross + cotangent_ * chordTurned;
-    sinCosTerm_ = cotangent_ * chordAcross - chordTurned;
+    sinSquaredTerm_ = chordAcross + cotangent * chordTurned;
+    sinCosTerm_ = cotangent * chordAcross - chordTurned;
+    turnedOrientation_ = linearCombination(side * inverseSin, to.orientation, -cotangent, fromOrientation_);
 }
 
 inline Screw::Screw(const Pose& from, const Pose& to)
@@ -133,7 +135,7 @@ inline Pose Screw::midpoint(const Pose& from, const Pose& to)
 
 inline Pose Screw::pose(double t, double sinT, double cosT, double sinSquared, double sinCos) const
 {
-    return {linearCombination(cosT - sinT * cotangent_, fromOrientation_, sinT * inverseSin_, toOrientation_),
+    return {linearCombination(cosT, fromOrientation_, sinT, turnedOrientation_),
             fromPosition_ + (t * slide_) * axis_ + sinSquared * sinSquaredTerm_ + sinCos * sinCosTerm_};
 }
 
