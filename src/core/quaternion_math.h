@@ -8,8 +8,6 @@
 
 #include <Eigen/Geometry>
 
-#include <cmath>
-
 namespace gyre {
 
 // exp(v) of the pure quaternion (0, v): (cos|v|, sin|v|/|v| · v). A unit quaternion whose rotation
@@ -59,12 +57,10 @@ inline Eigen::Quaterniond scaled(const Eigen::Quaterniond& q, double s)
     return r;
 }
 
-// q or -q, whichever has w ≥ 0 (w = −0 is flipped too): the representative on the short-arc side of
-// the identity. A multiplication by the sign rather than a branch, because the sign is random in a
-// screw's hot path and a mispredicted branch costs more than the four products.
+// q or -q, whichever has w ≥ 0: the representative on the short-arc side of the identity.
 inline Eigen::Quaterniond shortArc(const Eigen::Quaterniond& q)
 {
-    return scaled(q, std::copysign(1.0, q.w()));
+    return q.w() < 0.0 ? scaled(q, -1.0) : q;
 }
 
 // `to`, or -`to`, whichever is nearer `from` on the 4-sphere (non-negative dot product).
