@@ -77,7 +77,9 @@ private:
 
 // Defined here, so that the subdivision's loop inlines them.
 
-inline Screw::Screw(const Pose& from, const Pose& to, WithoutAngle)
+// Both constructors forced inline: GCC otherwise calls them out of line, and the caller then reads
+// every member back from memory, a tenth of BM_Screw's time (36 ns against 32).
+[[gnu::always_inline]] inline Screw::Screw(const Pose& from, const Pose& to, WithoutAngle)
     : fromOrientation_(from.orientation)
     , fromPosition_(from.position)
 {
@@ -108,7 +110,7 @@ inline Screw::Screw(const Pose& from, const Pose& to, WithoutAngle)
     turnedOrientation_ = linearCombination(side * inverseSin, to.orientation, -cotangent, fromOrientation_);
 }
 
-inline Screw::Screw(const Pose& from, const Pose& to)
+[[gnu::always_inline]] inline Screw::Screw(const Pose& from, const Pose& to)
     : Screw(from, to, WithoutAngle{})
 {
     if (sinHalfAngle_ > 0.0)
