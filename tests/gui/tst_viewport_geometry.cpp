@@ -1,12 +1,16 @@
 // The viewport's geometry without OpenGL: the orbit camera's projections and moves, and picking.
 
 #include "app/viewport/default_shape.h"
+#include "app/viewport/mesh_winding.h"
 #include "app/viewport/orbit_camera.h"
 #include "app/viewport/picking.h"
 
 #include <QTest>
 
 #include <Eigen/Geometry>
+
+#include <array>
+#include <random>
 
 using namespace gyre;
 
@@ -18,6 +22,28 @@ app::OrbitCamera cameraAt(const Eigen::Vector3d& target)
     camera.setViewportSize(800, 600);
     camera.frame(target - Eigen::Vector3d::Constant(2), target + Eigen::Vector3d::Constant(2));
     return camera;
+}
+
+// A tetrahedron with its own three vertices per face, each face counter-clockwise seen from
+// outside; one face's copy of the corner at the origin is written (−0, 0, −0).
+model::Mesh tetrahedron()
+{
+    const Eigen::Vector3f o(0, 0, 0), x(1, 0, 0), y(0, 1, 0), z(0, 0, 1), negativeZeroO(-0.0F, 0.0F, -0.0F);
+    model::Mesh mesh;
+    for (const auto& face : {std::array{o, y, x}, std::array{negativeZeroO, x, z}, std::array{o, z, y}, std::array{x, y, z}}) {
+        for (const Eigen::Vector3f& corner : face) {
+            mesh.indices.push_back(static_cast<std::uint32_t>(mesh.positions.size()));
+            mesh.positions.push_back(corner);
+        }
+    }
+    return mesh;
+}
+
+model::Mesh reversed(model::Mesh mesh)
+{
+    for (std::size_t i = 0; i < mesh.indices.size(); i += 3)
+        std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
+    return mesh;
 }
 
 } // namespace
@@ -121,6 +147,65 @@ private slots:
         const app::Ray pastNose{Eigen::Vector3d(1.05, 0, 10), -Eigen::Vector3d::UnitZ()};
         QCOMPARE(app::nearestHit(throughNose, placements), std::optional<std::size_t>(0));
         QVERIFY(!app::nearestHit(pastNose, placements));
+    }
+
+    void theDefaultShapeShowsOnlyItsFrontFacesFromOutside()
+    {
+        // What culling its back faces relies on, checked by casting rays at it: from any eye outside,
+        // the first triangle a ray meets faces the eye, its corners counter-clockwise.
+        const model::Mesh& shape = app::defaultShapeMesh();
+        QCOMPARE(app::meshWinding(shape), app::MeshWinding::CounterClockwise);
+        std::mt19937_64 random(7);
+        std::uniform_real_distribution<double> inside(-0.5, 0.5);
+        std::normal_distribution<double> normal;
+        int hits = 0;
+        for (int i = 0; i < 2000; ++i) {
+            const Eigen::Vector3d eye = 5.0 * Eigen::Vector3d(normal(random), normal(random), normal(random)).normalized();
+            const Eigen::Vector3d aim(inside(random), inside(random), 0.5 * inside(random));
+            const app::Ray ray{eye, (aim - eye).normalized()};
+            std::optional<double> nearest;
+            Eigen::Vector3d nearestNormal = Eigen::Vector3d::Zero();
+            for (std::size_t k = 0; k < shape.indices.size(); k += 3) {
+                const Eigen::Vector3d a = shape.positions[shape.indices[k]].cast<double>();
+                const Eigen::Vector3d b = shape.positions[shape.indices[k + 1]].cast<double>();
+                const Eigen::Vector3d c = shape.positions[shape.indices[k + 2]].cast<double>();
+                const std::optional<double> t = app::intersectTriangle(ray, a, b, c);
+                if (t && (!nearest || *t < *nearest)) {
+                    nearest = t;
+                    nearestNormal = (b - a).cross(c - a);
+                }
+            }
+            if (!nearest)
+                continue;
+            ++hits;
+            QVERIFY2(nearestNormal.dot(ray.direction) < 0.0, qPrintable(QStringLiteral("ray %1 meets a back face first").arg(i)));
+        }
+        QVERIFY(hits > 1000);
+    }
+
+    void meshWindingTellsClosedMeshesFromOpenOnes()
+    {
+        const model::Mesh tetra = tetrahedron();
+        QCOMPARE(app::meshWinding(tetra), app::MeshWinding::CounterClockwise);
+        QCOMPARE(app::meshWinding(reversed(tetra)), app::MeshWinding::Clockwise);
+        QCOMPARE(app::meshWinding(reversed(app::defaultShapeMesh())), app::MeshWinding::Clockwise);
+
+        model::Mesh missingFace = tetra;
+        missingFace.indices.resize(9);
+        QCOMPARE(app::meshWinding(missingFace), app::MeshWinding::Open);
+        // One face turned over: its edges are walked twice the same way.
+        model::Mesh oneFaceTurned = tetra;
+        std::swap(oneFaceTurned.indices[10], oneFaceTurned.indices[11]);
+        QCOMPARE(app::meshWinding(oneFaceTurned), app::MeshWinding::Open);
+        QCOMPARE(app::meshWinding(model::Mesh{}), app::MeshWinding::Open);
+
+        // A sheet seen from both sides: each side's triangles face their own eye, so it is closed.
+        model::Mesh sheet;
+        sheet.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+        sheet.indices = {0, 1, 2, 0, 2, 3};
+        QCOMPARE(app::meshWinding(sheet), app::MeshWinding::Open);
+        sheet.indices.insert(sheet.indices.end(), {0, 2, 1, 0, 3, 2});
+        QVERIFY(app::meshWinding(sheet) != app::MeshWinding::Open);
     }
 
     void theNearestPointOnAnAxisToARay()

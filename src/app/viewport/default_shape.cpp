@@ -22,7 +22,10 @@ void addFace(model::Mesh& mesh, const std::array<Corner, N>& corners)
         mesh.indices.insert(mesh.indices.end(), {first, first + i, first + i + 1});
 }
 
-void addBox(model::Mesh& mesh, const Corner& low, const Corner& high)
+// Which faces addBox leaves out: the face that another part covers, so that the whole stays closed.
+enum class BoxOpening { None, PlusX };
+
+void addBox(model::Mesh& mesh, const Corner& low, const Corner& high, BoxOpening opening = BoxOpening::None)
 {
     const auto corner = [&](int x, int y, int z) {
         return Corner(x != 0 ? high.x() : low.x(), y != 0 ? high.y() : low.y(), z != 0 ? high.z() : low.z());
@@ -32,15 +35,17 @@ void addBox(model::Mesh& mesh, const Corner& low, const Corner& high)
     addFace<4>(mesh, {corner(0, 0, 0), corner(1, 0, 0), corner(1, 0, 1), corner(0, 0, 1)}); // −y
     addFace<4>(mesh, {corner(0, 1, 0), corner(0, 1, 1), corner(1, 1, 1), corner(1, 1, 0)}); // +y
     addFace<4>(mesh, {corner(0, 0, 0), corner(0, 0, 1), corner(0, 1, 1), corner(0, 1, 0)}); // −x
-    addFace<4>(mesh, {corner(1, 0, 0), corner(1, 1, 0), corner(1, 1, 1), corner(1, 0, 1)}); // +x
+    if (opening != BoxOpening::PlusX)
+        addFace<4>(mesh, {corner(1, 0, 0), corner(1, 1, 0), corner(1, 1, 1), corner(1, 0, 1)}); // +x
 }
 
 model::Mesh makeDefaultShape()
 {
     model::Mesh mesh;
-    // The body, 1.2 long (x), 0.6 wide (y), 0.4 high (z), centred on the origin.
-    addBox(mesh, Corner(-0.6F, -0.3F, -0.2F), Corner(0.6F, 0.3F, 0.2F));
-    // The nose: a pyramid on the +x face, its tip 0.4 ahead.
+    // The body, 1.2 long (x), 0.6 wide (y), 0.4 high (z), centred on the origin, open at +x where
+    // the nose closes it.
+    addBox(mesh, Corner(-0.6F, -0.3F, -0.2F), Corner(0.6F, 0.3F, 0.2F), BoxOpening::PlusX);
+    // The nose: a pyramid on the +x end, its tip 0.4 ahead.
     const Corner tip(1.0F, 0.0F, 0.0F);
     const Corner a(0.6F, -0.3F, -0.2F), b(0.6F, 0.3F, -0.2F), c(0.6F, 0.3F, 0.2F), d(0.6F, -0.3F, 0.2F);
     addFace<3>(mesh, {a, b, tip});

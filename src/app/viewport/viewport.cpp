@@ -1,6 +1,7 @@
 #include "app/viewport/viewport.h"
 
 #include "app/viewport/default_shape.h"
+#include "app/viewport/mesh_winding.h"
 #include "model/commands/set_keyframe_orientation_command.h"
 #include "model/commands/set_keyframe_position_command.h"
 #include "model/scene_queries.h"
@@ -734,6 +735,16 @@ Viewport::GpuMesh& Viewport::gpuMesh(const model::SceneObject& object)
     gpu.indices.bind();
     gpu.indices.allocate(mesh.indices.data(), static_cast<int>(mesh.indices.size() * sizeof(std::uint32_t)));
     gpu.indexCount = static_cast<int>(mesh.indices.size());
+    switch (meshWinding(mesh)) {
+    case MeshWinding::Open:
+        break;
+    case MeshWinding::CounterClockwise:
+        gpu.frontFace = GL_CCW;
+        break;
+    case MeshWinding::Clockwise:
+        gpu.frontFace = GL_CW;
+        break;
+    }
     gpu.vertexArray->release();
     gpu.vertices.release();
     gpu.indices.release();
@@ -755,7 +766,12 @@ void Viewport::drawMesh(GpuMesh& mesh, QOpenGLBuffer& instances, int instanceCou
         glVertexAttribPointer(kInstanceAttribute + column, 4, GL_FLOAT, GL_FALSE, kFloatsPerMatrix * sizeof(float),
                               reinterpret_cast<const void*>(column * 4 * sizeof(float)));
     meshProgram_->setUniformValue("uInstanceCount", instanceCount);
+    if (mesh.frontFace) {
+        glEnable(GL_CULL_FACE);
+        glFrontFace(*mesh.frontFace);
+    }
     glDrawElementsInstanced(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr, instanceCount);
+    glDisable(GL_CULL_FACE);
     instances.release();
     mesh.vertexArray->release();
 }

@@ -103,6 +103,7 @@ private:
         QOpenGLBuffer indices{QOpenGLBuffer::IndexBuffer};
         int indexCount = 0;
         float radius = 1.0F; // of the bounding sphere about the local origin
+        std::optional<GLenum> frontFace; // GL_CCW or GL_CW for a closed mesh, whose back faces are culled
     };
 
     struct LineVertex {
