@@ -1,9 +1,9 @@
 #include "app/viewport/mesh_winding.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <unordered_map>
-#include <utility>
 #include <vector>
 
 namespace gyre::app {

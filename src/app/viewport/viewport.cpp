@@ -105,6 +105,20 @@ Eigen::Vector3d meshCentre(const model::Mesh& mesh)
     return (0.5F * (low + high)).cast<double>();
 }
 
+// The front face of a closed mesh, whose back faces the viewport culls; none for an open mesh.
+std::optional<GLenum> cullableFrontFace(const model::Mesh& mesh)
+{
+    switch (meshWinding(mesh)) {
+    case MeshWinding::CounterClockwise:
+        return GL_CCW;
+    case MeshWinding::Clockwise:
+        return GL_CW;
+    case MeshWinding::Open:
+        break;
+    }
+    return std::nullopt;
+}
+
 bool samePose(const Pose& a, const Pose& b)
 {
     return a.orientation.angularDistance(b.orientation) <= kGhostTolerance
@@ -735,16 +749,7 @@ Viewport::GpuMesh& Viewport::gpuMesh(const model::SceneObject& object)
     gpu.indices.bind();
     gpu.indices.allocate(mesh.indices.data(), static_cast<int>(mesh.indices.size() * sizeof(std::uint32_t)));
     gpu.indexCount = static_cast<int>(mesh.indices.size());
-    switch (meshWinding(mesh)) {
-    case MeshWinding::Open:
-        break;
-    case MeshWinding::CounterClockwise:
-        gpu.frontFace = GL_CCW;
-        break;
-    case MeshWinding::Clockwise:
-        gpu.frontFace = GL_CW;
-        break;
-    }
+    gpu.frontFace = cullableFrontFace(mesh);
     gpu.vertexArray->release();
     gpu.vertices.release();
     gpu.indices.release();
