@@ -133,7 +133,7 @@ QJsonObject objectJson(const SceneObject& object, const std::map<const Mesh*, qs
             {"mesh", object.mesh ? QJsonValue(meshIndex.at(object.mesh.get())) : QJsonValue()},
             {"interpolation", QString::fromLatin1(interpolationMethodName(object.track.interpolation))},
             {"subdivision", subdivisionJson(object.track.subdivision)},
-            {"keyframes", arrayJson(object.track.keys, keyframeJson)},
+            {"keyframes", arrayJson(object.track.keys.vector(), keyframeJson)},
             {"sketch", sketchJson(object.track.sketch)}};
 }
 

@@ -6,6 +6,7 @@
 #include "core/orientation_curves.h"
 #include "core/pose.h"
 #include "core/subdivision.h"
+#include "model/shared_vector.h"
 
 #include <Eigen/Core>
 #include <QString>
@@ -64,7 +65,7 @@ struct SketchState {
 };
 
 struct MotionTrack {
-    std::vector<Keyframe> keys;  // strictly increasing times
+    SharedVector<Keyframe> keys;  // strictly increasing times; copies share them (shared_vector.h)
     InterpolationMethod interpolation = InterpolationMethod::Hermite;
     SubdivisionSettings subdivision;  // used when interpolation is Screw
     SketchState sketch;

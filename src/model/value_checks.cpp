@@ -172,7 +172,7 @@ void checkSubdivision(const SubdivisionSettings& settings)
 
 void checkTrack(MotionTrack& track)
 {
-    checkKeyframes(track.keys);
+    checkKeyframes(track.keys.edit());
     checkSubdivision(track.subdivision);
     checkSketch(track.sketch);
 }

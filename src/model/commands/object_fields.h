@@ -105,7 +105,7 @@ using PatternField =
 inline constexpr auto keyframesAndSketch = [](auto& object, std::size_t) {
     return std::tie(object.track.keys, object.track.sketch);
 };
-using KeyframesAndSketchField = MemberField<keyframesAndSketch, std::tuple<std::vector<Keyframe>, SketchState>, kNeverMerge, Change::Keyframes, Change::Sketch>;
+using KeyframesAndSketchField = MemberField<keyframesAndSketch, std::tuple<SharedVector<Keyframe>, SketchState>, kNeverMerge, Change::Keyframes, Change::Sketch>;
 
 // The parent and, because parents come before their children, the order of all objects.
 struct ParentField {
@@ -134,7 +134,7 @@ struct TimeRangeField {
 struct KeyframeList {
     using Entry = Keyframe;
     static constexpr Changes kChanges = Change::Keyframes;
-    static std::vector<Entry>& of(Scene& scene, ObjectId object) { return objectIn(scene, object).track.keys; }
+    static std::vector<Entry>& of(Scene& scene, ObjectId object) { return objectIn(scene, object).track.keys.edit(); }
 };
 
 struct StrokeList {
