@@ -22,6 +22,7 @@
 
 #include <QCloseEvent>
 #include <QDragEnterEvent>
+#include <QDockWidget>
 #include <QDropEvent>
 #include <QMimeData>
 #include <QStandardPaths>
@@ -52,8 +53,6 @@ constexpr int kMaxRecentFiles = 8;
 const char* const kRecentFilesKey = "recentFiles";
 const char* const kGeometryKey = "mainWindow/geometry";
 const char* const kStateKey = "mainWindow/state";
-// A crash loses at most this much work.
-constexpr std::chrono::seconds kAutosaveInterval{30};
 
 bool isProjectFile(const QString& path)
 {
@@ -87,7 +86,16 @@ MainWindow::MainWindow(QWidget* parent)
     fillSamplesMenu();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // The views hold references to the document, the selection and the playback, which are members
+    // and so would go before the views, the window's children: the views go first.
+    delete takeCentralWidget();
+    qDeleteAll(findChildren<QDockWidget*>(Qt::FindDirectChildrenOnly));
+    setStatusBar(nullptr);
+    delete fitController_;
+    delete sceneFiles_;
+}
 
 void MainWindow::setUpActions()
 {
@@ -443,38 +451,45 @@ void MainWindow::showAbout()
                  QString::fromLatin1(QCUSTOMPLOT_VERSION_STR)));
 }
 
-bool MainWindow::recoverAndStartAutosave()
+bool MainWindow::recoverAndStartAutosave(std::chrono::milliseconds interval)
 {
     const QString directory = QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation)
                               + QStringLiteral("/autosave");
-    const std::vector<model::RecoveryFile> crashed = model::Autosave::recoverableFiles(directory);
-    bool recovered = false;
-    if (!crashed.empty()) {
-        const model::RecoveryFile& newest = crashed.front();
-        const QString name = newest.documentPath.isEmpty() ? tr("an untitled project")
-                                                           : QDir::toNativeSeparators(newest.documentPath);
-        const auto answer = QMessageBox::question(
-            this, tr("Recover unsaved work"),
-            tr("Gyre ended without saving changes to %1 (last copy %2). Recover them?")
-                .arg(name, QLocale().toString(newest.savedAt, QLocale::ShortFormat)),
-            QMessageBox::Yes | QMessageBox::Discard, QMessageBox::Yes);
-        if (answer == QMessageBox::Yes) {
-            try {
-                model::Autosave::recover(document_, newest);
-                recovered = true;
-            } catch (const InputError& error) {
-                QMessageBox::warning(this, tr("Cannot recover"), QString::fromUtf8(error.what()));
-            }
-        } else {
-            model::Autosave::discard(newest);
-        }
-    }
+    const std::vector<jobs::RecoveryFile> crashed = jobs::Autosave::recoverableFiles(directory);
     try {
-        autosave_ = std::make_unique<model::Autosave>(document_, directory, kAutosaveInterval);
+        autosave_ = std::make_unique<jobs::Autosave>(document_, directory, interval);
+        connect(autosave_.get(), &jobs::Autosave::autosaveFailed, this, [this](const QString& message) {
+            statusBar()->showMessage(tr("Autosave failed: %1").arg(message));
+        });
     } catch (const OutputError& error) {
         statusBar()->showMessage(tr("Autosave is off: %1").arg(QString::fromUtf8(error.what())));
     }
-    return recovered;
+    if (crashed.empty())
+        return false;
+
+    const jobs::RecoveryFile& newest = crashed.front();
+    const QString name = newest.documentPath.isEmpty() ? tr("an untitled project")
+                                                       : QDir::toNativeSeparators(newest.documentPath);
+    const auto answer = QMessageBox::question(
+        this, tr("Recover unsaved work"),
+        tr("Gyre ended without saving changes to %1 (last copy %2). Recover them?")
+            .arg(name, QLocale().toString(newest.savedAt, QLocale::ShortFormat)),
+        QMessageBox::Yes | QMessageBox::Discard, QMessageBox::Yes);
+    if (answer != QMessageBox::Yes) {
+        jobs::Autosave::discard(newest);
+        return false;
+    }
+    try {
+        // Without a session of its own the copy stays where it is, to be offered again.
+        if (autosave_)
+            autosave_->recover(newest);
+        else
+            document_.recover(newest.recoveryPath, newest.documentPath);
+        return true;
+    } catch (const InputError& error) {
+        QMessageBox::warning(this, tr("Cannot recover"), QString::fromUtf8(error.what()));
+        return false;
+    }
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event)

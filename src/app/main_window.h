@@ -7,12 +7,13 @@
 #include "app/playback.h"
 #include "app/scene_file_actions.h"
 #include "app/selection.h"
-#include "model/autosave.h"
+#include "jobs/autosave.h"
 #include "model/document.h"
 
 #include <QMainWindow>
 #include <QString>
 
+#include <chrono>
 #include <memory>
 
 namespace Ui {
@@ -53,8 +54,8 @@ public:
     // moving object at once.
     void openBundledSample();
     // Offers to recover the work of a session that crashed, then autosaves this session's unsaved
-    // work. Returns whether work was recovered into the document.
-    bool recoverAndStartAutosave();
+    // work every `interval` (a crash loses at most that much work). Returns whether work was recovered into the document.
+    bool recoverAndStartAutosave(std::chrono::milliseconds interval = std::chrono::seconds(30));
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -92,7 +93,7 @@ private:
     Selection selection_;
     Playback playback_;
     SceneFileActions* sceneFiles_ = nullptr;
-    std::unique_ptr<model::Autosave> autosave_;
+    std::unique_ptr<jobs::Autosave> autosave_;
     FitController* fitController_ = nullptr; // a child of the window, shared by the fit panel and status bar
     Viewport* viewport_ = nullptr; // owned by the central widget
 };

@@ -15,6 +15,13 @@ Document::Document(QObject* parent)
     connect(&undoStack_, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
 }
 
+Document::~Document()
+{
+    // ~QUndoStack clears the stack and emits its signals, after the members declared after it are
+    // gone; whoever listens would read a document half destroyed. Nothing is undone at the end.
+    undoStack_.blockSignals(true);
+}
+
 const SceneObject* Document::object(ObjectId id) const { return findObject(scene_, id); }
 
 void Document::setCurrentTime(double seconds)

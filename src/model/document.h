@@ -20,6 +20,8 @@ class Document : public QObject {
 
 public:
     explicit Document(QObject* parent = nullptr);
+    // Emits nothing: listeners never see a document being destroyed.
+    ~Document() override;
 
     const Scene& scene() const { return scene_; }
     // The object with this id, or null.

@@ -21,6 +21,7 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QUndoStack>
 #include <QTemporaryDir>
@@ -378,6 +379,50 @@ private slots:
         QVERIFY(!window.findChild<QDockWidget*>(QStringLiteral("screwBenderDock"))->isVisible());
         QVERIFY(window.findChild<QDockWidget*>(QStringLiteral("inspectorDock"))->isVisible());
         window.findChild<QDockWidget*>(QStringLiteral("screwBenderDock"))->show();
+        QVERIFY(window.close());
+    }
+
+    // Whoever listens to the document while the window closes reads a whole document: under the
+    // sanitizer build a read of freed memory fails the test.
+    void closingTheWindowWithListenersAttachedReadsNothingFreed()
+    {
+        QTemporaryDir folder;
+        auto sample = std::make_unique<SampleWindow>();
+        app::MainWindow& window = sample->window;
+        window.document().save(folder.filePath(QStringLiteral("listened.gyre")));
+        moveFirstKey(window, Eigen::Vector3d(1.0, 2.0, 3.0));
+        const model::Document* document = &window.document();
+        qsizetype pathLengths = 0;
+        // No context object: the connection lives as long as the undo stack.
+        QObject::connect(&window.document().undoStack(), &QUndoStack::indexChanged,
+                         [document, &pathLengths] { pathLengths += document->filePath().size(); });
+        QObject::connect(&window.document().undoStack(), &QUndoStack::cleanChanged,
+                         [document, &pathLengths] { pathLengths += document->filePath().size(); });
+        window.document().undoStack().undo();
+        QVERIFY(pathLengths > 0);
+        test::answerMessageBox(QMessageBox::Discard);
+        QVERIFY(window.close());
+        sample.reset();
+    }
+
+    void aFailedAutosaveShowsInTheStatusBar()
+    {
+        const QString directory =
+            QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + QStringLiteral("/autosave");
+        QVERIFY(QDir(directory).removeRecursively());
+        SampleWindow sample;
+        app::MainWindow& window = sample.window;
+        QVERIFY(!window.recoverAndStartAutosave(std::chrono::milliseconds(20)));
+        // The folder of the copies turns into a file: no copy can be written there.
+        QVERIFY(QDir(directory).removeRecursively());
+        QFile blocker(directory);
+        QVERIFY(blocker.open(QIODevice::WriteOnly));
+        blocker.close();
+        moveFirstKey(window, Eigen::Vector3d(0.5, 0.0, 0.0));
+        QTRY_VERIFY(window.statusBar()->currentMessage().startsWith(QStringLiteral("Autosave failed")));
+        QVERIFY(window.statusBar()->currentMessage().contains(QStringLiteral("autosave")));
+        QVERIFY(QFile::remove(directory));
+        test::answerMessageBox(QMessageBox::Discard);
         QVERIFY(window.close());
     }
 };

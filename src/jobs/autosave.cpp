@@ -1,4 +1,4 @@
-#include "model/autosave.h"
+#include "jobs/autosave.h"
 
 #include "model/input_error.h"
 #include "model/project_file.h"
@@ -11,9 +11,14 @@
 #include <QSaveFile>
 #include <QUuid>
 
-#include <algorithm>
+#include <QMetaObject>
 
-namespace gyre::model {
+#include <algorithm>
+#include <exception>
+
+namespace gyre::jobs {
+
+using model::Document;
 
 namespace {
 
@@ -58,6 +63,19 @@ bool sessionHasEnded(const QString& copyPath)
     return true;
 }
 
+// Removes the files in `directory` ending in `suffix` whose session has ended and left no copy: the lock
+// of a session that crashed before its first copy, or that ended cleanly without removing its lock,
+// and the note of a session whose copy was recovered or discarded.
+void removeLeftovers(const QDir& directory, const QString& suffix)
+{
+    for (const QFileInfo& file : directory.entryInfoList({QStringLiteral("*") + suffix}, QDir::Files)) {
+        const QString copy = file.absolutePath() + QLatin1Char('/') + file.completeBaseName() + kCopySuffix;
+        if (QFileInfo::exists(copy) || !sessionHasEnded(copy))
+            continue;
+        QFile::remove(file.absoluteFilePath());
+    }
+}
+
 } // namespace
 
 Autosave::Autosave(Document& document, const QString& directory, std::chrono::milliseconds interval, QObject* parent)
@@ -84,35 +102,61 @@ Autosave::Autosave(Document& document, const QString& directory, std::chrono::mi
         if (!modified)
             removeCopy();
     });
-    connect(&timer_, &QTimer::timeout, this, &Autosave::writeCopyIfChanged);
+    writer_ = std::make_unique<JobThread>();
+    connect(&timer_, &QTimer::timeout, this, &Autosave::copyIfChanged);
     timer_.start(interval);
 }
 
-Autosave::~Autosave() { removeCopy(); }
+Autosave::~Autosave()
+{
+    writer_.reset();
+    QFile::remove(recoveryPath_);
+    QFile::remove(infoPath_);
+}
 
-void Autosave::writeCopyIfChanged()
+void Autosave::copyIfChanged()
 {
     if (!changedSinceCopy_ || !document_.isModified())
         return;
-    try {
-        writeInfo(infoPath_, document_.filePath());
-        writeProject(recoveryPath_, document_.scene());
-        changedSinceCopy_ = false;
+    changedSinceCopy_ = false;
+    // The snapshot shares the tracks' keys with the document (model::SharedVector): what the UI
+    // thread pays here does not grow with the length of the motion.
+    writer_->post([this, scene = document_.scene(), documentPath = document_.filePath()](const std::atomic<bool>&) {
+        QString error;
+        try {
+            writeInfo(infoPath_, documentPath);
+            model::writeProject(recoveryPath_, scene);
+        } catch (const std::exception& failure) {
+            error = QString::fromUtf8(failure.what());
+        }
+        QMetaObject::invokeMethod(this, [this, error] { reportWrite(error); }, Qt::QueuedConnection);
+    });
+}
+
+void Autosave::reportWrite(const QString& error)
+{
+    if (error.isEmpty()) {
         emit autosaved(recoveryPath_);
-    } catch (const OutputError& error) {
-        emit autosaveFailed(QString::fromStdString(error.what()));
+        return;
     }
+    changedSinceCopy_ = true; // try again at the next tick
+    emit autosaveFailed(error);
 }
 
 void Autosave::removeCopy()
 {
-    QFile::remove(recoveryPath_);
-    QFile::remove(infoPath_);
     changedSinceCopy_ = false;
+    // After any write still under way, in place of one still waiting.
+    writer_->post([recoveryPath = recoveryPath_, infoPath = infoPath_](const std::atomic<bool>&) {
+        QFile::remove(recoveryPath);
+        QFile::remove(infoPath);
+    });
 }
 
 std::vector<RecoveryFile> Autosave::recoverableFiles(const QString& directory)
 {
+    removeLeftovers(QDir(directory), kLockSuffix);
+    removeLeftovers(QDir(directory), kInfoSuffix);
     std::vector<RecoveryFile> files;
     const QFileInfoList copies = QDir(directory).entryInfoList({QStringLiteral("*") + kCopySuffix}, QDir::Files);
     for (const QFileInfo& copy : copies) {
@@ -125,10 +169,17 @@ std::vector<RecoveryFile> Autosave::recoverableFiles(const QString& directory)
     return files;
 }
 
-void Autosave::recover(Document& document, const RecoveryFile& file)
+void Autosave::recover(const RecoveryFile& file)
 {
-    document.recover(file.recoveryPath, file.documentPath);
-    discard(file);
+    document_.recover(file.recoveryPath, file.documentPath);
+    // The copy on disk is the document now: it becomes this session's copy at once, so that it is
+    // never missing while the recovered work is unsaved. The next tick writes it again all the same,
+    // in case a write of the document as it was before is still under way.
+    QFile::remove(recoveryPath_);
+    QFile::remove(infoPath_);
+    QFile::rename(file.recoveryPath, recoveryPath_);
+    QFile::rename(sibling(file.recoveryPath, kInfoSuffix), infoPath_);
+    changedSinceCopy_ = true;
 }
 
 void Autosave::discard(const RecoveryFile& file)
@@ -137,4 +188,4 @@ void Autosave::discard(const RecoveryFile& file)
     QFile::remove(sibling(file.recoveryPath, kInfoSuffix));
 }
 
-} // namespace gyre::model
+} // namespace gyre::jobs

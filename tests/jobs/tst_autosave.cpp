@@ -1,9 +1,11 @@
 // Autosave as a crashed user meets it: unsaved work is copied at an interval, a running session's
 // copy is never offered for recovery, a crashed session's copy is, and recovering it gives back the
-// unsaved document. Copies go away when the document is saved or the session ends cleanly. The crash
-// is a real one: autosave_crasher ends without running any destructor.
+// unsaved document and keeps the copy through a second crash. Copies go away when the document is
+// saved or the session ends cleanly; what crashed sessions leave besides copies is cleared away; a
+// copy that cannot be written is reported and tried again. The crashes are real ones:
+// autosave_crasher ends without running any destructor.
 
-#include "model/autosave.h"
+#include "jobs/autosave.h"
 #include "model/commands/import_objects_command.h"
 #include "model/commands/rename_object_command.h"
 #include "model/project_file.h"
@@ -17,6 +19,7 @@
 
 #include <chrono>
 
+using namespace gyre::jobs;
 using namespace gyre::model;
 using namespace std::chrono_literals;
 
@@ -45,6 +48,9 @@ private slots:
     void aCleanEndLeavesNothing();
     void offersACrashedSessionForRecovery();
     void discardRemovesTheCopy();
+    void aRecoveredCopyOutlivesASecondCrash();
+    void leftoversOfEndedSessionsAreRemoved();
+    void aFailedCopyIsReportedAndTriedAgain();
 };
 
 void TstAutosave::copiesOnlyUnsavedWork()
@@ -82,7 +88,8 @@ void TstAutosave::savingRemovesTheCopy()
     importOne(document, QStringLiteral("work"));
     QVERIFY(autosaved.wait());
     document.save(documents.filePath("work.gyre"));
-    QVERIFY(!QFileInfo::exists(autosave.recoveryPath()));
+    // The worker removes it, after any write under way.
+    QTRY_VERIFY(!QFileInfo::exists(autosave.recoveryPath()));
     QTest::qWait(10 * kInterval.count());
     QVERIFY(!QFileInfo::exists(autosave.recoveryPath()));
     // Undoing past the saved state is unsaved work again.
@@ -123,16 +130,21 @@ void TstAutosave::offersACrashedSessionForRecovery()
 
     Document document;
     Autosave autosave(document, directory.path(), kInterval); // the new session
-    Autosave::recover(document, files.front());
+    autosave.recover(files.front());
     QVERIFY(document.isModified());
     QCOMPARE(document.filePath(), documentPath);
     QCOMPARE(document.scene().objects.size(), std::size_t{1});
     QCOMPARE(document.scene().objects.front().name, QStringLiteral("unsaved work"));
+    // The crashed session's copy is the new session's copy now: its files and its lock, nothing else.
     QVERIFY(!QFileInfo::exists(files.front().recoveryPath));
-    // Only the new session's lock remains; its copy of the recovered work follows.
-    QCOMPARE(filesIn(directory.path()), QStringList{QFileInfo(autosave.recoveryPath()).completeBaseName() + ".lock"});
+    const QString session = QFileInfo(autosave.recoveryPath()).completeBaseName();
+    QCOMPARE(filesIn(directory.path()), (QStringList{session + ".gyre", session + ".json", session + ".lock"}));
+    QCOMPARE(projectJson(readProject(autosave.recoveryPath())), projectJson(document.scene()));
     QSignalSpy autosaved(&autosave, &Autosave::autosaved);
     QVERIFY(autosaved.wait());
+    // Saving the recovered work ends the need for its copy.
+    document.save(documentPath);
+    QTRY_VERIFY(!QFileInfo::exists(autosave.recoveryPath()));
 }
 
 void TstAutosave::discardRemovesTheCopy()
@@ -147,6 +159,66 @@ void TstAutosave::discardRemovesTheCopy()
     Autosave::discard(files.front());
     QVERIFY(Autosave::recoverableFiles(directory.path()).empty());
     QCOMPARE(filesIn(directory.path()), QStringList());
+}
+
+// The session that recovers crashes too, before it has edited or autosaved anything: the recovered
+// work is offered again at the next start.
+void TstAutosave::aRecoveredCopyOutlivesASecondCrash()
+{
+    QTemporaryDir directory;
+    QTemporaryDir documents;
+    const QString documentPath = documents.filePath("twice.gyre");
+    QProcess crasher;
+    crasher.start(QStringLiteral(AUTOSAVE_CRASHER_PATH), {directory.path(), documentPath});
+    QVERIFY(crasher.waitForFinished(60'000));
+    QCOMPARE(crasher.exitCode(), 0);
+    const QByteArray firstCopy = projectJson(readProject(Autosave::recoverableFiles(directory.path()).front().recoveryPath));
+
+    QProcess recoverer;
+    recoverer.start(QStringLiteral(AUTOSAVE_CRASHER_PATH), {QStringLiteral("--recover"), directory.path()});
+    QVERIFY(recoverer.waitForFinished(60'000));
+    QCOMPARE(recoverer.exitCode(), 0);
+
+    const std::vector<RecoveryFile> files = Autosave::recoverableFiles(directory.path());
+    QCOMPARE(files.size(), std::size_t{1});
+    QCOMPARE(files.front().documentPath, documentPath);
+    QCOMPARE(projectJson(readProject(files.front().recoveryPath)), firstCopy);
+}
+
+void TstAutosave::leftoversOfEndedSessionsAreRemoved()
+{
+    QTemporaryDir directory;
+    for (int session = 0; session < 3; ++session) {
+        QProcess idle;
+        idle.start(QStringLiteral(AUTOSAVE_CRASHER_PATH), {QStringLiteral("--idle"), directory.path()});
+        QVERIFY(idle.waitForFinished(60'000));
+        QCOMPARE(idle.exitCode(), 0);
+    }
+    QCOMPARE(filesIn(directory.path()).filter(".lock").size(), 3);
+    // A running session's lock stays.
+    Document document;
+    Autosave running(document, directory.path(), kInterval);
+    QVERIFY(Autosave::recoverableFiles(directory.path()).empty());
+    QCOMPARE(filesIn(directory.path()), QStringList{QFileInfo(running.recoveryPath()).completeBaseName() + ".lock"});
+}
+
+void TstAutosave::aFailedCopyIsReportedAndTriedAgain()
+{
+    QTemporaryDir directory;
+    Document document;
+    Autosave autosave(document, directory.path(), kInterval);
+    QSignalSpy autosaved(&autosave, &Autosave::autosaved);
+    QSignalSpy failed(&autosave, &Autosave::autosaveFailed);
+    // A folder where the copy should go: no file can be renamed over it.
+    QVERIFY(QDir().mkpath(autosave.recoveryPath()));
+    importOne(document, QStringLiteral("work"));
+    QVERIFY(failed.wait());
+    QVERIFY(failed.front().front().toString().contains(QFileInfo(autosave.recoveryPath()).fileName()));
+    QCOMPARE(autosaved.count(), 0);
+
+    QVERIFY(QDir(autosave.recoveryPath()).removeRecursively());
+    QVERIFY(autosaved.wait());
+    QCOMPARE(readProject(autosave.recoveryPath()).objects.front().name, QStringLiteral("work"));
 }
 
 QTEST_GUILESS_MAIN(TstAutosave)
