@@ -2304,7 +2304,7 @@
         <translation>Objekte importieren</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/move_keyframe_command.cpp" line="33"/>
+        <location filename="../src/model/commands/set_keyframe_time_command.cpp" line="33"/>
         <source>Move Keyframe</source>
         <translation>Schlüsselbild verschieben</translation>
     </message>

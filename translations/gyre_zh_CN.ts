@@ -2302,7 +2302,7 @@
         <translation>导入对象</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/move_keyframe_command.cpp" line="33"/>
+        <location filename="../src/model/commands/set_keyframe_time_command.cpp" line="33"/>
         <source>Move Keyframe</source>
         <translation>移动关键帧</translation>
     </message>

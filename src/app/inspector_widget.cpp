@@ -2,7 +2,7 @@
 
 #include "app/undo_gesture.h"
 #include "core/rotation.h"
-#include "model/commands/move_keyframe_command.h"
+#include "model/commands/set_keyframe_time_command.h"
 #include "model/commands/set_keyframe_orientation_command.h"
 #include "model/commands/set_keyframe_position_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
@@ -242,7 +242,7 @@ void InspectorWidget::applyTime()
         if (time == shownKeyframe().time)
             showSelectedKey();
         else
-            pushAlone(document_.undoStack(), new model::MoveKeyframeCommand(document_, shownObject_, *shownKey_, time));
+            pushAlone(document_.undoStack(), new model::SetKeyframeTimeCommand(document_, shownObject_, *shownKey_, time));
     });
 }
 

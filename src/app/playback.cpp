@@ -73,13 +73,7 @@ void Playback::goToEnd()
     document_.setCurrentTime(document_.scene().endTime);
 }
 
-void Playback::setLoops(bool loops)
-{
-    if (loops == loops_)
-        return;
-    loops_ = loops;
-    emit loopsChanged(loops);
-}
+void Playback::setLoops(bool loops) { loops_ = loops; }
 
 void Playback::advance()
 {

@@ -32,7 +32,6 @@ public:
 
 signals:
     void playingChanged(bool playing);
-    void loopsChanged(bool loops);
 
 private:
     void advance();

@@ -1,6 +1,6 @@
 #include "app/timeline_widget.h"
 
-#include "model/commands/move_keyframe_command.h"
+#include "model/commands/set_keyframe_time_command.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -380,7 +380,7 @@ void TimelineWidget::dragKeyTo(double x, Qt::KeyboardModifiers modifiers)
         return;
     if (!dragGesture_)
         dragGesture_.emplace(document_.undoStack());
-    dragGesture_->push(new model::MoveKeyframeCommand(document_, object->id, keyDrag_->key, target));
+    dragGesture_->push(new model::SetKeyframeTimeCommand(document_, object->id, keyDrag_->key, target));
 }
 
 void TimelineWidget::endKeyDrag()

@@ -28,7 +28,6 @@ public:
     std::uint64_t request(std::vector<Pose> controlPoses, const SubdivisionSettings& settings);
     // Drops the results of every request made so far: nothing more is emitted until the next request.
     void cancel();
-    std::uint64_t newestGeneration() const { return newestGeneration_; }
 
 signals:
     // The newest request's poses, and how long the worker took to subdivide them.

@@ -7,7 +7,7 @@
 #include "model/commands/edit_stroke_command.h"
 #include "model/commands/erase_stroke_command.h"
 #include "model/commands/import_objects_command.h"
-#include "model/commands/move_keyframe_command.h"
+#include "model/commands/set_keyframe_time_command.h"
 #include "model/commands/remove_keyframe_command.h"
 #include "model/commands/rename_object_command.h"
 #include "model/commands/reparent_object_command.h"
@@ -242,7 +242,7 @@ std::unique_ptr<QUndoCommand> RandomEdits::command(Document& document, EditKind 
     case EditKind::MoveKeyframe: {
         const double earlier = key > 0 ? track.keys[key - 1].time : track.keys[key].time - 1;
         const double later = key + 1 < keys ? track.keys[key + 1].time : track.keys[key].time + 1;
-        return std::make_unique<MoveKeyframeCommand>(document, id, key, earlier + (later - earlier) * number(0.1, 0.9));
+        return std::make_unique<SetKeyframeTimeCommand>(document, id, key, earlier + (later - earlier) * number(0.1, 0.9));
     }
     case EditKind::SetKeyframeOrientation:
         return std::make_unique<SetKeyframeOrientationCommand>(document, id, key, rotation());

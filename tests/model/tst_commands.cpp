@@ -11,7 +11,7 @@
 #include "model/commands/edit_stroke_command.h"
 #include "model/commands/erase_stroke_command.h"
 #include "model/commands/import_objects_command.h"
-#include "model/commands/move_keyframe_command.h"
+#include "model/commands/set_keyframe_time_command.h"
 #include "model/commands/remove_keyframe_command.h"
 #include "model/commands/rename_object_command.h"
 #include "model/commands/reparent_object_command.h"
@@ -205,10 +205,10 @@ void TstCommands::moveKeyframeStaysBetweenNeighbours()
 {
     Document document;
     const ObjectId id = import(document, {objectWithKeys(1, {0, 1, 2})}).front();
-    QVERIFY(refuses([&] { MoveKeyframeCommand(document, id, 1, 2); }, "moves only between its neighbours at 0 and 2 s"));
-    QVERIFY(refuses([&] { MoveKeyframeCommand(document, id, 1, -0.5); }, "not to -0.5 s"));
-    document.undoStack().push(new MoveKeyframeCommand(document, id, 2, 100));
-    document.undoStack().push(new MoveKeyframeCommand(document, id, 0, -100));
+    QVERIFY(refuses([&] { SetKeyframeTimeCommand(document, id, 1, 2); }, "moves only between its neighbours at 0 and 2 s"));
+    QVERIFY(refuses([&] { SetKeyframeTimeCommand(document, id, 1, -0.5); }, "not to -0.5 s"));
+    document.undoStack().push(new SetKeyframeTimeCommand(document, id, 2, 100));
+    document.undoStack().push(new SetKeyframeTimeCommand(document, id, 0, -100));
     QCOMPARE(keyTimes(document, id), (std::vector<double>{-100, 1, 100}));
 }
 
@@ -218,7 +218,7 @@ void TstCommands::dragsMergeIntoOneStep()
     const ObjectId id = import(document, {objectWithKeys(1, {0, 1, 2})}).front();
     QUndoStack& stack = document.undoStack();
     for (double time : {1.1, 1.2, 1.3})
-        stack.push(new MoveKeyframeCommand(document, id, 1, time));
+        stack.push(new SetKeyframeTimeCommand(document, id, 1, time));
     QCOMPARE(stack.count(), 2);
     QCOMPARE(keyTimes(document, id)[1], 1.3);
     stack.undo();
@@ -249,8 +249,8 @@ void TstCommands::differentEditsDoNotMerge()
     Document document;
     const ObjectId id = import(document, {objectWithKeys(1, {0, 1, 2})}).front();
     QUndoStack& stack = document.undoStack();
-    stack.push(new MoveKeyframeCommand(document, id, 1, 1.5));
-    stack.push(new MoveKeyframeCommand(document, id, 2, 2.5)); // another key
+    stack.push(new SetKeyframeTimeCommand(document, id, 1, 1.5));
+    stack.push(new SetKeyframeTimeCommand(document, id, 2, 2.5)); // another key
     stack.push(new SetKeyframePositionCommand(document, id, 2, {1, 2, 3})); // another field
     stack.push(new SetFitParameterCommand(document, id, FitParameter::Alpha, 0.5));
     stack.push(new SetFitParameterCommand(document, id, FitParameter::Beta, 0.5)); // another parameter
@@ -496,7 +496,7 @@ void TstCommands::signalsSayWhatChanged_data()
     };
     row("add keyframe", [](Document& d) { return new AddKeyframeCommand(d, 2, {3, {}, true}); }, {"keyframesChanged:2"});
     row("remove keyframe", [](Document& d) { return new RemoveKeyframeCommand(d, 2, 0); }, {"keyframesChanged:2"});
-    row("move keyframe", [](Document& d) { return new MoveKeyframeCommand(d, 2, 1, 1.5); }, {"keyframesChanged:2"});
+    row("move keyframe", [](Document& d) { return new SetKeyframeTimeCommand(d, 2, 1, 1.5); }, {"keyframesChanged:2"});
     row("retime", [](Document& d) { return new RetimeKeyframesCommand(d, 2, 2, 0); },
         {"keyframesChanged:2", "sketchChanged:2"});
     row("orientation", [](Document& d) { return new SetKeyframeOrientationCommand(d, 2, 1, Eigen::Quaterniond::Identity()); }, {"keyframesChanged:2"});

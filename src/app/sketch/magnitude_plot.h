@@ -79,7 +79,6 @@ public:
 
     QAction* drawAction() const { return drawAction_; }
     QAction* panAction() const { return panAction_; }
-    QAction* fitViewAction() const { return fitViewAction_; }
     QAction* clearMagnitudeAction() const { return clearMagnitudeAction_; }
 
 public slots:

@@ -114,7 +114,6 @@ private:
     void forgetCurves();
 
     // Gestures.
-    void beginStroke(const QPointF& position);
     void extendStroke(const QPointF& position);
     void eraseAt(const QPointF& position);
     void endDrag();

@@ -1,4 +1,4 @@
-#include "model/commands/move_keyframe_command.h"
+#include "model/commands/set_keyframe_time_command.h"
 
 #include "core/number_text.h"
 #include "model/commands/command_checks.h"
@@ -27,8 +27,8 @@ double timeBetweenNeighbours(const Document& document, ObjectId object, std::siz
 
 } // namespace
 
-MoveKeyframeCommand::MoveKeyframeCommand(Document& document, ObjectId object, std::size_t key, double time,
-                                         QUndoCommand* parent)
+SetKeyframeTimeCommand::SetKeyframeTimeCommand(Document& document, ObjectId object, std::size_t key, double time,
+                                               QUndoCommand* parent)
     : ChangeValueCommand(document, {object, key}, timeBetweenNeighbours(document, object, key, time),
                          commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Move Keyframe")), parent)
 {

@@ -1,17 +1,17 @@
 #pragma once
-// Moves one keyframe in time. Consecutive moves of the same key merge, so a drag is one undo step.
+// Sets the time of one keyframe. Consecutive moves of the same key merge, so a drag is one undo step.
 
 #include "model/commands/object_fields.h"
 
 namespace gyre::model {
 
-class MoveKeyframeCommand final : public ChangeValueCommand<KeyframeTimeField> {
+class SetKeyframeTimeCommand final : public ChangeValueCommand<KeyframeTimeField> {
 public:
     // Throws std::invalid_argument unless the object has a keyframe at index `key` and `time` lies
     // strictly between the times of its neighbours. Moving never reorders keys, so a key's index
     // stays its identity through a drag; the view stops a drag at the neighbours.
-    MoveKeyframeCommand(Document& document, ObjectId object, std::size_t key, double time,
-                        QUndoCommand* parent = nullptr);
+    SetKeyframeTimeCommand(Document& document, ObjectId object, std::size_t key, double time,
+                           QUndoCommand* parent = nullptr);
 };
 
 } // namespace gyre::model

@@ -1,0 +1,2 @@
+#pragma once
+// The model header that breach/src/core/uses_model.h includes.
