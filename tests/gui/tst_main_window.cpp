@@ -3,6 +3,7 @@
 // scene import and export off the UI thread, and the layout kept between sessions.
 
 #include "app/main_window.h"
+#include "built_scene_worker.h"
 #include "gui_test_support.h"
 #include "io/bvh_fixture.h"
 #include "io/scene_export.h"
@@ -82,7 +83,11 @@ class TestMainWindow : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { test::useTestSettings(); }
+    void initTestCase()
+    {
+        test::useTestSettings();
+        test::useBuiltSceneWorker();
+    }
 
     void startsOnTheBundledSampleUntitledAndUnmodified()
     {
