@@ -5,6 +5,7 @@
 
 #include "built_scene_worker.h"
 #include "io/bvh_fixture.h"
+#include "io/damaged_scenes.h"
 #include "jobs/scene_file_jobs.h"
 #include "model/project_file.h"
 
@@ -18,28 +19,6 @@ using namespace gyre;
 using gyre::jobs::SceneFileJobs;
 
 namespace {
-
-// Collada files that Debian's Assimp 5.2.5 cannot survive. A float_array whose count is "-0" makes
-// the reader crash with SIGSEGV; one that announces 1.5 billion floats makes it reserve 6 GB.
-QByteArray collada(const char* floatCount)
-{
-    return QByteArray("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
-                      "<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">\n"
-                      "<library_geometries><geometry id=\"g\"><mesh>\n"
-                      "<source id=\"p\"><float_array id=\"pa\" count=\"") +
-           floatCount +
-           "\">0 0 0 1 0 0 0 1 0</float_array>\n"
-           "<technique_common><accessor source=\"#pa\" count=\"3\" stride=\"3\">\n"
-           "<param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/><param name=\"Z\" type=\"float\"/>\n"
-           "</accessor></technique_common></source>\n"
-           "<vertices id=\"v\"><input semantic=\"POSITION\" source=\"#p\"/></vertices>\n"
-           "<triangles count=\"1\"><input semantic=\"VERTEX\" source=\"#v\" offset=\"0\"/><p>0 1 2</p></triangles>\n"
-           "</mesh></geometry></library_geometries>\n"
-           "<library_visual_scenes><visual_scene id=\"s\"><node id=\"n\"><instance_geometry url=\"#g\"/></node>\n"
-           "</visual_scene></library_visual_scenes>\n"
-           "<scene><instance_visual_scene url=\"#s\"/></scene>\n"
-           "</COLLADA>\n";
-}
 
 QString writeFile(const QTemporaryDir& folder, const QString& name, const QByteArray& contents,
                   QFile::Permissions permissions = QFile::ReadOwner | QFile::WriteOwner)
@@ -108,7 +87,7 @@ private slots:
 
     void aFileThatCrashesTheReaderFailsByName()
     {
-        const QString path = writeFile(folder_, QStringLiteral("crash.dae"), collada("-0"));
+        const QString path = writeFile(folder_, QStringLiteral("crash.dae"), test::crashingCollada());
         const QString message = failureOf(path);
         QVERIFY2(message.startsWith(path + QStringLiteral(": the scene reader crashed on this file (signal 11, SIGSEGV)")),
                  qPrintable(message));
@@ -121,7 +100,7 @@ private slots:
         QSKIP("AddressSanitizer's shadow memory needs an unlimited address space, so the worker runs without one");
 #endif
         jobs_.setWorkerLimits({qint64{1} << 30, SceneWorkerLimits{}.time});
-        const QString path = writeFile(folder_, QStringLiteral("huge.dae"), collada("1500000000"));
+        const QString path = writeFile(folder_, QStringLiteral("huge.dae"), test::hugeCollada());
         const QString message = failureOf(path);
         jobs_.setWorkerLimits({});
         QCOMPARE(message, path + QStringLiteral(": the scene reader needed more than 1 GiB of memory for this file "
