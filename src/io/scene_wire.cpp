@@ -443,11 +443,13 @@ QByteArray encodeRequest(const Request& request)
     if (const auto* import = std::get_if<ImportRequest>(&request)) {
         header(out, Kind::ImportRequest);
         out.string(import->path);
+        out.string(import->locale);
         out.put<quint64>(import->options.animationIndex);
     } else {
         const auto& exportRequest = std::get<ExportRequest>(request);
         header(out, Kind::ExportRequest);
         out.string(exportRequest.path);
+        out.string(exportRequest.locale);
         out.string(QString::fromLatin1(nameOf(kSceneFormatNames, exportRequest.format)));
         out.put(exportRequest.fps);
         writeScene(out, exportRequest.scene);
@@ -461,7 +463,7 @@ Request decodeRequest(const QByteArray& bytes)
     Request request;
     switch (headerIn(in)) {
     case Kind::ImportRequest: {
-        ImportRequest import{pathIn(in), {}};
+        ImportRequest import{pathIn(in), in.string("locale"), {}};
         import.options.animationIndex = static_cast<std::size_t>(in.get<quint64>());
         request = std::move(import);
         break;
@@ -469,6 +471,7 @@ Request decodeRequest(const QByteArray& bytes)
     case Kind::ExportRequest: {
         ExportRequest exportRequest;
         exportRequest.path = pathIn(in);
+        exportRequest.locale = in.string("locale");
         exportRequest.format = named(in, kSceneFormatNames, "format");
         exportRequest.fps = in.get<double>();
         exportRequest.scene = sceneIn(in);

@@ -30,13 +30,16 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// `locale` names the translation the worker's messages use (QLocale::name()); empty for English.
 struct ImportRequest {
     QString path;
+    QString locale;
     ImportOptions options;
 };
 
 struct ExportRequest {
     QString path;
+    QString locale;
     SceneFormat format = SceneFormat::Glb;
     double fps = 24.0;
     model::Scene scene;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <mutex>
 
 namespace gyre {
 
@@ -60,6 +61,13 @@ void limitAddressSpace([[maybe_unused]] qint64 bytes)
     // with it cannot start under any address-space limit; such builds rely on the time limit alone.
 }
 
+QString executableDirectory()
+{
+    if (QCoreApplication::instance())
+        return QCoreApplication::applicationDirPath();
+    return QFileInfo(QFileInfo(QStringLiteral("/proc/self/exe")).canonicalFilePath()).path();
+}
+
 // Runs the worker on `request` and returns its reply, or throws Error (InputError or OutputError)
 // naming `path`.
 template <class Error>
@@ -70,7 +78,10 @@ wire::Reply runWorker(const QString& path, const QByteArray& request, const Scen
     const QString program = sceneWorkerProgram();
     if (program.isEmpty())
         throw fail(FileError::tr("the scene reader %1 is not installed beside %2")
-                       .arg(QLatin1String(kSceneWorkerName), QCoreApplication::applicationFilePath()));
+                       .arg(QLatin1String(kSceneWorkerName), executableDirectory()));
+    // Checked before forking, for a plainer message than exec's.
+    if (const QFileInfo info(program); !info.isFile() || !info.isExecutable())
+        throw fail(FileError::tr("the scene reader %1 is missing or not executable").arg(program));
     QProcess process;
     process.setProgram(program);
     const qint64 memoryBytes = limits.memoryBytes;
@@ -150,14 +161,23 @@ Result resultOf(const QString& path, wire::Reply reply)
     throw Error(path, FileError::tr("the scene reader's reply is malformed: the wrong kind of reply").toStdString());
 }
 
-QString executableDirectory()
+// The locale's name, guarded: the app sets it on its UI thread, jobs read it on the thread pool.
+std::mutex localeMutex;
+QString workerLocale;
+
+QString sceneWorkerLocale()
 {
-    if (QCoreApplication::instance())
-        return QCoreApplication::applicationDirPath();
-    return QFileInfo(QFileInfo(QStringLiteral("/proc/self/exe")).canonicalFilePath()).path();
+    const std::lock_guard lock(localeMutex);
+    return workerLocale;
 }
 
 } // namespace
+
+void setSceneWorkerLocale(const QLocale& locale)
+{
+    const std::lock_guard lock(localeMutex);
+    workerLocale = locale == QLocale::c() ? QString() : locale.name();
+}
 
 QString sceneWorkerProgram()
 {
@@ -174,14 +194,14 @@ QString sceneWorkerProgram()
 SceneImport importSceneInWorker(const QString& path, const ImportOptions& options, const SceneWorkerLimits& limits,
                                 const std::atomic_bool* cancel)
 {
-    const QByteArray request = wire::encodeRequest(wire::ImportRequest{path, options});
+    const QByteArray request = wire::encodeRequest(wire::ImportRequest{path, sceneWorkerLocale(), options});
     return resultOf<SceneImport, InputError>(path, runWorker<InputError>(path, request, limits, cancel));
 }
 
 ExportReport exportSceneInWorker(const model::Scene& scene, const QString& path, SceneFormat format, double fps,
                                  const SceneWorkerLimits& limits)
 {
-    const QByteArray request = wire::encodeRequest(wire::ExportRequest{path, format, fps, scene});
+    const QByteArray request = wire::encodeRequest(wire::ExportRequest{path, sceneWorkerLocale(), format, fps, scene});
     return resultOf<ExportReport, OutputError>(path, runWorker<OutputError>(path, request, limits, nullptr));
 }
 

@@ -17,6 +17,7 @@
 #include "io/scene_export.h"
 #include "io/scene_import.h"
 
+#include <QLocale>
 #include <QString>
 
 #include <atomic>
@@ -37,6 +38,11 @@ struct SceneWorkerLimits {
     // Killed after this long, hung or not: Assimp's readers have had endless loops on damaged files.
     std::chrono::milliseconds time = std::chrono::minutes(2);
 };
+
+// The language of the worker's messages: Gyre's translation for `locale`, as the app installs it
+// (app/language.h); English for the C locale, which is the default, or a locale Gyre has no
+// translation for. Applies to the imports and exports started from then on, from any thread.
+void setSceneWorkerLocale(const QLocale& locale);
 
 // The worker program: $GYRE_SCENE_WORKER when set; else gyre-scene-worker beside the running program
 // (the installed package, /usr/bin), else in the build tree's src/worker beside src/app and src/cli.

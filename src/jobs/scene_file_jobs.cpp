@@ -29,6 +29,15 @@ auto runCatching(Work work) -> Outcome<decltype(work())>
     }
 }
 
+// Qt runs a continuation at once, inside then(), when the work has already ended, as a worker that
+// cannot start does; posting the outcome keeps it from arriving before startImport or startExport
+// has returned and the caller has shown that the job runs.
+template <class Deliver>
+void later(QObject* context, Deliver deliver)
+{
+    QMetaObject::invokeMethod(context, std::move(deliver), Qt::QueuedConnection);
+}
+
 } // namespace
 
 SceneFileJobs::SceneFileJobs(QObject* parent)
@@ -46,12 +55,14 @@ bool SceneFileJobs::startImport(const QString& path, const ImportOptions& option
     QtConcurrent::run([path, options, limits = limits_, cancel = cancelRunning_] {
         return runCatching([&] { return importSceneInWorker(path, options, limits, cancel.get()); });
     }).then(this, [this, job, path](const Outcome<SceneImport>& outcome) {
-        if (!finishJob(job, path))
-            return;
-        if (outcome.result)
-            emit imported(path, outcome.result);
-        else
-            emit failed(path, outcome.error);
+        later(this, [this, job, path, outcome] {
+            if (!finishJob(job, path))
+                return;
+            if (outcome.result)
+                emit imported(path, outcome.result);
+            else
+                emit failed(path, outcome.error);
+        });
     });
     return true;
 }
@@ -67,12 +78,14 @@ bool SceneFileJobs::startExport(const model::Scene& scene, const QString& path, 
     QtConcurrent::run([scene, path, format, fps, limits = limits_] {
         return runCatching([&] { return exportSceneInWorker(scene, path, format, fps, limits); });
     }).then(this, [this, job, path](const Outcome<ExportReport>& outcome) {
-        if (!finishJob(job, path))
-            return;
-        if (outcome.result)
-            emit exported(path, *outcome.result);
-        else
-            emit failed(path, outcome.error);
+        later(this, [this, job, path, outcome] {
+            if (!finishJob(job, path))
+                return;
+            if (outcome.result)
+                emit exported(path, *outcome.result);
+            else
+                emit failed(path, outcome.error);
+        });
     });
     return true;
 }

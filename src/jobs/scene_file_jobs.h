@@ -2,7 +2,7 @@
 // Scene import and export in gyre-scene-worker (io/scene_worker.h), waited for on Qt's thread pool, so
 // the UI thread never waits on Assimp and a file that crashes Assimp, or exhausts the worker's memory
 // or time limit, ends in `failed` naming the file. The UI thread starts a job and receives its outcome
-// as a signal; one job runs at a time.
+// as a signal, never before the start call has returned; one job runs at a time.
 //
 // Cancelling an import stops its worker and drops what it read: the document never sees it. An export
 // is not cancellable: it writes through temporary files (QSaveFile), so stopping it half-way would

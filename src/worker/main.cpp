@@ -12,6 +12,8 @@
 #include "io/scene_worker.h"
 
 #include <QCoreApplication>
+#include <QLocale>
+#include <QTranslator>
 
 #include <unistd.h>
 
@@ -54,6 +56,14 @@ void writeAll(int fd, const QByteArray& bytes)
     }
 }
 
+// Gyre's translation for the locale the request names, as the app installs it (app/language.cpp).
+void installTranslation(const QString& locale, QTranslator& translator)
+{
+    if (!locale.isEmpty() && translator.load(QLocale(locale), QStringLiteral("gyre"), QStringLiteral("_"),
+                                             QStringLiteral(":/i18n")))
+        QCoreApplication::installTranslator(&translator);
+}
+
 wire::Reply answer(const wire::Request& request)
 {
     try {
@@ -83,6 +93,8 @@ int main(int argc, char* argv[])
     try {
         const QCoreApplication application(argc, argv);
         const wire::Request request = wire::decodeRequest(readAll(STDIN_FILENO));
+        QTranslator translator;
+        installTranslation(std::visit([](const auto& job) { return job.locale; }, request), translator);
         writeAll(replyFd, wire::encodeReply(answer(request)));
         return 0;
     } catch (const std::bad_alloc&) {

@@ -324,7 +324,7 @@ private slots:
         QSignalSpy imported(&window.sceneFiles().jobs(), &jobs::SceneFileJobs::imported);
         QTest::mouseClick(cancel, Qt::LeftButton);
         QCOMPARE(clicked.count(), 1);
-        // The import runs to its end (Assimp cannot be stopped); a loaded machine may take a while.
+        // Cancelling stops the worker process; a loaded machine may still take a while to answer.
         QTRY_COMPARE_WITH_TIMEOUT(cancelled.count() + imported.count(), 1, 30000);
         QCOMPARE(cancelled.count(), 1);
         QVERIFY(!cancel->isVisible());

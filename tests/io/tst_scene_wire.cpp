@@ -116,11 +116,13 @@ private slots:
 
     void exportRequestComesThroughExactly()
     {
-        const ExportRequest sent{QStringLiteral("/tmp/out put.dae"), SceneFormat::Collada, 48.0, richScene()};
+        const ExportRequest sent{QStringLiteral("/tmp/out put.dae"), QStringLiteral("zh_CN"), SceneFormat::Collada, 48.0,
+                                 richScene()};
         const Request request = decodeRequest(encodeRequest(sent));
         const auto* received = std::get_if<ExportRequest>(&request);
         QVERIFY(received);
         QCOMPARE(received->path, sent.path);
+        QCOMPARE(received->locale, sent.locale);
         QCOMPARE(received->format, sent.format);
         QCOMPARE(received->fps, sent.fps);
         QCOMPARE(model::projectJson(received->scene), model::projectJson(sent.scene));
@@ -128,8 +130,10 @@ private slots:
 
     void importRequestAndOtherRepliesComeThrough()
     {
-        const Request request = decodeRequest(encodeRequest(ImportRequest{QStringLiteral("a.bvh"), {3}}));
+        const Request request =
+            decodeRequest(encodeRequest(ImportRequest{QStringLiteral("a.bvh"), QStringLiteral("de_DE"), {3}}));
         QCOMPARE(std::get<ImportRequest>(request).path, QStringLiteral("a.bvh"));
+        QCOMPARE(std::get<ImportRequest>(request).locale, QStringLiteral("de_DE"));
         QCOMPARE(std::get<ImportRequest>(request).options.animationIndex, std::size_t{3});
 
         const ExportReport report{{QStringLiteral("a.bin"), QStringLiteral("a.gltf")}, {QStringLiteral("w")}};
@@ -152,7 +156,7 @@ private slots:
 
     void aRequestIsNotAReplyNorTheOtherWayRound()
     {
-        QVERIFY_THROWS_EXCEPTION(WireError, decodeReply(encodeRequest(ImportRequest{QStringLiteral("a"), {}})));
+        QVERIFY_THROWS_EXCEPTION(WireError, decodeReply(encodeRequest(ImportRequest{QStringLiteral("a"), {}, {}})));
         QVERIFY_THROWS_EXCEPTION(WireError, decodeRequest(encodeReply(ExportReport{})));
         QByteArray otherVersion = encodeReply(ExportReport{});
         otherVersion[4] = static_cast<char>(kVersion + 1);
