@@ -86,6 +86,17 @@ wire::Reply runWorker(const QString& path, const QByteArray& request, const Scen
     process.setProgram(program);
     const qint64 memoryBytes = limits.memoryBytes;
     process.setChildProcessModifier([memoryBytes] { limitAddressSpace(memoryBytes); });
+#if defined(__SANITIZE_ADDRESS__)
+    // A sanitizer's report ends a process with status 1, which would read as a failure of the worker
+    // rather than the crash it stands for: ended by abort(), its memory errors are crashes here too.
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    for (const char* name : {"ASAN_OPTIONS", "UBSAN_OPTIONS"}) {
+        const QString options = environment.value(QLatin1String(name));
+        const QLatin1String separator(options.isEmpty() ? "" : ":");
+        environment.insert(QLatin1String(name), options + separator + QStringLiteral("abort_on_error=1"));
+    }
+    process.setProcessEnvironment(environment);
+#endif
     process.start(QIODevice::ReadWrite);
     if (!process.waitForStarted())
         throw fail(FileError::tr("the scene reader %1 cannot be started: %2").arg(program, process.errorString()));

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <new>
 #include <variant>
@@ -96,7 +97,10 @@ int main(int argc, char* argv[])
         QTranslator translator;
         installTranslation(std::visit([](const auto& job) { return job.locale; }, request), translator);
         writeAll(replyFd, wire::encodeReply(answer(request)));
-        return 0;
+        // The process is done: freeing what the import holds (tens of megabytes of keys and Assimp's
+        // scene) would only cost time.
+        std::fflush(stderr);
+        std::_Exit(0);
     } catch (const std::bad_alloc&) {
         exitOutOfMemory();
     } catch (const std::exception& error) {

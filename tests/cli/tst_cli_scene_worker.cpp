@@ -34,7 +34,8 @@ private slots:
         const CliRun run = runCli(arguments);
         QVERIFY(run.exitedNormally);
         QCOMPARE(run.exitCode, 1);
-        QVERIFY2(run.err.startsWith("gyre-cli: " + in + ": the scene reader crashed on this file (signal 11, SIGSEGV)") &&
+        QVERIFY2(run.err.startsWith("gyre-cli: " + in + ": the scene reader crashed on this file (signal " +
+                                    kCrashSignal) &&
                      run.err.count('\n') == 1,
                  qPrintable(run.err));
         QCOMPARE(run.out, QString());

@@ -28,6 +28,14 @@ inline QByteArray colladaWithFloatCount(const char* count)
 }
 
 inline QByteArray crashingCollada() { return colladaWithFloatCount("-0"); }
+
+// How the worker ends on crashingCollada(): by the segmentation fault, or where AddressSanitizer
+// reports it first, by the abort() that ends its report (io/scene_worker.cpp).
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr char kCrashSignal[] = "6, SIGABRT)";
+#else
+inline constexpr char kCrashSignal[] = "11, SIGSEGV)";
+#endif
 inline QByteArray hugeCollada() { return colladaWithFloatCount("1500000000"); }
 
 } // namespace gyre::test
