@@ -21,7 +21,7 @@ package="$(ls "$build"/gyre_*.deb)"
 echo "package-test: built $package"
 
 contents="$(dpkg-deb --contents "$package")"
-expected=(./usr/bin/gyre ./usr/bin/gyre-cli "./usr/share/applications/$app_id.desktop"
+expected=(./usr/bin/gyre ./usr/bin/gyre-cli ./usr/bin/gyre-scene-worker "./usr/share/applications/$app_id.desktop"
     "./usr/share/metainfo/$app_id.metainfo.xml" "./usr/share/mime/packages/$app_id.xml"
     "./usr/share/icons/hicolor/scalable/apps/$app_id.svg" ./usr/share/doc/gyre/user-guide.md
     ./usr/share/doc/gyre/images/guide-window.png)
@@ -63,11 +63,14 @@ version="$(dpkg-deb --field "$package" Version)"
 in_root sh -c 'printf "time,qw,qx,qy,qz\n0,1,0,0,0\n1,0,0,0,1\n" >/tmp/keys.csv'
 in_root gyre-cli interpolate /tmp/keys.csv -o /tmp/frames.csv --method slerp --fps 10
 [[ "$(in_root sh -c 'grep -c "^[0-9]" /tmp/frames.csv')" -eq 11 ]] || fail "the installed gyre-cli wrote no 11 frames"
+# Scene files are read by gyre-scene-worker, which the installed gyre-cli must find beside itself.
+in_root sh -c 'printf "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n" >/tmp/triangle.obj'
+in_root gyre-cli info /tmp/triangle.obj | grep -q "^1 object" || fail "the installed gyre-cli cannot read a scene file"
 
 in_root install -d -m 700 /tmp/runtime
 in_root xvfb-run -a -s "-screen 0 1600x1000x24" env QT_QPA_PLATFORM=xcb gyre --screenshot /tmp/window.png --delay 4000 \
     || fail "the installed gyre did not start"
 "${sudo_cmd[@]}" cp "$root/tmp/window.png" "$build/installed-gyre.png"
 [[ -s "$build/installed-gyre.png" ]] || fail "the installed gyre drew no window"
-echo "package-test: $package installs on a clean Debian 12, and gyre and gyre-cli start there;"
+echo "package-test: $package installs on a clean Debian 12, and gyre and gyre-cli start there (gyre-cli reads a scene through gyre-scene-worker);"
 echo "package-test: the installed gyre's window is in $build/installed-gyre.png."

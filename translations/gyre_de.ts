@@ -1270,6 +1270,66 @@
         <source>mesh index %1 is beyond its %2 positions</source>
         <translation>der Mesh-Index %1 liegt jenseits seiner %2 Positionen</translation>
     </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="33"/>
+        <source>%1 GiB</source>
+        <translation>%1 GiB</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="34"/>
+        <source>%1 MiB</source>
+        <translation>%1 MiB</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="80"/>
+        <source>the scene reader %1 is not installed beside %2</source>
+        <translation>das Szenen-Leseprogramm %1 ist nicht neben %2 installiert</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="84"/>
+        <source>the scene reader %1 is missing or not executable</source>
+        <translation>das Szenen-Leseprogramm %1 fehlt oder ist nicht ausführbar</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="91"/>
+        <source>the scene reader %1 cannot be started: %2</source>
+        <translation>das Szenen-Leseprogramm %1 lässt sich nicht starten: %2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="109"/>
+        <source>the scene reader took longer than %1 s and was stopped; the file may be damaged or too large</source>
+        <translation>das Szenen-Leseprogramm brauchte länger als %1 s und wurde angehalten; die Datei ist vielleicht beschädigt oder zu groß</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="118"/>
+        <source>the scene reader&apos;s reply is larger than %1</source>
+        <translation>die Antwort des Szenen-Leseprogramms ist größer als %1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="125"/>
+        <source>the scene reader crashed on this file (signal %1, %2)%3</source>
+        <translation>das Szenen-Leseprogramm ist an dieser Datei abgestürzt (Signal %1, %2)%3</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="129"/>
+        <source>the scene reader needed more than %1 of memory for this file and was stopped</source>
+        <translation>das Szenen-Leseprogramm brauchte für diese Datei mehr als %1 Speicher und wurde angehalten</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="132"/>
+        <source>the scene reader failed (exit status %1)%2</source>
+        <translation>das Szenen-Leseprogramm ist gescheitert (Exit-Status %1)%2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="138"/>
+        <source>the scene reader&apos;s reply is malformed: %1</source>
+        <translation>die Antwort des Szenen-Leseprogramms ist fehlerhaft: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="161"/>
+        <source>the scene reader&apos;s reply is malformed: the wrong kind of reply</source>
+        <translation>die Antwort des Szenen-Leseprogramms ist fehlerhaft: eine Antwort der falschen Art</translation>
+    </message>
 </context>
 <context>
     <name>gyre::app::FitController</name>
@@ -2233,7 +2293,7 @@
 <context>
     <name>gyre::app::Translations</name>
     <message>
-        <location filename="../src/app/language.cpp" line="57"/>
+        <location filename="../src/app/language.cpp" line="59"/>
         <source>Gyre does not speak the language &quot;%1&quot; and speaks English instead.</source>
         <translation>Gyre spricht die Sprache „%1“ nicht und spricht stattdessen Englisch.</translation>
     </message>

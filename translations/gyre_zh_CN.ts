@@ -1270,6 +1270,66 @@
         <source>mesh index %1 is beyond its %2 positions</source>
         <translation>网格索引 %1 超出其 %2 个位置</translation>
     </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="33"/>
+        <source>%1 GiB</source>
+        <translation>%1 GiB</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="34"/>
+        <source>%1 MiB</source>
+        <translation>%1 MiB</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="80"/>
+        <source>the scene reader %1 is not installed beside %2</source>
+        <translation>场景读取程序 %1 未安装在 %2 中</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="84"/>
+        <source>the scene reader %1 is missing or not executable</source>
+        <translation>场景读取程序 %1 不存在或不可执行</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="91"/>
+        <source>the scene reader %1 cannot be started: %2</source>
+        <translation>无法启动场景读取程序 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="109"/>
+        <source>the scene reader took longer than %1 s and was stopped; the file may be damaged or too large</source>
+        <translation>场景读取程序运行超过 %1 秒，已被停止；文件可能已损坏或过大</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="118"/>
+        <source>the scene reader&apos;s reply is larger than %1</source>
+        <translation>场景读取程序的回复大于 %1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="125"/>
+        <source>the scene reader crashed on this file (signal %1, %2)%3</source>
+        <translation>场景读取程序读取此文件时崩溃（信号 %1，%2）%3</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="129"/>
+        <source>the scene reader needed more than %1 of memory for this file and was stopped</source>
+        <translation>场景读取程序读取此文件需要超过 %1 的内存，已被停止</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="132"/>
+        <source>the scene reader failed (exit status %1)%2</source>
+        <translation>场景读取程序失败（退出状态 %1）%2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="138"/>
+        <source>the scene reader&apos;s reply is malformed: %1</source>
+        <translation>场景读取程序的回复格式错误：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_worker.cpp" line="161"/>
+        <source>the scene reader&apos;s reply is malformed: the wrong kind of reply</source>
+        <translation>场景读取程序的回复格式错误：回复类型不对</translation>
+    </message>
 </context>
 <context>
     <name>gyre::app::FitController</name>
@@ -2231,7 +2291,7 @@
 <context>
     <name>gyre::app::Translations</name>
     <message>
-        <location filename="../src/app/language.cpp" line="57"/>
+        <location filename="../src/app/language.cpp" line="59"/>
         <source>Gyre does not speak the language &quot;%1&quot; and speaks English instead.</source>
         <translation>Gyre 不支持语言“%1”，将改用英语。</translation>
     </message>

@@ -1,5 +1,7 @@
 #include "app/language.h"
 
+#include "io/scene_worker.h"
+
 #include <QLibraryInfo>
 #include <QSettings>
 #include <QTranslator>
@@ -62,6 +64,7 @@ Translations::Translations(const QString& code)
 
 Translations::~Translations()
 {
+    setSceneWorkerLocale(QLocale::c());
     for (const std::unique_ptr<QTranslator>& translator : translators_)
         QCoreApplication::removeTranslator(translator.get());
 }
@@ -79,6 +82,8 @@ void Translations::install(const QLocale& locale)
     };
     load(QStringLiteral("qtbase"), QLibraryInfo::path(QLibraryInfo::TranslationsPath));
     load(QStringLiteral("gyre"), QStringLiteral(":/i18n"));
+    // The scene worker's messages in the same language.
+    setSceneWorkerLocale(locale);
 }
 
 } // namespace gyre::app

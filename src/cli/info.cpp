@@ -4,6 +4,7 @@
 #include "cli/verbs.h"
 #include "core/number_text.h"
 #include "io/scene_import.h"
+#include "io/scene_worker.h"
 #include "model/project_file.h"
 #include "model/scene_queries.h"
 
@@ -59,7 +60,7 @@ void runInfo(const QStringList& arguments)
         scene = model::readProject(path);
         text = path.toStdString() + ": Gyre project\n";
     } else {
-        SceneImport imported = importScene(path);
+        SceneImport imported = importSceneInWorker(path);
         scene = std::move(imported.scene);
         text = path.toStdString() + ": scene\n" + animationLines(imported.animations);
     }

@@ -1,5 +1,5 @@
-// gyre-cli import, export and bake: scenes in and out through Assimp, and a project's motion at its
-// frames.
+// gyre-cli import, export and bake: scenes in and out through Assimp (in gyre-scene-worker), and a
+// project's motion at its frames.
 
 #include "cli/command_line.h"
 #include "cli/tracked_object.h"
@@ -7,6 +7,7 @@
 #include "io/pose_csv.h"
 #include "io/scene_export.h"
 #include "io/scene_import.h"
+#include "io/scene_worker.h"
 #include "model/project_file.h"
 #include "model/track_evaluation.h"
 
@@ -44,7 +45,7 @@ void runImport(const QStringList& arguments)
     ImportOptions options;
     if (commandLine.isSet(kAnimationOption))
         options.animationIndex = static_cast<std::size_t>(commandLine.nonNegativeInteger(kAnimationOption));
-    const SceneImport imported = importScene(commandLine.inputPath(), options);
+    const SceneImport imported = importSceneInWorker(commandLine.inputPath(), options);
     warnAll(imported.warnings);
     model::writeProject(commandLine.outputPath(), imported.scene);
 }
@@ -60,7 +61,7 @@ void runExport(const QStringList& arguments)
     const std::optional<double> fps =
         commandLine.isSet(kFpsOption) ? std::optional(commandLine.positiveNumber(kFpsOption)) : std::nullopt;
     const model::Scene scene = model::readProject(commandLine.inputPath());
-    warnAll(exportScene(scene, commandLine.outputPath(), *format, fps.value_or(scene.fps)).warnings);
+    warnAll(exportSceneInWorker(scene, commandLine.outputPath(), *format, fps.value_or(scene.fps)).warnings);
 }
 
 void runBake(const QStringList& arguments)

@@ -22,9 +22,20 @@ auto runCatching(Work work) -> Outcome<decltype(work())>
 {
     try {
         return {std::make_shared<const decltype(work())>(work()), QString()};
+    } catch (const SceneWorkerCancelled&) {
+        return {}; // the job has already been counted as cancelled
     } catch (const std::exception& error) {
         return {nullptr, QString::fromUtf8(error.what())};
     }
+}
+
+// Qt runs a continuation at once, inside then(), when the work has already ended, as a worker that
+// cannot start does; posting the outcome keeps it from arriving before startImport or startExport
+// has returned and the caller has shown that the job runs.
+template <class Deliver>
+void later(QObject* context, Deliver deliver)
+{
+    QMetaObject::invokeMethod(context, std::move(deliver), Qt::QueuedConnection);
 }
 
 } // namespace
@@ -40,8 +51,11 @@ bool SceneFileJobs::startImport(const QString& path, const ImportOptions& option
         return false;
     busy_ = true;
     const std::uint64_t job = ++job_;
-    QtConcurrent::run([path, options] { return runCatching([&] { return importScene(path, options); }); })
-        .then(this, [this, job, path](const Outcome<SceneImport>& outcome) {
+    cancelRunning_ = std::make_shared<std::atomic_bool>(false);
+    QtConcurrent::run([path, options, limits = limits_, cancel = cancelRunning_] {
+        return runCatching([&] { return importSceneInWorker(path, options, limits, cancel.get()); });
+    }).then(this, [this, job, path](const Outcome<SceneImport>& outcome) {
+        later(this, [this, job, path, outcome] {
             if (!finishJob(job, path))
                 return;
             if (outcome.result)
@@ -49,6 +63,7 @@ bool SceneFileJobs::startImport(const QString& path, const ImportOptions& option
             else
                 emit failed(path, outcome.error);
         });
+    });
     return true;
 }
 
@@ -60,23 +75,28 @@ bool SceneFileJobs::startExport(const model::Scene& scene, const QString& path, 
     const std::uint64_t job = ++job_;
     // The scene is copied: the document may change while the export runs. Meshes are shared, not
     // copied, and never change once made.
-    QtConcurrent::run([scene, path, format, fps] {
-        return runCatching([&] { return exportScene(scene, path, format, fps); });
+    QtConcurrent::run([scene, path, format, fps, limits = limits_] {
+        return runCatching([&] { return exportSceneInWorker(scene, path, format, fps, limits); });
     }).then(this, [this, job, path](const Outcome<ExportReport>& outcome) {
-        if (!finishJob(job, path))
-            return;
-        if (outcome.result)
-            emit exported(path, *outcome.result);
-        else
-            emit failed(path, outcome.error);
+        later(this, [this, job, path, outcome] {
+            if (!finishJob(job, path))
+                return;
+            if (outcome.result)
+                emit exported(path, *outcome.result);
+            else
+                emit failed(path, outcome.error);
+        });
     });
     return true;
 }
 
 void SceneFileJobs::cancelImport()
 {
-    if (busy_)
-        ++job_;
+    if (!busy_)
+        return;
+    ++job_;
+    if (cancelRunning_)
+        cancelRunning_->store(true);
 }
 
 bool SceneFileJobs::finishJob(std::uint64_t job, const QString& path)

@@ -17,6 +17,8 @@
 #include "io/scene_export.h"
 #include "io/scene_import.h"
 #include "model/scene.h"
+#include "io/scene_worker.h"
+#include "built_scene_worker.h"
 
 #include <benchmark/benchmark.h>
 
@@ -240,6 +242,16 @@ void BM_ImportBvh(benchmark::State& state)
 }
 BENCHMARK(BM_ImportBvh)->Unit(benchmark::kMillisecond);
 
+// The same import as the app and gyre-cli run it: in gyre-scene-worker, the scene sent back over a
+// pipe and checked on arrival.
+void BM_ImportBvhInWorker(benchmark::State& state)
+{
+    gyre::test::useBuiltSceneWorker();
+    for (auto _ : state)
+        benchmark::DoNotOptimize(gyre::importSceneInWorker(largeBvh()));
+}
+BENCHMARK(BM_ImportBvhInWorker)->Unit(benchmark::kMillisecond);
+
 // The imported motion baked at 120 fps (every key a frame) and written as glb.
 void BM_ExportGlb(benchmark::State& state)
 {
@@ -282,6 +294,17 @@ void BM_AutosaveSnapshot(benchmark::State& state)
     }
 }
 BENCHMARK(BM_AutosaveSnapshot)->Arg(4500)->Arg(72000)->Unit(benchmark::kMicrosecond);
+
+void BM_ExportGlbInWorker(benchmark::State& state)
+{
+    gyre::test::useBuiltSceneWorker();
+    const gyre::model::Scene scene = gyre::importScene(largeBvh()).scene;
+    QTemporaryDir folder;
+    const QString path = folder.filePath(QStringLiteral("large.glb"));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(gyre::exportSceneInWorker(scene, path, gyre::SceneFormat::Glb, 120.0));
+}
+BENCHMARK(BM_ExportGlbInWorker)->Unit(benchmark::kMillisecond);
 
 } // namespace
 

@@ -1,0 +1,558 @@
+#include "io/scene_wire.h"
+
+#include "model/value_checks.h"
+
+#include <QtEndian>
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace gyre::wire {
+
+namespace {
+
+enum class Kind : quint8 { ImportRequest = 1, ExportRequest = 2, SceneImport = 3, ExportReport = 4, Failure = 5 };
+
+// The numbers of one keyframe: time, orientation w x y z, position x y z.
+constexpr std::size_t kKeyNumbers = 8;
+// Of a fitted curve's control point: time, value w x y z, derivative w x y z.
+constexpr std::size_t kControlPointNumbers = 9;
+
+// ---- writing --------------------------------------------------------------------------------------
+
+class Writer {
+public:
+    template <class Value>
+    void put(Value value)
+    {
+        static_assert(std::is_arithmetic_v<Value>);
+        char bytes[sizeof(Value)];
+        qToLittleEndian(value, bytes);
+        bytes_.append(bytes, sizeof(Value));
+    }
+
+    void count(std::size_t n) { put<quint64>(n); }
+
+    template <class Enum>
+    void enumeration(Enum value)
+    {
+        put(static_cast<std::underlying_type_t<Enum>>(value));
+    }
+
+    void string(const QString& text)
+    {
+        const QByteArray utf8 = text.toUtf8();
+        count(static_cast<std::size_t>(utf8.size()));
+        bytes_.append(utf8);
+    }
+
+    // A count, then the values as one block.
+    template <class Value>
+    void block(const Value* values, std::size_t n)
+    {
+        count(n);
+        if (n == 0)
+            return;
+        const qsizetype start = bytes_.size();
+        bytes_.resize(start + static_cast<qsizetype>(n * sizeof(Value)));
+        qToLittleEndian<Value>(values, static_cast<qsizetype>(n), bytes_.data() + start);
+    }
+
+    template <class Value>
+    void block(const std::vector<Value>& values)
+    {
+        block(values.data(), values.size());
+    }
+
+    QByteArray take() { return std::move(bytes_); }
+
+private:
+    QByteArray bytes_;
+};
+
+void header(Writer& out, Kind kind)
+{
+    out.put(kMagic);
+    out.put(kVersion);
+    out.enumeration(kind);
+}
+
+template <int Rows>
+void appendAll(std::vector<double>& numbers, const Eigen::Matrix<double, Rows, 1>& v)
+{
+    numbers.insert(numbers.end(), v.data(), v.data() + Rows);
+}
+
+void appendQuaternion(std::vector<double>& numbers, const Eigen::Quaterniond& q)
+{
+    numbers.insert(numbers.end(), {q.w(), q.x(), q.y(), q.z()});
+}
+
+void writeVectors(Writer& out, const std::vector<Eigen::Vector3f>& vectors)
+{
+    out.block(vectors.empty() ? nullptr : vectors.front().data(), vectors.size() * 3);
+}
+
+void writeMesh(Writer& out, const model::Mesh& mesh)
+{
+    writeVectors(out, mesh.positions);
+    writeVectors(out, mesh.normals);
+    out.block(mesh.indices);
+}
+
+void writeSketch(Writer& out, const model::SketchState& sketch)
+{
+    out.count(sketch.directionStrokes.size());
+    for (const model::DirectionStroke& stroke : sketch.directionStrokes) {
+        std::vector<double> points;
+        for (const Eigen::Vector3d& point : stroke.points)
+            appendAll(points, point);
+        out.block(points);
+        out.block(stroke.times);
+    }
+    std::vector<double> magnitude;
+    for (const model::MagnitudePoint& point : sketch.magnitude)
+        magnitude.insert(magnitude.end(), {point.time, point.magnitude});
+    out.block(magnitude);
+    std::vector<double> pattern;
+    for (const Eigen::Vector2d& point : sketch.pattern)
+        appendAll(pattern, point);
+    out.block(pattern);
+    out.put<qint32>(sketch.patternRepeat);
+    out.put<quint8>(sketch.window.has_value());
+    out.put(sketch.window ? sketch.window->first : 0.0);
+    out.put(sketch.window ? sketch.window->second : 0.0);
+    out.put(sketch.alpha);
+    out.put(sketch.beta);
+    out.put(sketch.delta);
+    std::vector<double> curve;
+    for (const HermiteControlPoint& point : sketch.fittedCurve) {
+        curve.push_back(point.time);
+        appendQuaternion(curve, point.value);
+        appendQuaternion(curve, point.derivative);
+    }
+    out.block(curve);
+}
+
+void writeTrack(Writer& out, const model::MotionTrack& track)
+{
+    out.string(QString::fromLatin1(interpolationMethodName(track.interpolation)));
+    out.string(QString::fromLatin1(subdivisionSchemeName(track.subdivision.scheme)));
+    out.put<qint32>(track.subdivision.levels);
+    out.put<quint8>(track.subdivision.cyclic);
+    out.put<quint8>(track.subdivision.decoupled);
+    std::vector<double> numbers;
+    numbers.reserve(track.keys.size() * kKeyNumbers);
+    std::vector<quint8> constrained;
+    constrained.reserve(track.keys.size());
+    for (const model::Keyframe& key : track.keys) {
+        numbers.push_back(key.time);
+        appendQuaternion(numbers, key.pose.orientation);
+        appendAll(numbers, key.pose.position);
+        constrained.push_back(key.constrained);
+    }
+    out.block(numbers);
+    out.block(constrained);
+    writeSketch(out, track.sketch);
+}
+
+void writeScene(Writer& out, const model::Scene& scene)
+{
+    out.put(scene.fps);
+    out.put(scene.startTime);
+    out.put(scene.endTime);
+    out.put(scene.currentTime);
+    // Each mesh once, however many objects share it; objects name it by 1-based index, 0 for none.
+    std::map<const model::Mesh*, quint64> meshIndex;
+    std::vector<const model::Mesh*> meshes;
+    for (const model::SceneObject& object : scene.objects)
+        if (object.mesh && meshIndex.emplace(object.mesh.get(), meshes.size() + 1).second)
+            meshes.push_back(object.mesh.get());
+    out.count(meshes.size());
+    for (const model::Mesh* mesh : meshes)
+        writeMesh(out, *mesh);
+    out.count(scene.objects.size());
+    for (const model::SceneObject& object : scene.objects) {
+        out.put<quint64>(object.id);
+        out.string(object.name);
+        out.put<quint64>(object.parent);
+        out.put<quint64>(object.mesh ? meshIndex.at(object.mesh.get()) : 0);
+        writeTrack(out, object.track);
+    }
+}
+
+void writeStrings(Writer& out, const QStringList& strings)
+{
+    out.count(static_cast<std::size_t>(strings.size()));
+    for (const QString& text : strings)
+        out.string(text);
+}
+
+// ---- reading --------------------------------------------------------------------------------------
+
+class Reader {
+public:
+    explicit Reader(const QByteArray& bytes) : bytes_(bytes) {}
+
+    template <class Value>
+    Value get()
+    {
+        static_assert(std::is_arithmetic_v<Value>);
+        require(sizeof(Value), "a number");
+        const Value value = qFromLittleEndian<Value>(bytes_.constData() + at_);
+        at_ += sizeof(Value);
+        return value;
+    }
+
+    bool flag()
+    {
+        const auto value = get<quint8>();
+        if (value > 1)
+            throw WireError("a flag is " + std::to_string(value) + ", neither 0 nor 1");
+        return value == 1;
+    }
+
+    // A count of items of at least `itemBytes` each, which the bytes left must be able to hold: a
+    // count can never make the reader allocate more than the message's own size.
+    std::size_t count(std::size_t itemBytes, const char* what)
+    {
+        const auto n = get<quint64>();
+        if (n > left() / itemBytes)
+            throw WireError(std::string(what) + ": a count of " + std::to_string(n) + " does not fit in the " +
+                            std::to_string(left()) + " bytes left");
+        return static_cast<std::size_t>(n);
+    }
+
+    QString string(const char* what)
+    {
+        const std::size_t n = count(1, what);
+        const QString text = QString::fromUtf8(bytes_.constData() + at_, static_cast<qsizetype>(n));
+        at_ += n;
+        return text;
+    }
+
+    template <class Value>
+    std::vector<Value> block(const char* what, std::size_t multipleOf = 1)
+    {
+        const std::size_t n = count(sizeof(Value), what);
+        if (n % multipleOf != 0)
+            throw WireError(std::string(what) + ": " + std::to_string(n) + " numbers are not whole items of " +
+                            std::to_string(multipleOf));
+        std::vector<Value> values(n);
+        if (n > 0)
+            qFromLittleEndian<Value>(bytes_.constData() + at_, static_cast<qsizetype>(n), values.data());
+        at_ += n * sizeof(Value);
+        return values;
+    }
+
+    void requireEnd() const
+    {
+        if (left() != 0)
+            throw WireError(std::to_string(left()) + " bytes after the end of the message");
+    }
+
+private:
+    std::size_t left() const { return static_cast<std::size_t>(bytes_.size()) - at_; }
+
+    void require(std::size_t n, const char* what) const
+    {
+        if (n > left())
+            throw WireError(std::string("the message ends inside ") + what);
+    }
+
+    const QByteArray& bytes_;
+    std::size_t at_ = 0;
+};
+
+Kind headerIn(Reader& in)
+{
+    if (in.get<quint32>() != kMagic)
+        throw WireError("not a gyre-scene-worker message");
+    if (const auto version = in.get<quint16>(); version != kVersion)
+        throw WireError("wire version " + std::to_string(version) + ", expected " + std::to_string(kVersion));
+    const auto kind = in.get<quint8>();
+    if (kind < 1 || kind > 5)
+        throw WireError("unknown message kind " + std::to_string(kind));
+    return static_cast<Kind>(kind);
+}
+
+template <class Enum, std::size_t N>
+Enum named(Reader& in, const NameTable<Enum, N>& names, const char* what)
+{
+    const QString name = in.string(what);
+    if (const std::optional<Enum> value = valueNamed(names, name.toStdString()))
+        return *value;
+    throw WireError(std::string(what) + ": unknown name '" + name.toStdString() + "'");
+}
+
+// A value check of value_checks.h, its std::invalid_argument said about `what`.
+template <class Check>
+auto checked(const std::string& what, Check check) -> decltype(check())
+{
+    try {
+        return check();
+    } catch (const std::invalid_argument& problem) {
+        throw WireError(what + ": " + problem.what());
+    }
+}
+
+std::vector<Eigen::Vector3f> vectorsIn(Reader& in, const char* what)
+{
+    const std::vector<float> numbers = in.block<float>(what, 3);
+    std::vector<Eigen::Vector3f> vectors(numbers.size() / 3);
+    std::memcpy(static_cast<void*>(vectors.data()), numbers.data(), numbers.size() * sizeof(float));
+    return vectors;
+}
+
+std::shared_ptr<const model::Mesh> meshIn(Reader& in)
+{
+    auto mesh = std::make_shared<model::Mesh>();
+    mesh->positions = vectorsIn(in, "mesh positions");
+    mesh->normals = vectorsIn(in, "mesh normals");
+    mesh->indices = in.block<std::uint32_t>("mesh indices");
+    checked("mesh", [&] { model::checkMesh(*mesh); });
+    return mesh;
+}
+
+Eigen::Quaterniond quaternionAt(const double* numbers) { return {numbers[0], numbers[1], numbers[2], numbers[3]}; }
+
+model::SketchState sketchIn(Reader& in)
+{
+    model::SketchState sketch;
+    // Each stroke is at least its two counts.
+    sketch.directionStrokes.resize(in.count(16, "direction strokes"));
+    for (model::DirectionStroke& stroke : sketch.directionStrokes) {
+        const std::vector<double> points = in.block<double>("stroke points", 3);
+        for (std::size_t i = 0; i < points.size(); i += 3)
+            stroke.points.emplace_back(points[i], points[i + 1], points[i + 2]);
+        stroke.times = in.block<double>("stroke times");
+    }
+    const std::vector<double> magnitude = in.block<double>("magnitude curve", 2);
+    for (std::size_t i = 0; i < magnitude.size(); i += 2)
+        sketch.magnitude.push_back({magnitude[i], magnitude[i + 1]});
+    const std::vector<double> pattern = in.block<double>("pattern", 2);
+    for (std::size_t i = 0; i < pattern.size(); i += 2)
+        sketch.pattern.emplace_back(pattern[i], pattern[i + 1]);
+    sketch.patternRepeat = in.get<qint32>();
+    const bool hasWindow = in.flag();
+    const auto windowStart = in.get<double>();
+    const auto windowEnd = in.get<double>();
+    if (hasWindow)
+        sketch.window = std::pair{windowStart, windowEnd};
+    sketch.alpha = in.get<double>();
+    sketch.beta = in.get<double>();
+    sketch.delta = in.get<double>();
+    const std::vector<double> curve = in.block<double>("fitted curve", kControlPointNumbers);
+    for (std::size_t i = 0; i < curve.size(); i += kControlPointNumbers)
+        sketch.fittedCurve.push_back({curve[i], quaternionAt(&curve[i + 1]), quaternionAt(&curve[i + 5])});
+    return sketch;
+}
+
+model::MotionTrack trackIn(Reader& in, const std::string& what)
+{
+    model::MotionTrack track;
+    track.interpolation = named(in, kInterpolationMethodNames, "interpolation");
+    track.subdivision.scheme = named(in, kSubdivisionSchemeNames, "subdivision scheme");
+    track.subdivision.levels = in.get<qint32>();
+    track.subdivision.cyclic = in.flag();
+    track.subdivision.decoupled = in.flag();
+    const std::vector<double> numbers = in.block<double>("keyframes", kKeyNumbers);
+    const std::vector<quint8> constrained = in.block<quint8>("keyframe flags");
+    if (constrained.size() * kKeyNumbers != numbers.size())
+        throw WireError(what + ": " + std::to_string(constrained.size()) + " flags for " +
+                        std::to_string(numbers.size() / kKeyNumbers) + " keyframes");
+    track.keys.resize(constrained.size());
+    for (std::size_t k = 0; k < track.keys.size(); ++k) {
+        const double* key = &numbers[k * kKeyNumbers];
+        if (constrained[k] > 1)
+            throw WireError(what + ": keyframe " + std::to_string(k) + " has a flag that is neither 0 nor 1");
+        track.keys[k] = {key[0], Pose{quaternionAt(key + 1), {key[5], key[6], key[7]}}, constrained[k] == 1};
+    }
+    track.sketch = sketchIn(in);
+    checked(what, [&] { model::checkTrack(track); });
+    return track;
+}
+
+model::Scene sceneIn(Reader& in)
+{
+    model::Scene scene;
+    scene.fps = in.get<double>();
+    scene.startTime = in.get<double>();
+    scene.endTime = in.get<double>();
+    scene.currentTime = in.get<double>();
+    checked("scene", [&] {
+        model::frameRate(scene.fps);
+        model::finiteNumber(scene.currentTime);
+        if (!(model::finiteNumber(scene.endTime) >= model::finiteNumber(scene.startTime)))
+            throw std::invalid_argument("the end time comes before the start time");
+    });
+    // A mesh is at least its three counts.
+    std::vector<std::shared_ptr<const model::Mesh>> meshes(in.count(24, "meshes"));
+    for (auto& mesh : meshes)
+        mesh = meshIn(in);
+    // Ids are unique and nonzero; a parent is an object that came before.
+    std::map<model::ObjectId, std::size_t> seen;
+    // An object is at least its ids, name, track names, settings, counts and sketch numbers.
+    scene.objects.resize(in.count(128, "objects"));
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        model::SceneObject& object = scene.objects[i];
+        const std::string what = "object " + std::to_string(i);
+        object.id = in.get<quint64>();
+        object.name = in.string("object name");
+        object.parent = in.get<quint64>();
+        const auto mesh = in.get<quint64>();
+        if (object.id == model::kNoObject || !seen.emplace(object.id, i).second)
+            throw WireError(what + ": the id " + std::to_string(object.id) + " is zero or taken");
+        if (object.parent != model::kNoObject && (object.parent == object.id || !seen.contains(object.parent)))
+            throw WireError(what + ": its parent " + std::to_string(object.parent) + " is not an object before it");
+        if (mesh > meshes.size())
+            throw WireError(what + ": there is no mesh " + std::to_string(mesh));
+        if (mesh > 0)
+            object.mesh = meshes[mesh - 1];
+        object.track = trackIn(in, what);
+        scene.nextObjectId = std::max(scene.nextObjectId, object.id + 1);
+    }
+    return scene;
+}
+
+QStringList stringsIn(Reader& in, const char* what)
+{
+    QStringList strings;
+    const std::size_t n = in.count(8, what);
+    for (std::size_t i = 0; i < n; ++i)
+        strings << in.string(what);
+    return strings;
+}
+
+QString pathIn(Reader& in)
+{
+    QString path = in.string("path");
+    if (path.isEmpty())
+        throw WireError("the path is empty");
+    return path;
+}
+
+} // namespace
+
+QByteArray encodeRequest(const Request& request)
+{
+    Writer out;
+    if (const auto* import = std::get_if<ImportRequest>(&request)) {
+        header(out, Kind::ImportRequest);
+        out.string(import->path);
+        out.string(import->locale);
+        out.put<quint64>(import->options.animationIndex);
+    } else {
+        const auto& exportRequest = std::get<ExportRequest>(request);
+        header(out, Kind::ExportRequest);
+        out.string(exportRequest.path);
+        out.string(exportRequest.locale);
+        out.string(QString::fromLatin1(nameOf(kSceneFormatNames, exportRequest.format)));
+        out.put(exportRequest.fps);
+        writeScene(out, exportRequest.scene);
+    }
+    return out.take();
+}
+
+Request decodeRequest(const QByteArray& bytes)
+{
+    Reader in(bytes);
+    Request request;
+    switch (headerIn(in)) {
+    case Kind::ImportRequest: {
+        ImportRequest import{pathIn(in), in.string("locale"), {}};
+        import.options.animationIndex = static_cast<std::size_t>(in.get<quint64>());
+        request = std::move(import);
+        break;
+    }
+    case Kind::ExportRequest: {
+        ExportRequest exportRequest;
+        exportRequest.path = pathIn(in);
+        exportRequest.locale = in.string("locale");
+        exportRequest.format = named(in, kSceneFormatNames, "format");
+        exportRequest.fps = in.get<double>();
+        exportRequest.scene = sceneIn(in);
+        request = std::move(exportRequest);
+        break;
+    }
+    default:
+        throw WireError("a reply where a request was expected");
+    }
+    in.requireEnd();
+    return request;
+}
+
+QByteArray encodeReply(const Reply& reply)
+{
+    Writer out;
+    if (const auto* imported = std::get_if<SceneImport>(&reply)) {
+        header(out, Kind::SceneImport);
+        writeScene(out, imported->scene);
+        out.count(imported->animations.size());
+        for (const AnimationSummary& animation : imported->animations) {
+            out.string(animation.name);
+            out.put(animation.durationSeconds);
+            out.put<quint64>(animation.channelCount);
+        }
+        writeStrings(out, imported->warnings);
+    } else if (const auto* report = std::get_if<ExportReport>(&reply)) {
+        header(out, Kind::ExportReport);
+        writeStrings(out, report->files);
+        writeStrings(out, report->warnings);
+    } else {
+        const auto& failure = std::get<Failure>(reply);
+        header(out, Kind::Failure);
+        out.enumeration(failure.kind);
+        out.string(failure.message);
+    }
+    return out.take();
+}
+
+Reply decodeReply(const QByteArray& bytes)
+{
+    Reader in(bytes);
+    Reply reply;
+    switch (headerIn(in)) {
+    case Kind::SceneImport: {
+        SceneImport imported;
+        imported.scene = sceneIn(in);
+        // An animation is at least its name's count, its duration and its channel count.
+        imported.animations.resize(in.count(24, "animations"));
+        for (AnimationSummary& animation : imported.animations) {
+            animation.name = in.string("animation name");
+            animation.durationSeconds = in.get<double>();
+            animation.channelCount = static_cast<std::size_t>(in.get<quint64>());
+        }
+        imported.warnings = stringsIn(in, "warnings");
+        reply = std::move(imported);
+        break;
+    }
+    case Kind::ExportReport: {
+        ExportReport report;
+        report.files = stringsIn(in, "files");
+        report.warnings = stringsIn(in, "warnings");
+        reply = std::move(report);
+        break;
+    }
+    case Kind::Failure: {
+        Failure failure;
+        const auto kind = in.get<quint8>();
+        if (kind != 1 && kind != 2)
+            throw WireError("unknown failure kind " + std::to_string(kind));
+        failure.kind = static_cast<Failure::Kind>(kind);
+        failure.message = in.string("message");
+        reply = std::move(failure);
+        break;
+    }
+    default:
+        throw WireError("a request where a reply was expected");
+    }
+    in.requireEnd();
+    return reply;
+}
+
+} // namespace gyre::wire

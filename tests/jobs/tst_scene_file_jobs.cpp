@@ -1,0 +1,202 @@
+// Scene import and export through gyre-scene-worker: what comes back equals an import in this process;
+// a file that crashes Assimp, one that exhausts the memory limit, a worker that hangs, one that
+// answers nonsense and one that is missing each end in `failed` naming the file, and the same
+// SceneFileJobs then imports a good file.
+
+#include "built_scene_worker.h"
+#include "io/bvh_fixture.h"
+#include "io/damaged_scenes.h"
+#include "jobs/scene_file_jobs.h"
+#include "model/project_file.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace gyre;
+using gyre::jobs::SceneFileJobs;
+
+namespace {
+
+QString writeFile(const QTemporaryDir& folder, const QString& name, const QByteArray& contents,
+                  QFile::Permissions permissions = QFile::ReadOwner | QFile::WriteOwner)
+{
+    const QString path = folder.filePath(name);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(contents) != contents.size() || !file.setPermissions(permissions))
+        qFatal("cannot write %s", qPrintable(path));
+    return path;
+}
+
+// A stand-in for the worker that never answers.
+// Whether `spy` sees its signal within `milliseconds`; never before the job's start has returned,
+// which would leave the app showing a job that has ended.
+bool arrives(QSignalSpy& spy, int milliseconds = 30000) { return spy.isEmpty() && spy.wait(milliseconds); }
+
+QString hangingWorker(const QTemporaryDir& folder)
+{
+    return writeFile(folder, QStringLiteral("hanging-worker"), "#!/bin/sh\nexec sleep 600\n",
+                     QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+}
+
+} // namespace
+
+class TestSceneFileJobs : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        test::useBuiltSceneWorker();
+        builtWorker_ = qgetenv(kSceneWorkerVariable);
+        QVERIFY(folder_.isValid());
+        goodFile_ = writeFile(folder_, QStringLiteral("walk.bvh"), test::bvhChain(3, 50, 1.0 / 30.0));
+    }
+
+    void cleanup() { qputenv(kSceneWorkerVariable, builtWorker_); }
+
+    // Every field the worker sends equals an import in this process: the project text holds them all.
+    void importsExactlyAsAnImportInThisProcess()
+    {
+        const std::shared_ptr<const SceneImport> imported = importGood();
+        QVERIFY(imported);
+        const SceneImport here = importScene(goodFile_);
+        QCOMPARE(model::projectJson(imported->scene), model::projectJson(here.scene));
+        QVERIFY(imported->scene.objects.size() >= 3);
+        QCOMPARE(imported->animations.size(), here.animations.size());
+        QCOMPARE(imported->animations.front().channelCount, here.animations.front().channelCount);
+        QCOMPARE(imported->warnings, here.warnings);
+    }
+
+    void exportsThroughTheWorker()
+    {
+        const SceneImport here = importScene(goodFile_);
+        const QString path = folder_.filePath(QStringLiteral("walk.glb"));
+        QSignalSpy exported(&jobs_, &SceneFileJobs::exported);
+        QVERIFY(jobs_.startExport(here.scene, path, SceneFormat::Glb, 30.0));
+        QVERIFY(arrives(exported));
+        QCOMPARE(exported.front().at(0).toString(), path);
+        QCOMPARE(exported.front().at(1).value<ExportReport>().files, QStringList{path});
+        // The worker writes what an export in this process writes, byte for byte.
+        const QString pathHere = folder_.filePath(QStringLiteral("walk-here.glb"));
+        exportScene(here.scene, pathHere, SceneFormat::Glb, 30.0);
+        QFile written(path);
+        QFile writtenHere(pathHere);
+        QVERIFY(written.open(QIODevice::ReadOnly) && writtenHere.open(QIODevice::ReadOnly));
+        QVERIFY(written.size() > 0);
+        QCOMPARE(written.readAll(), writtenHere.readAll());
+    }
+
+    void aFileThatCrashesTheReaderFailsByName()
+    {
+        const QString path = writeFile(folder_, QStringLiteral("crash.dae"), test::crashingCollada());
+        const QString message = failureOf(path);
+        QVERIFY2(message.startsWith(path + QStringLiteral(": the scene reader crashed on this file (signal ") +
+                                    test::kCrashSignal),
+                 qPrintable(message));
+        QVERIFY(importGood());
+    }
+
+    void aFileThatExhaustsTheMemoryLimitFailsByName()
+    {
+#if defined(__SANITIZE_ADDRESS__)
+        QSKIP("AddressSanitizer's shadow memory needs an unlimited address space, so the worker runs without one");
+#endif
+        jobs_.setWorkerLimits({qint64{1} << 30, SceneWorkerLimits{}.time});
+        const QString path = writeFile(folder_, QStringLiteral("huge.dae"), test::hugeCollada());
+        const QString message = failureOf(path);
+        jobs_.setWorkerLimits({});
+        QCOMPARE(message, path + QStringLiteral(": the scene reader needed more than 1 GiB of memory for this file "
+                                                "and was stopped"));
+        QVERIFY(importGood());
+    }
+
+    void aHangingWorkerIsStoppedAtTheTimeLimit()
+    {
+        qputenv(kSceneWorkerVariable, QFile::encodeName(hangingWorker(folder_)));
+        jobs_.setWorkerLimits({SceneWorkerLimits{}.memoryBytes, std::chrono::milliseconds(500)});
+        QElapsedTimer clock;
+        clock.start();
+        const QString message = failureOf(goodFile_);
+        jobs_.setWorkerLimits({});
+        QVERIFY2(message.startsWith(goodFile_ + QStringLiteral(": the scene reader took longer than 0.5 s")),
+                 qPrintable(message));
+        QVERIFY(clock.elapsed() >= 500);
+        qputenv(kSceneWorkerVariable, builtWorker_);
+        QVERIFY(importGood());
+    }
+
+    // With the default limit of minutes, only stopping the worker can end the job in seconds.
+    void cancellingStopsTheWorker()
+    {
+        qputenv(kSceneWorkerVariable, QFile::encodeName(hangingWorker(folder_)));
+        QSignalSpy cancelled(&jobs_, &SceneFileJobs::cancelled);
+        QSignalSpy failed(&jobs_, &SceneFileJobs::failed);
+        QVERIFY(jobs_.startImport(goodFile_));
+        jobs_.cancelImport();
+        QVERIFY(arrives(cancelled, 10000));
+        QCOMPARE(cancelled.front().at(0).toString(), goodFile_);
+        QCOMPARE(failed.count(), 0);
+        QVERIFY(!jobs_.isBusy());
+    }
+
+    // cat sends the request back: a message, but not a reply.
+    void aMalformedReplyFailsByName()
+    {
+        qputenv(kSceneWorkerVariable, "/bin/cat");
+        const QString message = failureOf(goodFile_);
+        QCOMPARE(message, goodFile_ + QStringLiteral(": the scene reader's reply is malformed: a request where a reply "
+                                                     "was expected"));
+    }
+
+    void aMissingWorkerFailsByName()
+    {
+        qputenv(kSceneWorkerVariable, QFile::encodeName(folder_.filePath(QStringLiteral("no-such-worker"))));
+        const QString message = failureOf(goodFile_);
+        QCOMPARE(message, goodFile_ + QStringLiteral(": the scene reader %1 is missing or not executable")
+                                          .arg(folder_.filePath(QStringLiteral("no-such-worker"))));
+    }
+
+    // The worker words its errors in the language the app chose; the translation is built into it.
+    void theWorkerSpeaksTheAppsLanguage()
+    {
+        const QString missing = folder_.filePath(QStringLiteral("missing.bvh"));
+        setSceneWorkerLocale(QLocale(QLocale::German, QLocale::Germany));
+        const QString german = failureOf(missing);
+        setSceneWorkerLocale(QLocale::c());
+        QCOMPARE(german, missing + QStringLiteral(": Datei nicht vorhanden"));
+        QCOMPARE(failureOf(missing), missing + QStringLiteral(": no such file"));
+    }
+
+private:
+    std::shared_ptr<const SceneImport> importGood()
+    {
+        QSignalSpy imported(&jobs_, &SceneFileJobs::imported);
+        if (!jobs_.startImport(goodFile_) || !arrives(imported))
+            return nullptr;
+        return imported.front().at(1).value<std::shared_ptr<const SceneImport>>();
+    }
+
+    // The message of the import of `path`, which must fail.
+    QString failureOf(const QString& path)
+    {
+        QSignalSpy failed(&jobs_, &SceneFileJobs::failed);
+        QSignalSpy imported(&jobs_, &SceneFileJobs::imported);
+        if (!jobs_.startImport(path))
+            return QStringLiteral("refused to start");
+        if (!arrives(failed))
+            return QStringLiteral("no failure; imported %1 times").arg(imported.count());
+        return failed.front().at(0).toString() == path ? failed.front().at(1).toString()
+                                                        : QStringLiteral("failed for another path");
+    }
+
+    QTemporaryDir folder_;
+    QString goodFile_;
+    QByteArray builtWorker_;
+    SceneFileJobs jobs_;
+};
+
+QTEST_GUILESS_MAIN(TestSceneFileJobs)
+#include "tst_scene_file_jobs.moc"
