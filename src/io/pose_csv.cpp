@@ -3,9 +3,7 @@
 #include "core/number_text.h"
 #include "io/csv_header.h"
 #include "io/csv_line_reader.h"
-#include "io/file_contents.h"
-
-#include <QSaveFile>
+#include "model/output_target.h"
 
 #include <algorithm>
 #include <array>
@@ -189,9 +187,9 @@ std::string rowLine(const PoseTable& table, const PoseRow& row, const Eigen::Row
     return line + '\n';
 }
 
-void writeText(QSaveFile& file, const std::string& text)
+void writeText(OutputTarget& file, const std::string& text)
 {
-    writeBytes(file, text.data(), static_cast<qint64>(text.size()));
+    file.write(text.data(), static_cast<qint64>(text.size()));
 }
 
 std::vector<Eigen::Quaterniond> orientations(const PoseTable& table)
@@ -210,7 +208,7 @@ PoseTable readPoseCsv(const QString& path, const EulerConvention& convention, Ti
     return PoseCsvParser(path, convention, timeColumn).read();
 }
 
-void writePoseCsv(QSaveFile& file, const PoseTable& table, const EulerConvention& convention)
+void writePoseCsv(OutputTarget& file, const PoseTable& table, const EulerConvention& convention)
 {
     const Eigen::MatrixXd rotations = rotationColumnValues(table.rotationColumns, orientations(table), convention);
     writeText(file, headerLine(table));
@@ -218,17 +216,17 @@ void writePoseCsv(QSaveFile& file, const PoseTable& table, const EulerConvention
         const Eigen::RowVectorXd rotation = rotations.row(static_cast<Eigen::Index>(i));
         // The format cannot hold nan or inf; refuse rather than write a file that cannot be read.
         if (!isFinite(table.rows[i], rotation))
-            throw OutputError(file.fileName(), "row " + std::to_string(i + 1) + " holds a value that is not finite");
+            throw OutputError(file.path(), "row " + std::to_string(i + 1) + " holds a value that is not finite");
         writeText(file, rowLine(table, table.rows[i], rotation));
     }
 }
 
 void writePoseCsv(const QString& path, const PoseTable& table, const EulerConvention& convention)
 {
-    QSaveFile file(path);
-    openForWriting(file);
+    OutputTarget file(path);
+    file.open();
     writePoseCsv(file, table, convention);
-    commitWrite(file);
+    file.commit();
 }
 
 } // namespace gyre

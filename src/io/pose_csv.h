@@ -14,7 +14,6 @@
 #include "io/rotation_columns.h"
 #include "model/input_error.h"
 
-#include <QSaveFile>
 #include <QString>
 
 #include <cstddef>
@@ -22,6 +21,8 @@
 #include <vector>
 
 namespace gyre {
+
+class OutputTarget;
 
 struct PoseRow {
     double time = 0.0;     // seconds; 0 when the table has no time column
@@ -49,12 +50,13 @@ PoseTable readPoseCsv(const QString& path, const EulerConvention& convention,
                       TimeColumn timeColumn = TimeColumn::Optional);
 
 // Writes the table with the header time (if hasTime), the rotationColumns set, x,y,z (if
-// hasPosition); Euler angles in `convention`. Goes through QSaveFile, so the file appears only once
-// complete: on any error (OutputError; a value that is not finite is one) a file already at `path`
-// keeps its contents and none is created.
+// hasPosition); Euler angles in `convention`. Goes through an OutputTarget: a regular file appears
+// only once complete, so on any error (OutputError; a value that is not finite is one) a file
+// already at `path` keeps its contents and none is created; a FIFO or a device is written in place,
+// and "-" is standard output.
 void writePoseCsv(const QString& path, const PoseTable& table, const EulerConvention& convention = {});
-// The same into a save file the caller opened and commits, for a verb that writes several files and
+// The same into a target the caller opened and commits, for a verb that writes several files and
 // commits them together.
-void writePoseCsv(QSaveFile& file, const PoseTable& table, const EulerConvention& convention = {});
+void writePoseCsv(OutputTarget& file, const PoseTable& table, const EulerConvention& convention = {});
 
 } // namespace gyre
