@@ -83,9 +83,12 @@ PoseTable PoseCsvParser::read()
 {
     const Layout columns = layout();
     PoseTable table{columns.rotationColumns, columns.timeField.has_value(), !columns.positionFields.empty(), {}};
+    if (const auto rowCount = CsvLineReader::countRows(reader_.path(), CsvLineReader::kRowBudget, "poses"))
+        table.rows.reserve(*rowCount);
     while (reader_.nextRecord()) {
-        if (table.rows.size() == kMaxPoseRows)
-            throw reader_.errorHere("more than " + std::to_string(kMaxPoseRows) + " poses");
+        if (table.rows.size() == CsvLineReader::kRowBudget)
+            throw reader_.errorHere("more than the " + std::to_string(CsvLineReader::kRowBudget) +
+                                    " poses a file may hold (docs/pose-csv.md)");
         table.rows.push_back(readRow(columns));
     }
     if (table.rows.empty())

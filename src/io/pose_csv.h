@@ -37,15 +37,17 @@ struct PoseTable {
     std::vector<PoseRow> rows;
 };
 
-// The most poses a file may hold, and the most a verb may make: 2²⁴, about 1.2 GB of poses in memory
-// and a few GB of text.
+// The most poses a verb may make: 2²⁴, about 1.5 GB of poses in memory and a few GB of text. A file
+// read may hold CsvLineReader::kRowBudget (2²²) poses at most.
 inline constexpr std::size_t kMaxPoseRows = std::size_t{1} << 24;
 
 enum class TimeColumn { Optional, Required };
 
 // Reads a pose file. Euler angle columns are read in `convention`. Where there is a time column,
 // times must strictly increase. Throws InputError, naming the file, the line and the column, for
-// anything the format does not allow, including an empty or header-only file.
+// anything the format does not allow, including an empty or header-only file and one with more than
+// CsvLineReader::kRowBudget poses. The file is read a line at a time, and a regular file is counted
+// first, so memory holds the poses and no more.
 PoseTable readPoseCsv(const QString& path, const EulerConvention& convention,
                       TimeColumn timeColumn = TimeColumn::Optional);
 
