@@ -10,6 +10,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -19,6 +20,9 @@ namespace gyre {
 namespace {
 
 constexpr std::string_view kTimeName = "time";
+// Rows are converted to their columns and written a block at a time, so that writing needs memory
+// for one block beside the table.
+constexpr std::size_t kRowsPerBlock = 4096;
 constexpr std::array<std::string_view, 3> kPositionNames{"x", "y", "z"};
 
 // "qw,qx,qy,qz | m00,…,m22 | …": the rotation column sets, for messages.
@@ -195,11 +199,11 @@ void writeText(OutputTarget& file, const std::string& text)
     file.write(text.data(), static_cast<qint64>(text.size()));
 }
 
-std::vector<Eigen::Quaterniond> orientations(const PoseTable& table)
+std::vector<Eigen::Quaterniond> orientations(std::span<const PoseRow> rows)
 {
     std::vector<Eigen::Quaterniond> result;
-    result.reserve(table.rows.size());
-    for (const PoseRow& row : table.rows)
+    result.reserve(rows.size());
+    for (const PoseRow& row : rows)
         result.push_back(row.pose.orientation);
     return result;
 }
@@ -213,14 +217,20 @@ PoseTable readPoseCsv(const QString& path, const EulerConvention& convention, Ti
 
 void writePoseCsv(OutputTarget& file, const PoseTable& table, const EulerConvention& convention)
 {
-    const Eigen::MatrixXd rotations = rotationColumnValues(table.rotationColumns, orientations(table), convention);
     writeText(file, headerLine(table));
-    for (std::size_t i = 0; i < table.rows.size(); ++i) {
-        const Eigen::RowVectorXd rotation = rotations.row(static_cast<Eigen::Index>(i));
-        // The format cannot hold nan or inf; refuse rather than write a file that cannot be read.
-        if (!isFinite(table.rows[i], rotation))
-            throw OutputError(file.path(), "row " + std::to_string(i + 1) + " holds a value that is not finite");
-        writeText(file, rowLine(table, table.rows[i], rotation));
+    std::optional<Eigen::Vector3d> eulerCarry;
+    for (std::size_t start = 0; start < table.rows.size(); start += kRowsPerBlock) {
+        const auto block = std::span(table.rows).subspan(start, std::min(kRowsPerBlock, table.rows.size() - start));
+        const Eigen::MatrixXd rotations =
+            rotationColumnValues(table.rotationColumns, orientations(block), convention, &eulerCarry);
+        for (std::size_t i = 0; i < block.size(); ++i) {
+            const Eigen::RowVectorXd rotation = rotations.row(static_cast<Eigen::Index>(i));
+            // The format cannot hold nan or inf; refuse rather than write a file that cannot be read.
+            if (!isFinite(block[i], rotation))
+                throw OutputError(file.path(),
+                                  "row " + std::to_string(start + i + 1) + " holds a value that is not finite");
+            writeText(file, rowLine(table, block[i], rotation));
+        }
     }
 }
 
