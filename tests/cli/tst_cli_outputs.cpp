@@ -12,6 +12,8 @@
 
 #include <sys/stat.h>
 
+#include <cmath>
+#include <numbers>
 #include <string>
 
 using namespace gyre;
@@ -52,6 +54,7 @@ private slots:
     void outputNamingAnInputIsRefused_data();
     void outputNamingAnInputIsRefused();
     void convertMayRewriteItsInput();
+    void eulerOutputUnwrapsAcrossBlocks();
     void rowsPastTheBudgetAreRefused();
     void rowCountStopsAtTheBudget();
 
@@ -194,6 +197,27 @@ void TstCliOutputs::convertMayRewriteItsInput()
     const CliRun run = runCli({"convert", fifo, "-o", fifo, "--to", "matrix"});
     QCOMPARE(run.exitCode, 2);
     QVERIFY2(run.err.contains("convert: the input file and -o name the same file"), qPrintable(run.err));
+}
+
+void TstCliOutputs::eulerOutputUnwrapsAcrossBlocks()
+{
+    // A steady turn about z of 1° a row, 10000 rows: rows are written in blocks of a few thousand,
+    // and the Euler filter must carry across them, so e3 climbs by exactly 1° from row to row.
+    constexpr int kRows = 10000;
+    QByteArray contents = "qw,qx,qy,qz\n";
+    for (int i = 0; i < kRows; ++i) {
+        const double half = i * std::numbers::pi / 360.0;
+        contents += (number(std::cos(half)) + ",0,0," + number(std::sin(half)) + "\n").toUtf8();
+    }
+    const QString in = writeFile("turn.csv", contents);
+    const QString out = path("turn-euler.csv");
+    QVERIFY(succeeds({"convert", in, "-o", out, "--to", "euler"}));
+    const Csv csv = readCsv(out);
+    QVERIFY2(csv.problem.isEmpty(), qPrintable(csv.problem));
+    QCOMPARE(csv.rows.size(), std::size_t{kRows});
+    for (std::size_t i = 1; i < csv.rows.size(); ++i)
+        QVERIFY2(std::abs(csv.at(i, "e3") - csv.at(i - 1, "e3") - 1.0) < 1e-6,
+                 qPrintable(QStringLiteral("row %1: e3 %2 after %3").arg(i).arg(csv.at(i, "e3")).arg(csv.at(i - 1, "e3"))));
 }
 
 void TstCliOutputs::rowsPastTheBudgetAreRefused()
