@@ -2,8 +2,15 @@
 
 #include "core/number_text.h"
 #include "io/pose_csv.h"
+#include "model/output_target.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
 
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 #include <utility>
 
 namespace gyre::cli {
@@ -19,6 +26,31 @@ QString dashed(const QString& name) { return (name.size() == 1 ? "-" : "--") + n
 
 std::string quoted(const QString& text) { return "'" + text.toStdString() + "'"; }
 
+// Where a path that may not exist yet would be: its folder's canonical path (symbolic links resolved)
+// and its name.
+QString locationOf(const QString& path)
+{
+    const QFileInfo info(path);
+    const QString folder = info.absoluteDir().canonicalPath();
+    return folder.isEmpty() ? info.absoluteFilePath() : folder + QLatin1Char('/') + info.fileName();
+}
+
+// Whether two paths name one file: where both exist, the same device and inode, so that hard links
+// and symbolic links are seen through; otherwise the same location.
+bool isSameFile(const QString& a, const QString& b)
+{
+    if (QFileInfo::exists(a) && QFileInfo::exists(b)) {
+        std::error_code error;
+        const bool same = std::filesystem::equivalent(std::filesystem::path(QFile::encodeName(a).toStdString()),
+                                                      std::filesystem::path(QFile::encodeName(b).toStdString()), error);
+        if (!error)
+            return same;
+    }
+    return locationOf(a) == locationOf(b);
+}
+
+bool isStandardOutput(const QString& path) { return path == OutputTarget::kStandardOutput; }
+
 } // namespace
 
 VerbCommandLine::VerbCommandLine(QString verb, const QStringList& arguments,
@@ -26,7 +58,7 @@ VerbCommandLine::VerbCommandLine(QString verb, const QStringList& arguments,
     : verb_(std::move(verb))
 {
     QList<QCommandLineOption> options = verbOptions;
-    if (output == OutputFile::Required)
+    if (output != OutputFile::None)
         options.append(QCommandLineOption({kOutputOption, QStringLiteral("output")}, {}, QStringLiteral("file")));
     parser_.addOptions(options);
     // QCommandLineParser::parse skips the first argument, the program's name.
@@ -44,8 +76,34 @@ VerbCommandLine::VerbCommandLine(QString verb, const QStringList& arguments,
         throw error("one input file expected, got " + std::to_string(inputs.size()) + ": " +
                     inputs.join(QStringLiteral(", ")).toStdString());
     inputPath_ = inputs.front();
-    if (output == OutputFile::Required)
-        outputPath_ = requiredValue(kOutputOption);
+    if (output == OutputFile::None)
+        return;
+    outputPath_ = requiredValue(kOutputOption);
+    if (output == OutputFile::Required || !QFileInfo(outputPath_).isFile())
+        refuseSharedFiles({{"the input file", inputPath_}}, {{"-o", outputPath_}});
+}
+
+void VerbCommandLine::refuseSharedFiles(const std::vector<NamedFile>& inputs, const std::vector<NamedFile>& outputs) const
+{
+    const auto refuse = [this](const NamedFile& first, const NamedFile& second) {
+        throw error(first.name + " and " + second.name + " name the same file " + quoted(second.path) +
+                    "; give the output another name");
+    };
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const NamedFile& output = outputs[i];
+        if (isStandardOutput(output.path)) {
+            for (std::size_t j = 0; j < i; ++j)
+                if (isStandardOutput(outputs[j].path))
+                    throw error(outputs[j].name + " and " + output.name + " both name standard output (-)");
+            continue;
+        }
+        for (const NamedFile& input : inputs)
+            if (isSameFile(input.path, output.path))
+                refuse(input, output);
+        for (std::size_t j = 0; j < i; ++j)
+            if (!isStandardOutput(outputs[j].path) && isSameFile(outputs[j].path, output.path))
+                refuse(outputs[j], output);
+    }
 }
 
 void VerbCommandLine::checkSingleValues(const QList<QCommandLineOption>& options) const

@@ -28,14 +28,23 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Whether a verb writes a file named by -o, or prints what it has to say.
-enum class OutputFile { Required, None };
+// Whether a verb writes a file named by -o, or prints what it has to say. Only an output that holds
+// what its input held, in another form, may replace the input (a regular file, read whole before
+// the output is written); any other output that names the input is refused, as it would lose it.
+enum class OutputFile { Required, MayReplaceInput, None };
+
+// A file of the command line with what names it: "-o", "--report", or "the input file".
+struct NamedFile {
+    std::string name;
+    QString path;
+};
 
 class VerbCommandLine {
 public:
     // Parses the arguments after the verb. Throws UsageError for an unknown option, a missing
-    // value, a value option given twice, no -o where the verb writes a file, or not exactly one
-    // input file.
+    // value, a value option given twice, no -o where the verb writes a file, not exactly one
+    // input file, or an output that is the input file (unless it may replace it). `-o -` is standard
+    // output.
     VerbCommandLine(QString verb, const QStringList& arguments, const QList<QCommandLineOption>& verbOptions,
                     OutputFile output = OutputFile::Required);
     VerbCommandLine(const VerbCommandLine&) = delete;
@@ -59,6 +68,12 @@ public:
     // The convention of --order (default xyz) and --intrinsic or --extrinsic (default extrinsic),
     // for a verb that has eulerOptions().
     EulerConvention eulerConvention() const;
+
+    // Throws UsageError naming both and the file when an output is the same file as an input (by
+    // device and inode where both exist, else by canonical folder and name) or as another output,
+    // so that no output overwrites what the verb reads or writes besides. Standard output is no
+    // input file, and the same output only as another `-`.
+    void refuseSharedFiles(const std::vector<NamedFile>& inputs, const std::vector<NamedFile>& outputs) const;
 
     // A UsageError that names the verb, for the caller to throw.
     UsageError error(std::string_view message) const;

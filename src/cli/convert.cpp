@@ -53,7 +53,9 @@ void warnNearGimbalLock(const QString& inputPath, const PoseTable& table, const 
 
 void runConvert(const QStringList& arguments)
 {
-    const VerbCommandLine commandLine(QStringLiteral("convert"), arguments, convertOptions());
+    // The same poses in another column set: the file may be converted in place.
+    const VerbCommandLine commandLine(QStringLiteral("convert"), arguments, convertOptions(),
+                                      OutputFile::MayReplaceInput);
     const RotationColumns target = commandLine.choice(QStringLiteral("to"), kRotationColumnsNames);
     const EulerConvention convention = commandLine.eulerConvention();
     PoseTable table = readPoseCsv(commandLine.inputPath(), convention);

@@ -4,10 +4,10 @@
 #include "cli/verbs.h"
 #include "core/position_curve.h"
 #include "fit/angular_velocity_fit.h"
-#include "io/file_contents.h"
 #include "io/number_csv.h"
 #include "core/number_text.h"
 #include "io/pose_csv.h"
+#include "model/output_target.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -258,11 +258,25 @@ PoseTable fittedFrames(const PoseTable& keys, const std::vector<FitKey>& fitKeys
     return frames;
 }
 
+// Every file fit reads and writes: no output may be one of the others.
+void refuseSharedFiles(const VerbCommandLine& commandLine)
+{
+    std::vector<NamedFile> inputs{{"the input file", commandLine.inputPath()}};
+    for (const QString& option : {kOmega, kDirection, kMagnitude, kPattern})
+        if (commandLine.isSet(option))
+            inputs.push_back({"--" + option.toStdString(), commandLine.requiredValue(option)});
+    std::vector<NamedFile> outputs{{"-o", commandLine.outputPath()}};
+    if (commandLine.isSet(kReport))
+        outputs.push_back({"--report", commandLine.requiredValue(kReport)});
+    commandLine.refuseSharedFiles(inputs, outputs);
+}
+
 } // namespace
 
 void runFit(const QStringList& arguments)
 {
     const VerbCommandLine commandLine(QStringLiteral("fit"), arguments, fitOptions());
+    refuseSharedFiles(commandLine);
     const double fps = commandLine.positiveNumber(kFps);
     const std::optional<fit::TimeWindow> window = windowOption(commandLine);
     const FitSettings fitSettings = settings(commandLine, window);
@@ -293,15 +307,14 @@ void runFit(const QStringList& arguments)
         return;
     }
     // Both files are written in full before either replaces what was there.
-    QSaveFile framesFile(commandLine.outputPath());
-    QSaveFile reportFile(commandLine.requiredValue(kReport));
-    openForWriting(framesFile);
-    openForWriting(reportFile);
+    OutputTarget framesFile(commandLine.outputPath());
+    OutputTarget reportFile(commandLine.requiredValue(kReport));
+    framesFile.open();
+    reportFile.open();
     writePoseCsv(framesFile, frames);
-    const QByteArray report = reportJson(result, fitSettings);
-    writeBytes(reportFile, report.constData(), report.size());
-    commitWrite(framesFile);
-    commitWrite(reportFile);
+    reportFile.write(reportJson(result, fitSettings));
+    framesFile.commit();
+    reportFile.commit();
 }
 
 } // namespace gyre::cli

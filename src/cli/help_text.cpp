@@ -21,13 +21,16 @@ Batch verbs over pose CSV files (docs/pose-csv.md), projects (docs/file-format.m
   gyre-cli help VERB     usage of one verb (also: gyre-cli VERB --help)
   gyre-cli --version     the version
 
-Options may come in any order. The output file appears only when the verb succeeds.
+Options may come in any order. The output file appears only when the verb succeeds. `-o -` writes
+to standard output (every verb but export); a FIFO or a device named by -o is written in place, never
+replaced. An output may not name an input or another output (convert alone may rewrite its input).
+A CSV input may hold at most 4194304 rows.
 Exit status: 0 success, 1 bad input or output file, 2 bad command line.
 )";
 
 const char* const kCommonOptions = R"(
 Options of every verb:
-  -o, --output FILE  the output file; it may be the input file
+  -o, --output FILE  the output file, or - for standard output; only convert's may be the input
   --order AXES       axis order of Euler angle columns, e.g. xyz, zyx, zxz (default xyz);
                      e1 turns about the first axis named
   --intrinsic        angles about moving axes: intrinsic xyz is R = Rx(e1) Ry(e2) Rz(e3)

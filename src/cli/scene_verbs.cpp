@@ -8,6 +8,7 @@
 #include "io/scene_export.h"
 #include "io/scene_import.h"
 #include "io/scene_worker.h"
+#include "model/output_target.h"
 #include "model/project_file.h"
 #include "model/track_evaluation.h"
 
@@ -54,6 +55,10 @@ void runExport(const QStringList& arguments)
 {
     const VerbCommandLine commandLine(QStringLiteral("export"), arguments,
                                       {QCommandLineOption(kFpsOption, {}, QStringLiteral("rate"))});
+    // The extension names the format, and glTF and OBJ write a second file named after the first.
+    if (commandLine.outputPath() == OutputTarget::kStandardOutput)
+        throw commandLine.error("-o -: a scene is written to a file whose extension names its format, not to "
+                                "standard output");
     const std::optional<SceneFormat> format = sceneFormatOfPath(commandLine.outputPath());
     if (!format)
         throw commandLine.error("-o: the file's extension must name a scene format: " +

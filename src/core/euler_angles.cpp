@@ -178,13 +178,15 @@ Eigen::Vector3d nearestEquivalentAngles(const Eigen::Vector3d& angles, const Eig
 }
 
 std::vector<Eigen::Vector3d> unwrappedEulerAngles(const std::vector<Eigen::Quaterniond>& rotations,
-                                                  const EulerConvention& convention)
+                                                  const EulerConvention& convention,
+                                                  const std::optional<Eigen::Vector3d>& before)
 {
     std::vector<Eigen::Vector3d> result;
     result.reserve(rotations.size());
     for (const Eigen::Quaterniond& q : rotations) {
         const Eigen::Vector3d angles = eulerAnglesFromQuaternion(q, convention).angles;
-        result.push_back(result.empty() ? angles : nearestEquivalentAngles(angles, result.back(), convention));
+        const std::optional<Eigen::Vector3d> previous = result.empty() ? before : result.back();
+        result.push_back(previous ? nearestEquivalentAngles(angles, *previous, convention) : angles);
     }
     return result;
 }

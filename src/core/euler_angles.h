@@ -55,9 +55,11 @@ Eigen::Vector3d nearestEquivalentAngles(const Eigen::Vector3d& angles, const Eig
                                         const EulerConvention& convention);
 
 // The Euler filter: the angle triples of a sequence of rotations, each chosen nearest to the one
-// before it so that the curves have no 2π jumps or flips.
+// before it so that the curves have no 2π jumps or flips. Where `before` is given, the first is
+// chosen nearest to it, so that a long sequence filtered block by block reads as one.
 std::vector<Eigen::Vector3d> unwrappedEulerAngles(const std::vector<Eigen::Quaterniond>& rotations,
-                                                  const EulerConvention& convention);
+                                                  const EulerConvention& convention,
+                                                  const std::optional<Eigen::Vector3d>& before = std::nullopt);
 
 // The angle e wrapped into (−π, π].
 double wrapAngle(double e);

@@ -34,13 +34,42 @@ CsvLineReader::CsvLineReader(const QString& path) : path_(path), file_(path)
     buffer_.resize(kMaxLineBytes + 4);
 }
 
+std::optional<std::size_t> CsvLineReader::countRows(const QString& path, std::size_t budget, std::string_view rows)
+{
+    if (!QFileInfo(path).isFile())
+        return std::nullopt;
+    CsvLineReader reader(path);
+    std::size_t records = 0;
+    std::int64_t firstPastBudget = 0;
+    try {
+        while (reader.skipToRecord())
+            if (++records == budget + 2) // the header, then the rows
+                firstPastBudget = reader.lineNumber();
+    } catch (const InputError&) {
+        // Reported by the parse, in its place.
+    }
+    const std::size_t rowCount = records == 0 ? 0 : records - 1;
+    if (rowCount > budget)
+        throw InputError(path, firstPastBudget,
+                         "the file holds " + std::to_string(rowCount) + " " + std::string(rows) + ", more than the " +
+                             std::to_string(budget) + " a file may hold (docs/pose-csv.md)");
+    return rowCount;
+}
+
 bool CsvLineReader::nextRecord()
+{
+    if (!skipToRecord())
+        return false;
+    split();
+    return true;
+}
+
+bool CsvLineReader::skipToRecord()
 {
     do {
         if (!readLine())
             return false;
     } while (isSkipped(line_));
-    split();
     return true;
 }
 

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +22,17 @@ class CsvLineReader {
 public:
     // The longest line accepted, in bytes without its line end. A pose row needs well under 1 KiB.
     static constexpr std::size_t kMaxLineBytes = 64 * 1024;
+
+    // The most rows (records after the header) a file may hold: 2²², so that a file is read in a few
+    // hundred MB at most. A larger file is refused before it is parsed (docs/pose-csv.md).
+    static constexpr std::size_t kRowBudget = std::size_t{1} << 22;
+
+    // How many rows a regular file holds, counted line by line before it is parsed so that the rows
+    // can be stored without growing; throws InputError at the line of the first row past `budget`,
+    // saying how many `rows` the file holds. A line that nextRecord would refuse ends the count, so
+    // that the parse reports errors in the order of the file. nullopt for a file that cannot be read
+    // twice (a FIFO, a device): its reader stops at the budget instead.
+    static std::optional<std::size_t> countRows(const QString& path, std::size_t budget, std::string_view rows);
 
     // Opens the file; throws InputError if it cannot be read (missing, a directory, no permission).
     explicit CsvLineReader(const QString& path);
@@ -40,6 +52,7 @@ public:
 
 private:
     bool readLine();
+    bool skipToRecord();
     void checkCharacters() const;
     void split();
 

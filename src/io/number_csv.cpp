@@ -24,6 +24,12 @@ InputError NumberTable::errorAt(std::size_t row, std::string_view message) const
     return InputError(path_, lines_.at(row), message);
 }
 
+void NumberTable::reserve(std::size_t rows)
+{
+    values_.reserve(rows * columns_.size());
+    lines_.reserve(rows);
+}
+
 void NumberTable::addRow(std::int64_t line, std::span<const double> values)
 {
     values_.insert(values_.end(), values.begin(), values.end());
@@ -56,9 +62,12 @@ NumberTable readNumberCsv(const QString& path, const NumberCsvColumns& columns)
     if (columns.increasing)
         increasing.emplace(*columns.increasing);
     std::vector<double> values(present.size());
+    if (const auto rowCount = CsvLineReader::countRows(path, CsvLineReader::kRowBudget, "rows"))
+        table.reserve(*rowCount);
     while (reader.nextRecord()) {
-        if (table.rowCount() == kMaxNumberRows)
-            throw reader.errorHere("more than " + std::to_string(kMaxNumberRows) + " rows");
+        if (table.rowCount() == CsvLineReader::kRowBudget)
+            throw reader.errorHere("more than the " + std::to_string(CsvLineReader::kRowBudget) +
+                                   " rows a file may hold (docs/pose-csv.md)");
         header.checkRowWidth();
         for (std::size_t i = 0; i < present.size(); ++i) {
             values[i] = header.number(fields[i], present[i]);

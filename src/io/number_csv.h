@@ -37,6 +37,7 @@ public:
     // An InputError at a row's line, for the caller to throw.
     InputError errorAt(std::size_t row, std::string_view message) const;
 
+    void reserve(std::size_t rows);
     void addRow(std::int64_t line, std::span<const double> values);
 
 private:
@@ -46,12 +47,9 @@ private:
     std::vector<std::int64_t> lines_;
 };
 
-// The most rows a number file may hold.
-inline constexpr std::size_t kMaxNumberRows = std::size_t{1} << 24;
-
 // Reads a number file with the `required` columns and any of the `optional` ones, no others. Throws
 // InputError, naming the file, the line and the column, for anything else, including a file with
-// no rows.
+// no rows or more than CsvLineReader::kRowBudget rows.
 NumberTable readNumberCsv(const QString& path, const NumberCsvColumns& columns);
 
 } // namespace gyre

@@ -3,15 +3,14 @@
 #include "core/number_text.h"
 #include "io/csv_header.h"
 #include "io/csv_line_reader.h"
-#include "io/file_contents.h"
-
-#include <QSaveFile>
+#include "model/output_target.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -21,6 +20,9 @@ namespace gyre {
 namespace {
 
 constexpr std::string_view kTimeName = "time";
+// Rows are converted to their columns and written a block at a time, so that writing needs memory
+// for one block beside the table.
+constexpr std::size_t kRowsPerBlock = 4096;
 constexpr std::array<std::string_view, 3> kPositionNames{"x", "y", "z"};
 
 // "qw,qx,qy,qz | m00,…,m22 | …": the rotation column sets, for messages.
@@ -85,9 +87,12 @@ PoseTable PoseCsvParser::read()
 {
     const Layout columns = layout();
     PoseTable table{columns.rotationColumns, columns.timeField.has_value(), !columns.positionFields.empty(), {}};
+    if (const auto rowCount = CsvLineReader::countRows(reader_.path(), CsvLineReader::kRowBudget, "poses"))
+        table.rows.reserve(*rowCount);
     while (reader_.nextRecord()) {
-        if (table.rows.size() == kMaxPoseRows)
-            throw reader_.errorHere("more than " + std::to_string(kMaxPoseRows) + " poses");
+        if (table.rows.size() == CsvLineReader::kRowBudget)
+            throw reader_.errorHere("more than the " + std::to_string(CsvLineReader::kRowBudget) +
+                                    " poses a file may hold (docs/pose-csv.md)");
         table.rows.push_back(readRow(columns));
     }
     if (table.rows.empty())
@@ -189,16 +194,16 @@ std::string rowLine(const PoseTable& table, const PoseRow& row, const Eigen::Row
     return line + '\n';
 }
 
-void writeText(QSaveFile& file, const std::string& text)
+void writeText(OutputTarget& file, const std::string& text)
 {
-    writeBytes(file, text.data(), static_cast<qint64>(text.size()));
+    file.write(text.data(), static_cast<qint64>(text.size()));
 }
 
-std::vector<Eigen::Quaterniond> orientations(const PoseTable& table)
+std::vector<Eigen::Quaterniond> orientations(std::span<const PoseRow> rows)
 {
     std::vector<Eigen::Quaterniond> result;
-    result.reserve(table.rows.size());
-    for (const PoseRow& row : table.rows)
+    result.reserve(rows.size());
+    for (const PoseRow& row : rows)
         result.push_back(row.pose.orientation);
     return result;
 }
@@ -210,25 +215,31 @@ PoseTable readPoseCsv(const QString& path, const EulerConvention& convention, Ti
     return PoseCsvParser(path, convention, timeColumn).read();
 }
 
-void writePoseCsv(QSaveFile& file, const PoseTable& table, const EulerConvention& convention)
+void writePoseCsv(OutputTarget& file, const PoseTable& table, const EulerConvention& convention)
 {
-    const Eigen::MatrixXd rotations = rotationColumnValues(table.rotationColumns, orientations(table), convention);
     writeText(file, headerLine(table));
-    for (std::size_t i = 0; i < table.rows.size(); ++i) {
-        const Eigen::RowVectorXd rotation = rotations.row(static_cast<Eigen::Index>(i));
-        // The format cannot hold nan or inf; refuse rather than write a file that cannot be read.
-        if (!isFinite(table.rows[i], rotation))
-            throw OutputError(file.fileName(), "row " + std::to_string(i + 1) + " holds a value that is not finite");
-        writeText(file, rowLine(table, table.rows[i], rotation));
+    std::optional<Eigen::Vector3d> eulerCarry;
+    for (std::size_t start = 0; start < table.rows.size(); start += kRowsPerBlock) {
+        const auto block = std::span(table.rows).subspan(start, std::min(kRowsPerBlock, table.rows.size() - start));
+        const Eigen::MatrixXd rotations =
+            rotationColumnValues(table.rotationColumns, orientations(block), convention, &eulerCarry);
+        for (std::size_t i = 0; i < block.size(); ++i) {
+            const Eigen::RowVectorXd rotation = rotations.row(static_cast<Eigen::Index>(i));
+            // The format cannot hold nan or inf; refuse rather than write a file that cannot be read.
+            if (!isFinite(block[i], rotation))
+                throw OutputError(file.path(),
+                                  "row " + std::to_string(start + i + 1) + " holds a value that is not finite");
+            writeText(file, rowLine(table, block[i], rotation));
+        }
     }
 }
 
 void writePoseCsv(const QString& path, const PoseTable& table, const EulerConvention& convention)
 {
-    QSaveFile file(path);
-    openForWriting(file);
+    OutputTarget file(path);
+    file.open();
     writePoseCsv(file, table, convention);
-    commitWrite(file);
+    file.commit();
 }
 
 } // namespace gyre

@@ -14,7 +14,6 @@
 #include "io/rotation_columns.h"
 #include "model/input_error.h"
 
-#include <QSaveFile>
 #include <QString>
 
 #include <cstddef>
@@ -22,6 +21,8 @@
 #include <vector>
 
 namespace gyre {
+
+class OutputTarget;
 
 struct PoseRow {
     double time = 0.0;     // seconds; 0 when the table has no time column
@@ -36,25 +37,28 @@ struct PoseTable {
     std::vector<PoseRow> rows;
 };
 
-// The most poses a file may hold, and the most a verb may make: 2²⁴, about 1.2 GB of poses in memory
-// and a few GB of text.
+// The most poses a verb may make: 2²⁴, about 1.5 GB of poses in memory and a few GB of text. A file
+// read may hold CsvLineReader::kRowBudget (2²²) poses at most.
 inline constexpr std::size_t kMaxPoseRows = std::size_t{1} << 24;
 
 enum class TimeColumn { Optional, Required };
 
 // Reads a pose file. Euler angle columns are read in `convention`. Where there is a time column,
 // times must strictly increase. Throws InputError, naming the file, the line and the column, for
-// anything the format does not allow, including an empty or header-only file.
+// anything the format does not allow, including an empty or header-only file and one with more than
+// CsvLineReader::kRowBudget poses. The file is read a line at a time, and a regular file is counted
+// first, so memory holds the poses and no more.
 PoseTable readPoseCsv(const QString& path, const EulerConvention& convention,
                       TimeColumn timeColumn = TimeColumn::Optional);
 
 // Writes the table with the header time (if hasTime), the rotationColumns set, x,y,z (if
-// hasPosition); Euler angles in `convention`. Goes through QSaveFile, so the file appears only once
-// complete: on any error (OutputError; a value that is not finite is one) a file already at `path`
-// keeps its contents and none is created.
+// hasPosition); Euler angles in `convention`. Goes through an OutputTarget: a regular file appears
+// only once complete, so on any error (OutputError; a value that is not finite is one) a file
+// already at `path` keeps its contents and none is created; a FIFO or a device is written in place,
+// and "-" is standard output.
 void writePoseCsv(const QString& path, const PoseTable& table, const EulerConvention& convention = {});
-// The same into a save file the caller opened and commits, for a verb that writes several files and
+// The same into a target the caller opened and commits, for a verb that writes several files and
 // commits them together.
-void writePoseCsv(QSaveFile& file, const PoseTable& table, const EulerConvention& convention = {});
+void writePoseCsv(OutputTarget& file, const PoseTable& table, const EulerConvention& convention = {});
 
 } // namespace gyre

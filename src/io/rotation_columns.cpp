@@ -121,11 +121,14 @@ Eigen::Quaterniond rotationFromColumnValues(RotationColumns columns, std::span<c
 }
 
 Eigen::MatrixXd rotationColumnValues(RotationColumns columns, const std::vector<Eigen::Quaterniond>& rotations,
-                                     const EulerConvention& convention)
+                                     const EulerConvention& convention, std::optional<Eigen::Vector3d>* eulerCarry)
 {
-    const std::vector<Eigen::Vector3d> eulerAngles = columns == RotationColumns::Euler
-                                                         ? unwrappedEulerAngles(rotations, convention)
-                                                         : std::vector<Eigen::Vector3d>{};
+    const std::vector<Eigen::Vector3d> eulerAngles =
+        columns == RotationColumns::Euler
+            ? unwrappedEulerAngles(rotations, convention, eulerCarry ? *eulerCarry : std::nullopt)
+            : std::vector<Eigen::Vector3d>{};
+    if (eulerCarry && !eulerAngles.empty())
+        *eulerCarry = eulerAngles.back();
     const auto rowCount = static_cast<Eigen::Index>(rotations.size());
     Eigen::MatrixXd values(rowCount, static_cast<Eigen::Index>(rotationColumnNames(columns).size()));
     for (Eigen::Index row = 0; row < rowCount; ++row) {

@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -56,8 +57,11 @@ Eigen::Quaterniond rotationFromColumnValues(RotationColumns columns, std::span<c
 
 // The values of a set's columns for a sequence of rotations: one row per rotation, columns in
 // rotationColumnNames order. Euler angles are unwrapped along the sequence (core's Euler filter) so
-// that they have no 2π jumps.
+// that they have no 2π jumps. Where `eulerCarry` is given, the unwrapping goes on from the angles it
+// holds (radians) and it is left holding the last rotation's, so that a long sequence converted
+// block by block reads as one.
 Eigen::MatrixXd rotationColumnValues(RotationColumns columns, const std::vector<Eigen::Quaterniond>& rotations,
-                                     const EulerConvention& convention);
+                                     const EulerConvention& convention,
+                                     std::optional<Eigen::Vector3d>* eulerCarry = nullptr);
 
 } // namespace gyre

@@ -2,6 +2,7 @@
 
 #include "io/assimp_math.h"
 #include "core/number_text.h"
+#include "model/output_target.h"
 #include "model/track_evaluation.h"
 
 #include <assimp/BlobIOSystem.h>
@@ -11,7 +12,6 @@
 
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cmath>
@@ -298,12 +298,7 @@ private:
 
 void writeWhole(const QString& path, const aiExportDataBlob& blob)
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        throw OutputError(path, FileError::tr("cannot write: %1").arg(file.errorString()).toStdString());
-    const auto size = static_cast<qint64>(blob.size);
-    if (file.write(static_cast<const char*>(blob.data), size) != size || !file.commit())
-        throw OutputError(path, FileError::tr("cannot write: %1").arg(file.errorString()).toStdString());
+    saveFileContents(path, QByteArray::fromRawData(static_cast<const char*>(blob.data), static_cast<qsizetype>(blob.size)));
 }
 
 // Assimp writes into memory (a BlobIOSystem named after the destination, so that the files a format

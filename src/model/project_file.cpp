@@ -2,6 +2,7 @@
 
 #include "model/input_error.h"
 #include "model/json_field.h"
+#include "model/output_target.h"
 #include "model/value_checks.h"
 
 #include <QFile>
@@ -9,7 +10,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QStringList>
 #include <QtEndian>
 
@@ -477,12 +477,7 @@ void writeProject(const QString& path, const Scene& scene)
                                     .arg(QString::fromUtf8(problem.what()))
                                     .toStdString());
     }
-    const QByteArray json = QJsonDocument(project).toJson();
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        throw OutputError(path, FileError::tr("cannot write: %1").arg(file.errorString()).toStdString());
-    if (file.write(json) != json.size() || !file.commit())
-        throw OutputError(path, FileError::tr("cannot write: %1").arg(file.errorString()).toStdString());
+    saveFileContents(path, QJsonDocument(project).toJson());
 }
 
 } // namespace gyre::model

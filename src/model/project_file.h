@@ -31,8 +31,9 @@ Scene parseProject(const QByteArray& json, const QString& path);
 // Reads the project file at `path`. Throws InputError naming the file and the field.
 Scene readProject(const QString& path);
 
-// Writes the project file through QSaveFile: on any error (OutputError) a file already at `path`
-// keeps its contents and none is created. A scene that would not read back, such as one holding a
+// Writes the project file through an OutputTarget (model/output_target.h): on any error
+// (OutputError) a regular file already at `path` keeps its contents and none is created; a FIFO or
+// a device is written in place, and "-" is standard output. A scene that would not read back, such as one holding a
 // number that is not finite, is refused rather than written.
 void writeProject(const QString& path, const Scene& scene);
 
