@@ -2,6 +2,7 @@
 
 #include "core/number_text.h"
 #include "io/pose_csv.h"
+#include "model/value_checks.h"
 
 #include <cstdio>
 #include <utility>
@@ -79,6 +80,16 @@ double VerbCommandLine::positiveNumber(const QString& option) const
     if (!(value > 0.0))
         throw error(dashed(option).toStdString() + ": " + quoted(parser_.value(option)) + " is not positive");
     return value;
+}
+
+double VerbCommandLine::frameRate(const QString& option) const
+{
+    const double value = number(option);
+    try {
+        return model::frameRate(value);
+    } catch (const std::invalid_argument& problem) {
+        throw error(dashed(option).toStdString() + ": " + problem.what());
+    }
 }
 
 int VerbCommandLine::nonNegativeInteger(const QString& option) const
