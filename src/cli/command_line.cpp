@@ -84,7 +84,7 @@ double VerbCommandLine::positiveNumber(const QString& option) const
 
 double VerbCommandLine::frameRate(const QString& option) const
 {
-    const double value = number(option);
+    const double value = positiveNumber(option);
     try {
         return model::frameRate(value);
     } catch (const std::invalid_argument& problem) {
