@@ -125,7 +125,7 @@ private slots:
         QTRY_COMPARE(failures.count(), 1);
         QCOMPARE(failures.front().front().value<std::uint64_t>(), generation);
         const QString reason = failures.front().at(1).toString();
-        QVERIFY2(reason.contains("5,000 keys at 16 levels make 327,680,000 poses; the budget is 4,194,304"), qPrintable(reason));
+        QVERIFY2(reason.contains("5,000 keys at 16 levels make 327,680,000 poses; the budget is 1,048,576"), qPrintable(reason));
         QCOMPARE(results.count(), 0);
     }
 

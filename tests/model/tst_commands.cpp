@@ -318,7 +318,7 @@ void TstCommands::trackSettings()
 }
 
 // Every command that changes the keys' count, the levels or the interpolation of a track keeps it within
-// the pose budget, n·2^L ≤ 4,194,304, and names what it would have needed.
+// the pose budget, n·2^L ≤ 1,048,576, and names what it would have needed.
 void TstCommands::budgetsRefuseUnboundedTracks()
 {
     Document document;
@@ -329,17 +329,17 @@ void TstCommands::budgetsRefuseUnboundedTracks()
     screw.track.interpolation = InterpolationMethod::Screw;
     const ObjectId id = import(document, {screw}).front();
     QVERIFY(refuses([&] { SetSubdivisionCommand(document, id, {SubdivisionScheme::Jarek, 16, true, false}); },
-                    "1,000 keys at 16 levels make 65,536,000 poses; the budget is 4,194,304"));
-    document.undoStack().push(new SetSubdivisionCommand(document, id, {SubdivisionScheme::Jarek, 12, true, false}));
-    QCOMPARE(document.object(id)->track.subdivision.levels, 12); // 4,096,000 poses: within
+                    "1,000 keys at 16 levels make 65,536,000 poses; the budget is 1,048,576"));
+    document.undoStack().push(new SetSubdivisionCommand(document, id, {SubdivisionScheme::Jarek, 10, true, false}));
+    QCOMPARE(document.object(id)->track.subdivision.levels, 10); // 1,024,000 poses: within
 
-    // 64 keys at 16 levels are exactly the budget; a 65th key is one too many.
-    SceneObject full = objectWithKeys(2, std::vector<double>(thousand.begin(), thousand.begin() + 64));
+    // 16 keys at 16 levels are exactly the budget; a 17th key is one too many.
+    SceneObject full = objectWithKeys(2, std::vector<double>(thousand.begin(), thousand.begin() + 16));
     full.track.interpolation = InterpolationMethod::Screw;
     full.track.subdivision.levels = 16;
     const ObjectId fullId = import(document, {full}).front();
     QVERIFY(refuses([&] { AddKeyframeCommand(document, fullId, {20.0, {}, true}); },
-                    "65 keys at 16 levels make 4,259,840 poses; the budget is 4,194,304"));
+                    "17 keys at 16 levels make 1,114,112 poses; the budget is 1,048,576"));
 
     // Levels wait unused on a Hermite track; turning it into a screw track would subdivide them.
     SceneObject hermite = objectWithKeys(3, thousand);

@@ -391,7 +391,7 @@ void TstProjectFile::refusesMalformedFiles_data()
     QJsonObject bigScrew = validProject();
     bigScrew["objects"] = QJsonArray{screw};
     row("subdivision past the pose budget", bytes(bigScrew),
-        "objects[0].subdivision.levels: 1,000 keys at 16 levels make 65,536,000 poses; the budget is 4,194,304");
+        "objects[0].subdivision.levels: 1,000 keys at 16 levels make 65,536,000 poses; the budget is 1,048,576");
 }
 
 // Each malformed file is refused with a message naming the file and the field.
