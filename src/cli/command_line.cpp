@@ -3,6 +3,7 @@
 #include "core/number_text.h"
 #include "io/pose_csv.h"
 #include "model/output_target.h"
+#include "model/value_checks.h"
 
 #include <QDir>
 #include <QFile>
@@ -137,6 +138,16 @@ double VerbCommandLine::positiveNumber(const QString& option) const
     if (!(value > 0.0))
         throw error(dashed(option).toStdString() + ": " + quoted(parser_.value(option)) + " is not positive");
     return value;
+}
+
+double VerbCommandLine::frameRate(const QString& option) const
+{
+    const double value = positiveNumber(option);
+    try {
+        return model::frameRate(value);
+    } catch (const std::invalid_argument& problem) {
+        throw error(dashed(option).toStdString() + ": " + problem.what());
+    }
 }
 
 int VerbCommandLine::nonNegativeInteger(const QString& option) const

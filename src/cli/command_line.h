@@ -63,6 +63,8 @@ public:
     double number(const QString& option) const;
     // A required option's value as a finite number > 0.
     double positiveNumber(const QString& option) const;
+    // A required option's value as a frame rate in (0, model::kMaxFps].
+    double frameRate(const QString& option) const;
     // A required option's value as an integer ≥ 0.
     int nonNegativeInteger(const QString& option) const;
     // The convention of --order (default xyz) and --intrinsic or --extrinsic (default extrinsic),

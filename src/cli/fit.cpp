@@ -159,8 +159,14 @@ AngularVelocityTarget sketchTarget(const VerbCommandLine& commandLine, const std
         if (repeat < 1)
             throw commandLine.error("--repeat: a pattern repeats at least once");
         const QString patternPath = commandLine.requiredValue(kPattern);
+        const std::vector<Eigen::Vector2d> pattern = patternCurve(patternPath);
         try {
-            directions = fit::applyPattern(directions, patternCurve(patternPath), repeat);
+            fit::checkPatternPointCount(pattern.size(), repeat);
+        } catch (const std::invalid_argument& problem) {
+            throw commandLine.error("--repeat: " + std::string(problem.what()));
+        }
+        try {
+            directions = fit::applyPattern(directions, pattern, repeat);
         } catch (const std::invalid_argument& problem) {
             throw InputError(patternPath, problem.what());
         }
@@ -277,7 +283,7 @@ void runFit(const QStringList& arguments)
 {
     const VerbCommandLine commandLine(QStringLiteral("fit"), arguments, fitOptions());
     refuseSharedFiles(commandLine);
-    const double fps = commandLine.positiveNumber(kFps);
+    const double fps = commandLine.frameRate(kFps);
     const std::optional<fit::TimeWindow> window = windowOption(commandLine);
     const FitSettings fitSettings = settings(commandLine, window);
     const PoseTable keys = readPoseCsv(commandLine.inputPath(), commandLine.eulerConvention(), TimeColumn::Required);
@@ -285,6 +291,12 @@ void runFit(const QStringList& arguments)
         throw InputError(commandLine.inputPath(), keys.rows.back().line, "fit needs at least two keys");
     const std::set<std::size_t> freed = freedKeys(commandLine, keys.rows.size());
     const AngularVelocityTarget angularVelocity = target(commandLine, window);
+    try {
+        fit::checkFragmentCount(window.value_or(fit::TimeWindow{angularVelocity.startTime(), angularVelocity.endTime()}),
+                                fitSettings.fragmentSeconds);
+    } catch (const std::invalid_argument& problem) {
+        throw commandLine.error("--fragment: " + std::string(problem.what()));
+    }
 
     std::vector<FitKey> fitKeys;
     std::vector<double> keyTimes;

@@ -59,7 +59,7 @@ t0 + k/F up to the last key, plus a sample at every key time. Writes time,qw,qx,
   --method   slerp, nlerp, euler    orientation by that curve, position linear
              squad, hermite         orientation by that curve, position cubic Hermite
              screw                  the polyscrew through the key poses
-  --fps F    samples per second, > 0
+  --fps F    samples per second, above 0 and at most 1000
 
 The Euler options say how to read Euler input, and the angles the euler method interpolates.)";
 
@@ -93,13 +93,15 @@ or the artist's sketch
                       an optional time column; without times spread over the window by arc length
   --magnitude M.csv   its size: time,magnitude (rad/s, > 0), linear between samples
   --pattern P.csv     a small x,y curve (any unit; x along the direction curve, y across) repeated
-  --repeat N          N times along the direction curve, each repetition 1/N of its length
+  --repeat N          N times along the direction curve, each repetition 1/N of its length;
+                      N times the pattern's points at most 1,048,576
 
-  --fps F        output samples per second, > 0; changes only the output, never the fit
+  --fps F        output samples per second, above 0 and at most 1000; changes only the output
   --alpha A      weight of smoothness, the tangential acceleration W_T (default 0.002, >= 0)
   --beta B       weight of the angular-velocity deviation W_A (default 1, > 0)
   --delta D      the largest fragment error accepted, rad^2/s (default 0.1, > 0)
-  --fragment DT  length of the fragments the error is measured on, seconds (default 0.25)
+  --fragment DT  length of the fragments the error is measured on, seconds (default 0.25);
+                 the window may hold at most 100,000 of them
   --free LIST    0-based indices of keys the fit may move, e.g. 1,2,5
   --window ta,tb refit only this span of the keys (default: the target's span); outside it the
                  motion is unchanged, and it stays smooth across the window's ends
@@ -122,7 +124,7 @@ key time, as a pose file time,qw,qx,qy,qz,x,y,z: the pose relative to the object
 keys are.
 
   --object NAME  the object; the name must single out one object that has keyframes
-  --fps F        samples per second, > 0
+  --fps F        samples per second, above 0 and at most 1000
   -o, --output FILE  the output file)";
 
 const char* const kImport = R"(Usage: gyre-cli import SCENE -o PROJECT.gyre [--animation N]
@@ -142,7 +144,7 @@ beside it, or .glb), Collada (.dae), FBX (.fbx, ASCII) or OBJ (.obj with a .mtl;
 motion). Every object's motion is baked at the frames and its keys, so every interpolation and fit
 plays the same after import.
 
-  --fps F   frames per second of the bake (default: the project's)
+  --fps F   frames per second of the bake, at most 1000 (default: the project's)
   -o, --output FILE  the scene file)";
 
 const char* const kKeys = R"(Usage: gyre-cli keys PROJECT.gyre --object NAME -o KEYS.csv

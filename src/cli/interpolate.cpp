@@ -40,7 +40,7 @@ void runInterpolate(const QStringList& arguments)
 {
     const VerbCommandLine commandLine(QStringLiteral("interpolate"), arguments, interpolateOptions());
     const InterpolationMethod method = commandLine.choice(QStringLiteral("method"), kInterpolationMethodNames);
-    const double fps = commandLine.positiveNumber(QStringLiteral("fps"));
+    const double fps = commandLine.frameRate(QStringLiteral("fps"));
     const EulerConvention convention = commandLine.eulerConvention();
     const PoseTable keys = readPoseCsv(commandLine.inputPath(), convention, TimeColumn::Required);
     if (keys.rows.size() < 2)

@@ -10,6 +10,7 @@
 #include "io/scene_worker.h"
 #include "model/output_target.h"
 #include "model/project_file.h"
+#include "model/input_error.h"
 #include "model/track_evaluation.h"
 
 #include <string>
@@ -64,7 +65,7 @@ void runExport(const QStringList& arguments)
         throw commandLine.error("-o: the file's extension must name a scene format: " +
                                 alternatives(sceneFormatNames()));
     const std::optional<double> fps =
-        commandLine.isSet(kFpsOption) ? std::optional(commandLine.positiveNumber(kFpsOption)) : std::nullopt;
+        commandLine.isSet(kFpsOption) ? std::optional(commandLine.frameRate(kFpsOption)) : std::nullopt;
     const model::Scene scene = model::readProject(commandLine.inputPath());
     warnAll(exportSceneInWorker(scene, commandLine.outputPath(), *format, fps.value_or(scene.fps)).warnings);
 }
@@ -75,13 +76,20 @@ void runBake(const QStringList& arguments)
                                       {QCommandLineOption(kObjectOption, {}, QStringLiteral("name")),
                                        QCommandLineOption(kFpsOption, {}, QStringLiteral("rate"))});
     const QString name = commandLine.requiredValue(kObjectOption);
-    const double fps = commandLine.positiveNumber(kFpsOption);
+    const double fps = commandLine.frameRate(kFpsOption);
     const model::Scene scene = model::readProject(commandLine.inputPath());
     const model::SceneObject& object = trackedObjectNamed(scene, name, commandLine.inputPath());
     const model::BakeRange range =
         checkedOutputRange({scene.startTime, scene.endTime, fps}, object.track.keys.size(), commandLine);
+    std::vector<model::TimedPose> samples;
+    try {
+        samples = model::bakeTrack(object.track, range);
+    } catch (const std::invalid_argument& problem) {
+        throw InputError(commandLine.inputPath(), "the motion of '" + name.toStdString() + "' cannot be baked: " +
+                                                      problem.what());
+    }
     PoseTable frames{RotationColumns::Quaternion, true, true, {}};
-    for (const model::TimedPose& sample : model::bakeTrack(object.track, range))
+    for (const model::TimedPose& sample : samples)
         frames.rows.push_back({sample.time, sample.pose, 0});
     writePoseCsv(commandLine.outputPath(), frames);
 }

@@ -1,5 +1,6 @@
 #include "fit/angular_velocity_fit.h"
 
+#include "core/number_text.h"
 #include "core/quaternion_math.h"
 #include "fit/gauss_legendre.h"
 #include "fit/segment_energy.h"
@@ -107,6 +108,19 @@ void checkSettings(const FitSettings& settings)
     require(settings.maxVariableFrames >= 0, "the cap on variable frames must be ≥ 0");
 }
 
+} // namespace
+
+void checkFragmentCount(const TimeWindow& window, double fragmentSeconds)
+{
+    const double fragments = std::ceil((window.end - window.start) / fragmentSeconds);
+    if (!(fragments <= kMaxFragments))
+        throw std::invalid_argument("a window of " + formatNumber(window.end - window.start) + " s in fragments of " +
+                                    formatNumber(fragmentSeconds) + " s makes " + formatNumber(fragments) +
+                                    " fragments; the budget is " + formatNumber(kMaxFragments));
+}
+
+namespace {
+
 // The window to refit, checked against the keys and the target.
 TimeWindow checkedWindow(const std::vector<FitKey>& keys, const AngularVelocityTarget& target,
                          const FitSettings& settings)
@@ -126,6 +140,7 @@ TimeWindow checkedWindow(const std::vector<FitKey>& keys, const AngularVelocityT
         throw std::invalid_argument("the window " + spanText(window.start, window.end) +
                                     " is not covered by the target " +
                                     spanText(target.startTime(), target.endTime()));
+    checkFragmentCount(window, settings.fragmentSeconds);
     return window;
 }
 
@@ -242,8 +257,10 @@ ceres::CostFunction* FitRun::segmentEnergy(std::size_t segment) const
 {
     const double start = points_[segment].time;
     const double duration = points_[segment + 1].time - start;
-    const int nodes = std::clamp(static_cast<int>(std::ceil(duration * kNodesPerSecond)), kMinNodesPerSegment,
-                                 kMaxNodesPerSegment);
+    // Clamped as a double, so that a long segment cannot overflow the cast.
+    const int nodes = static_cast<int>(std::clamp(std::ceil(duration * kNodesPerSecond),
+                                                  static_cast<double>(kMinNodesPerSegment),
+                                                  static_cast<double>(kMaxNodesPerSegment)));
     const QuadratureRule& quadrature = rule(nodes);
     std::vector<Eigen::Vector3d> targets;
     targets.reserve(quadrature.nodes.size());

@@ -44,6 +44,15 @@ struct FitSettings {
     std::optional<TimeWindow> window;  // the span to refit; the target's span if absent
 };
 
+// The most fragments a fit measures F_n on, the window's length over ΔT. Each fragment is integrated
+// and may get a variable frame; 100,000 of them keep one round's error pass to a few hundred
+// milliseconds and its memory to a few megabytes.
+inline constexpr double kMaxFragments = 100000.0;
+
+// Throws std::invalid_argument, naming the count, when `window` in fragments of `fragmentSeconds`
+// (finite, > 0) would be more than kMaxFragments.
+void checkFragmentCount(const TimeWindow& window, double fragmentSeconds);
+
 enum class FitOutcome {
     Converged,          // every fragment error is at most δ
     RoundLimit,         // maxRounds solves were made

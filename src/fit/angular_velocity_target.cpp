@@ -1,5 +1,6 @@
 #include "fit/angular_velocity_target.h"
 
+#include "core/number_text.h"
 #include "core/timed_keys.h"
 
 #include <Eigen/Geometry>
@@ -195,6 +196,15 @@ std::vector<TimedVector> spreadByArcLength(const std::vector<Eigen::Vector3d>& d
     return timed;
 }
 
+void checkPatternPointCount(std::size_t patternPoints, int repeat)
+{
+    const double points = static_cast<double>(repeat) * (static_cast<double>(patternPoints) - 1.0) + 1.0;
+    if (!(points <= kMaxPatternPoints))
+        throw std::invalid_argument(std::to_string(repeat) + " repeats of a pattern of " + std::to_string(patternPoints) +
+                                    " points make " + formatNumber(points) + " points; the budget is " +
+                                    formatNumber(kMaxPatternPoints));
+}
+
 std::vector<TimedVector> applyPattern(const std::vector<TimedVector>& directions,
                                       const std::vector<Eigen::Vector2d>& pattern, int repeat)
 {
@@ -202,6 +212,7 @@ std::vector<TimedVector> applyPattern(const std::vector<TimedVector>& directions
         throw std::invalid_argument("a pattern needs at least two points");
     if (repeat < 1)
         throw std::invalid_argument("a pattern must repeat at least once");
+    checkPatternPointCount(pattern.size(), repeat);
     const Eigen::Vector2d first = pattern.front();
     const Eigen::Vector2d chord = pattern.back() - first;
     if (chord.x() == 0.0)

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <vector>
 
 namespace gyre::fit {
@@ -54,6 +55,14 @@ private:
 // one repeated) holds its direction over the whole span. Throws std::invalid_argument for no points.
 std::vector<TimedVector> spreadByArcLength(const std::vector<Eigen::Vector3d>& directions, double startTime,
                                            double endTime);
+
+// The most points a repeated pattern may make, repeat·(pattern points − 1) + 1: a million directions
+// (32 MB), each also a target sample, so a fit over them stays within memory and minutes.
+inline constexpr double kMaxPatternPoints = 1048576.0;
+
+// Throws std::invalid_argument, naming the count, when `patternPoints` repeated `repeat` times make more
+// than kMaxPatternPoints.
+void checkPatternPointCount(std::size_t patternPoints, int repeat);
 
 // The direction curve with a pattern repeated `repeat` times along it (the paper's spinning-top
 // wobble). The pattern is a drawn 2-D shape, in any unit: its x runs along the curve, its y across.

@@ -190,8 +190,9 @@ private:
 
     std::vector<model::TimedPose> bake(const model::SceneObject& object)
     {
-        samples_ += static_cast<std::size_t>(model::bakeSampleBound(range_, object.track.keys.size()));
-        if (samples_ > kMaxExportSamples)
+        // Summed as doubles and compared before any cast: a bound beyond the integer range cannot wrap.
+        samples_ += model::bakeSampleBound(range_, object.track.keys.size());
+        if (!(samples_ <= static_cast<double>(kMaxExportSamples)))
             throw OutputError(path_, FileError::tr("baking at %1 fps gives more than %2 samples")
                                          .arg(QString::fromStdString(formatNumber(range_.fps)))
                                          .arg(kMaxExportSamples)
@@ -209,7 +210,8 @@ private:
     {
         auto node = std::make_unique<aiNode>(name);
         try {
-            node->mTransformation = assimp_math::toAssimpMatrix(model::TrackMotion(object.track).at(scene_.startTime));
+            node->mTransformation = assimp_math::toAssimpMatrix(model::unitSample(
+                model::TrackMotion(object.track).at(scene_.startTime), scene_.startTime));
         } catch (const std::invalid_argument& error) {
             throw OutputError(path_, FileError::tr("the motion of '%1' cannot be evaluated: %2")
                                          .arg(object.name, QString::fromUtf8(error.what()))
@@ -289,7 +291,7 @@ private:
     model::BakeRange range_;
     ExportReport& report_;
     NodeNames names_;
-    std::size_t samples_ = 0;
+    double samples_ = 0.0; // bakeSampleBound summed over the baked objects
     std::vector<model::ObjectId> parentOf_;
     std::vector<model::ObjectId> idOf_;
     std::vector<std::unique_ptr<aiMesh>> meshes_;

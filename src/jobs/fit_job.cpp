@@ -67,9 +67,10 @@ void FitJob::request(model::ObjectId object, model::MotionTrack track)
             sendToUi([this, generation, input, applied = appliedFitResult(input, result), summary] {
                 answer(generation, [&](model::ObjectId id) { emit finished(id, input, applied, summary); });
             });
-        } catch (const std::invalid_argument& error) {
-            // SketchFitError says what the artist should do; the fit's own refusals name what is wrong.
-            sendToUi([this, generation, message = QString::fromUtf8(error.what())] {
+        } catch (...) {
+            // SketchFitError says what the artist should do; the fit's own refusals name what is wrong; any
+            // other failure (out of memory, a solver error) is reported as it is.
+            sendToUi([this, generation, message = QString::fromStdString(currentExceptionText())] {
                 answer(generation, [&](model::ObjectId id) { emit failed(id, message); });
             });
         }

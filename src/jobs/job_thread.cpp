@@ -1,8 +1,23 @@
 #include "jobs/job_thread.h"
 
+#include <exception>
+#include <new>
 #include <utility>
 
 namespace gyre::jobs {
+
+std::string currentExceptionText()
+{
+    try {
+        throw;
+    } catch (const std::bad_alloc&) {
+        return "not enough memory";
+    } catch (const std::exception& error) {
+        return error.what();
+    } catch (...) {
+        return "an unknown error";
+    }
+}
 
 JobThread::JobThread()
     : thread_([this] { run(); })
@@ -44,7 +59,12 @@ void JobThread::run()
             waiting_.reset();
             superseded_ = false;
         }
-        work(superseded_);
+        // An exception leaving a std::thread's function ends the process: the work has had its chance to
+        // report it, so it stops here.
+        try {
+            work(superseded_);
+        } catch (...) {
+        }
     }
 }
 

@@ -15,9 +15,14 @@
 #include <functional>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <thread>
 
 namespace gyre::jobs {
+
+// What the exception being handled says, inside a catch block: its what(), or that it is unknown. For a
+// job's `catch (...)`, so that every failure, not only the expected ones, reaches the UI as a message.
+std::string currentExceptionText();
 
 class JobThread {
 public:
@@ -29,7 +34,8 @@ public:
     JobThread(const JobThread&) = delete;
     JobThread& operator=(const JobThread&) = delete;
 
-    // Runs `work` on the thread once the current job is done, in place of a request still waiting.
+    // Runs `work` on the thread once the current job is done, in place of a request still waiting. Work
+    // reports its own failures; an exception that still escapes it is dropped, and the thread lives on.
     void post(Work work);
 
 private:

@@ -13,6 +13,10 @@ namespace {
 // Target samples per second where the sketch gives none: dense enough that ω linear between them
 // follows the motion's own angular velocity closely at any spin an artist animates.
 constexpr double kTargetSamplesPerSecond = 120.0;
+// The most target samples a sketch fit builds over its window: 2.4 hours at kTargetSamplesPerSecond,
+// each sample an evaluation of the track and a few dozen bytes, so the target takes seconds and
+// megabytes at most.
+constexpr double kMaxTargetSamples = 1048576.0;
 // Target sample times closer than this are one sample.
 constexpr double kSameTime = 1e-9;
 // Below this |ω| (rad/s) the motion has no spin axis to keep.
@@ -206,6 +210,23 @@ SketchFitProblem sketchFitProblem(const model::MotionTrack& track)
         throw SketchFitError(SketchFitError::tr("The edit window has no length inside the keys' span: widen it, or "
                                                 "sketch between the first and the last key.")
                                  .toStdString());
+
+    const double samples = std::ceil((window->end - window->start) * kTargetSamplesPerSecond);
+    if (samples > kMaxTargetSamples)
+        throw SketchFitError(SketchFitError::tr("The edit window of %1 s needs %2 target samples at %3 a second; the "
+                                                "budget is %4: narrow the window.")
+                                 .arg(window->end - window->start)
+                                 .arg(samples, 0, 'f', 0)
+                                 .arg(kTargetSamplesPerSecond)
+                                 .arg(kMaxTargetSamples, 0, 'f', 0)
+                                 .toStdString());
+    if (sketch.pattern.size() >= 2 && sketch.patternRepeat >= 1) {
+        try {
+            fit::checkPatternPointCount(sketch.pattern.size(), sketch.patternRepeat);
+        } catch (const std::invalid_argument& problem) {
+            throw SketchFitError(SketchFitError::tr("The pattern cannot be repeated: %1").arg(QString::fromUtf8(problem.what())).toStdString());
+        }
+    }
 
     std::vector<fit::FitKey> keys;
     keys.reserve(track.keys.size());

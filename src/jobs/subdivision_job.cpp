@@ -1,5 +1,7 @@
 #include "jobs/subdivision_job.h"
 
+#include "model/value_checks.h"
+
 #include <QElapsedTimer>
 
 #include <stdexcept>
@@ -21,16 +23,18 @@ std::uint64_t SubdivisionJob::request(std::vector<Pose> controlPoses, const Subd
         QElapsedTimer clock;
         clock.start();
         try {
+            model::checkPoseBudget(poses.size(), InterpolationMethod::Screw, settings);
             // The copy is the one allocation per run: the result has to leave the worker's buffers.
             std::vector<Pose> result = subdivider_.subdivide(poses, settings);
             const qint64 nanoseconds = clock.nsecsElapsed();
             QMetaObject::invokeMethod(
                 this, [this, generation, result = std::move(result), nanoseconds] { deliver(generation, result, nanoseconds); },
                 Qt::QueuedConnection);
-        } catch (const std::invalid_argument& error) {
+        } catch (...) {
             QMetaObject::invokeMethod(
-                this, [this, generation, reason = QString::fromUtf8(error.what())] { deliverFailure(generation, reason); },
-                Qt::QueuedConnection);
+                this, [this, generation, reason = QString::fromStdString(currentExceptionText())] {
+                    deliverFailure(generation, reason);
+                }, Qt::QueuedConnection);
         }
     });
     return generation;

@@ -179,10 +179,9 @@ std::vector<Item> timedItems(const JsonField& field, const char* timeKey, Read r
     std::vector<Item> items;
     for (const JsonField& element : field.elements()) {
         Item item = read(element);
-        if (!items.empty())
-            (timeKey ? element.member(timeKey) : element).checked([&] {
-                return timeAfter(timeOf(item), timeOf(items.back()));
-            });
+        (timeKey ? element.member(timeKey) : element).checked([&] {
+            return items.empty() ? timeValue(timeOf(item)) : timeAfter(timeOf(item), timeOf(items.back()));
+        });
         items.push_back(std::move(item));
     }
     return items;
@@ -279,8 +278,10 @@ MagnitudePoint magnitudePointIn(const JsonField& field)
 
 HermiteControlPoint controlPointIn(const JsonField& field)
 {
-    return {field.member("time").number(), quaternionIn(field.member("value")),
-            quaternionIn(field.member("derivative"))};
+    const JsonField value = field.member("value");
+    const JsonField derivative = field.member("derivative");
+    return {field.member("time").number(), value.checked([&] { return controlValue(quaternionIn(value)); }),
+            derivative.checked([&] { return controlDerivative(quaternionIn(derivative)); })};
 }
 
 std::optional<std::pair<double, double>> windowIn(const JsonField& field)
@@ -288,7 +289,7 @@ std::optional<std::pair<double, double>> windowIn(const JsonField& field)
     if (field.isNull())
         return std::nullopt;
     const Eigen::Vector2d span = field.vector2();
-    field.checked([&] { timeAfter(span[1], span[0]); });
+    field.checked([&] { timeAfter(span[1], timeValue(span[0])); });
     return std::pair{span[0], span[1]};
 }
 
@@ -337,6 +338,9 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
     object.track.subdivision = subdivisionIn(field.member("subdivision"));
     object.track.keys = timedItems<Keyframe>(field.member("keyframes"), "time", keyframeIn,
                                              [](const Keyframe& key) { return key.time; });
+    field.member("subdivision").member("levels").checked([&] {
+        checkPoseBudget(object.track.keys.size(), object.track.interpolation, object.track.subdivision);
+    });
     // Version 1 has no sketch-editing state: it reads as the empty sketch.
     if (version >= 2)
         object.track.sketch = sketchIn(field.member("sketch"));
@@ -403,7 +407,7 @@ Scene sceneIn(const JsonField& root)
     scene.endTime = root.member("endTime").number();
     root.member("fps").checked([&] { return frameRate(scene.fps); });
     root.member("endTime").checked([&] { checkTimeRange(scene.fps, scene.startTime, scene.endTime); });
-    scene.currentTime = root.member("currentTime").number();
+    scene.currentTime = numberIn(root.member("currentTime"), timeValue);
     std::vector<std::shared_ptr<const Mesh>> meshes;
     for (const JsonField& mesh : root.member("meshes").elements())
         meshes.push_back(meshIn(mesh));

@@ -5,6 +5,8 @@
 #include "core/quaternion_math.h"
 #include "core/subdivision.h"
 #include "core/timed_keys.h"
+#include "core/number_text.h"
+#include "model/value_checks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -169,6 +171,15 @@ Eigen::Vector3d TrackMotion::angularVelocity(double time) const
     return quatLog(after * before.conjugate()) / kAngularVelocityStep;
 }
 
+Pose unitSample(const Pose& pose, double time)
+{
+    const double length = pose.orientation.norm();
+    if (!(std::abs(length - 1.0) <= kBakedUnitTolerance && pose.position.allFinite()))
+        throw std::invalid_argument("the pose at " + formatNumber(time) + " s is not a finite pose with a unit "
+                                    "orientation (its quaternion has length " + formatNumber(length) + ")");
+    return pose;
+}
+
 double bakeSampleBound(const BakeRange& range, std::size_t keyCount)
 {
     // One frame more than the product promises, in case rounding put it just below a whole number.
@@ -182,6 +193,11 @@ std::vector<double> bakeTimes(const std::vector<double>& keyTimes, const BakeRan
     if (!(std::isfinite(range.start) && std::isfinite(range.end) && range.start <= range.end))
         throw std::invalid_argument("a bake needs a finite range whose start is not after its end");
     const double frames = bakeSampleBound(range, 0);
+    // Checked as a double before it becomes a count: a cast of a value beyond the integer range is undefined.
+    if (!(frames <= kMaxFrames + 2.0))
+        throw std::invalid_argument("a bake of " + formatNumber(range.end - range.start) + " s at " +
+                                    formatNumber(range.fps) + " fps makes " + formatNumber(frames) +
+                                    " frames; the budget is " + formatNumber(kMaxFrames));
     auto key = std::lower_bound(keyTimes.begin(), keyTimes.end(), range.start);
     const auto keysEnd = std::upper_bound(key, keyTimes.end(), range.end);
     std::vector<double> times;
@@ -215,7 +231,7 @@ std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& rang
     std::vector<TimedPose> poses;
     poses.reserve(times.size());
     for (const double time : times)
-        poses.push_back({time, motion.at(time)});
+        poses.push_back({time, unitSample(motion.at(time), time)});
     return poses;
 }
 

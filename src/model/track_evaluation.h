@@ -67,13 +67,21 @@ struct BakeRange {
     double fps = 24.0;
 };
 
+// How far from 1 the length of a baked orientation may be: a normalised quaternion is unit to a few
+// ulps, so anything further came from a curve that lost its direction.
+inline constexpr double kBakedUnitTolerance = 1e-9;
+
+// `pose`, sampled at `time`, if its orientation is a unit quaternion within kBakedUnitTolerance and its
+// position finite; else std::invalid_argument naming the time. Nothing non-unit is ever written.
+Pose unitSample(const Pose& pose, double time);
+
 // At least as many samples as bakeTimes gives for `keyCount` keys: the caller's check against a limit
 // before anything is allocated. Infinite or NaN for a range that is not finite.
 double bakeSampleBound(const BakeRange& range, std::size_t keyCount);
 
 // The frames of the range merged with the key times inside it, increasing; a frame within
 // kKeyMergeSeconds of a key gives way to it. Key times must increase. Throws std::invalid_argument
-// unless fps is finite and positive and start ≤ end, both finite.
+// unless fps is finite and positive and start ≤ end, both finite, or for more than kMaxFrames frames.
 std::vector<double> bakeTimes(const std::vector<double>& keyTimes, const BakeRange& range);
 
 struct TimedPose {
@@ -81,7 +89,8 @@ struct TimedPose {
     Pose pose;
 };
 
-// The track's poses at bakeTimes(its key times, range).
+// The track's poses at bakeTimes(its key times, range). Throws std::invalid_argument for a pose that is
+// not unitSample.
 std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range,
                                  const EulerConvention& eulerConvention = {});
 

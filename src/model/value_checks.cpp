@@ -2,6 +2,8 @@
 
 #include "model/input_error.h"
 
+#include <QLocale>
+
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -16,6 +18,9 @@ namespace {
 constexpr double kRoundingTolerance = 4 * std::numeric_limits<double>::epsilon();
 
 [[noreturn]] void refuse(const QString& message) { throw std::invalid_argument(message.toStdString()); }
+
+// A count as the budget messages write it, with thousands separated: "65,536,000".
+QString count(double value) { return QLocale(QLocale::English).toString(value, 'f', 0); }
 
 template <class Vector>
 Vector finiteCoefficients(const Vector& value)
@@ -46,7 +51,7 @@ void checkIncreasingTimes(const std::vector<Item>& items, TimeOf timeOf)
 {
     for (std::size_t i = 0; i < items.size(); ++i) {
         if (i == 0)
-            finiteNumber(std::invoke(timeOf, items[i]));
+            timeValue(std::invoke(timeOf, items[i]));
         else
             timeAfter(std::invoke(timeOf, items[i]), std::invoke(timeOf, items[i - 1]));
     }
@@ -89,16 +94,42 @@ Eigen::Quaterniond finiteQuaternion(const Eigen::Quaterniond& value)
     return Eigen::Quaterniond(finiteCoefficients(Eigen::Vector4d(value.coeffs())));
 }
 
+double timeValue(double time)
+{
+    if (!(std::abs(finiteNumber(time)) <= kMaxTimeSeconds))
+        refuse(FileError::tr("time %1 is beyond ±%2 s").arg(FileError::number(time), FileError::number(kMaxTimeSeconds)));
+    return time;
+}
+
 double timeAfter(double time, double previous)
 {
-    if (!(finiteNumber(time) > previous))
+    if (!(timeValue(time) > previous))
         refuse(FileError::tr("time %1 does not come after the time before it, %2").arg(FileError::number(time), FileError::number(previous)));
     return time;
 }
 
+Eigen::Quaterniond controlValue(const Eigen::Quaterniond& value)
+{
+    // stableNorm: a denormal or a huge component would under- or overflow the squares of norm().
+    const double length = Eigen::Vector4d(finiteQuaternion(value).coeffs()).stableNorm();
+    if (!(length >= kMinControlValueNorm))
+        refuse(FileError::tr("the value has length %1; a fitted value needs length at least %2")
+                   .arg(FileError::number(length), FileError::number(kMinControlValueNorm)));
+    return value;
+}
+
+Eigen::Quaterniond controlDerivative(const Eigen::Quaterniond& derivative)
+{
+    const double length = Eigen::Vector4d(finiteQuaternion(derivative).coeffs()).stableNorm();
+    if (!(length <= kMaxControlDerivativeNorm))
+        refuse(FileError::tr("the derivative has length %1 per second; the most it may have is %2")
+                   .arg(FileError::number(length), FileError::number(kMaxControlDerivativeNorm)));
+    return derivative;
+}
+
 void checkKeyframe(Keyframe& key)
 {
-    finiteNumber(key.time);
+    timeValue(key.time);
     key.pose.orientation = unitQuaternion(key.pose.orientation);
     finiteVector(key.pose.position);
 }
@@ -139,14 +170,14 @@ void checkPattern(const std::vector<Eigen::Vector2d>& pattern, int repeat)
 void checkWindow(const std::optional<std::pair<double, double>>& window)
 {
     if (window)
-        timeAfter(window->second, finiteNumber(window->first));
+        timeAfter(window->second, timeValue(window->first));
 }
 
 void checkFittedCurve(const std::vector<HermiteControlPoint>& curve)
 {
     for (const HermiteControlPoint& point : curve) {
-        finiteQuaternion(point.value);
-        finiteQuaternion(point.derivative);
+        controlValue(point.value);
+        controlDerivative(point.derivative);
     }
     checkIncreasingTimes(curve, &HermiteControlPoint::time);
 }
@@ -170,10 +201,25 @@ void checkSubdivision(const SubdivisionSettings& settings)
         refuse(FileError::tr("subdivision levels %1 are outside 0 to %2").arg(settings.levels).arg(kMaxSubdivisionLevels));
 }
 
+void checkPoseBudget(std::size_t keyCount, InterpolationMethod interpolation, const SubdivisionSettings& settings)
+{
+    if (interpolation != InterpolationMethod::Screw)
+        return;
+    checkSubdivision(settings);
+    // n·2^L, at least the cyclic and the open count; exact in a double for L ≤ kMaxSubdivisionLevels.
+    const double poses = std::ldexp(static_cast<double>(keyCount), settings.levels);
+    if (poses > static_cast<double>(kMaxSubdividedPoses))
+        refuse(FileError::tr("%1 keys at %2 levels make %3 poses; the budget is %4")
+                   .arg(count(static_cast<double>(keyCount)))
+                   .arg(settings.levels)
+                   .arg(count(poses), count(static_cast<double>(kMaxSubdividedPoses))));
+}
+
 void checkTrack(MotionTrack& track)
 {
     checkKeyframes(track.keys.edit());
     checkSubdivision(track.subdivision);
+    checkPoseBudget(track.keys.size(), track.interpolation, track.subdivision);
     checkSketch(track.sketch);
 }
 
@@ -187,9 +233,15 @@ double frameRate(double fps)
 void checkTimeRange(double fps, double startTime, double endTime)
 {
     frameRate(fps);
-    if (!(finiteNumber(endTime) > finiteNumber(startTime)))
+    if (!(timeValue(endTime) > timeValue(startTime)))
         refuse(FileError::tr("the end time %1 does not come after the start time %2")
                    .arg(FileError::number(endTime), FileError::number(startTime)));
+    // Both times are within ±kMaxTimeSeconds and fps ≤ kMaxFps, so the product is finite.
+    const double frames = (endTime - startTime) * fps;
+    if (frames > kMaxFrames)
+        refuse(FileError::tr("%1 s at %2 fps make %3 frames; the budget is %4")
+                   .arg(FileError::number(endTime - startTime), FileError::number(fps), count(std::ceil(frames)),
+                        count(kMaxFrames)));
 }
 
 void checkMesh(const Mesh& mesh)

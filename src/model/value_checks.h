@@ -24,6 +24,31 @@ inline constexpr int kMaxSubdivisionLevels = 16;
 // The highest frame rate a scene may have.
 inline constexpr double kMaxFps = 1000.0;
 
+// Budgets, so that no value the document holds asks for unbounded time or memory.
+//
+// Every time in the document (keys, strokes, magnitude points, the window, fitted control points, the
+// scene's range) lies within ±kMaxTimeSeconds: eleven and a half days, far beyond any animation, and
+// small enough that a duration times kMaxFps stays an exact integer in a double.
+inline constexpr double kMaxTimeSeconds = 1e6;
+// The most frames a scene's range may hold at its frame rate, (end − start)·fps: the rows a pose file
+// may hold (2^24, 4.7 hours at kMaxFps), each frame one sample of every object when baked.
+inline constexpr double kMaxFrames = 16777216.0;
+// The most poses a screw track may subdivide into, n·2^L for n keys at L levels (cyclic or open): 2^20.
+// Measured, a subdivided pose costs about 255 bytes while a track is subdivided and evaluated (the
+// pose, the subdivider's working buffers, the polyscrew's screw per span): 1,000 keys at 12 levels,
+// 4,096,000 poses, bake with a peak of 1.04 GB in 52 s. The budget keeps one track near 270 MB.
+inline constexpr std::size_t kMaxSubdividedPoses = std::size_t{1} << 20;
+// The shortest a fitted control point's value may be. The fit starts from unit keys and keeps its
+// values near length 1; the curve is normalised when evaluated, so a value near zero has no direction
+// and its neighbourhood turns arbitrarily fast (the normalised curve's angular velocity grows as
+// 1/|q|²). Zero, denormal and such near-zero values are refused.
+inline constexpr double kMinControlValueNorm = 1e-3;
+// The largest a fitted control point's derivative q′ may be, per second. For a unit curve |q′| = |ω|/2,
+// so this allows 2·10^6 rad/s (over 300,000 turns a second, far beyond what kMaxFps can show), and keeps
+// every term of the cubic, value + q′·Δt with Δt ≤ 2·kMaxTimeSeconds, below 10^13: no overflow, and
+// the length stays far from zero and infinity, so evaluation stays unit.
+inline constexpr double kMaxControlDerivativeNorm = 1e6;
+
 // `value` if it is finite.
 double finiteNumber(double value);
 // `value` if it is finite and ≥ 0, or > 0.
@@ -38,8 +63,14 @@ Eigen::Quaterniond unitQuaternion(const Eigen::Quaterniond& value);
 // Any finite 4-vector, such as a Hermite control point's value or derivative.
 Eigen::Quaterniond finiteQuaternion(const Eigen::Quaterniond& value);
 
-// `time` (finite) if it comes strictly after `previous`.
+// `time` if it is finite and within ±kMaxTimeSeconds.
+double timeValue(double time);
+// `time` (a timeValue) if it comes strictly after `previous`.
 double timeAfter(double time, double previous);
+// A fitted control point's value (length ≥ kMinControlValueNorm) and derivative (length ≤
+// kMaxControlDerivativeNorm).
+Eigen::Quaterniond controlValue(const Eigen::Quaterniond& value);
+Eigen::Quaterniond controlDerivative(const Eigen::Quaterniond& derivative);
 
 // Checks whole values, normalising unit quaternions and vectors in place.
 void checkKeyframe(Keyframe& key);
@@ -51,9 +82,13 @@ void checkWindow(const std::optional<std::pair<double, double>>& window);
 void checkFittedCurve(const std::vector<HermiteControlPoint>& curve);
 void checkSketch(SketchState& sketch);
 void checkSubdivision(const SubdivisionSettings& settings);
+// The poses a screw track would subdivide into, `keyCount`·2^levels, within kMaxSubdividedPoses; a
+// track of another interpolation is not subdivided and passes.
+void checkPoseBudget(std::size_t keyCount, InterpolationMethod interpolation, const SubdivisionSettings& settings);
 void checkTrack(MotionTrack& track);
 // `fps` if it is in (0, kMaxFps].
 double frameRate(double fps);
+// A frame rate, start and end times (timeValues, start before end), and at most kMaxFrames frames.
 void checkTimeRange(double fps, double startTime, double endTime);
 // Finite positions and normals, one normal per position or none, and whole triangles of indices
 // that name positions.

@@ -677,8 +677,12 @@ void TstCli::badInput_data()
                               << keys << 2 << "interpolate: --fps: 'fast' is not a number";
     QTest::newRow("fps nan") << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "slerp", "--fps", "nan"}
                              << keys << 2 << "interpolate: --fps: 'nan' is not a finite number";
-    QTest::newRow("too many frames") << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "slerp", "--fps", "1e7"}
-                                     << keys << 2 << "interpolate: --fps 1e+07 over 2 s gives more than 16777216";
+    QTest::newRow("too many frames") << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "slerp", "--fps", "1000"}
+                                     << QByteArray("time,qw,qx,qy,qz\n0,1,0,0,0\n20000,0,1,0,0\n") << 2
+                                     << "interpolate: --fps 1000 over 20000 s gives more than 16777216";
+    QTest::newRow("frame rate above the cap")
+        << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "slerp", "--fps", "1e7"} << keys << 2
+        << "interpolate: --fps: a frame rate of 1e+07 is above 1000";
     QTest::newRow("too deep") << QStringList{"subdivide", "IN", "-o", "OUT", "--scheme", "bspline", "--levels", "23"}
                               << keys << 2 << "subdivide: --levels 23 would turn 3 poses into more than 16777216";
     QTest::newRow("far too deep") << QStringList{"subdivide", "IN", "-o", "OUT", "--scheme", "bspline", "--levels", "2000"}

@@ -6,8 +6,14 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include <numbers>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <cstdint>
+#include <mutex>
+#include <numbers>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 using namespace gyre;
@@ -102,6 +108,64 @@ private slots:
         const std::uint64_t generation = job.request(lCycle(0), SubdivisionSettings{SubdivisionScheme::Jarek, -1, true, false});
         QTRY_COMPARE(failures.count(), 1);
         QCOMPARE(failures.front().front().value<std::uint64_t>(), generation);
+    }
+
+    // 5,000 poses at 16 levels would be 327,680,000 poses (about 30 GB): the job refuses them up front
+    // with the numbers, through its failed signal, where once it threw std::bad_alloc and ended the
+    // process.
+    void aRequestPastThePoseBudgetIsReportedAsFailed()
+    {
+        jobs::SubdivisionJob job;
+        QSignalSpy failures(&job, &jobs::SubdivisionJob::failed);
+        QSignalSpy results(&job, &jobs::SubdivisionJob::subdivided);
+        std::vector<Pose> many;
+        for (int k = 0; k < 5000; ++k)
+            many.push_back(lCycle(0)[k % 6]);
+        const std::uint64_t generation = job.request(many, SubdivisionSettings{SubdivisionScheme::Jarek, 16, true, false});
+        QTRY_COMPARE(failures.count(), 1);
+        QCOMPARE(failures.front().front().value<std::uint64_t>(), generation);
+        const QString reason = failures.front().at(1).toString();
+        QVERIFY2(reason.contains("5,000 keys at 16 levels make 327,680,000 poses; the budget is 1,048,576"), qPrintable(reason));
+        QCOMPARE(results.count(), 0);
+    }
+
+    // A job whose work throws something other than std::invalid_argument still ends in no crash: the
+    // thread drops it and runs the next job.
+    void theThreadOutlivesAThrowingJob()
+    {
+        jobs::JobThread thread;
+        std::mutex mutex;
+        std::condition_variable changed;
+        bool threw = false;
+        bool ranNext = false;
+        std::string reported;
+        thread.post([&](const std::atomic<bool>&) {
+            try {
+                throw std::runtime_error("the solver gave up");
+            } catch (...) {
+                reported = jobs::currentExceptionText();
+            }
+            {
+                const std::lock_guard lock(mutex);
+                threw = true;
+            }
+            changed.notify_one();
+            throw std::runtime_error("escapes the job");
+        });
+        std::unique_lock lock(mutex);
+        QVERIFY(changed.wait_for(lock, std::chrono::seconds(20), [&] { return threw; }));
+        lock.unlock();
+        // Posted once the first job has run, so it is not simply replaced while waiting.
+        thread.post([&](const std::atomic<bool>&) {
+            {
+                const std::lock_guard inner(mutex);
+                ranNext = true;
+            }
+            changed.notify_one();
+        });
+        lock.lock();
+        QVERIFY(changed.wait_for(lock, std::chrono::seconds(20), [&] { return ranNext; }));
+        QCOMPARE(reported, std::string("the solver gave up"));
     }
 };
 

@@ -142,6 +142,7 @@ private slots:
     void retimeMapsTheWholeTrack();
     void keyframeEdits();
     void trackSettings();
+    void budgetsRefuseUnboundedTracks();
     void strokes();
     void sketchSettings();
     void applyFitResult();
@@ -282,7 +283,7 @@ void TstCommands::retimeMapsTheWholeTrack()
     // dq/dt' = (dq/dt)/2
     QCOMPARE(track.sketch.fittedCurve[0].derivative.coeffs(), Eigen::Vector4d(0.5, 1, 1.5, 0));
     QVERIFY(refuses([&] { RetimeKeyframesCommand(document, id, 0, 1); }, "0 is not positive"));
-    QVERIFY(refuses([&] { RetimeKeyframesCommand(document, id, 1e308, 0); }, "inf is not a finite number"));
+    QVERIFY(refuses([&] { RetimeKeyframesCommand(document, id, 1e308, 0); }, "is beyond ±1e+06 s"));
 }
 
 void TstCommands::keyframeEdits()
@@ -314,6 +315,48 @@ void TstCommands::trackSettings()
     QVERIFY(!track.subdivision.cyclic);
     QVERIFY(refuses([&] { SetSubdivisionCommand(document, id, {SubdivisionScheme::Jarek, 17, true, false}); },
                     "levels 17 are outside 0 to 16"));
+}
+
+// Every command that changes the keys' count, the levels or the interpolation of a track keeps it within
+// the pose budget, n·2^L ≤ 1,048,576, and names what it would have needed.
+void TstCommands::budgetsRefuseUnboundedTracks()
+{
+    Document document;
+    std::vector<double> thousand;
+    for (int k = 0; k < 1000; ++k)
+        thousand.push_back(0.01 * k);
+    SceneObject screw = objectWithKeys(1, thousand);
+    screw.track.interpolation = InterpolationMethod::Screw;
+    const ObjectId id = import(document, {screw}).front();
+    QVERIFY(refuses([&] { SetSubdivisionCommand(document, id, {SubdivisionScheme::Jarek, 16, true, false}); },
+                    "1,000 keys at 16 levels make 65,536,000 poses; the budget is 1,048,576"));
+    document.undoStack().push(new SetSubdivisionCommand(document, id, {SubdivisionScheme::Jarek, 10, true, false}));
+    QCOMPARE(document.object(id)->track.subdivision.levels, 10); // 1,024,000 poses: within
+
+    // 16 keys at 16 levels are exactly the budget; a 17th key is one too many.
+    SceneObject full = objectWithKeys(2, std::vector<double>(thousand.begin(), thousand.begin() + 16));
+    full.track.interpolation = InterpolationMethod::Screw;
+    full.track.subdivision.levels = 16;
+    const ObjectId fullId = import(document, {full}).front();
+    QVERIFY(refuses([&] { AddKeyframeCommand(document, fullId, {20.0, {}, true}); },
+                    "17 keys at 16 levels make 1,114,112 poses; the budget is 1,048,576"));
+
+    // Levels wait unused on a Hermite track; turning it into a screw track would subdivide them.
+    SceneObject hermite = objectWithKeys(3, thousand);
+    hermite.track.subdivision.levels = 16;
+    const ObjectId hermiteId = import(document, {hermite}).front();
+    QVERIFY(refuses([&] { SetInterpolationCommand(document, hermiteId, InterpolationMethod::Screw); },
+                    "1,000 keys at 16 levels make 65,536,000 poses"));
+    hermite.track.interpolation = InterpolationMethod::Screw;
+    QVERIFY(refuses([&] { ImportObjectsCommand(document, {hermite}); }, "1,000 keys at 16 levels make 65,536,000 poses"));
+
+    // Fitted curves without a direction, and times past the bound.
+    const Eigen::Quaterniond still(0, 0, 0, 0);
+    FitResult zero{{{0, Eigen::Quaterniond::Identity(), still}, {1, Eigen::Quaterniond(0, 0, 0, 0), still}},
+                   document.object(id)->track.keys};
+    QVERIFY(refuses([&] { ApplyFitResultCommand(document, id, zero); }, "the value has length 0"));
+    QVERIFY(refuses([&] { MoveKeyframeCommand(document, id, 999, 1e300); }, "time 1e+300 is beyond ±1e+06 s"));
+    QVERIFY(refuses([&] { SetTimeRangeCommand(document, {24, 0, 1e6}); }, "make 24,000,000 frames; the budget is 16,777,216"));
 }
 
 void TstCommands::strokes()

@@ -363,6 +363,35 @@ void TstProjectFile::refusesMalformedFiles_data()
     row("reversed window", projectWith({"objects", 0, "sketch", "window"}, array({2, 1})),
         "objects[0].sketch.window: time 1 does not come after the time before it, 2");
     row("version 2 without a sketch", projectWithout({"objects", 0, "sketch"}), "objects[0].sketch: missing");
+
+    // Values a reader once accepted that crashed the window or made evaluation write zero quaternions.
+    const auto fitted = [](QJsonArray value, QJsonArray derivative) {
+        return QJsonArray{QJsonObject{{"time", 0}, {"value", array({1, 0, 0, 0})}, {"derivative", array({0, 0, 0, 0})}},
+                          QJsonObject{{"time", 1}, {"value", value}, {"derivative", derivative}}};
+    };
+    row("zero fitted value", projectWith({"objects", 0, "sketch", "fittedCurve"}, fitted(array({0, 0, 0, 0}), array({0, 0, 0, 0}))),
+        "objects[0].sketch.fittedCurve[1].value: the value has length 0; a fitted value needs length at least 0.001");
+    row("denormal fitted value", projectWith({"objects", 0, "sketch", "fittedCurve"}, fitted(array({1e-300, 0, 0, 0}), array({0, 0, 0, 0}))),
+        "objects[0].sketch.fittedCurve[1].value: the value has length ");
+    row("huge fitted derivative", projectWith({"objects", 0, "sketch", "fittedCurve"}, fitted(array({1, 0, 0, 0}), array({0, 1e300, 0, 0}))),
+        "objects[0].sketch.fittedCurve[1].derivative: the derivative has length 1e+300 per second; the most it may have is 1e+06");
+    // Budgets: a small file that would take unbounded time or memory.
+    row("end time beyond the bound", projectWith({"endTime"}, 1e300), "endTime: time 1e+300 is beyond ±1e+06 s");
+    row("first key beyond the bound", projectWith({"objects", 0, "keyframes", 0, "time"}, -2e6),
+        "objects[0].keyframes[0].time: time -2e+06 is beyond ±1e+06 s");
+    row("too many frames", projectWith({"endTime"}, 1e6),
+        "endTime: 1e+06 s at 24 fps make 24,000,000 frames; the budget is 16,777,216");
+    QJsonObject screw = object(1);
+    screw["interpolation"] = "screw";
+    screw["subdivision"] = QJsonObject{{"scheme", "jarek"}, {"levels", 16}, {"cyclic", true}, {"decoupled", false}};
+    QJsonArray thousandKeys;
+    for (int k = 0; k < 1000; ++k)
+        thousandKeys.append(keyframe(k * 0.01));
+    screw["keyframes"] = thousandKeys;
+    QJsonObject bigScrew = validProject();
+    bigScrew["objects"] = QJsonArray{screw};
+    row("subdivision past the pose budget", bytes(bigScrew),
+        "objects[0].subdivision.levels: 1,000 keys at 16 levels make 65,536,000 poses; the budget is 1,048,576");
 }
 
 // Each malformed file is refused with a message naming the file and the field.

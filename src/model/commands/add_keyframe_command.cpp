@@ -16,7 +16,9 @@ namespace {
 std::pair<std::size_t, Keyframe> placeKey(const Document& document, ObjectId object, Keyframe key)
 {
     checkKeyframe(key);
-    const std::vector<Keyframe>& keys = requireObject(document, object).track.keys;
+    const MotionTrack& track = requireObject(document, object).track;
+    const std::vector<Keyframe>& keys = track.keys;
+    checkPoseBudget(keys.size() + 1, track.interpolation, track.subdivision);
     const auto at = std::lower_bound(keys.begin(), keys.end(), key.time,
                                      [](const Keyframe& existing, double time) { return existing.time < time; });
     if (at != keys.end() && at->time == key.time)

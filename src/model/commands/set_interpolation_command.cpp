@@ -1,12 +1,25 @@
 #include "model/commands/set_interpolation_command.h"
 
 #include "model/commands/command_checks.h"
+#include "model/value_checks.h"
 
 namespace gyre::model {
 
+namespace {
+
+// The method, if the object's keys and subdivision with it stay within the pose budget.
+InterpolationMethod checkedMethod(const Document& document, ObjectId object, InterpolationMethod method)
+{
+    const MotionTrack& track = requireObject(document, object).track;
+    checkPoseBudget(track.keys.size(), method, track.subdivision);
+    return method;
+}
+
+} // namespace
+
 SetInterpolationCommand::SetInterpolationCommand(Document& document, ObjectId object, InterpolationMethod method,
                                                  QUndoCommand* parent)
-    : ChangeValueCommand(document, objectTarget(document, object), method,
+    : ChangeValueCommand(document, objectTarget(document, object), checkedMethod(document, object, method),
                          commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Set Interpolation")), parent)
 {
 }

@@ -18,7 +18,7 @@ double timeBetweenNeighbours(const Document& document, ObjectId object, std::siz
     const std::vector<Keyframe>& keys = document.object(object)->track.keys;
     const double earliest = key > 0 ? keys[key - 1].time : -std::numeric_limits<double>::infinity();
     const double latest = key + 1 < keys.size() ? keys[key + 1].time : std::numeric_limits<double>::infinity();
-    if (!(finiteNumber(time) > earliest && time < latest))
+    if (!(timeValue(time) > earliest && time < latest))
         throw std::invalid_argument("keyframe " + std::to_string(key) + " of object " + std::to_string(object) +
                                     " moves only between its neighbours at " + formatNumber(earliest) + " and " +
                                     formatNumber(latest) + " s, not to " + formatNumber(time) + " s");
