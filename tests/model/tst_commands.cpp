@@ -355,7 +355,7 @@ void TstCommands::budgetsRefuseUnboundedTracks()
     FitResult zero{{{0, Eigen::Quaterniond::Identity(), still}, {1, Eigen::Quaterniond(0, 0, 0, 0), still}},
                    document.object(id)->track.keys};
     QVERIFY(refuses([&] { ApplyFitResultCommand(document, id, zero); }, "the value has length 0"));
-    QVERIFY(refuses([&] { MoveKeyframeCommand(document, id, 999, 1e300); }, "time 1e+300 is beyond ±1e+06 s"));
+    QVERIFY(refuses([&] { SetKeyframeTimeCommand(document, id, 999, 1e300); }, "time 1e+300 is beyond ±1e+06 s"));
     QVERIFY(refuses([&] { SetTimeRangeCommand(document, {24, 0, 1e6}); }, "make 24,000,000 frames; the budget is 16,777,216"));
 }
 
