@@ -1372,11 +1372,6 @@
         <translation>Anpassung läuft…</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_panel.cpp" line="225"/>
-        <source>Remove angular velocity fit</source>
-        <translation>Anpassung der Winkelgeschwindigkeit entfernen</translation>
-    </message>
-    <message>
         <location filename="../src/app/sketch/fit_panel.cpp" line="235"/>
         <source>Not changed: %1.</source>
         <translation>Nicht geändert: %1.</translation>
@@ -2339,9 +2334,14 @@
         <translation>Strich hinzufügen</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/apply_fit_result_command.cpp" line="24"/>
+        <location filename="../src/model/commands/apply_fit_result_command.cpp" line="53"/>
         <source>Apply angular velocity fit</source>
         <translation>Anpassung der Winkelgeschwindigkeit anwenden</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/remove_fit_command.cpp" line="33"/>
+        <source>Remove angular velocity fit</source>
+        <translation>Anpassung der Winkelgeschwindigkeit entfernen</translation>
     </message>
     <message>
         <location filename="../src/model/commands/delete_object_command.cpp" line="25"/>

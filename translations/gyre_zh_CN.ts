@@ -1372,11 +1372,6 @@
         <translation>正在拟合…</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_panel.cpp" line="225"/>
-        <source>Remove angular velocity fit</source>
-        <translation>移除角速度拟合</translation>
-    </message>
-    <message>
         <location filename="../src/app/sketch/fit_panel.cpp" line="235"/>
         <source>Not changed: %1.</source>
         <translation>未更改：%1。</translation>
@@ -2337,9 +2332,14 @@
         <translation>添加笔画</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/apply_fit_result_command.cpp" line="24"/>
+        <location filename="../src/model/commands/apply_fit_result_command.cpp" line="53"/>
         <source>Apply angular velocity fit</source>
         <translation>应用角速度拟合</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/remove_fit_command.cpp" line="33"/>
+        <source>Remove angular velocity fit</source>
+        <translation>移除角速度拟合</translation>
     </message>
     <message>
         <location filename="../src/model/commands/delete_object_command.cpp" line="25"/>

@@ -95,8 +95,10 @@ SquadCurve::SquadCurve(std::vector<OrientationKey> keys)
             inner_.push_back(q);
             continue;
         }
-        const Eigen::Vector3d toNext = quatLog(q.conjugate() * keys_[i + 1].rotation);
-        const Eigen::Vector3d toPrevious = quatLog(q.conjugate() * keys_[i - 1].rotation);
+        // The neighbours are on qᵢ's hemisphere (alignSigns), so each logarithm is at most π/2 long
+        // and sᵢ lies within π/4 of qᵢ on the sphere, on the same sheet as the keys.
+        const Eigen::Vector3d toNext = quatLogOnSphere(q.conjugate() * keys_[i + 1].rotation);
+        const Eigen::Vector3d toPrevious = quatLogOnSphere(q.conjugate() * keys_[i - 1].rotation);
         inner_.push_back(q * quatExp(-0.25 * (toNext + toPrevious)));
     }
 }
@@ -107,10 +109,16 @@ OrientationSample SquadCurve::sampleSegment(std::size_t segment, double u, doubl
     // h = 2u(1−u), L = log(A⁻¹B). By the chain rule, with ′ = d/du:
     //   A′ = A·vₐ, B′ = B·v_b, C = A⁻¹B, C′ = A′*·B + A*·B′, L′ = dlog_C(C′),
     //   Q′ = A′·exp(hL) + A·dexp_{hL}(h′L + hL′).
+    //
+    // All four points stay as stored, on one sheet of the 4-sphere: the keys are sign-aligned and
+    // each sᵢ lies within π/4 of its qᵢ, so both slerps and the outer one run along the sphere with
+    // quatLogOnSphere. A short-arc logarithm there would flip B or L to −B or −L wherever the
+    // rotation between them passes 180° (as between sᵢ and sᵢ₊₁ when keys are ~180° apart), and the
+    // curve would jump.
     const Eigen::Quaterniond& qa = keys_[segment].rotation;
     const Eigen::Quaterniond& sa = inner_[segment];
-    const Eigen::Vector3d va = quatLog(qa.conjugate() * keys_[segment + 1].rotation);
-    const Eigen::Vector3d vb = quatLog(sa.conjugate() * alignedWith(inner_[segment + 1], sa));
+    const Eigen::Vector3d va = quatLogOnSphere(qa.conjugate() * keys_[segment + 1].rotation);
+    const Eigen::Vector3d vb = quatLogOnSphere(sa.conjugate() * inner_[segment + 1]);
     const Eigen::Quaterniond a = qa * quatExp(u * va);
     const Eigen::Quaterniond b = sa * quatExp(u * vb);
     const Eigen::Quaterniond da = a * pureQuaternion(va);
@@ -120,8 +128,8 @@ OrientationSample SquadCurve::sampleSegment(std::size_t segment, double u, doubl
     const double dh = 2.0 - 4.0 * u;
     const Eigen::Quaterniond c = a.conjugate() * b;
     const Eigen::Quaterniond dc = linearCombination(1.0, da.conjugate() * b, 1.0, a.conjugate() * db);
-    const Eigen::Vector3d l = quatLog(c);
-    const Eigen::Vector3d dl = quatLogDerivative(c, dc);
+    const Eigen::Vector3d l = quatLogOnSphere(c);
+    const Eigen::Vector3d dl = quatLogOnSphereDerivative(c, dc);
 
     const Eigen::Quaterniond e = quatExp(h * l);
     const Eigen::Quaterniond de = quatExpDerivative(h * l, dh * l + h * dl);

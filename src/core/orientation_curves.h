@@ -75,6 +75,8 @@ private:
 
 // Shoemake's squad: squad(qᵢ, qᵢ₊₁, sᵢ, sᵢ₊₁, u) = slerp(slerp(qᵢ, qᵢ₊₁, u), slerp(sᵢ, sᵢ₊₁, u), 2u(1−u))
 // with inner quadrangle points sᵢ = qᵢ·exp(−(log(qᵢ⁻¹qᵢ₊₁) + log(qᵢ⁻¹qᵢ₋₁))/4), and s = q at the ends.
+// The keys, sign-aligned, and their sᵢ are points of the 4-sphere, and every slerp runs between them
+// as they are, with no short-arc sign flip: so the curve is continuous for keys up to 180° apart.
 class SquadCurve final : public OrientationCurve {
 public:
     explicit SquadCurve(std::vector<OrientationKey> keys);

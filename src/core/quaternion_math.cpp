@@ -36,12 +36,16 @@ Eigen::Quaterniond quatExp(const Eigen::Vector3d& v)
 
 Eigen::Vector3d quatLog(const Eigen::Quaterniond& q)
 {
-    const Eigen::Quaterniond p = shortArc(q);
-    const double s = p.vec().norm();
+    return quatLogOnSphere(shortArc(q));
+}
+
+Eigen::Vector3d quatLogOnSphere(const Eigen::Quaterniond& q)
+{
+    const double s = q.vec().norm();
     if (s == 0.0)
         return Eigen::Vector3d::Zero();
-    // atan2 keeps the angle exact both for tiny s (≈ s/w) and for w near 0 (angle near π/2).
-    return (std::atan2(s, p.w()) / s) * p.vec();
+    // atan2 keeps the angle exact for tiny s (≈ s/w), for w near 0 (angle near π/2) and past it.
+    return (std::atan2(s, q.w()) / s) * q.vec();
 }
 
 Eigen::Quaterniond quatExpDerivative(const Eigen::Vector3d& v, const Eigen::Vector3d& dv)
@@ -57,14 +61,20 @@ Eigen::Quaterniond quatExpDerivative(const Eigen::Vector3d& v, const Eigen::Vect
 
 Eigen::Vector3d quatLogDerivative(const Eigen::Quaterniond& q, const Eigen::Quaterniond& dq)
 {
-    // log(q) = k(s, w)·vec with k = atan2(s, w)/s, s = |vec|. With the short-arc sign (w ≥ 0):
+    // quatLog(q) = quatLogOnSphere(±q) with the sign that makes w ≥ 0; the same sign applies to dq.
+    return q.w() < 0.0 ? quatLogOnSphereDerivative(scaled(q, -1.0), scaled(dq, -1.0))
+                       : quatLogOnSphereDerivative(q, dq);
+}
+
+Eigen::Vector3d quatLogOnSphereDerivative(const Eigen::Quaterniond& q, const Eigen::Quaterniond& dq)
+{
+    // log(q) = k(s, w)·vec with k = atan2(s, w)/s, s = |vec|:
     //   ∂k/∂w = −1/(w² + s²),   (∂k/∂s)/s = (s w/(w² + s²) − atan2(s, w))/s³ =: m
     //   d log = (∂k/∂w · dw + m · (vec·dvec))·vec + k·dvec
-    const bool flip = q.w() < 0.0;
-    const double w = flip ? -q.w() : q.w();
-    const Eigen::Vector3d vec = flip ? Eigen::Vector3d(-q.vec()) : Eigen::Vector3d(q.vec());
-    const double dw = flip ? -dq.w() : dq.w();
-    const Eigen::Vector3d dvec = flip ? Eigen::Vector3d(-dq.vec()) : Eigen::Vector3d(dq.vec());
+    const double w = q.w();
+    const Eigen::Vector3d vec = q.vec();
+    const double dw = dq.w();
+    const Eigen::Vector3d dvec = dq.vec();
 
     const double s = vec.norm();
     const double r2 = w * w + s * s;

@@ -18,11 +18,19 @@ Eigen::Quaterniond quatExp(const Eigen::Vector3d& v);
 // quatExp(v) = ±q. The rotation vector of q is 2·quatLog(q).
 Eigen::Vector3d quatLog(const Eigen::Quaterniond& q);
 
+// The logarithm on the 4-sphere, with no sign flip: v with |v| ∈ [0, π) and quatExp(v) = q exactly, for
+// unit q ≠ −1. Unlike quatLog it is continuous across w = 0 (rotations of 180°), so a curve through
+// quaternions on either side of it keeps one sign; its one cut is at q = −1.
+Eigen::Vector3d quatLogOnSphere(const Eigen::Quaterniond& q);
+
 // d/dε quatExp(v + ε·dv) at ε = 0.
 Eigen::Quaterniond quatExpDerivative(const Eigen::Vector3d& v, const Eigen::Vector3d& dv);
 
-// d/dε quatLog(q + ε·dq) at ε = 0, for unit q with w > 0 and dq tangent to the unit sphere.
+// d/dε quatLog(q + ε·dq) at ε = 0, for unit q with w ≠ 0 and dq tangent to the unit sphere.
 Eigen::Vector3d quatLogDerivative(const Eigen::Quaterniond& q, const Eigen::Quaterniond& dq);
+
+// d/dε quatLogOnSphere(q + ε·dq) at ε = 0, for unit q ≠ −1 and dq tangent to the unit sphere.
+Eigen::Vector3d quatLogOnSphereDerivative(const Eigen::Quaterniond& q, const Eigen::Quaterniond& dq);
 
 
 // Spherical linear interpolation along the short arc: q0·(q0⁻¹q1)^t, exact for tiny arcs and for arcs

@@ -120,6 +120,7 @@ QJsonObject sketchJson(const SketchState& sketch)
                                                          {"value", json(point.value)},
                                                          {"derivative", json(point.derivative)}};
                                   })},
+        {"keysBeforeFit", arrayJson(sketch.keysBeforeFit, keyframeJson)},
     };
 }
 
@@ -315,6 +316,13 @@ SketchState sketchIn(const JsonField& field)
     sketch.delta = numberIn(field.member("delta"), positiveNumber);
     sketch.fittedCurve = timedItems<HermiteControlPoint>(field.member("fittedCurve"), "time", controlPointIn,
                                                          [](const HermiteControlPoint& point) { return point.time; });
+    // Files written before Gyre kept the keys a fit moved have no keysBeforeFit: nothing to restore.
+    if (field.has("keysBeforeFit")) {
+        const JsonField before = field.member("keysBeforeFit");
+        sketch.keysBeforeFit = timedItems<Keyframe>(before, "time", keyframeIn, [](const Keyframe& key) { return key.time; });
+        if (sketch.fittedCurve.empty() && !sketch.keysBeforeFit.empty())
+            before.fail(FileError::tr("keys to restore without an applied fit"));
+    }
     return sketch;
 }
 

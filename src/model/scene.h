@@ -62,6 +62,10 @@ struct SketchState {
     // The last applied fit: the Hermite control points of the orientation over the window. Empty when
     // no fit is applied; then the track's interpolation gives the orientation everywhere.
     std::vector<HermiteControlPoint> fittedCurve;
+    // The keyframes the applied fit moved, as they were before any fit moved them (times strictly
+    // increasing). Removing the fit puts each back on the key still at its time. Empty when no fit
+    // is applied or it moved no key.
+    std::vector<Keyframe> keysBeforeFit;
 };
 
 struct MotionTrack {

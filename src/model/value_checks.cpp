@@ -193,6 +193,9 @@ void checkSketch(SketchState& sketch)
     nonNegativeNumber(sketch.beta);
     positiveNumber(sketch.delta);
     checkFittedCurve(sketch.fittedCurve);
+    checkKeyframes(sketch.keysBeforeFit);
+    if (sketch.fittedCurve.empty() && !sketch.keysBeforeFit.empty())
+        refuse(FileError::tr("keys to restore without an applied fit"));
 }
 
 void checkSubdivision(const SubdivisionSettings& settings)

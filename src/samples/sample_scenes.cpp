@@ -2,6 +2,7 @@
 
 #include "fit/angular_velocity_fit.h"
 #include "jobs/sketch_fit.h"
+#include "model/commands/apply_fit_result_command.h"
 
 #include <Eigen/Geometry>
 
@@ -512,8 +513,7 @@ SampleScene withFitApplied(SampleScene sample)
     if (result.outcome != fit::FitOutcome::Converged)
         throw std::runtime_error(sample.fileName.toStdString() + ": the sketch's fit does not converge");
     model::FitResult applied = jobs::appliedFitResult(track, result);
-    track.keys = std::move(applied.keys);
-    track.sketch.fittedCurve = std::move(applied.curve);
+    track = model::withFitApplied(std::move(track), std::move(applied));
     return sample;
 }
 

@@ -94,6 +94,7 @@ SketchState RandomEdits::sketch()
     sketch.delta = number(0.01, 1);
     for (int c = 0; c < 3; ++c)
         sketch.fittedCurve.push_back({c * 0.5, rotation(), Eigen::Quaterniond(Eigen::Vector4d(vector().homogeneous()))});
+    sketch.keysBeforeFit = keyframes(2);
     return sketch;
 }
 

@@ -7,6 +7,7 @@
 #include "model/commands/add_keyframe_command.h"
 #include "model/commands/add_stroke_command.h"
 #include "model/commands/apply_fit_result_command.h"
+#include "model/commands/remove_fit_command.h"
 #include "model/commands/delete_object_command.h"
 #include "model/commands/edit_stroke_command.h"
 #include "model/commands/erase_stroke_command.h"
@@ -146,6 +147,7 @@ private slots:
     void strokes();
     void sketchSettings();
     void applyFitResult();
+    void removeFitRestoresWhatEveryFitMoved();
     void importRemapsIdsAndKeepsSharedMeshes();
     void importRefusesBadBatches();
     void renameObject();
@@ -422,6 +424,55 @@ void TstCommands::applyFitResult()
     QVERIFY(document.object(id)->track.sketch.fittedCurve.empty());
     result.curve[1].time = 0;
     QVERIFY(refuses([&] { ApplyFitResultCommand(document, id, result); }, "does not come after"));
+}
+
+// Two fits in a row, the second moving a key the first did not and one it did: Remove fit gives back
+// every key as it was before the first fit, exactly, as one undo step.
+void TstCommands::removeFitRestoresWhatEveryFitMoved()
+{
+    Document document;
+    const ObjectId id = import(document, {objectWithKeys(1, {0, 1, 2, 3})}).front();
+    const std::vector<Keyframe> keyed = document.object(id)->track.keys;
+    const std::vector<HermiteControlPoint> curve = {{0, Eigen::Quaterniond::Identity(), Eigen::Quaterniond(0, 0, 0, 1)},
+                                                    {3, Eigen::Quaterniond::Identity(), Eigen::Quaterniond(0, 0, 0, 1)}};
+    const auto turned = [](std::vector<Keyframe> keys, std::size_t key, double angle) {
+        keys[key].pose.orientation = keys[key].pose.orientation * Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitX());
+        return keys;
+    };
+    document.undoStack().push(new ApplyFitResultCommand(document, id, {curve, turned(keyed, 1, 0.3)}));
+    QCOMPARE(document.object(id)->track.sketch.keysBeforeFit.size(), std::size_t{1});
+    const std::vector<Keyframe> firstFit = document.object(id)->track.keys;
+    document.undoStack().push(new ApplyFitResultCommand(document, id, {curve, turned(turned(firstFit, 1, 0.2), 2, -0.4)}));
+    const std::vector<Keyframe> secondFit = document.object(id)->track.keys;
+    const std::vector<Keyframe>& before = document.object(id)->track.sketch.keysBeforeFit;
+    QCOMPARE(before.size(), std::size_t{2});
+    QVERIFY(before[0].time == 1 && before[0].pose.orientation.coeffs() == keyed[1].pose.orientation.coeffs());
+    QVERIFY(before[1].time == 2 && before[1].pose.orientation.coeffs() == keyed[2].pose.orientation.coeffs());
+
+    const auto keysAre = [&](const std::vector<Keyframe>& expected) {
+        const std::vector<Keyframe>& keys = document.object(id)->track.keys;
+        return std::ranges::equal(keys, expected, [](const Keyframe& a, const Keyframe& b) {
+            return a.time == b.time && a.pose.orientation.coeffs() == b.pose.orientation.coeffs() &&
+                   a.pose.position == b.pose.position && a.constrained == b.constrained;
+        });
+    };
+    const int steps = document.undoStack().count();
+    document.undoStack().push(new RemoveFitCommand(document, id));
+    QCOMPARE(document.undoStack().count(), steps + 1);
+    QVERIFY(keysAre(keyed));
+    QVERIFY(document.object(id)->track.sketch.fittedCurve.empty());
+    QVERIFY(document.object(id)->track.sketch.keysBeforeFit.empty());
+    document.undoStack().undo();
+    QVERIFY(keysAre(secondFit));
+    QCOMPARE(document.object(id)->track.sketch.keysBeforeFit.size(), std::size_t{2});
+    document.undoStack().redo();
+    QVERIFY(keysAre(keyed));
+
+    // An empty fit applied leaves nothing to restore, and the file could not hold keys to restore
+    // without a fit.
+    document.undoStack().undo();
+    document.undoStack().push(new ApplyFitResultCommand(document, id, {{}, secondFit}));
+    QVERIFY(document.object(id)->track.sketch.keysBeforeFit.empty());
 }
 
 void TstCommands::importRemapsIdsAndKeepsSharedMeshes()

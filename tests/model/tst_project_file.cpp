@@ -318,6 +318,12 @@ void TstProjectFile::refusesMalformedFiles_data()
         "objects[0].keyframes[0].orientation: expected 4 numbers, found 3");
     row("times that do not increase", projectWith({"objects", 1, "keyframes", 2, "time"}, 0.75),
         "objects[1].keyframes[2].time: time 0.75 does not come after the time before it, 0.75");
+    row("keys to restore without a fit",
+        projectWith({"objects", 0, "sketch", "keysBeforeFit"}, QJsonArray{keyframe(0.75)}),
+        "objects[0].sketch.keysBeforeFit: keys to restore without an applied fit");
+    row("keys to restore out of order",
+        projectWith({"objects", 0, "sketch", "keysBeforeFit"}, QJsonArray{keyframe(1), keyframe(0.5)}),
+        "objects[0].sketch.keysBeforeFit[1].time: time 0.5 does not come after the time before it, 1");
     row("dangling parent", projectWith({"objects", 1, "parent"}, 99), "objects[1].parent: no object has id 99");
     QJsonObject cycle = validProject();
     QJsonArray cycleObjects{object(1, 2), object(2, 1)};

@@ -2,6 +2,10 @@
 // `gyre-samples resources/samples`), each opens, and each is what it claims to be.
 
 #include "jobs/sketch_fit.h"
+#include "model/commands/apply_fit_result_command.h"
+#include "model/commands/import_objects_command.h"
+#include "model/commands/remove_fit_command.h"
+#include "model/document.h"
 #include "model/project_file.h"
 #include "model/track_evaluation.h"
 #include "samples/sample_scenes.h"
@@ -14,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 using namespace gyre;
@@ -28,6 +33,8 @@ private slots:
     void sketchSamplesHaveTheTableOneCounts_data();
     void sketchSamplesHaveTheTableOneCounts();
     void sketchedFitsConvergeAndKeepTheConstrainedKeys();
+    void removeFitRestoresTheKeysAsMade();
+    void fitThenRemoveFitTenTimesLeavesTheKeys();
     void screwSamplesAreScrewCycles();
     void meshNormalsPointOutOfTheirTriangles();
 };
@@ -67,6 +74,37 @@ void adoptFittedParts(model::MotionTrack& made, const model::MotionTrack& read)
     made.sketch.fittedCurve = read.sketch.fittedCurve;
     for (std::size_t i = 0; i < made.keys.size(); ++i)
         made.keys[i].pose.orientation = read.keys[i].pose.orientation;
+}
+
+// The largest difference between two tracks' keys: the angle between orientations (radians) and
+// the distance between positions; infinite when their times differ.
+double largestKeyDifference(const std::vector<model::Keyframe>& a, const std::vector<model::Keyframe>& b)
+{
+    if (a.size() != b.size())
+        return std::numeric_limits<double>::infinity();
+    double largest = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (a[i].time != b[i].time)
+            return std::numeric_limits<double>::infinity();
+        largest = std::max({largest, a[i].pose.orientation.angularDistance(b[i].pose.orientation),
+                            (a[i].pose.position - b[i].pose.position).norm()});
+    }
+    return largest;
+}
+
+// What the Fit button does: the sketch's fit of the object's track as it is now, applied.
+void fitAndApply(model::Document& document, model::ObjectId id)
+{
+    const model::MotionTrack& track = document.object(id)->track;
+    const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
+    const fit::FitResult result = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
+    QVERIFY(result.outcome == fit::FitOutcome::Converged);
+    document.undoStack().push(new model::ApplyFitResultCommand(document, id, jobs::appliedFitResult(track, result)));
+}
+
+const model::SceneObject& onlyObject(const model::Document& document)
+{
+    return document.scene().objects.front();
 }
 
 } // namespace
@@ -179,6 +217,63 @@ void TstSamples::sketchedFitsConvergeAndKeepTheConstrainedKeys()
                                      fitted.sample(time).value.angularDistance(keyed.at(time).orientation));
         QVERIFY2(largestChange > 3.0 * std::numbers::pi / 180.0, qPrintable(sample.fileName));
     }
+}
+
+// The hat opens fitted, its free keys moved by the fit (by up to about 20°); Remove fit gives back
+// the keys exactly as the sample made them before its fit, in one undo step.
+void TstSamples::removeFitRestoresTheKeysAsMade()
+{
+    const samples::SampleScene made = samples::hat();
+    model::Document document;
+    document.load(QDir(QStringLiteral(GYRE_SAMPLES_DIR)).filePath(made.fileName));
+    const model::ObjectId id = onlyObject(document).id;
+    const std::vector<model::Keyframe> fitted = onlyObject(document).track.keys;
+    const std::vector<model::Keyframe>& asMade = made.scene.objects.front().track.keys;
+    QVERIFY(largestKeyDifference(fitted, asMade) > 0.1);
+
+    document.undoStack().push(new model::RemoveFitCommand(document, id));
+    QVERIFY(largestKeyDifference(onlyObject(document).track.keys, asMade) == 0.0);
+    QVERIFY(onlyObject(document).track.sketch.fittedCurve.empty());
+    QVERIFY(onlyObject(document).track.sketch.keysBeforeFit.empty());
+
+    document.undoStack().undo();
+    QVERIFY(largestKeyDifference(onlyObject(document).track.keys, fitted) == 0.0);
+    QVERIFY(!onlyObject(document).track.sketch.fittedCurve.empty());
+    document.undoStack().redo();
+    QVERIFY(largestKeyDifference(onlyObject(document).track.keys, asMade) == 0.0);
+    QVERIFY(onlyObject(document).track.sketch.fittedCurve.empty());
+}
+
+// Fit then Remove fit, ten times over, on the hat as made: the fit moves its free keys each time,
+// and each Remove fit puts every key back, so nothing drifts. Undo and redo of the last Remove fit
+// go between the fitted and the keyed track.
+void TstSamples::fitThenRemoveFitTenTimesLeavesTheKeys()
+{
+    model::Document document;
+    document.undoStack().push(new model::ImportObjectsCommand(document, samples::hat().scene.objects));
+    const model::ObjectId id = onlyObject(document).id;
+    const std::vector<model::Keyframe> keyed = onlyObject(document).track.keys;
+    double largestDrift = 0.0;
+    std::vector<model::Keyframe> lastFitted;
+    for (int round = 0; round < 10; ++round) {
+        fitAndApply(document, id);
+        if (QTest::currentTestFailed())
+            return;
+        lastFitted = onlyObject(document).track.keys;
+        QVERIFY(largestKeyDifference(lastFitted, keyed) > 0.1);
+        document.undoStack().push(new model::RemoveFitCommand(document, id));
+        largestDrift = std::max(largestDrift, largestKeyDifference(onlyObject(document).track.keys, keyed));
+        QVERIFY(onlyObject(document).track.sketch.fittedCurve.empty());
+    }
+    qInfo("largest key drift over ten Fit/Remove fit: %.3g degrees", largestDrift * 180.0 / std::numbers::pi);
+    QVERIFY2(largestDrift <= 1e-12, qPrintable(QStringLiteral("keys drifted by %1 rad").arg(largestDrift)));
+
+    document.undoStack().undo();
+    QVERIFY(largestKeyDifference(onlyObject(document).track.keys, lastFitted) == 0.0);
+    QVERIFY(!onlyObject(document).track.sketch.fittedCurve.empty());
+    document.undoStack().redo();
+    QVERIFY(largestKeyDifference(onlyObject(document).track.keys, keyed) <= 1e-12);
+    QVERIFY(onlyObject(document).track.sketch.fittedCurve.empty());
 }
 
 // ScrewBender's samples: cyclic screw tracks with their figure's scheme and number of control poses.

@@ -23,14 +23,6 @@ QString endOfFitMessage(const jobs::FitSummary& summary)
         .arg(summary.seconds, 0, 'g', 2);
 }
 
-// The track as it is with `result` applied: what ApplyFitResultCommand makes of it.
-model::MotionTrack withFit(model::MotionTrack track, const model::FitResult& result)
-{
-    track.keys = result.keys;
-    track.sketch.fittedCurve = result.curve;
-    return track;
-}
-
 } // namespace
 
 FitController::FitController(model::Document& document, Selection& selection, QObject* parent)
@@ -196,7 +188,7 @@ bool FitController::applyIfCurrent(model::ObjectId object, const model::MotionTr
 void FitController::showPreview(const HeldResult& held)
 {
     previewObject_ = held.object;
-    emit previewChanged(held.object, withFit(held.input, held.result));
+    emit previewChanged(held.object, model::withFitApplied(held.input, held.result));
 }
 
 void FitController::clearPreview()

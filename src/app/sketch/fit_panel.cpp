@@ -2,7 +2,7 @@
 
 #include "app/undo_gesture.h"
 #include "jobs/sketch_fit.h"
-#include "model/commands/apply_fit_result_command.h"
+#include "model/commands/remove_fit_command.h"
 #include "model/commands/set_fit_parameter_command.h"
 #include "model/commands/set_fit_window_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
@@ -219,12 +219,7 @@ void FitPanel::removeFit()
     const model::SceneObject* object = selection_.selectedObject();
     if (object == nullptr)
         return;
-    push([&] {
-        // An applied empty curve: the model's command for it, named for what the artist did.
-        auto* command = new model::ApplyFitResultCommand(document_, object->id, {{}, object->track.keys});
-        command->setText(tr("Remove angular velocity fit"));
-        return command;
-    });
+    push([&] { return new model::RemoveFitCommand(document_, object->id); });
 }
 
 void FitPanel::push(const std::function<QUndoCommand*()>& makeCommand)
