@@ -19,4 +19,8 @@ function(gyre_target_options target)
         # plain free(), so both sides must agree. glibc's and ASan's malloc align to 16 bytes.
         target_compile_definitions(${target} PRIVATE EIGEN_MALLOC_ALREADY_ALIGNED=1)
     endif()
+    # Coverage feedback for libFuzzer in all code; only the harnesses link its runtime and main().
+    if(GYRE_FUZZ)
+        target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
+    endif()
 endfunction()

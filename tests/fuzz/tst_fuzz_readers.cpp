@@ -1,0 +1,207 @@
+// Mutation fuzzing of Gyre's readers: every seed file of fuzz_inputs.h is mutated a fixed number of
+// times from a fixed seed, and each mutant goes through its reader (and, for an accepted project,
+// through the evaluation of every track). Each input must end in acceptance or an InputError whose
+// message names the file and the line or field; nothing else may be thrown, evaluation must stay
+// finite, and no input may take longer than kInputBound. Under the sanitizer build any memory error or
+// undefined behaviour aborts the test.
+//
+//   GYRE_FUZZ_SEED        the generator's seed (default kDefaultSeed); a failure replays from it
+//   GYRE_FUZZ_ITERATIONS  mutants per seed file (default kDefaultIterations)
+//
+// Scene files (Assimp) are left out: Assimp 5.2.5 itself crashes on some malformed files, which would
+// take this process down; the scene-import worker's tests fuzz them in a process of their own.
+
+#include "fuzz_inputs.h"
+#include "mutator.h"
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <algorithm>
+#include <exception>
+#include <typeinfo>
+
+using namespace gyre::fuzz;
+
+namespace {
+
+constexpr unsigned kDefaultSeed = 20261125;
+constexpr int kDefaultIterations = 100;
+// Far above what any input takes (milliseconds) even under the sanitizers: a reader that loops or
+// does work out of proportion to its input shows as a failure here, not as a hung test.
+constexpr qint64 kInputBoundMs = 5000;
+
+unsigned environmentNumber(const char* name, unsigned fallback)
+{
+    if (!qEnvironmentVariableIsSet(name))
+        return fallback;
+    bool ok = false;
+    const unsigned value = qEnvironmentVariable(name).toUInt(&ok);
+    if (!ok)
+        qFatal("%s must be a non-negative whole number", name);
+    return value;
+}
+
+} // namespace
+
+class TestFuzzReaders : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void seedsAreAccepted_data() { seedRows(); }
+    void seedsAreAccepted();
+    void mutantsAreAcceptedOrRefusedWithTheirFile_data() { seedRows(); }
+    void mutantsAreAcceptedOrRefusedWithTheirFile();
+    void hugeKeyPositionsEvaluateFinite();
+
+private:
+    void seedRows();
+    const Seed& seedNamed(const QString& name) const;
+    // Fails with the input saved for replay if `problem` is set.
+    void check(const std::optional<std::string>& problem, const QString& seedName, const QByteArray& input, int mutant);
+
+    QTemporaryDir dir_;
+    std::vector<Seed> seeds_;
+    unsigned seed_ = kDefaultSeed;
+    int iterations_ = kDefaultIterations;
+};
+
+void TestFuzzReaders::initTestCase()
+{
+    QVERIFY(dir_.isValid());
+    seed_ = environmentNumber("GYRE_FUZZ_SEED", kDefaultSeed);
+    iterations_ = static_cast<int>(environmentNumber("GYRE_FUZZ_ITERATIONS", kDefaultIterations));
+    qInfo("GYRE_FUZZ_SEED=%u GYRE_FUZZ_ITERATIONS=%d", seed_, iterations_);
+    QVERIFY(QDir(dir_.path()).mkpath(QStringLiteral("seeds")));
+    seeds_ = makeSeeds(dir_.filePath(QStringLiteral("seeds")));
+}
+
+void TestFuzzReaders::seedRows()
+{
+    QTest::addColumn<int>("index");
+    for (std::size_t i = 0; i < seeds_.size(); ++i)
+        QTest::newRow(qPrintable(seeds_[i].name)) << static_cast<int>(i);
+}
+
+void TestFuzzReaders::check(const std::optional<std::string>& problem, const QString& seedName,
+                            const QByteArray& input, int mutant)
+{
+    if (!problem)
+        return;
+    const QString saved = QDir::temp().filePath(QStringLiteral("gyre-fuzz-%1-%2").arg(mutant).arg(seedName));
+    QFile file(saved);
+    if (file.open(QIODevice::WriteOnly))
+        file.write(input);
+    QFAIL(qPrintable(QStringLiteral("mutant %1 of %2 (GYRE_FUZZ_SEED=%3, saved as %4): %5")
+                         .arg(mutant)
+                         .arg(seedName)
+                         .arg(seed_)
+                         .arg(saved, QString::fromStdString(*problem))));
+}
+
+// The seeds themselves are valid files: otherwise their mutants would test little beyond refusal.
+void TestFuzzReaders::seedsAreAccepted()
+{
+    QFETCH(int, index);
+    const Seed& seed = seeds_[static_cast<std::size_t>(index)];
+    const Outcome outcome = readInput(seed.reader, seed.bytes, dir_.filePath(seed.name));
+    QVERIFY2(outcome.accepted, outcome.refusal.c_str());
+    QVERIFY2(!outcome.evaluationProblem, outcome.evaluationProblem.value_or("").c_str());
+    if (seed.reader == Reader::Project) {
+        QCOMPARE_GT(outcome.tracksEvaluated, 0);
+        QCOMPARE(outcome.tracksRefusedByEvaluation, 0);
+    }
+}
+
+void TestFuzzReaders::mutantsAreAcceptedOrRefusedWithTheirFile()
+{
+    QFETCH(int, index);
+    const Seed& seed = seeds_[static_cast<std::size_t>(index)];
+    // One generator per seed file, so that each row replays on its own.
+    Mutator mutator(seed_ + static_cast<unsigned>(index));
+    const QString path = dir_.filePath(seed.name);
+    int accepted = 0;
+    int refused = 0;
+    int knownOverflows = 0;
+    qint64 slowestMs = 0;
+    for (int mutant = 0; mutant < iterations_; ++mutant) {
+        const QByteArray input = mutator.mutate(seed.bytes, seed.reader == Reader::Project);
+        QElapsedTimer timer;
+        timer.start();
+        Outcome outcome;
+        try {
+            outcome = readInput(seed.reader, input, path);
+        } catch (const std::exception& error) {
+            check(std::string("threw ") + typeid(error).name() + ": " + error.what(), seed.name, input, mutant);
+            return;
+        }
+        const qint64 elapsedMs = timer.elapsed();
+        slowestMs = std::max(slowestMs, elapsedMs);
+        if (elapsedMs > kInputBoundMs)
+            check("took " + std::to_string(elapsedMs) + " ms", seed.name, input, mutant);
+        if (outcome.accepted) {
+            ++accepted;
+            if (outcome.evaluationProblem && outcome.hasUnboundedKeyPosition())
+                ++knownOverflows; // hugeKeyPositionsEvaluateFinite
+            else
+                check(outcome.evaluationProblem, seed.name, input, mutant);
+        } else {
+            ++refused;
+            if (const auto problem = refusalProblem(seed.reader, outcome.refusal, path))
+                check("message \"" + outcome.refusal + "\" " + *problem, seed.name, input, mutant);
+        }
+        if (QTest::currentTestFailed())
+            return;
+    }
+    qInfo("%s: %d mutants accepted (%d of them overflowing on huge key positions), %d refused, slowest %lld ms",
+          qPrintable(seed.name), accepted, knownOverflows, refused, static_cast<long long>(slowestMs));
+    // The mutations do break the files: a mutator that changed nothing would pass every check above.
+    if (iterations_ >= 20)
+        QCOMPARE_GT(refused, iterations_ / 4);
+}
+
+// Found by this test: a key position of 1e308 is accepted, and squad's cubic positions and the screw
+// between such keys overflow to inf and nan. Kept as the expected behaviour until the limits of
+// model/value_checks bound key positions (then the reader refuses the file, naming the field).
+void TestFuzzReaders::hugeKeyPositionsEvaluateFinite()
+{
+    const QString path = dir_.filePath(QStringLiteral("huge-position.gyre"));
+    for (const char* method : {"squad", "screw"}) {
+        QJsonObject project = QJsonDocument::fromJson(seedNamed(QStringLiteral("mesh.gyre")).bytes).object();
+        QJsonArray objects = project[QStringLiteral("objects")].toArray();
+        QJsonObject object = objects[0].toObject();
+        object[QStringLiteral("interpolation")] = QString::fromLatin1(method);
+        QJsonArray keys = object[QStringLiteral("keyframes")].toArray();
+        QJsonObject key = keys[1].toObject();
+        key[QStringLiteral("position")] = QJsonArray{1.0, 0.0, -1e308};
+        keys[1] = key;
+        object[QStringLiteral("keyframes")] = keys;
+        objects[0] = object;
+        project[QStringLiteral("objects")] = objects;
+        const Outcome outcome = readInput(Reader::Project, QJsonDocument(project).toJson(), path);
+        const bool refusedOrFinite = !outcome.accepted || !outcome.evaluationProblem;
+        QEXPECT_FAIL("", "model/value_checks does not bound key positions yet: 1e308 is read, and evaluates to inf/nan",
+                     Continue);
+        QVERIFY2(refusedOrFinite, outcome.evaluationProblem.value_or("").c_str());
+        if (!outcome.accepted)
+            QVERIFY2(!refusalProblem(Reader::Project, outcome.refusal, path), outcome.refusal.c_str());
+    }
+}
+
+const Seed& TestFuzzReaders::seedNamed(const QString& name) const
+{
+    const auto found = std::ranges::find(seeds_, name, &Seed::name);
+    if (found == seeds_.end())
+        qFatal("no seed %s", qPrintable(name));
+    return *found;
+}
+
+QTEST_GUILESS_MAIN(TestFuzzReaders)
+#include "tst_fuzz_readers.moc"
