@@ -237,7 +237,8 @@ Keyframe keyframeIn(const JsonField& field)
     Keyframe key;
     key.time = field.member("time").number();
     key.pose.orientation = unitQuaternionIn(field.member("orientation"));
-    key.pose.position = field.member("position").vector3();
+    const JsonField position = field.member("position");
+    key.pose.position = position.checked([&] { return positionValue(position.vector3()); });
     key.constrained = field.member("constrained").boolean();
     return key;
 }

@@ -94,6 +94,14 @@ Eigen::Quaterniond finiteQuaternion(const Eigen::Quaterniond& value)
     return Eigen::Quaterniond(finiteCoefficients(Eigen::Vector4d(value.coeffs())));
 }
 
+Eigen::Vector3d positionValue(const Eigen::Vector3d& position)
+{
+    if (!(finiteVector(position).cwiseAbs().maxCoeff() <= kMaxPositionCoordinate))
+        refuse(FileError::tr("position coordinate %1 is beyond ±%2")
+                   .arg(FileError::number(position.cwiseAbs().maxCoeff()), FileError::number(kMaxPositionCoordinate)));
+    return position;
+}
+
 double timeValue(double time)
 {
     if (!(std::abs(finiteNumber(time)) <= kMaxTimeSeconds))
@@ -131,7 +139,7 @@ void checkKeyframe(Keyframe& key)
 {
     timeValue(key.time);
     key.pose.orientation = unitQuaternion(key.pose.orientation);
-    finiteVector(key.pose.position);
+    positionValue(key.pose.position);
 }
 
 void checkKeyframes(std::vector<Keyframe>& keys)

@@ -30,6 +30,11 @@ inline constexpr double kMaxFps = 1000.0;
 // scene's range) lies within ±kMaxTimeSeconds: eleven and a half days, far beyond any animation, and
 // small enough that a duration times kMaxFps stays an exact integer in a double.
 inline constexpr double kMaxTimeSeconds = 1e6;
+// The largest coordinate of a key's position, in scene units: a billion metres, or ten thousand
+// kilometres in centimetres. Position curves multiply coordinates by one another and by powers of time
+// (the cubic's terms, the screw's chord), so a bound far below the overflow keeps every term finite;
+// a double still resolves 10⁻⁷ of a unit there.
+inline constexpr double kMaxPositionCoordinate = 1e9;
 // The most frames a scene's range may hold at its frame rate, (end − start)·fps: the rows a pose file
 // may hold (2^24, 4.7 hours at kMaxFps), each frame one sample of every object when baked.
 inline constexpr double kMaxFrames = 16777216.0;
@@ -63,6 +68,8 @@ Eigen::Quaterniond unitQuaternion(const Eigen::Quaterniond& value);
 // Any finite 4-vector, such as a Hermite control point's value or derivative.
 Eigen::Quaterniond finiteQuaternion(const Eigen::Quaterniond& value);
 
+// `position` if each coordinate is finite and within ±kMaxPositionCoordinate.
+Eigen::Vector3d positionValue(const Eigen::Vector3d& position);
 // `time` if it is finite and within ±kMaxTimeSeconds.
 double timeValue(double time);
 // `time` (a timeValue) if it comes strictly after `previous`.

@@ -22,7 +22,7 @@ inline void fuzzOneInput(Reader reader, const char* fileName, const std::uint8_t
     std::optional<std::string> problem;
     if (!outcome.accepted)
         problem = refusalProblem(reader, outcome.refusal, path);
-    else if (outcome.evaluationProblem && !outcome.hasUnboundedKeyPosition())
+    else if (outcome.evaluationProblem)
         problem = outcome.evaluationProblem;
     if (problem) {
         std::fprintf(stderr, "%s\n", problem->c_str());

@@ -266,9 +266,6 @@ Outcome readInput(Reader reader, const QByteArray& bytes, const QString& path)
         case Reader::Project: {
             const Scene scene = model::readProject(path);
             outcome.accepted = true;
-            for (const SceneObject& each : scene.objects)
-                for (const Keyframe& key : each.track.keys)
-                    outcome.largestKeyPosition = std::max(outcome.largestKeyPosition, key.pose.position.cwiseAbs().maxCoeff());
             outcome.evaluationProblem = evaluateTracks(scene, outcome);
             return outcome;
         }

@@ -43,16 +43,6 @@ struct Outcome {
     int tracksRefusedByEvaluation = 0; // TrackMotion's std::invalid_argument, e.g. a subdivision too large
     // What is wrong with the first pose or angular velocity of an accepted scene that is not finite.
     std::optional<std::string> evaluationProblem;
-    // The largest magnitude of a key position coordinate in an accepted scene.
-    double largestKeyPosition = 0.0;
-
-    // A known gap, not yet closed: the readers accept any finite key position, and interpolating
-    // between coordinates near the largest double overflows (1e308 − (−1e308) is inf). A bound on
-    // positions belongs with the other limits in model/value_checks; until it is there, a scene with
-    // such positions may evaluate to inf or nan without counting as a new failure.
-    bool hasUnboundedKeyPosition() const { return largestKeyPosition > kLargestSafeKeyPosition; }
-    // Far beyond any scene an artist makes, and far below where differences and cubic terms overflow.
-    static constexpr double kLargestSafeKeyPosition = 1e100;
 };
 
 // Writes `bytes` to `path` and runs `reader` on it. For an accepted project, evaluates each track at

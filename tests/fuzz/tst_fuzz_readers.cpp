@@ -129,7 +129,6 @@ void TestFuzzReaders::mutantsAreAcceptedOrRefusedWithTheirFile()
     const QString path = dir_.filePath(seed.name);
     int accepted = 0;
     int refused = 0;
-    int knownOverflows = 0;
     qint64 slowestMs = 0;
     for (int mutant = 0; mutant < iterations_; ++mutant) {
         const QByteArray input = mutator.mutate(seed.bytes, seed.reader == Reader::Project);
@@ -148,10 +147,7 @@ void TestFuzzReaders::mutantsAreAcceptedOrRefusedWithTheirFile()
             check("took " + std::to_string(elapsedMs) + " ms", seed.name, input, mutant);
         if (outcome.accepted) {
             ++accepted;
-            if (outcome.evaluationProblem && outcome.hasUnboundedKeyPosition())
-                ++knownOverflows; // hugeKeyPositionsEvaluateFinite
-            else
-                check(outcome.evaluationProblem, seed.name, input, mutant);
+            check(outcome.evaluationProblem, seed.name, input, mutant);
         } else {
             ++refused;
             if (const auto problem = refusalProblem(seed.reader, outcome.refusal, path))
@@ -160,16 +156,15 @@ void TestFuzzReaders::mutantsAreAcceptedOrRefusedWithTheirFile()
         if (QTest::currentTestFailed())
             return;
     }
-    qInfo("%s: %d mutants accepted (%d of them overflowing on huge key positions), %d refused, slowest %lld ms",
-          qPrintable(seed.name), accepted, knownOverflows, refused, static_cast<long long>(slowestMs));
+    qInfo("%s: %d mutants accepted, %d refused, slowest %lld ms", qPrintable(seed.name), accepted, refused,
+          static_cast<long long>(slowestMs));
     // The mutations do break the files: a mutator that changed nothing would pass every check above.
     if (iterations_ >= 20)
         QCOMPARE_GT(refused, iterations_ / 4);
 }
 
-// Found by this test: a key position of 1e308 is accepted, and squad's cubic positions and the screw
-// between such keys overflow to inf and nan. Kept as the expected behaviour until the limits of
-// model/value_checks bound key positions (then the reader refuses the file, naming the field).
+// Found by this test: a key position of 1e308 was accepted, and squad's cubic positions and the screw
+// between such keys overflowed to inf and nan. The reader now refuses it, naming the field.
 void TestFuzzReaders::hugeKeyPositionsEvaluateFinite()
 {
     const QString path = dir_.filePath(QStringLiteral("huge-position.gyre"));
@@ -186,12 +181,9 @@ void TestFuzzReaders::hugeKeyPositionsEvaluateFinite()
         objects[0] = object;
         project[QStringLiteral("objects")] = objects;
         const Outcome outcome = readInput(Reader::Project, QJsonDocument(project).toJson(), path);
-        const bool refusedOrFinite = !outcome.accepted || !outcome.evaluationProblem;
-        QEXPECT_FAIL("", "model/value_checks does not bound key positions yet: 1e308 is read, and evaluates to inf/nan",
-                     Continue);
-        QVERIFY2(refusedOrFinite, outcome.evaluationProblem.value_or("").c_str());
-        if (!outcome.accepted)
-            QVERIFY2(!refusalProblem(Reader::Project, outcome.refusal, path), outcome.refusal.c_str());
+        QVERIFY(!outcome.accepted);
+        QVERIFY2(!refusalProblem(Reader::Project, outcome.refusal, path), outcome.refusal.c_str());
+        QVERIFY2(outcome.refusal.find("keyframes[1].position") != std::string::npos, outcome.refusal.c_str());
     }
 }
 

@@ -7,6 +7,7 @@
 
 #include "model/input_error.h"
 #include "model/project_file.h"
+#include "model/value_checks.h"
 
 #include <QDir>
 #include <QFile>
@@ -177,11 +178,12 @@ void TstProjectFile::numbersReadBackToTheSameBits()
     object.id = 1;
     double time = -1e-300;
     for (int i = 0; i < 500; ++i) {
-        // Random bit patterns cover every exponent; those that are not finite are skipped.
+        // Random bit patterns cover every exponent a position may have; those that are not finite or
+        // beyond kMaxPositionCoordinate are skipped.
         const std::uint64_t bits = engine();
         double value = 0;
         std::memcpy(&value, &bits, sizeof value);
-        if (!std::isfinite(value))
+        if (!(std::abs(value) <= kMaxPositionCoordinate))
             continue;
         time = std::nextafter(time + std::abs(std::fmod(value, 1.0)), INFINITY);
         object.track.keys.push_back({time, {Eigen::Quaterniond::Identity(), {value, 0.1, 1.0 / 3.0}}, true});

@@ -35,7 +35,7 @@ MotionTrack withFitApplied(MotionTrack track, FitResult result)
     std::vector<Keyframe> before = std::move(track.sketch.keysBeforeFit);
     if (result.curve.empty())
         before.clear();
-    for (const Keyframe& replaced : result.curve.empty() ? std::vector<Keyframe>{} : track.keys) {
+    for (const Keyframe& replaced : result.curve.empty() ? std::vector<Keyframe>{} : track.keys.vector()) {
         const Keyframe* fitted = keyAt(result.keys, replaced.time);
         if (fitted != nullptr && !samePose(*fitted, replaced) && keyAt(before, replaced.time) == nullptr)
             before.push_back(replaced);
