@@ -5,6 +5,8 @@
 // SE(3) exponential and logarithm with 3×3 and 4×4 matrices). None of them calls gyre code, so the
 // tests compare the core against mathematics, not against itself.
 
+#include "core/euler_angles.h"
+#include "core/orientation_curves.h"
 #include "core/pose.h"
 
 #include <Eigen/Dense>
@@ -18,6 +20,7 @@
 #include <cstdint>
 #include <numbers>
 #include <random>
+#include <vector>
 
 // Fails the current test function with `message` (a QString expression, built only on failure)
 // unless `condition` holds. Use it in the test function itself, or check QTest::currentTestFailed()
@@ -349,5 +352,27 @@ private:
     std::mt19937_64 engine_;
     std::normal_distribution<double> normal_;
 };
+
+// An interpolation method and the Euler convention it uses (ignored but for Euler).
+struct CurveCase {
+    InterpolationMethod method;
+    EulerConvention convention;
+    QString label;
+};
+
+// Every orientation curve through keys, once per Euler convention worth telling apart. Screw moves
+// poses, not orientations: its tracks are subdivided (tst_subdivision, tst_polyscrew).
+inline std::vector<CurveCase> allCurveCases()
+{
+    return {
+        {InterpolationMethod::Slerp, {}, QStringLiteral("slerp")},
+        {InterpolationMethod::Nlerp, {}, QStringLiteral("nlerp")},
+        {InterpolationMethod::Squad, {}, QStringLiteral("squad")},
+        {InterpolationMethod::Hermite, {}, QStringLiteral("hermite")},
+        {InterpolationMethod::Euler, *EulerConvention::parse("xyz", AngleFrame::Extrinsic), QStringLiteral("euler extrinsic xyz")},
+        {InterpolationMethod::Euler, *EulerConvention::parse("zxz", AngleFrame::Intrinsic), QStringLiteral("euler intrinsic zxz")},
+        {InterpolationMethod::Euler, *EulerConvention::parse("yxz", AngleFrame::Intrinsic), QStringLiteral("euler intrinsic yxz")},
+    };
+}
 
 } // namespace gyre::test

@@ -22,25 +22,6 @@ namespace {
 
 constexpr double kStep = 1.0 / 480.0;
 
-struct MethodCase {
-    InterpolationMethod method;
-    EulerConvention convention;
-    QString label;
-};
-
-std::vector<MethodCase> allMethods()
-{
-    // Screw moves poses, not orientations: its tracks are subdivided (tst_subdivision, tst_polyscrew).
-    return {
-        {InterpolationMethod::Slerp, {}, QStringLiteral("slerp")},
-        {InterpolationMethod::Nlerp, {}, QStringLiteral("nlerp")},
-        {InterpolationMethod::Squad, {}, QStringLiteral("squad")},
-        {InterpolationMethod::Hermite, {}, QStringLiteral("hermite")},
-        {InterpolationMethod::Euler, *EulerConvention::parse("xyz", AngleFrame::Extrinsic), QStringLiteral("euler extrinsic xyz")},
-        {InterpolationMethod::Euler, *EulerConvention::parse("zxz", AngleFrame::Intrinsic), QStringLiteral("euler intrinsic zxz")},
-    };
-}
-
 // The largest angle a curve of the method may turn in one step of kStep through these keys.
 //
 // Slerp turns at the key-to-key speed ω = (angle between keys)/(segment duration). Nlerp runs at most
@@ -124,7 +105,7 @@ std::vector<OrientationKey> wideKeys(Random& random)
     return keys;
 }
 
-void checkSteps(const MethodCase& c, const std::vector<OrientationKey>& keys, const QString& label)
+void checkSteps(const CurveCase& c, const std::vector<OrientationKey>& keys, const QString& label)
 {
     const std::unique_ptr<OrientationCurve> curve = makeOrientationCurve(c.method, keys, c.convention);
     const WorstStep worst = worstStep(*curve);
@@ -150,7 +131,7 @@ private slots:
 void TestCurveContinuity::everyMethod_data()
 {
     QTest::addColumn<int>("index");
-    const std::vector<MethodCase> methods = allMethods();
+    const std::vector<CurveCase> methods = allCurveCases();
     for (std::size_t i = 0; i < methods.size(); ++i)
         QTest::newRow(qPrintable(methods[i].label)) << int(i);
 }
@@ -158,7 +139,7 @@ void TestCurveContinuity::everyMethod_data()
 void TestCurveContinuity::issueKeysTurnSmoothly()
 {
     QFETCH(int, index);
-    const MethodCase c = allMethods()[std::size_t(index)];
+    const CurveCase c = allCurveCases()[std::size_t(index)];
     std::vector<OrientationKey> keys = issueKeys();
     checkSteps(c, keys, QStringLiteral("the issue's keys"));
     // The same rotations stored with the other sign, one key at a time.
@@ -172,7 +153,7 @@ void TestCurveContinuity::issueKeysTurnSmoothly()
 void TestCurveContinuity::wideKeysOfEitherSignTurnSmoothly()
 {
     QFETCH(int, index);
-    const MethodCase c = allMethods()[std::size_t(index)];
+    const CurveCase c = allCurveCases()[std::size_t(index)];
     Random random(2000 + std::uint64_t(index));
     for (int trial = 0; trial < 40 && !QTest::currentTestFailed(); ++trial)
         checkSteps(c, wideKeys(random), QStringLiteral("trial %1").arg(trial));

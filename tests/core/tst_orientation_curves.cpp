@@ -169,25 +169,6 @@ void checkCurve(const OrientationCurve& curve, const std::vector<OrientationKey>
     }
 }
 
-struct CurveCase {
-    InterpolationMethod method;
-    EulerConvention convention;
-    QString label;
-};
-
-std::vector<CurveCase> allCurveCases()
-{
-    return {
-        {InterpolationMethod::Slerp, {}, QStringLiteral("slerp")},
-        {InterpolationMethod::Nlerp, {}, QStringLiteral("nlerp")},
-        {InterpolationMethod::Squad, {}, QStringLiteral("squad")},
-        {InterpolationMethod::Hermite, {}, QStringLiteral("hermite")},
-        {InterpolationMethod::Euler, *EulerConvention::parse("xyz", AngleFrame::Extrinsic), QStringLiteral("euler extrinsic xyz")},
-        {InterpolationMethod::Euler, *EulerConvention::parse("zxz", AngleFrame::Intrinsic), QStringLiteral("euler intrinsic zxz")},
-        {InterpolationMethod::Euler, *EulerConvention::parse("yxz", AngleFrame::Intrinsic), QStringLiteral("euler intrinsic yxz")},
-    };
-}
-
 // Keys for an Euler curve: a path of angles with modest steps and the middle angle away from lock.
 std::vector<OrientationKey> eulerKeys(Random& random, const EulerConvention& c, const std::vector<double>& times)
 {
