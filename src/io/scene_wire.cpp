@@ -304,7 +304,8 @@ std::vector<Eigen::Vector3f> vectorsIn(Reader& in, const char* what)
 {
     const std::vector<float> numbers = in.block<float>(what, 3);
     std::vector<Eigen::Vector3f> vectors(numbers.size() / 3);
-    std::memcpy(static_cast<void*>(vectors.data()), numbers.data(), numbers.size() * sizeof(float));
+    if (!numbers.empty()) // memcpy may not be given the null data() of an empty vector
+        std::memcpy(static_cast<void*>(vectors.data()), numbers.data(), numbers.size() * sizeof(float));
     return vectors;
 }
 
