@@ -35,7 +35,7 @@ bool parentsComeFirst(const Scene& scene)
     return true;
 }
 
-constexpr int kDefaultSteps = 2000;
+constexpr int kDefaultSteps = 1000;
 
 // A positive whole number from the environment variable `name`, or `fallback` if it is unset.
 unsigned environmentNumber(const char* name, unsigned fallback)
