@@ -37,6 +37,15 @@ void importOne(Document& document, const QString& name)
 
 QStringList filesIn(const QString& directory) { return QDir(directory).entryList(QDir::Files); }
 
+// Runs autosave_crasher with `arguments` (its usage says which session it crashes); its exit code, or
+// -1 if it did not end within a minute.
+int crashSession(const QStringList& arguments)
+{
+    QProcess crasher;
+    crasher.start(QStringLiteral(AUTOSAVE_CRASHER_PATH), arguments);
+    return crasher.waitForFinished(60'000) ? crasher.exitCode() : -1;
+}
+
 } // namespace
 
 class TstAutosave : public QObject {
@@ -117,10 +126,7 @@ void TstAutosave::offersACrashedSessionForRecovery()
     QTemporaryDir directory;
     QTemporaryDir documents;
     const QString documentPath = documents.filePath("crashed.gyre");
-    QProcess crasher;
-    crasher.start(QStringLiteral(AUTOSAVE_CRASHER_PATH), {directory.path(), documentPath});
-    QVERIFY(crasher.waitForFinished(60'000));
-    QCOMPARE(crasher.exitCode(), 0);
+    QCOMPARE(crashSession({directory.path(), documentPath}), 0);
     QVERIFY(filesIn(directory.path()).filter(".lock").size() == 1); // the crash left its lock behind
 
     const std::vector<RecoveryFile> files = Autosave::recoverableFiles(directory.path());
@@ -151,9 +157,7 @@ void TstAutosave::discardRemovesTheCopy()
 {
     QTemporaryDir directory;
     QTemporaryDir documents;
-    QProcess crasher;
-    crasher.start(QStringLiteral(AUTOSAVE_CRASHER_PATH), {directory.path(), documents.filePath("lost.gyre")});
-    QVERIFY(crasher.waitForFinished(60'000));
+    QCOMPARE(crashSession({directory.path(), documents.filePath("lost.gyre")}), 0);
     const std::vector<RecoveryFile> files = Autosave::recoverableFiles(directory.path());
     QCOMPARE(files.size(), std::size_t{1});
     Autosave::discard(files.front());
@@ -168,16 +172,10 @@ void TstAutosave::aRecoveredCopyOutlivesASecondCrash()
     QTemporaryDir directory;
     QTemporaryDir documents;
     const QString documentPath = documents.filePath("twice.gyre");
-    QProcess crasher;
-    crasher.start(QStringLiteral(AUTOSAVE_CRASHER_PATH), {directory.path(), documentPath});
-    QVERIFY(crasher.waitForFinished(60'000));
-    QCOMPARE(crasher.exitCode(), 0);
+    QCOMPARE(crashSession({directory.path(), documentPath}), 0);
     const QByteArray firstCopy = projectJson(readProject(Autosave::recoverableFiles(directory.path()).front().recoveryPath));
 
-    QProcess recoverer;
-    recoverer.start(QStringLiteral(AUTOSAVE_CRASHER_PATH), {QStringLiteral("--recover"), directory.path()});
-    QVERIFY(recoverer.waitForFinished(60'000));
-    QCOMPARE(recoverer.exitCode(), 0);
+    QCOMPARE(crashSession({QStringLiteral("--recover"), directory.path()}), 0);
 
     const std::vector<RecoveryFile> files = Autosave::recoverableFiles(directory.path());
     QCOMPARE(files.size(), std::size_t{1});
@@ -189,10 +187,7 @@ void TstAutosave::leftoversOfEndedSessionsAreRemoved()
 {
     QTemporaryDir directory;
     for (int session = 0; session < 3; ++session) {
-        QProcess idle;
-        idle.start(QStringLiteral(AUTOSAVE_CRASHER_PATH), {QStringLiteral("--idle"), directory.path()});
-        QVERIFY(idle.waitForFinished(60'000));
-        QCOMPARE(idle.exitCode(), 0);
+        QCOMPARE(crashSession({QStringLiteral("--idle"), directory.path()}), 0);
     }
     QCOMPARE(filesIn(directory.path()).filter(".lock").size(), 3);
     // A running session's lock stays.
