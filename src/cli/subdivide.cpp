@@ -2,6 +2,7 @@
 
 #include "cli/command_line.h"
 #include "cli/verbs.h"
+#include "core/key_time_map.h"
 #include "core/subdivision.h"
 #include "io/pose_csv.h"
 
@@ -36,24 +37,21 @@ void checkOutputSize(std::size_t poses, const SubdivisionSettings& settings, con
                                 std::to_string(poses) + " poses into more than " + std::to_string(kMaxPoseRows));
 }
 
-// Output pose i·2^L + j sits at fraction j/2^L of input span i. The span that closes a cycle has no
-// time of its own and lasts the mean of the others.
+// Output pose i·2^L + j is at parameter i + j/2^L of the polyscrew, played at the time the track's
+// time map gives it (KeyTimeMap): the times at which the app plays these poses.
 std::vector<double> subdividedTimes(const PoseTable& table, const SubdivisionSettings& settings)
 {
-    const double first = table.rows.front().time;
-    const double last = table.rows.back().time;
-    std::vector<double> spanEnds;
+    std::vector<double> keyTimes;
     for (const PoseRow& row : table.rows)
-        spanEnds.push_back(row.time);
-    if (settings.cyclic)
-        spanEnds.push_back(last + (last - first) / static_cast<double>(table.rows.size() - 1));
+        keyTimes.push_back(row.time);
+    const KeyTimeMap timeMap(keyTimes, settings.cyclic);
     const double perSpan = std::ldexp(1.0, settings.levels);
+    const double spans = static_cast<double>(settings.cyclic ? keyTimes.size() : keyTimes.size() - 1);
     std::vector<double> times;
-    for (std::size_t i = 0; i + 1 < spanEnds.size(); ++i)
-        for (double j = 0; j < perSpan; ++j)
-            times.push_back(spanEnds[i] + (spanEnds[i + 1] - spanEnds[i]) * (j / perSpan));
+    for (double k = 0; k < spans * perSpan; ++k)
+        times.push_back(timeMap.timeAt(k / perSpan));
     if (!settings.cyclic)
-        times.push_back(last);
+        times.push_back(keyTimes.back());
     return times;
 }
 

@@ -1,10 +1,10 @@
 #include "model/track_evaluation.h"
 
+#include "core/key_time_map.h"
 #include "core/polyscrew.h"
 #include "core/position_curve.h"
 #include "core/quaternion_math.h"
 #include "core/subdivision.h"
-#include "core/timed_keys.h"
 #include "core/number_text.h"
 #include "model/value_checks.h"
 
@@ -73,21 +73,18 @@ private:
     PositionCurve positions_;
 };
 
-// The subdivided polyscrew through the key poses, with time mapped to its parameter.
+// The subdivided polyscrew through the key poses, with time mapped to its parameter by the C¹ time
+// map of the key times.
 class ScrewMotion final : public detail::KeyedMotion {
 public:
     explicit ScrewMotion(const MotionTrack& track)
-        : keys_(track.keys)
-        , cyclic_(track.subdivision.cyclic)
+        : timeMap_(keyTimes(track), track.subdivision.cyclic)
         , motion_(subdividePolyscrew(posesOf(track), track.subdivision), track.subdivision.cyclic,
                   std::size_t{1} << track.subdivision.levels)
     {
-        requireIncreasingTimes(keys_);
-        if (keys_.size() > 1)
-            closingSpan_ = (keys_.back().time - keys_.front().time) / static_cast<double>(keys_.size() - 1);
     }
 
-    Pose at(double time) const override { return motion_.at(parameterAt(time)); }
+    Pose at(double time) const override { return motion_.at(timeMap_.parameterAt(time)); }
 
 private:
     static std::vector<Pose> posesOf(const MotionTrack& track)
@@ -99,28 +96,7 @@ private:
         return poses;
     }
 
-    // Key i at parameter i, linear in between; the closing span of a cycle after the last key.
-    double parameterAt(double time) const
-    {
-        if (keys_.size() == 1)
-            return 0.0;
-        const double first = keys_.front().time;
-        if (cyclic_) {
-            const double period = closingSpan_ * static_cast<double>(keys_.size());
-            time = first + std::fmod(time - first, period);
-            if (time < first)
-                time += period;
-            if (time >= keys_.back().time)
-                return static_cast<double>(keys_.size() - 1) + (time - keys_.back().time) / closingSpan_;
-        }
-        const std::size_t span = segmentAt(keys_, time);
-        const double start = keys_[span].time;
-        return static_cast<double>(span) + (time - start) / (keys_[span + 1].time - start);
-    }
-
-    std::vector<Keyframe> keys_;
-    bool cyclic_;
-    double closingSpan_ = 0.0; // the mean span: the closing span's length in a cycle
+    KeyTimeMap timeMap_;
     Polyscrew motion_;
 };
 

@@ -5,11 +5,11 @@
 //   squad, hermite: that orientation curve, positions cubic (PositionCurve::Shape::Cubic).
 //   Before the first key and after the last the end pose is held.
 // - screw: ScrewBender's motion. The key poses are subdivided with track.subdivision and joined by
-//   screws (a polyscrew); time maps piecewise linearly to the polyscrew's parameter, key i at
-//   parameter i. An open track holds its end poses outside the keys. A cyclic track repeats forever:
-//   its closing span, from the last key back to the first, lasts the mean of the other spans (as
-//   `gyre-cli subdivide` times a cycle), so the period is T = n·(tₙ₋₁ − t₀)/(n − 1) for n keys and
-//   time t plays as t₀ + ((t − t₀) mod T), before t₀ as well as after.
+//   screws (a polyscrew); time maps to the polyscrew's parameter by the key times' C¹ time map
+//   (KeyTimeMap: key i at parameter i, speed continuous across keys). An open track holds its end
+//   poses outside the keys. A cyclic track repeats forever: its closing span, from the last key back
+//   to the first, lasts the mean of the other spans, so the period is T = n·(tₙ₋₁ − t₀)/(n − 1) for
+//   n keys.
 // - A fit (track.sketch.fittedCurve non-empty) gives the orientation inside the span of its control
 //   points, by the normalised HermiteQuaternionSpline through them; outside, and for positions, the
 //   interpolation above.

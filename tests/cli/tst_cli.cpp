@@ -4,6 +4,7 @@
 // docs/pose-csv.md, never from gyre-cli's own output.
 
 #include "cli_test_support.h"
+#include "core/key_time_map.h"
 #include "core/quaternion_math.h"
 
 #include <Eigen/Dense>
@@ -374,7 +375,8 @@ void TstCli::cubicAndLinearPositions()
     QVERIFY(csv.quaternion(4).isApprox(Eigen::Quaterniond::Identity(), kTolerance));
 }
 
-// Between keys i and i+1 the screw parameter is (t − tᵢ)/(tᵢ₊₁ − tᵢ), whatever the spans' lengths.
+// Between keys i and i+1 the screw parameter is p(t) − i, p the key times' C¹ time map (KeyTimeMap,
+// tested in tst_core_key_time_map), here with spans of 2 s and 1 s.
 void TstCli::screwFollowsTheGeodesicPerSpan()
 {
     const std::vector<Key> keys{{0.0, about({0, 0, 1}, 0.3), {1, 0, 0}},
@@ -385,20 +387,20 @@ void TstCli::screwFollowsTheGeodesicPerSpan()
     QVERIFY(succeeds({"interpolate", in, "-o", out, "--method", "screw", "--fps", "4"}));
     const Csv csv = readCsv(out);
     QCOMPARE(csv.rows.size(), std::size_t{13});
+    const gyre::KeyTimeMap timeMap({0.0, 2.0, 3.0}, false);
     const struct {
         std::size_t row;
         std::size_t span;
-        double u;
-    } checks[] = {{1, 0, 0.125}, {4, 0, 0.5}, {9, 1, 0.25}, {10, 1, 0.5}};
+    } checks[] = {{1, 0}, {4, 0}, {9, 1}, {10, 1}};
     for (const auto& check : checks) {
-        const Key expected = geodesic(keys[check.span], keys[check.span + 1], check.u);
+        const double u = timeMap.parameterAt(static_cast<double>(check.row) / 4.0) - static_cast<double>(check.span);
+        const Key expected = geodesic(keys[check.span], keys[check.span + 1], u);
         QVERIFY(rotationDistance(csv.quaternion(check.row), expected.rotation) < kTolerance);
         QVERIFY((csv.position(check.row) - expected.position).norm() < kTolerance);
     }
 }
 
-// A cycle of n poses becomes n·2^L; four-point interpolates, so pose i·2^L is input pose i. The
-// closing span lasts the mean of the others.
+// A cycle of n poses becomes n·2^L; four-point interpolates, so pose i·2^L is input pose i.
 void TstCli::subdivideCycle()
 {
     const std::vector<Key> keys = randomKeys(5, 9);
@@ -409,14 +411,14 @@ void TstCli::subdivideCycle()
     QVERIFY2(csv.problem.isEmpty(), qPrintable(csv.problem));
     QCOMPARE(csv.header.join(','), QStringLiteral("time,qw,qx,qy,qz,x,y,z"));
     QCOMPARE(csv.rows.size(), std::size_t{5 * 8});
-    const double closingSpan = (keys[4].time - keys[0].time) / 4;
+    std::vector<double> times(keys.size());
+    std::transform(keys.begin(), keys.end(), times.begin(), [](const Key& key) { return key.time; });
+    const gyre::KeyTimeMap timeMap(times, true); // the closing span lasts the mean of the others
     for (std::size_t i = 0; i < keys.size(); ++i) {
         QVERIFY(rotationDistance(csv.quaternion(8 * i), keys[i].rotation) < kTolerance);
         QVERIFY((csv.position(8 * i) - keys[i].position).norm() < kTolerance);
-        const double start = keys[i].time;
-        const double span = i + 1 < keys.size() ? keys[i + 1].time - start : closingSpan;
-        for (std::size_t j = 0; j < 8; ++j)
-            QVERIFY(std::abs(csv.at(8 * i + j, "time") - (start + span * static_cast<double>(j) / 8)) < kTolerance);
+        for (std::size_t j = 0; j < 8; ++j) // pose 8i + j at p(t) = i + j/8; at tᵢ for j = 0
+            QVERIFY(std::abs(timeMap.parameterAt(csv.at(8 * i + j, "time")) - static_cast<double>(8 * i + j) / 8) < kTolerance);
     }
 }
 
