@@ -158,7 +158,7 @@ std::vector<OrientationKey> HermiteQuaternionSpline::keysOf(const std::vector<He
     return keys;
 }
 
-HermiteQuaternionSpline HermiteQuaternionSpline::throughKeys(std::vector<OrientationKey> keys)
+HermiteQuaternionSpline HermiteQuaternionSpline::throughKeys(std::vector<OrientationKey> keys, KeyDerivatives rule)
 {
     for (OrientationKey& key : keys)
         key.rotation.normalize();
@@ -172,7 +172,15 @@ HermiteQuaternionSpline HermiteQuaternionSpline::throughKeys(std::vector<Orienta
         const std::size_t before = i == 0 ? 0 : i - 1;
         const std::size_t after = i + 1 == keys.size() ? i : i + 1;
         const double span = keys[after].time - keys[before].time;
-        points[i].derivative = linearCombination(1.0 / span, keys[after].rotation, -1.0 / span, keys[before].rotation);
+        if (rule == KeyDerivatives::Chord) {
+            points[i].derivative = linearCombination(1.0 / span, keys[after].rotation, -1.0 / span, keys[before].rotation);
+            continue;
+        }
+        // Half the body angular velocity, (log(qᵢ⁻¹qᵢ₊₁) − log(qᵢ⁻¹qᵢ₋₁))/(tᵢ₊₁ − tᵢ₋₁), times qᵢ.
+        const Eigen::Quaterniond inverse = keys[i].rotation.conjugate();
+        const Eigen::Vector3d halfOmega =
+            (quatLog(inverse * keys[after].rotation) - quatLog(inverse * keys[before].rotation)) / span;
+        points[i].derivative = keys[i].rotation * Eigen::Quaterniond(0.0, halfOmega.x(), halfOmega.y(), halfOmega.z());
     }
     return HermiteQuaternionSpline(std::move(points));
 }

@@ -238,7 +238,7 @@ std::vector<Eigen::Vector2d> sineWiggle()
     std::vector<Eigen::Vector2d> pattern;
     for (int i = 0; i < kPoints; ++i) {
         const double u = static_cast<double>(i) / (kPoints - 1);
-        pattern.emplace_back(u, 0.25 * std::sin(2.0 * std::numbers::pi * u));
+        pattern.emplace_back(u, 0.375 * std::sin(2.0 * std::numbers::pi * u));
     }
     return pattern;
 }
@@ -361,10 +361,7 @@ SampleScene spinningTop()
         bentAxisStroke(top, kStrokeStart, kStrokeEnd, Eigen::Vector3d::UnitZ(), [](double) { return 0.0; }));
     track.sketch.pattern = sineWiggle();
     track.sketch.patternRepeat = 30;
-    track.sketch.window = std::pair(kStrokeStart, kStrokeEnd);
-    // At the default δ = 0.1 rad²/s the fit stops at a fragment error of 0.1002, "no place for a
-    // variable frame", which reads like a failure; at 0.15 it converges in two rounds (0.118).
-    track.sketch.delta = 0.15;
+    track.sketch.window = std::pair(kStrokeStart, kStrokeEnd); // converges at the default δ, 0.1 rad²/s
     return oneObjectScene(QStringLiteral("spinning-top.gyre"), QStringLiteral("Spinning top"), topMesh(),
                           std::move(track), kSchedule.frames);
 }

@@ -113,10 +113,17 @@ void TestFitSolver::plainInterpolationMissesTheTop()
     std::vector<OrientationKey> keys;
     for (const FitKey& key : top.keys(kDuration, kKeySpacing))
         keys.push_back({key.time, key.rotation});
-    const Deviation deviation = deviationFromTop(top, HermiteQuaternionSpline::throughKeys(keys), 0.0, kDuration);
-    qInfo("plain interpolation: RMS ω error %.2f%%, largest angle %.3f°", 100.0 * deviation.omegaRmsRatio,
-          degrees(deviation.largestAngle));
-    QVERIFY(deviation.omegaRmsRatio > 0.10);
+    // The paper's chord derivatives add a speed ripple to the missing nutation; the geodesic ones
+    // (the fit's InitCurve) miss the nutation alone, still several times the fit's 1.4% and 0.5°.
+    using Rule = HermiteQuaternionSpline::KeyDerivatives;
+    const Deviation chord = deviationFromTop(top, HermiteQuaternionSpline::throughKeys(keys, Rule::Chord), 0.0, kDuration);
+    const Deviation geodesic = deviationFromTop(top, HermiteQuaternionSpline::throughKeys(keys), 0.0, kDuration);
+    for (const auto& [name, deviation] : {std::pair{"chord", chord}, {"geodesic", geodesic}})
+        qInfo("plain interpolation, %s derivatives: RMS ω error %.2f%%, largest angle %.3f°", name,
+              100.0 * deviation.omegaRmsRatio, degrees(deviation.largestAngle));
+    QVERIFY(chord.omegaRmsRatio > 0.10);
+    QVERIFY(geodesic.omegaRmsRatio > 0.03 && degrees(geodesic.largestAngle) > 2.0);
+    QVERIFY(geodesic.omegaRmsRatio < chord.omegaRmsRatio);
 }
 
 void TestFitSolver::fitMatchesTheTopWithAllKeysConstrained()

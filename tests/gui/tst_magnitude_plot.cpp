@@ -317,10 +317,10 @@ private slots:
             QCOMPARE(beforeFit->data()->at(sample)->value, withoutFit.angularVelocity(t).norm());
         }
         // Just after the fit's start (at it the central difference straddles both motions) the fit is
-        // nearly at rest, where the keys' motion turns at about a quarter turn a second (√2 rad/s
-        // at the key: the spline's derivative there is (q₂ − q₀)/2, of length √2/2).
+        // nearly at rest, where the keys' motion turns a quarter turn a second (π/2 rad/s at the
+        // key: the spline's geodesic derivative there is the steady turn of the two arcs through it).
         QVERIFY(fitted->data()->at(1)->value < 0.05);
-        QVERIFY(std::abs(beforeFit->data()->at(1)->value - std::numbers::sqrt2) < 0.05);
+        QVERIFY(std::abs(beforeFit->data()->at(1)->value - std::numbers::pi / 2) < 0.05);
         QVERIFY(plot_->plot()->legend->hasItemWithPlottable(fitted));
         QVERIFY(plot_->plot()->legend->hasItemWithPlottable(beforeFit));
     }
