@@ -68,6 +68,13 @@ QString metadataText(const aiScene& scene, const char* key)
     return {};
 }
 
+// Assimp's FBX writer (5.2) writes UnitScaleFactor 1 (centimetres) and the time mode of 24 fps whatever
+// the scene it writes holds, Gyre's metres and frame rate among them: in its files they say nothing.
+bool isWrittenByAssimp(const aiScene& scene)
+{
+    return metadataText(scene, "SourceAsset_Generator").startsWith(QLatin1String("Open Asset Import Library"));
+}
+
 bool isFrameRate(double fps) { return std::isfinite(fps) && fps > 0.0 && fps <= model::kMaxFps; }
 
 // What a Collada file's <asset> says: its unit and its up axis ("Z_UP").
@@ -146,7 +153,7 @@ std::optional<double> rateOfKeys(const std::vector<const aiAnimation*>& animatio
 void readFrameRate(SceneSource source, const aiScene& scene, const std::vector<const aiAnimation*>& animations,
                    FileSettings& settings)
 {
-    if (source == SceneSource::Fbx) {
+    if (source == SceneSource::Fbx && !isWrittenByAssimp(scene)) {
         if (const std::optional<double> mode = metadataNumber(scene, "FrameRate");
             mode && *mode >= 1 && *mode < static_cast<double>(kFbxTimeModeRates.size())) {
             const int index = static_cast<int>(*mode);
@@ -177,6 +184,10 @@ void readFrameRate(SceneSource source, const aiScene& scene, const std::vector<c
 void readUnit(const QString& path, SceneSource source, const aiScene& scene, FileSettings& settings)
 {
     settings.values.metresPerUnit = 1.0;
+    if (source == SceneSource::Fbx && isWrittenByAssimp(scene)) {
+        settings.unitSource = FileError::tr("written by Assimp, whose FBX unit says nothing; metres assumed");
+        return;
+    }
     if (source == SceneSource::Fbx) {
         if (const std::optional<double> centimetres = metadataNumber(scene, "UnitScaleFactor");
             centimetres && std::isfinite(*centimetres) && *centimetres > 0.0) {

@@ -12,6 +12,8 @@
 //   (Blender's glTF and Collada keys are at frame/fps); else 24.
 // - Unit, in metres: FBX's UnitScaleFactor / 100 (FBX counts in centimetres); Collada's <unit meter>;
 //   glTF's metre; 1 for formats without units.
+//   An FBX file written by Assimp (Gyre's own FBX export among them) states 1 cm and 24 fps whatever it
+//   holds, so its unit is taken as the metre and its rate from its keys.
 // - Up axis: FBX's UpAxis and UpAxisSign; Collada's <up_axis>; Y for glTF (by its specification) and
 //   the rest. X-up and downward axes are not converted (a warning says so).
 
