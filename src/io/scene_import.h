@@ -1,6 +1,6 @@
 #pragma once
 // Scenes from every format Assimp reads (FBX, OBJ, glTF 2.0, Collada, BVH, DirectX .x, 3DS, ASE, …):
-// the node hierarchy as objects, meshes for display, and one of the file's animations as keyframes.
+// the node hierarchy as objects, meshes for display, and the chosen animations as keyframes.
 //
 // - Objects: one per node, named as the node, parents before children, ids from 1. The root node is
 //   left out when it carries nothing (no mesh, identity transform, not animated): then its children
@@ -11,7 +11,8 @@
 //   second (kDefaultTicksPerSecond when the file gives 0); nothing is resampled. Where a node's
 //   rotation and position keys fall at different times, its keyframes are at the union of the times,
 //   the other value taken where Assimp's data puts it: slerp between rotation keys, linear between
-//   position keys, held before the first and after the last. A value the channel does not animate,
+//   position keys, held before the first and after the last. A single key beside several is a
+//   constant and adds no time of its own. A value the channel does not animate,
 //   and every value of a node without a channel, is the node's own transform; a node without a
 //   channel gets one key at time 0. Imported tracks use slerp, which plays the file's motion.
 // - Settings (ImportSettings): frame rate, unit and up axis as the file says (scene_import_settings.h)
