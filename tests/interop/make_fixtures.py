@@ -4,8 +4,8 @@
 #
 #   blender -b --factory-startup --python tests/interop/make_fixtures.py -- OUTDIR
 #
-# Written for Blender 3.4 (Debian 12's). The files are committed, so the tests need no Blender; run
-# this again only to change them.
+# Written for Blender 3.4 (Debian 12's), whose glTF exporter needs python3-numpy. The files are
+# committed, so the tests need no Blender; run this again only to change them.
 
 import json
 import math
