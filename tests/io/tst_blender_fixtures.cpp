@@ -12,6 +12,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <algorithm>
@@ -90,6 +91,7 @@ private slots:
     void blenderTakesGiveEachObjectItsOwnAction();
     void overlappingAnimationsNeedAChoice();
     void optionsOverrideWhatTheFileSays();
+    void colladaUnitAndUpAxisComeFromItsAsset();
 };
 
 void TstBlenderFixtures::everyObjectMovesAsBlenderEvaluatedIt_data()
@@ -240,6 +242,47 @@ void TstBlenderFixtures::optionsOverrideWhatTheFileSays()
     const Pose after = unshifted.scene.objects.at(0).track.keys.back().pose;
     QVERIFY(degrees(after.orientation, kZUpToYUp * before.orientation) < 1e-9);
     QVERIFY((after.position - kZUpToYUp * before.position).norm() < 1e-9);
+}
+
+// Blender's Collada says <unit meter="1"/> and Z_UP. The same file in centimetres comes in 100 times
+// smaller; said to be Y-up, it is not turned; said to be X-up, it is read as Y-up with a warning.
+void TstBlenderFixtures::colladaUnitAndUpAxisComeFromItsAsset()
+{
+    QFile original(dataFile(QStringLiteral("blender_three_objects.dae")));
+    QVERIFY(original.open(QIODevice::ReadOnly));
+    const QByteArray text = original.readAll();
+    QVERIFY(text.contains(R"(<unit name="meter" meter="1"/>)") && text.contains("<up_axis>Z_UP</up_axis>"));
+    QTemporaryDir folder;
+    const auto variant = [&](const char* name, QByteArray unit, QByteArray up) {
+        QByteArray changed = text;
+        changed.replace(R"(<unit name="meter" meter="1"/>)", unit).replace("<up_axis>Z_UP</up_axis>", up);
+        const QString path = folder.filePath(QLatin1String(name));
+        QFile file(path);
+        if (!file.open(QIODevice::WriteOnly) || file.write(changed) != changed.size())
+            qFatal("cannot write %s", qPrintable(path));
+        return path;
+    };
+    const SceneImport metres = importScene(original.fileName());
+    const SceneImport centimetres =
+        importScene(variant("cm.dae", R"(<unit name="centimeter" meter="0.01"/>)", "<up_axis>Z_UP</up_axis>"));
+    QCOMPARE(centimetres.file.values.metresPerUnit, 0.01);
+    QCOMPARE(centimetres.scene.objects.size(), metres.scene.objects.size()); // no root object for the unit
+    for (std::size_t i = 0; i < metres.scene.objects.size(); ++i) {
+        const Pose a = metres.scene.objects[i].track.keys.back().pose;
+        const Pose b = centimetres.scene.objects[i].track.keys.back().pose;
+        QVERIFY((b.position - 0.01 * a.position).norm() < 1e-9);
+        QVERIFY(degrees(a.orientation, b.orientation) < 1e-9);
+    }
+
+    const SceneImport yUp = importScene(variant("y.dae", R"(<unit meter="1"/>)", "<up_axis>Y_UP</up_axis>"));
+    QCOMPARE(yUp.file.values.up, UpAxis::Y);
+    const Pose turned = metres.scene.objects.front().track.keys.back().pose;
+    const Pose asIs = yUp.scene.objects.front().track.keys.back().pose;
+    QVERIFY(degrees(turned.orientation, kZUpToYUp * asIs.orientation) < 1e-9);
+
+    const SceneImport xUp = importScene(variant("x.dae", R"(<unit meter="1"/>)", "<up_axis>X_UP</up_axis>"));
+    QCOMPARE(xUp.file.values.up, UpAxis::Y);
+    QCOMPARE(xUp.warnings.filter(QStringLiteral("its up axis is X_UP")).size(), 1);
 }
 
 } // namespace gyre

@@ -85,6 +85,8 @@ private slots:
     void choosesAmongAnimations();
     void plansTakes_data();
     void plansTakes();
+    void frameRateFromTheKeys_data();
+    void frameRateFromTheKeys();
     void bvhKeysComeThroughExactly();
     void missingEmptyAndDirectory();
     void randomBytes_data();
@@ -395,6 +397,38 @@ void TstSceneImport::plansTakes()
                      qPrintable(plan.warnings.front()));
 }
 
+void TstSceneImport::frameRateFromTheKeys_data()
+{
+    QTest::addColumn<QList<double>>("ticks"); // at 600 ticks per second
+    QTest::addColumn<double>("fps");
+    QTest::addColumn<QString>("source");
+    QTest::newRow("every frame at 30") << QList<double>{20, 40, 60, 80} << 30.0 << "every key is on a frame of 30 fps";
+    QTest::newRow("sparse keys at 60") << QList<double>{0, 10, 70, 590} << 60.0 << "every key is on a frame of 60 fps";
+    QTest::newRow("whole seconds") << QList<double>{0, 600, 1200} << 24.0 << "every key is on a frame of 24 fps";
+    QTest::newRow("no common rate") << QList<double>{0, 7, 600} << 24.0 << "on the frames of no common rate";
+}
+
+// A format that states no frame rate gets the lowest common rate on whose frames every key falls.
+void TstSceneImport::frameRateFromTheKeys()
+{
+    QFETCH(QList<double>, ticks);
+    QFETCH(double, fps);
+    QFETCH(QString, source);
+    std::vector<aiQuatKey> keys;
+    for (const double tick : ticks)
+        keys.push_back({tick, aboutZ(tick / 1000.0)});
+    auto scene = emptyAssimpScene();
+    addNode(*scene->mRootNode, "joint");
+    setAnimations(*scene, {animation("take", 600.0, ticks.back(), {nodeAnimation("joint", keys, {})})});
+    const QString file = path("rate.assbin");
+    writeAssbin(*scene, file);
+    const SceneImport imported = importScene(file);
+    QCOMPARE(imported.scene.fps, fps);
+    QVERIFY2(imported.file.fpsSource.contains(source), qPrintable(imported.file.fpsSource));
+    QCOMPARE(imported.file.values.metresPerUnit, 1.0);
+    QCOMPARE(imported.file.values.up, UpAxis::Y);
+}
+
 // BVH turns each joint by its channels in file order about moving axes: Zrotation Xrotation
 // Yrotation is R = Rz·Rx·Ry; frame k is at k·frame time. Every frame is a key, none added.
 void TstSceneImport::bvhKeysComeThroughExactly()
@@ -405,6 +439,8 @@ void TstSceneImport::bvhKeysComeThroughExactly()
     const QString file = path("chain.bvh");
     writeFile(file, bvhChain(joints, frames, frameTime));
     const SceneImport imported = importScene(file);
+    QVERIFY(std::abs(imported.scene.fps - 1.0 / frameTime) < 1e-4); // Assimp reads the frame time as a float
+    QCOMPARE(imported.file.fpsSource, QStringLiteral("the BVH frame time"));
     for (int j = 0; j < joints; ++j) {
         const model::SceneObject* joint = objectNamed(imported.scene, QStringLiteral("joint%1").arg(j));
         QVERIFY(joint);
