@@ -10,8 +10,8 @@
 #include <QFileInfo>
 #include <QXmlStreamReader>
 
-#include <algorithm>
 #include <array>
+#include <utility>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -212,6 +212,15 @@ void readUnit(const QString& path, SceneSource source, const aiScene& scene, Fil
                                                       : FileError::tr("the format has no unit; metres assumed");
 }
 
+// FBX numbers the axes X 0, Y 1, Z 2.
+QString fbxAxisName(double axis)
+{
+    for (const auto& [number, name] : {std::pair{0.0, "X"}, std::pair{1.0, "Y"}, std::pair{2.0, "Z"}})
+        if (axis == number)
+            return QString::fromLatin1(name);
+    return FileError::number(axis);
+}
+
 void readUpAxis(const QString& path, SceneSource source, const aiScene& scene, FileSettings& settings,
                 QStringList& warnings)
 {
@@ -222,13 +231,14 @@ void readUpAxis(const QString& path, SceneSource source, const aiScene& scene, F
                         .arg(axis);
     };
     if (source == SceneSource::Fbx) {
-        const int axis = static_cast<int>(metadataNumber(scene, "UpAxis").value_or(1));
-        const int sign = static_cast<int>(metadataNumber(scene, "UpAxisSign").value_or(1));
+        // Compared as read: a damaged file's number need not fit an int.
+        const double axis = metadataNumber(scene, "UpAxis").value_or(1.0);
+        const double sign = metadataNumber(scene, "UpAxisSign").value_or(1.0);
         settings.upSource = FileError::tr("the FBX UpAxis");
-        if (sign == 1 && (axis == 1 || axis == 2))
-            settings.values.up = axis == 2 ? UpAxis::Z : UpAxis::Y;
+        if (sign == 1.0 && (axis == 1.0 || axis == 2.0))
+            settings.values.up = axis == 2.0 ? UpAxis::Z : UpAxis::Y;
         else
-            unsupported(QStringLiteral("%1%2").arg(sign < 0 ? "-" : "").arg(QChar(u'X' + std::clamp(axis, 0, 2))));
+            unsupported(QStringLiteral("%1%2").arg(sign < 0.0 ? "-" : "").arg(fbxAxisName(axis)));
         return;
     }
     if (source == SceneSource::Collada) {
