@@ -1,5 +1,6 @@
 #include "app/scene_file_actions.h"
 
+#include "app/import_dialog.h"
 #include "app/undo_gesture.h"
 #include "model/commands/import_objects_command.h"
 #include "model/commands/set_time_range_command.h"
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 namespace gyre::app {
 
@@ -66,7 +68,7 @@ SceneFileActions::SceneFileActions(model::Document& document, Selection& selecti
         widget->hide();
     }
     connect(cancelButton_, &QPushButton::clicked, &jobs_, &jobs::SceneFileJobs::cancelImport);
-    connect(&jobs_, &jobs::SceneFileJobs::imported, this, &SceneFileActions::addImportedObjects);
+    connect(&jobs_, &jobs::SceneFileJobs::imported, this, &SceneFileActions::receiveImport);
     connect(&jobs_, &jobs::SceneFileJobs::exported, this, &SceneFileActions::reportExport);
     connect(&jobs_, &jobs::SceneFileJobs::failed, this,
             [this](const QString&, const QString& message) { reportFailure(message); });
@@ -80,7 +82,7 @@ void SceneFileActions::chooseSceneToImport()
 {
     const QString path = QFileDialog::getOpenFileName(window_, tr("Import Scene"), QString(), importFilter());
     if (!path.isEmpty())
-        importScene(path);
+        importScene(path, true);
 }
 
 void SceneFileActions::chooseSceneToExport()
@@ -97,13 +99,51 @@ void SceneFileActions::chooseSceneToExport()
     exportScene(path);
 }
 
-void SceneFileActions::importScene(const QString& path)
+void SceneFileActions::importScene(const QString& path, bool askForOptions)
 {
-    if (!jobs_.startImport(path)) {
+    if (jobs_.isBusy()) {
+        statusBar_->showMessage(tr("Wait for the scene file being read or written first"), kMessageMilliseconds);
+        return;
+    }
+    firstRead_ = true;
+    askForOptions_ = askForOptions;
+    startImport(path, {});
+}
+
+void SceneFileActions::startImport(const QString& path, const ImportOptions& options)
+{
+    if (!jobs_.startImport(path, options)) {
         statusBar_->showMessage(tr("Wait for the scene file being read or written first"), kMessageMilliseconds);
         return;
     }
     showBusy(tr("Importing %1…").arg(QFileInfo(path).fileName()), true);
+}
+
+void SceneFileActions::receiveImport(const QString& path, const std::shared_ptr<const SceneImport>& imported)
+{
+    hideBusy();
+    const bool wasFirstRead = std::exchange(firstRead_, false);
+    if (wasFirstRead && (askForOptions_ || imported->takeRule == TakeRule::ChoiceNeeded))
+        askForOptions(path, imported);
+    else
+        addImportedObjects(path, imported);
+}
+
+void SceneFileActions::askForOptions(const QString& path, const std::shared_ptr<const SceneImport>& firstRead)
+{
+    auto* dialog = new ImportDialog(path, *firstRead, window_);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog, path, firstRead] {
+        if (dialog->keepsTheDefaults())
+            addImportedObjects(path, firstRead);
+        else
+            startImport(path, dialog->options());
+    });
+    connect(dialog, &QDialog::rejected, this, [this, path] {
+        statusBar_->showMessage(tr("Import of %1 cancelled").arg(QFileInfo(path).fileName()), kMessageMilliseconds);
+    });
+    dialog->open();
+    emit importDialogOpened(dialog);
 }
 
 void SceneFileActions::exportScene(const QString& path)
@@ -126,7 +166,6 @@ void SceneFileActions::exportScene(const QString& path)
 
 void SceneFileActions::addImportedObjects(const QString& path, const std::shared_ptr<const SceneImport>& imported)
 {
-    hideBusy();
     const QString name = QFileInfo(path).fileName();
     if (imported->scene.objects.empty()) {
         reportFailure(tr("%1: the file holds no objects.").arg(QDir::toNativeSeparators(path)));

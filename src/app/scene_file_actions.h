@@ -1,7 +1,9 @@
 #pragma once
 // File > Import Scene and File > Export Scene: choosing the file, running the job off the UI thread
 // with a busy indicator (and, for an import, a Cancel button) in the status bar, and turning an
-// imported scene into one undo step.
+// imported scene into one undo step. An import first reads the file with its default options; the
+// import dialog (import_dialog.h) then shows its takes and settings, always from File > Import Scene,
+// and for a dropped or opened file when its takes need a choice. Changed options read it again.
 
 #include "app/selection.h"
 #include "jobs/scene_file_jobs.h"
@@ -12,6 +14,7 @@
 
 #include <memory>
 
+class QDialog;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -31,11 +34,19 @@ public:
 
     void chooseSceneToImport();
     void chooseSceneToExport();
-    // Starts reading the scene; its objects join the document when it is read.
-    void importScene(const QString& path);
+    // Starts reading the scene; its objects join the document when it is read, after the import
+    // dialog when `askForOptions` or when the file's takes need a choice.
+    void importScene(const QString& path, bool askForOptions = false);
     void exportScene(const QString& path);
 
+signals:
+    // The import dialog opened for a file that has been read (for tests and tours).
+    void importDialogOpened(QDialog* dialog);
+
 private:
+    void startImport(const QString& path, const ImportOptions& options);
+    void receiveImport(const QString& path, const std::shared_ptr<const SceneImport>& imported);
+    void askForOptions(const QString& path, const std::shared_ptr<const SceneImport>& firstRead);
     void addImportedObjects(const QString& path, const std::shared_ptr<const SceneImport>& imported);
     void reportExport(const QString& path, const ExportReport& report);
     // `message` names the file and says what was wrong.
@@ -52,6 +63,9 @@ private:
     QLabel* busyLabel_;
     QProgressBar* busyBar_;
     QPushButton* cancelButton_;
+    // Whether the running import is the first read of its file, and whether to show the dialog then.
+    bool firstRead_ = false;
+    bool askForOptions_ = false;
 };
 
 } // namespace gyre::app

@@ -113,8 +113,9 @@ const char* const kInfo = R"(Usage: gyre-cli info PROJECT.gyre|SCENE
 
 Prints a short summary of a Gyre project (a .gyre file) or of any scene file Assimp reads: its time
 range and frame rate, its objects and keyframes, and for each object its parent, keyframes, their
-time span and the interpolation. For a scene file it lists the animations too; the first is the one
-gyre-cli import takes unless told otherwise.)";
+time span and the interpolation. For a scene file it lists every animation (take) with its length
+and the nodes it moves, marks those gyre-cli import takes by default and says why, and gives the
+frame rate, unit and up axis the import applies and where the file says them.)";
 
 const char* const kBake = R"(Usage: gyre-cli bake PROJECT.gyre --object NAME --fps F -o FRAMES.csv
 
@@ -127,15 +128,31 @@ keys are.
   --fps F        samples per second, above 0 and at most 1000
   -o, --output FILE  the output file)";
 
-const char* const kImport = R"(Usage: gyre-cli import SCENE -o PROJECT.gyre [--animation N]
+const char* const kImport = R"(Usage: gyre-cli import SCENE -o PROJECT.gyre [--animation N|N,M,...|all] [--fps F] [--unit METRES]
+               [--up y|z] [--time-origin zero|file]
 
 Reads any scene file Assimp reads (FBX, OBJ, glTF 2.0, Collada, BVH, DirectX .x, 3DS, ASE, ...) and
 writes it as a Gyre project: one object per node, named as the node, with its mesh, its parent and
-every key of the chosen animation exactly as the file has them (docs/scene-files.md). What the
-project cannot keep (scale animation, skinning, ...) is reported on standard error.
+every key of the chosen animations exactly as the file has them (docs/scene-files.md). What the
+project cannot keep (scale animation, skinning, ...) is reported on standard error, and so are the
+settings applied.
 
-  --animation N  which of the file's animations to take, from 0 (default 0; gyre-cli info lists them)
-  -o, --output FILE  the project file)";
+A file may hold several animations (takes; gyre-cli info lists them). Without --animation:
+  one animation, or several that each move nodes no other moves (Blender's glTF), are imported
+  together; Blender's FBX takes "Object|Action" give each object its own action (a warning says
+  which take each object got); any other overlapping animations are refused with their list.
+  --animation N        animation N alone, from 0
+  --animation N,M,...  these merged; a node several move takes the last one's keys
+  --animation all      every animation merged, the same way
+
+Each setting below defaults to what the file says:
+  --fps F              the project's frame rate (FBX time mode, BVH frame time, else the rate on whose
+                       frames every key falls); keys are never resampled
+  --unit METRES        the length of the file's unit in metres (FBX UnitScaleFactor, Collada <unit>;
+                       0.01 for a centimetre file); positions and meshes are scaled to metres
+  --up y|z             the file's up axis (FBX UpAxis, Collada up_axis); a Z-up scene is turned Y-up
+  --time-origin zero   the first key at t = 0 for every format (default); file: times as in the file
+  -o, --output FILE    the project file)";
 
 const char* const kExport = R"(Usage: gyre-cli export PROJECT.gyre -o SCENE.(gltf|glb|dae|fbx|obj) [--fps F]
 

@@ -1,6 +1,7 @@
 // gyre-cli info: a short summary of a project or a scene file.
 
 #include "cli/command_line.h"
+#include "cli/import_report.h"
 #include "cli/verbs.h"
 #include "core/number_text.h"
 #include "io/scene_import.h"
@@ -38,14 +39,14 @@ std::string objectLine(const model::Scene& scene, const SceneObject& object)
 // A project by its .gyre extension; any other file is a scene for Assimp, whose animations are listed.
 bool isProject(const QString& path) { return path.endsWith(QStringLiteral(".gyre"), Qt::CaseInsensitive); }
 
-std::string animationLines(const std::vector<AnimationSummary>& animations)
+// The file's animations, which the import takes, and the settings it applies.
+std::string sceneLines(const SceneImport& imported)
 {
-    std::string text = plural(animations.size(), "animation") + (animations.empty() ? "\n" : ":\n");
-    for (std::size_t i = 0; i < animations.size(); ++i)
-        text += "  " + std::to_string(i) + ": '" + animations[i].name.toStdString() + "', " +
-                formatNumber(animations[i].durationSeconds) + " s, " + plural(animations[i].channelCount, "channel") +
-                (i == 0 ? " (imported by default)\n" : "\n");
-    return text;
+    std::string text = plural(imported.animations.size(), "animation") + (imported.animations.empty() ? "\n" : ":\n");
+    text += animationList(imported);
+    if (!imported.animations.empty())
+        text += takeChoiceLine(imported) + "\n";
+    return text + "import settings: " + settingsLine(imported) + "\n";
 }
 
 } // namespace
@@ -62,7 +63,7 @@ void runInfo(const QStringList& arguments)
     } else {
         SceneImport imported = importSceneInWorker(path);
         scene = std::move(imported.scene);
-        text = path.toStdString() + ": scene\n" + animationLines(imported.animations);
+        text = path.toStdString() + ": scene\n" + sceneLines(imported);
     }
     text += "time range: " + formatNumber(scene.startTime) + " to " + formatNumber(scene.endTime) + " s at " +
             formatNumber(scene.fps) + " fps\n";

@@ -2,6 +2,7 @@
 // project's motion at its frames.
 
 #include "cli/command_line.h"
+#include "cli/import_report.h"
 #include "cli/tracked_object.h"
 #include "cli/verbs.h"
 #include "io/pose_csv.h"
@@ -13,6 +14,7 @@
 #include "model/input_error.h"
 #include "model/track_evaluation.h"
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -23,11 +25,49 @@ namespace {
 const QString kAnimationOption = QStringLiteral("animation");
 const QString kFpsOption = QStringLiteral("fps");
 const QString kObjectOption = QStringLiteral("object");
+const QString kUnitOption = QStringLiteral("unit");
+const QString kUpOption = QStringLiteral("up");
+const QString kTimeOriginOption = QStringLiteral("time-origin");
 
 void warnAll(const QStringList& warnings)
 {
     for (const QString& warning : warnings)
         warn(warning.toStdString());
+}
+
+// --animation all, N or N,M,...
+void readTakes(const VerbCommandLine& commandLine, ImportOptions& options)
+{
+    const QString value = commandLine.requiredValue(kAnimationOption);
+    if (value == QLatin1String("all")) {
+        options.takeSelection = TakeSelection::All;
+        return;
+    }
+    options.takeSelection = TakeSelection::Listed;
+    for (const QString& item : value.split(QLatin1Char(','))) {
+        bool ok = false;
+        const qulonglong index = item.trimmed().toULongLong(&ok);
+        if (!ok || item.trimmed().startsWith(QLatin1Char('+')))
+            throw commandLine.error("--animation: '" + value.toStdString() +
+                                    "' is not all, an animation's number or a list of them such as 0,2");
+        options.takes.push_back(static_cast<std::size_t>(index));
+    }
+}
+
+ImportOptions importOptions(const VerbCommandLine& commandLine)
+{
+    ImportOptions options;
+    if (commandLine.isSet(kAnimationOption))
+        readTakes(commandLine, options);
+    if (commandLine.isSet(kFpsOption))
+        options.fps = commandLine.frameRate(kFpsOption);
+    if (commandLine.isSet(kUnitOption))
+        options.metresPerUnit = commandLine.positiveNumber(kUnitOption);
+    if (commandLine.isSet(kUpOption))
+        options.up = commandLine.choice(kUpOption, kUpAxisNames);
+    if (commandLine.isSet(kTimeOriginOption))
+        options.timeOrigin = commandLine.choice(kTimeOriginOption, kTimeOriginNames);
+    return options;
 }
 
 std::vector<std::string_view> sceneFormatNames()
@@ -43,12 +83,21 @@ std::vector<std::string_view> sceneFormatNames()
 void runImport(const QStringList& arguments)
 {
     const VerbCommandLine commandLine(QStringLiteral("import"), arguments,
-                                      {QCommandLineOption(kAnimationOption, {}, QStringLiteral("index"))});
-    ImportOptions options;
-    if (commandLine.isSet(kAnimationOption))
-        options.animationIndex = static_cast<std::size_t>(commandLine.nonNegativeInteger(kAnimationOption));
+                                      {QCommandLineOption(kAnimationOption, {}, QStringLiteral("takes")),
+                                       QCommandLineOption(kFpsOption, {}, QStringLiteral("rate")),
+                                       QCommandLineOption(kUnitOption, {}, QStringLiteral("metres")),
+                                       QCommandLineOption(kUpOption, {}, QStringLiteral("axis")),
+                                       QCommandLineOption(kTimeOriginOption, {}, QStringLiteral("origin"))});
+    const ImportOptions options = importOptions(commandLine);
     const SceneImport imported = importSceneInWorker(commandLine.inputPath(), options);
+    if (imported.takeRule == TakeRule::ChoiceNeeded)
+        throw commandLine.error(commandLine.inputPath().toStdString() + " has " +
+                                std::to_string(imported.animations.size()) +
+                                " animations that move the same nodes; choose with --animation N (one), N,M,... "
+                                "(merged, a later one winning a node it shares) or all:\n" +
+                                animationList(imported));
     warnAll(imported.warnings);
+    std::fprintf(stderr, "gyre-cli: imported at %s\n", settingsLine(imported).c_str());
     model::writeProject(commandLine.outputPath(), imported.scene);
 }
 

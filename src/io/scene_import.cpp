@@ -1,6 +1,8 @@
 #include "io/scene_import.h"
 
 #include "io/assimp_math.h"
+#include "io/scene_import_settings.h"
+#include "model/value_checks.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
@@ -63,6 +65,8 @@ const aiScene& readWithAssimp(Assimp::Importer& importer, const QString& path)
     importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);
     // BVH would get a stick-figure mesh on its root joint; Gyre draws each joint as an object instead.
     importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
+    // Gyre turns Z-up scenes itself, on its top-level objects, as for every format (ImportSettings).
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
     const aiScene* scene = importer.ReadFile(QFile::encodeName(path).toStdString(), 0);
     if (scene && scene->mNumMeshes == 0 && scene->mNumAnimations == 0)
         throw InputError(path, FileError::tr("the file holds no meshes and no animation").toStdString());
@@ -93,8 +97,11 @@ std::vector<AnimationSummary> summariesOf(const aiScene& scene)
     std::vector<AnimationSummary> summaries;
     for (unsigned i = 0; i < scene.mNumAnimations; ++i) {
         const aiAnimation& animation = *scene.mAnimations[i];
-        summaries.push_back({nameOf(animation.mName), animation.mDuration / ticksPerSecond(animation),
-                             animation.mNumChannels});
+        QStringList nodes;
+        for (unsigned c = 0; c < animation.mNumChannels; ++c)
+            if (const QString node = nameOf(animation.mChannels[c]->mNodeName); !nodes.contains(node))
+                nodes << node;
+        summaries.push_back({nameOf(animation.mName), animation.mDuration / ticksPerSecond(animation), nodes});
     }
     return summaries;
 }
@@ -189,20 +196,24 @@ std::vector<model::Keyframe> keyframesOf(const aiNodeAnim& channel, double ticks
     const unsigned positions = channel.mNumPositionKeys;
     std::vector<model::Keyframe> keys;
     keys.reserve(std::size_t{rotations} + positions);
+    // One key beside several is a constant (Blender's glTF exporter writes an unchanging translation as
+    // one key at time 0): it gives its value at the other's times and adds no time of its own.
+    const unsigned timedRotations = rotations == 1 && positions > 1 ? 0 : rotations;
+    const unsigned timedPositions = positions == 1 && rotations > 1 ? 0 : positions;
     unsigned r = 0;
     unsigned p = 0;
     constexpr double kNever = std::numeric_limits<double>::infinity();
-    while (r < rotations || p < positions) {
-        const double ticks = std::min(r < rotations ? channel.mRotationKeys[r].mTime : kNever,
-                                      p < positions ? channel.mPositionKeys[p].mTime : kNever);
+    while (r < timedRotations || p < timedPositions) {
+        const double ticks = std::min(r < timedRotations ? channel.mRotationKeys[r].mTime : kNever,
+                                      p < timedPositions ? channel.mPositionKeys[p].mTime : kNever);
         Pose pose = nodePose;
         if (rotations > 0) {
-            const bool atKey = r < rotations && channel.mRotationKeys[r].mTime == ticks;
+            const bool atKey = r < timedRotations && channel.mRotationKeys[r].mTime == ticks;
             pose.orientation = atKey ? toEigen(channel.mRotationKeys[r++].mValue).normalized()
                                      : rotationAt(channel, r, ticks);
         }
         if (positions > 0) {
-            const bool atKey = p < positions && channel.mPositionKeys[p].mTime == ticks;
+            const bool atKey = p < timedPositions && channel.mPositionKeys[p].mTime == ticks;
             pose.position = atKey ? toEigen(channel.mPositionKeys[p++].mValue) : positionAt(channel, p, ticks);
         }
         pose.position *= positionScale;
@@ -287,17 +298,19 @@ bool isUniform(const Eigen::Vector3d& scale)
 // Builds the scene from the node tree, depth first so that parents come before children.
 class SceneBuilder {
 public:
-    SceneBuilder(const QString& path, const aiScene& scene, const aiAnimation* animation, SceneImport& result)
+    // `animations` are merged in their order: a node that several move takes the last one's channel.
+    SceneBuilder(const QString& path, const aiScene& scene, const std::vector<const aiAnimation*>& animations,
+                 SceneImport& result)
         : path_(path)
         , meshes_(scene)
-        , animation_(animation)
         , result_(result)
     {
-        if (animation_)
-            indexChannels();
+        for (const aiAnimation* animation : animations)
+            indexChannels(*animation);
     }
 
-    void build(const aiNode& root)
+    // The objects built, `metresPerUnit` scaling every position and mesh.
+    void build(const aiNode& root, double metresPerUnit)
     {
         struct Pending {
             const aiNode* node;
@@ -310,9 +323,9 @@ public:
                 pending.push_back({node.mChildren[i], parent, scale});
         };
         if (carriesNothing(root))
-            pushChildren(root, model::kNoObject, 1.0);
+            pushChildren(root, model::kNoObject, metresPerUnit);
         else
-            pending.push_back({&root, model::kNoObject, 1.0});
+            pending.push_back({&root, model::kNoObject, metresPerUnit});
         while (!pending.empty()) {
             const Pending next = pending.back();
             pending.pop_back();
@@ -322,21 +335,38 @@ public:
         reportUnusedChannels();
     }
 
+    // The ids of the objects that have a channel.
+    const std::set<model::ObjectId>& animatedObjects() const { return animated_; }
+
 private:
-    void indexChannels()
+    struct Channel {
+        const aiNodeAnim* keys;
+        const aiAnimation* animation;
+    };
+
+    void indexChannels(const aiAnimation& animation)
     {
-        for (unsigned i = 0; i < animation_->mNumChannels; ++i) {
-            const aiNodeAnim& channel = *animation_->mChannels[i];
-            if (!channels_.try_emplace(viewOf(channel.mNodeName), &channel).second)
-                result_.warnings << FileError::tr("node '%1' has more than one channel; the first is used")
-                                        .arg(nameOf(channel.mNodeName));
+        std::set<std::string_view> inThisAnimation;
+        for (unsigned i = 0; i < animation.mNumChannels; ++i) {
+            const aiNodeAnim& channel = *animation.mChannels[i];
+            const std::string_view node = viewOf(channel.mNodeName);
+            if (!inThisAnimation.insert(node).second) {
+                result_.warnings << FileError::tr("node '%1' has more than one channel in animation '%2'; the first is used")
+                                        .arg(nameOf(channel.mNodeName), nameOf(animation.mName));
+                continue;
+            }
+            const auto [entry, isNew] = channels_.insert_or_assign(node, Channel{&channel, &animation});
+            if (!isNew)
+                result_.warnings << FileError::tr("node '%1' is moved by more than one of the chosen animations; "
+                                                  "the later one, '%2', is used")
+                                        .arg(nameOf(channel.mNodeName), nameOf(animation.mName));
         }
     }
 
-    const aiNodeAnim* channelOf(const aiNode& node) const
+    const Channel* channelOf(const aiNode& node) const
     {
         const auto found = channels_.find(viewOf(node.mName));
-        return found == channels_.end() ? nullptr : found->second;
+        return found == channels_.end() ? nullptr : &found->second;
     }
 
     bool carriesNothing(const aiNode& node) const
@@ -352,12 +382,13 @@ private:
         object.name = nameOf(node.mName);
         object.parent = parent;
         const NodeTransform transform = decompose(node.mTransformation);
-        const aiNodeAnim* channel = channelOf(node);
+        const Channel* channel = channelOf(node);
         Eigen::Vector3d scale = transform.scale;
         if (channel) {
             used_.insert(viewOf(node.mName));
+            animated_.insert(object.id);
             object.track.keys = animatedKeys(node, *channel, transform.pose, inheritedScale);
-            scale = animatedScale(node, *channel, scale);
+            scale = animatedScale(node, *channel->keys, scale);
         } else {
             Pose pose = transform.pose;
             pose.position *= inheritedScale;
@@ -373,9 +404,10 @@ private:
         return {result_.scene.objects.back().id, childScale};
     }
 
-    std::vector<model::Keyframe> animatedKeys(const aiNode& node, const aiNodeAnim& channel, const Pose& nodePose,
+    std::vector<model::Keyframe> animatedKeys(const aiNode& node, const Channel& animated, const Pose& nodePose,
                                               double positionScale) const
     {
+        const aiNodeAnim& channel = *animated.keys;
         QString problem =
             keyProblem(channel.mRotationKeys, channel.mNumRotationKeys, QT_TRANSLATE_NOOP("gyre::FileError", "rotation"));
         if (problem.isEmpty())
@@ -383,7 +415,7 @@ private:
                                  QT_TRANSLATE_NOOP("gyre::FileError", "position"));
         if (!problem.isEmpty())
             throw nodeKeyError(path_, node, problem);
-        return keyframesOf(channel, ticksPerSecond(*animation_), nodePose, positionScale);
+        return keyframesOf(channel, ticksPerSecond(*animated.animation), nodePose, positionScale);
     }
 
     // The first scaling key, or the node's own scale when the channel has none.
@@ -410,50 +442,130 @@ private:
     {
         for (const auto& [name, channel] : channels_)
             if (!used_.contains(name))
-                result_.warnings << FileError::tr("the animation moves '%1', which is not in the scene")
-                                        .arg(nameOf(channel->mNodeName));
+                result_.warnings << FileError::tr("animation '%1' moves '%2', which is not in the scene")
+                                        .arg(nameOf(channel.animation->mName), nameOf(channel.keys->mNodeName));
     }
 
     const QString& path_;
     MeshConverter meshes_;
-    const aiAnimation* animation_;
     SceneImport& result_;
-    std::unordered_map<std::string_view, const aiNodeAnim*> channels_;
+    std::unordered_map<std::string_view, Channel> channels_;
     std::set<std::string_view> used_;
+    std::set<model::ObjectId> animated_;
 };
 
-const aiAnimation* chosenAnimation(const QString& path, const aiScene& scene, const ImportOptions& options)
+// The takes the options name, each checked against the file, or the automatic choice.
+TakePlan chosenTakes(const QString& path, const std::vector<AnimationSummary>& animations, const ImportOptions& options)
 {
-    if (scene.mNumAnimations == 0)
-        return nullptr;
-    if (options.animationIndex >= scene.mNumAnimations)
-        throw InputError(path, FileError::tr("the file has %1 animations; there is no animation %2")
-                                   .arg(scene.mNumAnimations)
-                                   .arg(options.animationIndex)
-                                   .toStdString());
-    return scene.mAnimations[options.animationIndex];
+    switch (options.takeSelection) {
+    case TakeSelection::Automatic:
+        return planTakes(animations);
+    case TakeSelection::All: {
+        TakePlan plan{{}, TakeRule::Chosen, {}};
+        for (std::size_t i = 0; i < animations.size(); ++i)
+            plan.takes.push_back(i);
+        return plan;
+    }
+    case TakeSelection::Listed:
+        break;
+    }
+    for (const std::size_t index : options.takes)
+        if (index >= animations.size())
+            throw InputError(path, FileError::tr("the file has %n animation(s); there is no animation %1", nullptr,
+                                                 static_cast<int>(animations.size()))
+                                       .arg(index)
+                                       .toStdString());
+    return {options.takes, TakeRule::Chosen, {}};
 }
 
-void warnAboutWhatIsLeftOut(const aiScene& scene, const aiAnimation* animation, QStringList& warnings)
+void warnAboutWhatIsLeftOut(const aiScene& scene, const std::vector<const aiAnimation*>& animations,
+                            QStringList& warnings)
 {
-    if (animation && (animation->mNumMeshChannels > 0 || animation->mNumMorphMeshChannels > 0))
+    if (std::any_of(animations.begin(), animations.end(), [](const aiAnimation* animation) {
+            return animation->mNumMeshChannels > 0 || animation->mNumMorphMeshChannels > 0;
+        }))
         warnings << FileError::tr("mesh and morph animation is not imported; only node motion is");
     if (scene.mNumCameras > 0 || scene.mNumLights > 0)
         warnings << FileError::tr("cameras and lights are not imported");
 }
 
-// The span of the motion: from the earliest key to the latest key or the animation's end.
-void setTimeRange(const aiAnimation& animation, model::Scene& scene)
+// The options' settings, each the file's where the options leave it; refuses values out of range.
+ImportSettings appliedSettings(const QString& path, const ImportOptions& options, const FileSettings& file)
+{
+    ImportSettings applied = file.values;
+    if (options.fps) {
+        if (!(std::isfinite(*options.fps) && *options.fps > 0.0 && *options.fps <= model::kMaxFps))
+            throw InputError(path, FileError::tr("the frame rate %1 is not in (0, %2]")
+                                       .arg(FileError::number(*options.fps), FileError::number(model::kMaxFps))
+                                       .toStdString());
+        applied.fps = *options.fps;
+    }
+    if (options.metresPerUnit) {
+        if (!(std::isfinite(*options.metresPerUnit) && *options.metresPerUnit > 0.0))
+            throw InputError(path, FileError::tr("the unit %1 m is not a positive length")
+                                       .arg(FileError::number(*options.metresPerUnit))
+                                       .toStdString());
+        applied.metresPerUnit = *options.metresPerUnit;
+    }
+    applied.up = options.up.value_or(applied.up);
+    return applied;
+}
+
+// Assimp scales a Collada scene's root node by the file's <unit>; Gyre applies the unit itself.
+void undoColladaUnit(const QString& path, const aiScene& scene)
+{
+    const std::optional<double> unit = colladaMetresPerUnit(path);
+    if (!unit || *unit == 1.0)
+        return;
+    aiMatrix4x4 inverse;
+    aiMatrix4x4::Scaling(aiVector3D(static_cast<ai_real>(1.0 / *unit)), inverse);
+    // The importer owns the scene and allows changing it.
+    aiNode& root = *scene.mRootNode;
+    root.mTransformation = inverse * root.mTransformation;
+}
+
+// Moves the animated objects' keys by `shift` seconds.
+void shiftTimes(model::Scene& scene, const std::set<model::ObjectId>& animated, double shift)
+{
+    for (model::SceneObject& object : scene.objects)
+        if (animated.contains(object.id))
+            for (model::Keyframe& key : object.track.keys)
+                key.time += shift;
+}
+
+// A Z-up scene turned Y-up: -90° about X (Z becomes Y, Y becomes -Z) before each top-level pose.
+void turnZUpToYUp(model::Scene& scene)
+{
+    const Eigen::Quaterniond turn(Eigen::AngleAxisd(-M_PI / 2.0, Eigen::Vector3d::UnitX()));
+    for (model::SceneObject& object : scene.objects)
+        if (object.parent == model::kNoObject)
+            for (model::Keyframe& key : object.track.keys)
+                key.pose = {(turn * key.pose.orientation).normalized(), turn * key.pose.position};
+}
+
+// The span of the motion: from the earliest key to the latest key or the animations' end.
+void setTimeRange(const std::vector<const aiAnimation*>& animations, double shift, model::Scene& scene)
 {
     double start = std::numeric_limits<double>::infinity();
-    double end = animation.mDuration / ticksPerSecond(animation);
+    double end = -std::numeric_limits<double>::infinity();
+    for (const aiAnimation* animation : animations)
+        end = std::max(end, animation->mDuration / ticksPerSecond(*animation) + shift);
     for (const model::SceneObject& object : scene.objects) {
         start = std::min(start, object.track.keys.front().time);
         end = std::max(end, object.track.keys.back().time);
     }
     scene.startTime = std::isfinite(start) ? start : 0.0;
-    scene.endTime = std::max(end, scene.startTime);
+    scene.endTime = std::isfinite(end) ? std::max(end, scene.startTime) : scene.startTime;
     scene.currentTime = scene.startTime;
+}
+
+double earliestKey(const model::Scene& scene, const std::set<model::ObjectId>& animated)
+{
+    double earliest = std::numeric_limits<double>::infinity();
+    for (const model::SceneObject& object : scene.objects)
+        if (animated.contains(object.id))
+            earliest = std::min(earliest, object.track.keys.front().time);
+    return earliest;
 }
 
 } // namespace
@@ -463,13 +575,33 @@ SceneImport importScene(const QString& path, const ImportOptions& options)
     requireReadableFile(path);
     Assimp::Importer importer;
     const aiScene& scene = readWithAssimp(importer, path);
-    const aiAnimation* animation = chosenAnimation(path, scene, options);
     SceneImport result;
     result.animations = summariesOf(scene);
-    warnAboutWhatIsLeftOut(scene, animation, result.warnings);
-    SceneBuilder(path, scene, animation, result).build(*scene.mRootNode);
-    if (animation)
-        setTimeRange(*animation, result.scene);
+    TakePlan plan = chosenTakes(path, result.animations, options);
+    result.takes = plan.takes;
+    result.takeRule = plan.rule;
+    result.warnings << plan.warnings;
+    std::vector<const aiAnimation*> animations;
+    for (const std::size_t index : plan.takes)
+        animations.push_back(scene.mAnimations[index]);
+
+    const SceneSource source = sourceOf(path, scene);
+    result.file = fileSettingsOf(path, source, scene, animations, result.warnings);
+    result.applied = appliedSettings(path, options, result.file);
+    if (source == SceneSource::Collada)
+        undoColladaUnit(path, scene);
+    warnAboutWhatIsLeftOut(scene, animations, result.warnings);
+
+    SceneBuilder builder(path, scene, animations, result);
+    builder.build(*scene.mRootNode, result.applied.metresPerUnit);
+    const double earliest = earliestKey(result.scene, builder.animatedObjects());
+    if (options.timeOrigin == TimeOrigin::FirstKey && std::isfinite(earliest))
+        result.timeShift = -earliest;
+    shiftTimes(result.scene, builder.animatedObjects(), result.timeShift);
+    if (result.applied.up == UpAxis::Z)
+        turnZUpToYUp(result.scene);
+    result.scene.fps = result.applied.fps;
+    setTimeRange(animations, result.timeShift, result.scene);
     return result;
 }
 

@@ -5,6 +5,7 @@
 #include <QtEndian>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <string>
@@ -190,6 +191,55 @@ void writeStrings(Writer& out, const QStringList& strings)
     out.count(static_cast<std::size_t>(strings.size()));
     for (const QString& text : strings)
         out.string(text);
+}
+
+// An optional value: a flag, then the value (or a zero of its type, so that every message of a kind
+// has the same layout).
+template <class Value>
+void writeOptional(Writer& out, const std::optional<Value>& value)
+{
+    out.put<quint8>(value.has_value());
+    if constexpr (std::is_enum_v<Value>)
+        out.enumeration(value.value_or(Value{}));
+    else
+        out.put(value.value_or(Value{}));
+}
+
+void writeImportOptions(Writer& out, const ImportOptions& options)
+{
+    out.enumeration(options.takeSelection);
+    out.block(std::vector<quint64>(options.takes.begin(), options.takes.end()));
+    writeOptional(out, options.fps);
+    writeOptional(out, options.metresPerUnit);
+    writeOptional(out, options.up);
+    out.enumeration(options.timeOrigin);
+}
+
+void writeSettings(Writer& out, const ImportSettings& settings)
+{
+    out.put(settings.fps);
+    out.put(settings.metresPerUnit);
+    out.enumeration(settings.up);
+}
+
+void writeSceneImport(Writer& out, const SceneImport& imported)
+{
+    writeScene(out, imported.scene);
+    out.count(imported.animations.size());
+    for (const AnimationSummary& animation : imported.animations) {
+        out.string(animation.name);
+        out.put(animation.durationSeconds);
+        writeStrings(out, animation.nodes);
+    }
+    out.block(std::vector<quint64>(imported.takes.begin(), imported.takes.end()));
+    out.enumeration(imported.takeRule);
+    writeSettings(out, imported.file.values);
+    out.string(imported.file.fpsSource);
+    out.string(imported.file.unitSource);
+    out.string(imported.file.upSource);
+    writeSettings(out, imported.applied);
+    out.put(imported.timeShift);
+    writeStrings(out, imported.warnings);
 }
 
 // ---- reading --------------------------------------------------------------------------------------
@@ -429,6 +479,105 @@ QStringList stringsIn(Reader& in, const char* what)
     return strings;
 }
 
+UpAxis upAxisOf(quint8 up)
+{
+    if (up != static_cast<quint8>(UpAxis::Y) && up != static_cast<quint8>(UpAxis::Z))
+        throw WireError("unknown up axis " + std::to_string(up));
+    return static_cast<UpAxis>(up);
+}
+
+// A frame rate in (0, kMaxFps] and a unit that is a positive length, as importScene accepts them.
+double checkedFrameRate(double fps, const char* what)
+{
+    return checked(what, [&] { return model::frameRate(fps); });
+}
+
+double checkedUnit(double metres, const char* what)
+{
+    if (!(std::isfinite(metres) && metres > 0.0))
+        throw WireError(std::string(what) + ": " + std::to_string(metres) + " m is not a positive length");
+    return metres;
+}
+
+// An optional value as writeOptional wrote it, checked by `check` when it is there; when it is not,
+// its place must hold a zero.
+template <class Value, class Check>
+std::optional<Value> optionalIn(Reader& in, const char* what, Check check)
+{
+    const bool present = in.flag();
+    using Stored = std::conditional_t<std::is_enum_v<Value>, quint8, Value>;
+    const auto value = in.get<Stored>();
+    if (present)
+        return check(value);
+    if (value != Stored{})
+        throw WireError(std::string(what) + ": a value where none was given");
+    return std::nullopt;
+}
+
+ImportOptions importOptionsIn(Reader& in)
+{
+    ImportOptions options;
+    const auto selection = in.get<quint8>();
+    if (selection < static_cast<quint8>(TakeSelection::Automatic) || selection > static_cast<quint8>(TakeSelection::Listed))
+        throw WireError("unknown take selection " + std::to_string(selection));
+    options.takeSelection = static_cast<TakeSelection>(selection);
+    const std::vector<quint64> takes = in.block<quint64>("takes");
+    if (options.takeSelection != TakeSelection::Listed && !takes.empty())
+        throw WireError("takes: listed without being chosen");
+    options.takes.assign(takes.begin(), takes.end());
+    options.fps = optionalIn<double>(in, "frame rate option",
+                                     [](double fps) { return checkedFrameRate(fps, "frame rate option"); });
+    options.metresPerUnit = optionalIn<double>(in, "unit option",
+                                               [](double metres) { return checkedUnit(metres, "unit option"); });
+    options.up = optionalIn<UpAxis>(in, "up axis option", upAxisOf);
+    const auto origin = in.get<quint8>();
+    if (origin != static_cast<quint8>(TimeOrigin::FirstKey) && origin != static_cast<quint8>(TimeOrigin::File))
+        throw WireError("unknown time origin " + std::to_string(origin));
+    options.timeOrigin = static_cast<TimeOrigin>(origin);
+    return options;
+}
+
+ImportSettings settingsIn(Reader& in, const char* what)
+{
+    ImportSettings settings;
+    settings.fps = checkedFrameRate(in.get<double>(), what);
+    settings.metresPerUnit = checkedUnit(in.get<double>(), what);
+    settings.up = upAxisOf(in.get<quint8>());
+    return settings;
+}
+
+SceneImport sceneImportIn(Reader& in)
+{
+    SceneImport imported;
+    imported.scene = sceneIn(in);
+    // An animation is at least its name's count, its duration and its node count.
+    imported.animations.resize(in.count(24, "animations"));
+    for (AnimationSummary& animation : imported.animations) {
+        animation.name = in.string("animation name");
+        animation.durationSeconds = in.get<double>();
+        animation.nodes = stringsIn(in, "animation nodes");
+    }
+    for (const quint64 take : in.block<quint64>("takes")) {
+        if (take >= imported.animations.size())
+            throw WireError("takes: there is no animation " + std::to_string(take));
+        imported.takes.push_back(static_cast<std::size_t>(take));
+    }
+    const auto rule = in.get<quint8>();
+    if (rule < static_cast<quint8>(TakeRule::NoAnimation) || rule > static_cast<quint8>(TakeRule::Chosen))
+        throw WireError("unknown take rule " + std::to_string(rule));
+    imported.takeRule = static_cast<TakeRule>(rule);
+    imported.file.values = settingsIn(in, "the file's settings");
+    imported.file.fpsSource = in.string("frame rate source");
+    imported.file.unitSource = in.string("unit source");
+    imported.file.upSource = in.string("up axis source");
+    imported.applied = settingsIn(in, "the applied settings");
+    if (imported.applied.fps != imported.scene.fps)
+        throw WireError("the applied frame rate is not the scene's");
+    imported.timeShift = checked("time shift", [&] { return model::finiteNumber(in.get<double>()); });
+    imported.warnings = stringsIn(in, "warnings");
+    return imported;
+}
+
 QString pathIn(Reader& in)
 {
     QString path = in.string("path");
@@ -446,7 +595,7 @@ QByteArray encodeRequest(const Request& request)
         header(out, Kind::ImportRequest);
         out.string(import->path);
         out.string(import->locale);
-        out.put<quint64>(import->options.animationIndex);
+        writeImportOptions(out, import->options);
     } else {
         const auto& exportRequest = std::get<ExportRequest>(request);
         header(out, Kind::ExportRequest);
@@ -466,7 +615,7 @@ Request decodeRequest(const QByteArray& bytes)
     switch (headerIn(in)) {
     case Kind::ImportRequest: {
         ImportRequest import{pathIn(in), in.string("locale"), {}};
-        import.options.animationIndex = static_cast<std::size_t>(in.get<quint64>());
+        import.options = importOptionsIn(in);
         request = std::move(import);
         break;
     }
@@ -492,14 +641,7 @@ QByteArray encodeReply(const Reply& reply)
     Writer out;
     if (const auto* imported = std::get_if<SceneImport>(&reply)) {
         header(out, Kind::SceneImport);
-        writeScene(out, imported->scene);
-        out.count(imported->animations.size());
-        for (const AnimationSummary& animation : imported->animations) {
-            out.string(animation.name);
-            out.put(animation.durationSeconds);
-            out.put<quint64>(animation.channelCount);
-        }
-        writeStrings(out, imported->warnings);
+        writeSceneImport(out, *imported);
     } else if (const auto* report = std::get_if<ExportReport>(&reply)) {
         header(out, Kind::ExportReport);
         writeStrings(out, report->files);
@@ -518,20 +660,9 @@ Reply decodeReply(const QByteArray& bytes)
     Reader in(bytes);
     Reply reply;
     switch (headerIn(in)) {
-    case Kind::SceneImport: {
-        SceneImport imported;
-        imported.scene = sceneIn(in);
-        // An animation is at least its name's count, its duration and its channel count.
-        imported.animations.resize(in.count(24, "animations"));
-        for (AnimationSummary& animation : imported.animations) {
-            animation.name = in.string("animation name");
-            animation.durationSeconds = in.get<double>();
-            animation.channelCount = static_cast<std::size_t>(in.get<quint64>());
-        }
-        imported.warnings = stringsIn(in, "warnings");
-        reply = std::move(imported);
+    case Kind::SceneImport:
+        reply = sceneImportIn(in);
         break;
-    }
     case Kind::ExportReport: {
         ExportReport report;
         report.files = stringsIn(in, "files");

@@ -22,7 +22,9 @@
 namespace gyre::wire {
 
 inline constexpr quint32 kMagic = 0x57535947; // "GYSW" read as little-endian bytes
-inline constexpr quint16 kVersion = 1;
+// 2: import options (takes, frame rate, unit, up axis, time origin); the takes, settings and time shift
+// of an import.
+inline constexpr quint16 kVersion = 2;
 
 // A message that is not what the wire format allows.
 class WireError : public std::runtime_error {

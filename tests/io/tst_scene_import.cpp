@@ -83,6 +83,10 @@ private slots:
     void refusesKeysItCannotUse_data();
     void refusesKeysItCannotUse();
     void choosesAmongAnimations();
+    void plansTakes_data();
+    void plansTakes();
+    void frameRateFromTheKeys_data();
+    void frameRateFromTheKeys();
     void bvhKeysComeThroughExactly();
     void missingEmptyAndDirectory();
     void randomBytes_data();
@@ -300,6 +304,8 @@ void TstSceneImport::refusesKeysItCannotUse()
     }
 }
 
+// walk and run both move a: neither disjoint nor Blender's takes, so a choice is needed; animation 0
+// is what the import holds until one is made.
 void TstSceneImport::choosesAmongAnimations()
 {
     auto scene = emptyAssimpScene();
@@ -315,17 +321,112 @@ void TstSceneImport::choosesAmongAnimations()
     QCOMPARE(first.animations.size(), std::size_t{2});
     QCOMPARE(first.animations[0].name, QStringLiteral("walk"));
     QCOMPARE(first.animations[0].durationSeconds, 2.0);
-    QCOMPARE(first.animations[0].channelCount, std::size_t{1});
+    QCOMPARE(first.animations[0].nodes, QStringList{QStringLiteral("a")});
     QCOMPARE(first.animations[1].name, QStringLiteral("run"));
     QCOMPARE(first.animations[1].durationSeconds, 0.5);
-    QCOMPARE(first.animations[1].channelCount, std::size_t{2});
+    QCOMPARE(first.animations[1].nodes, (QStringList{QStringLiteral("a"), QStringLiteral("b")}));
+    QCOMPARE(first.takeRule, TakeRule::ChoiceNeeded);
+    QCOMPARE(first.takes, std::vector<std::size_t>{0});
     QCOMPARE(first.scene.objects[0].track.keys.size(), std::size_t{2});
 
-    const SceneImport second = importScene(file, ImportOptions{1});
+    ImportOptions run;
+    run.takeSelection = TakeSelection::Listed;
+    run.takes = {1};
+    const SceneImport second = importScene(file, run);
     QCOMPARE(second.scene.objects[0].track.keys.size(), std::size_t{3});
     QCOMPARE(second.scene.objects[0].track.keys[1].time, 0.25);
     QCOMPARE(second.scene.endTime, 0.5);
-    QVERIFY_THROWS_EXCEPTION(InputError, importScene(file, ImportOptions{2}));
+    run.takes = {2};
+    QVERIFY_THROWS_EXCEPTION(InputError, importScene(file, run));
+
+    // Merged, run then walk: walk wins a (2 keys over 2 s), run keeps b.
+    ImportOptions both;
+    both.takeSelection = TakeSelection::Listed;
+    both.takes = {1, 0};
+    const SceneImport merged = importScene(file, both);
+    QCOMPARE(merged.scene.objects[0].track.keys.size(), std::size_t{2});
+    QCOMPARE(merged.scene.objects[0].track.keys[1].time, 2.0);
+    QCOMPARE(merged.scene.objects[1].track.keys.size(), std::size_t{2});
+    QCOMPARE(merged.scene.objects[1].track.keys[1].time, 0.5);
+    QCOMPARE(merged.scene.endTime, 2.0);
+    QCOMPARE(merged.warnings.filter(QStringLiteral("'a' is moved by more than one")).size(), 1);
+}
+
+void TstSceneImport::plansTakes_data()
+{
+    QTest::addColumn<QStringList>("names");
+    QTest::addColumn<QStringList>("movedNodes"); // the nodes each moves, joined by '+'
+    QTest::addColumn<int>("rule");
+    QTest::addColumn<QList<int>>("takes");
+    QTest::newRow("none") << QStringList{} << QStringList{} << int(TakeRule::NoAnimation) << QList<int>{};
+    QTest::newRow("one") << QStringList{"take"} << QStringList{"a+b"} << int(TakeRule::Single) << QList<int>{0};
+    QTest::newRow("glTF, one per action") << QStringList{"AAction", "BAction", "CAction"} << QStringList{"a", "b+c", "d"}
+                                          << int(TakeRule::Disjoint) << QList<int>{0, 1, 2};
+    QTest::newRow("overlapping") << QStringList{"walk", "run"} << QStringList{"a", "a+b"} << int(TakeRule::ChoiceNeeded)
+                                 << QList<int>{0};
+    QTest::newRow("Blender's takes") << QStringList{"A|BAction", "A|AAction", "B|BAction", "B|AAction"}
+                                     << QStringList{"A", "A", "B", "B"} << int(TakeRule::BlenderActions) << QList<int>{1, 2};
+    // B's action is renamed "Spin": B gets it, as AAction is named after A.
+    QTest::newRow("an action not named after its object")
+        << QStringList{"A|AAction", "A|Spin", "B|AAction", "B|Spin"} << QStringList{"A", "A", "B", "B"}
+        << int(TakeRule::BlenderActions) << QList<int>{0, 3};
+    QTest::newRow("a later action of the object") << QStringList{"A|BAction", "A|AAction.001", "B|BAction", "B|AAction.001"}
+                                                  << QStringList{"A", "A", "B", "B"} << int(TakeRule::BlenderActions)
+                                                  << QList<int>{1, 2};
+    // A take named like Blender's that moves another node is not Blender's.
+    QTest::newRow("a take moving another node") << QStringList{"A|AAction", "A|BAction"} << QStringList{"A", "A+B"}
+                                                << int(TakeRule::ChoiceNeeded) << QList<int>{0};
+}
+
+void TstSceneImport::plansTakes()
+{
+    QFETCH(QStringList, names);
+    QFETCH(QStringList, movedNodes);
+    QFETCH(int, rule);
+    QFETCH(QList<int>, takes);
+    std::vector<AnimationSummary> animations;
+    for (qsizetype i = 0; i < names.size(); ++i)
+        animations.push_back({names[i], 1.0, movedNodes[i].split('+')});
+    const TakePlan plan = planTakes(animations);
+    QCOMPARE(int(plan.rule), rule);
+    QCOMPARE(plan.takes, std::vector<std::size_t>(takes.begin(), takes.end()));
+    QCOMPARE(plan.warnings.size(), rule == int(TakeRule::BlenderActions) ? 1 : 0);
+    if (rule == int(TakeRule::BlenderActions))
+        for (const int take : takes)
+            QVERIFY2(plan.warnings.front().contains(QStringLiteral("take %1 '%2'").arg(take).arg(names[take])),
+                     qPrintable(plan.warnings.front()));
+}
+
+void TstSceneImport::frameRateFromTheKeys_data()
+{
+    QTest::addColumn<QList<double>>("ticks"); // at 600 ticks per second
+    QTest::addColumn<double>("fps");
+    QTest::addColumn<QString>("source");
+    QTest::newRow("every frame at 30") << QList<double>{20, 40, 60, 80} << 30.0 << "every key is on a frame of 30 fps";
+    QTest::newRow("sparse keys at 60") << QList<double>{0, 10, 70, 590} << 60.0 << "every key is on a frame of 60 fps";
+    QTest::newRow("whole seconds") << QList<double>{0, 600, 1200} << 24.0 << "every key is on a frame of 24 fps";
+    QTest::newRow("no common rate") << QList<double>{0, 7, 600} << 24.0 << "on the frames of no common rate";
+}
+
+// A format that states no frame rate gets the lowest common rate on whose frames every key falls.
+void TstSceneImport::frameRateFromTheKeys()
+{
+    QFETCH(QList<double>, ticks);
+    QFETCH(double, fps);
+    QFETCH(QString, source);
+    std::vector<aiQuatKey> keys;
+    for (const double tick : ticks)
+        keys.push_back({tick, aboutZ(tick / 1000.0)});
+    auto scene = emptyAssimpScene();
+    addNode(*scene->mRootNode, "joint");
+    setAnimations(*scene, {animation("take", 600.0, ticks.back(), {nodeAnimation("joint", keys, {})})});
+    const QString file = path("rate.assbin");
+    writeAssbin(*scene, file);
+    const SceneImport imported = importScene(file);
+    QCOMPARE(imported.scene.fps, fps);
+    QVERIFY2(imported.file.fpsSource.contains(source), qPrintable(imported.file.fpsSource));
+    QCOMPARE(imported.file.values.metresPerUnit, 1.0);
+    QCOMPARE(imported.file.values.up, UpAxis::Y);
 }
 
 // BVH turns each joint by its channels in file order about moving axes: Zrotation Xrotation
@@ -338,6 +439,8 @@ void TstSceneImport::bvhKeysComeThroughExactly()
     const QString file = path("chain.bvh");
     writeFile(file, bvhChain(joints, frames, frameTime));
     const SceneImport imported = importScene(file);
+    QVERIFY(std::abs(imported.scene.fps - 1.0 / frameTime) < 1e-4); // Assimp reads the frame time as a float
+    QCOMPARE(imported.file.fpsSource, QStringLiteral("the BVH frame time"));
     for (int j = 0; j < joints; ++j) {
         const model::SceneObject* joint = objectNamed(imported.scene, QStringLiteral("joint%1").arg(j));
         QVERIFY(joint);

@@ -68,10 +68,29 @@ model::Scene richScene()
     return scene;
 }
 
+// Every field of an import set, none to its default.
 SceneImport richImport()
 {
-    SceneImport imported{richScene(), {{QStringLiteral("walk"), 2.5, 31}, {QString(), 0.0, 0}}, {}};
+    SceneImport imported;
+    imported.scene = richScene();
+    imported.animations = {{QStringLiteral("Cube|CubeAction"), 2.5, {QStringLiteral("Cube"), QStringLiteral("lid ü")}},
+                           {QString(), 0.0, {}},
+                           {QStringLiteral("run"), 1.0 / 3.0, {QStringLiteral("Cube")}}};
+    imported.takes = {2, 0};
+    imported.takeRule = TakeRule::BlenderActions;
+    imported.file = {{29.97, 0.01, UpAxis::Z}, QStringLiteral("the FBX time mode"), QStringLiteral("cm"), QString()};
+    imported.applied = {30.0, 0.0254, UpAxis::Y};
+    imported.timeShift = -1.0 / 30.0;
     imported.warnings << QStringLiteral("cameras and lights are not imported") << QString();
+    return imported;
+}
+
+// An import reply of `scene`, its applied frame rate the scene's as importScene makes it.
+SceneImport importOf(const model::Scene& scene)
+{
+    SceneImport imported;
+    imported.scene = scene;
+    imported.applied.fps = scene.fps;
     return imported;
 }
 
@@ -85,7 +104,20 @@ model::Scene sceneWithKeys(std::vector<model::Keyframe> keys)
     return scene;
 }
 
-QByteArray importReplyOf(const model::Scene& scene) { return encodeReply(SceneImport{scene, {}, {}}); }
+QByteArray importReplyOf(const model::Scene& scene) { return encodeReply(importOf(scene)); }
+
+// The settings of one import request, every option given.
+ImportOptions everyOption()
+{
+    ImportOptions options;
+    options.takeSelection = TakeSelection::Listed;
+    options.takes = {4, 1, 4};
+    options.fps = 120.0;
+    options.metresPerUnit = 0.001;
+    options.up = UpAxis::Z;
+    options.timeOrigin = TimeOrigin::File;
+    return options;
+}
 
 } // namespace
 
@@ -109,8 +141,20 @@ private slots:
         for (std::size_t i = 0; i < sent.animations.size(); ++i) {
             QCOMPARE(received->animations[i].name, sent.animations[i].name);
             QCOMPARE(received->animations[i].durationSeconds, sent.animations[i].durationSeconds);
-            QCOMPARE(received->animations[i].channelCount, sent.animations[i].channelCount);
+            QCOMPARE(received->animations[i].nodes, sent.animations[i].nodes);
         }
+        QCOMPARE(received->takes, sent.takes);
+        QCOMPARE(received->takeRule, sent.takeRule);
+        QCOMPARE(received->file.values.fps, sent.file.values.fps);
+        QCOMPARE(received->file.values.metresPerUnit, sent.file.values.metresPerUnit);
+        QCOMPARE(received->file.values.up, sent.file.values.up);
+        QCOMPARE(received->file.fpsSource, sent.file.fpsSource);
+        QCOMPARE(received->file.unitSource, sent.file.unitSource);
+        QCOMPARE(received->file.upSource, sent.file.upSource);
+        QCOMPARE(received->applied.fps, sent.applied.fps);
+        QCOMPARE(received->applied.metresPerUnit, sent.applied.metresPerUnit);
+        QCOMPARE(received->applied.up, sent.applied.up);
+        QCOMPARE(received->timeShift, sent.timeShift);
         QCOMPARE(received->warnings, sent.warnings);
     }
 
@@ -130,11 +174,24 @@ private slots:
 
     void importRequestAndOtherRepliesComeThrough()
     {
+        const ImportOptions sent = everyOption();
         const Request request =
-            decodeRequest(encodeRequest(ImportRequest{QStringLiteral("a.bvh"), QStringLiteral("de_DE"), {3}}));
+            decodeRequest(encodeRequest(ImportRequest{QStringLiteral("a.bvh"), QStringLiteral("de_DE"), sent}));
         QCOMPARE(std::get<ImportRequest>(request).path, QStringLiteral("a.bvh"));
         QCOMPARE(std::get<ImportRequest>(request).locale, QStringLiteral("de_DE"));
-        QCOMPARE(std::get<ImportRequest>(request).options.animationIndex, std::size_t{3});
+        const ImportOptions& options = std::get<ImportRequest>(request).options;
+        QCOMPARE(options.takeSelection, sent.takeSelection);
+        QCOMPARE(options.takes, sent.takes);
+        QCOMPARE(options.fps, sent.fps);
+        QCOMPARE(options.metresPerUnit, sent.metresPerUnit);
+        QCOMPARE(options.up, sent.up);
+        QCOMPARE(options.timeOrigin, sent.timeOrigin);
+        // Options left to the file stay unset.
+        const Request defaults = decodeRequest(encodeRequest(ImportRequest{QStringLiteral("a.fbx"), {}, {}}));
+        const ImportOptions& unset = std::get<ImportRequest>(defaults).options;
+        QCOMPARE(unset.takeSelection, TakeSelection::Automatic);
+        QVERIFY(unset.takes.empty() && !unset.fps && !unset.metresPerUnit && !unset.up);
+        QCOMPARE(unset.timeOrigin, TimeOrigin::FirstKey);
 
         const ExportReport report{{QStringLiteral("a.bin"), QStringLiteral("a.gltf")}, {QStringLiteral("w")}};
         const Reply exported = decodeReply(encodeReply(report));
@@ -152,6 +209,64 @@ private slots:
         for (qsizetype size = 0; size < whole.size(); ++size)
             QVERIFY_THROWS_EXCEPTION(WireError, decodeReply(whole.left(size)));
         QVERIFY_THROWS_EXCEPTION(WireError, decodeReply(whole + '\0'));
+        const QByteArray request = encodeRequest(ImportRequest{QStringLiteral("a.fbx"), {}, everyOption()});
+        for (qsizetype size = 0; size < request.size(); ++size)
+            QVERIFY_THROWS_EXCEPTION(WireError, decodeRequest(request.left(size)));
+        QVERIFY_THROWS_EXCEPTION(WireError, decodeRequest(request + '\0'));
+    }
+
+    // Import settings and options that importScene would never give or accept.
+    void importFieldsOutOfRangeAreRefused_data()
+    {
+        QTest::addColumn<QByteArray>("message");
+        QTest::addColumn<bool>("isRequest");
+        QTest::addColumn<QByteArray>("expected");
+        const auto reply = [](const char* name, const char* expected, auto change) {
+            SceneImport imported = richImport();
+            change(imported);
+            QTest::newRow(name) << encodeReply(imported) << false << QByteArray(expected);
+        };
+        reply("a take past the animations", "there is no animation 3", [](SceneImport& i) { i.takes = {0, 3}; });
+        reply("an unknown take rule", "unknown take rule 7", [](SceneImport& i) { i.takeRule = static_cast<TakeRule>(7); });
+        reply("the file's frame rate 0", "the file's settings", [](SceneImport& i) { i.file.values.fps = 0.0; });
+        reply("a frame rate past 1000", "the applied settings", [](SceneImport& i) { i.applied.fps = 1001.0; });
+        reply("a unit of 0 m", "the file's settings", [](SceneImport& i) { i.file.values.metresPerUnit = 0.0; });
+        reply("a unit of nan m", "the applied settings", [](SceneImport& i) { i.applied.metresPerUnit = NAN; });
+        reply("an unknown up axis", "unknown up axis 3", [](SceneImport& i) { i.applied.up = static_cast<UpAxis>(3); });
+        reply("another frame rate than the scene's", "not the scene's", [](SceneImport& i) { i.applied.fps = 25.0; });
+        reply("an infinite time shift", "time shift", [](SceneImport& i) { i.timeShift = INFINITY; });
+
+        const auto request = [](const char* name, const char* expected, auto change) {
+            ImportOptions options = everyOption();
+            change(options);
+            QTest::newRow(name) << encodeRequest(ImportRequest{QStringLiteral("a.fbx"), {}, options}) << true
+                                << QByteArray(expected);
+        };
+        request("an unknown take selection", "unknown take selection 0",
+                [](ImportOptions& o) { o.takeSelection = static_cast<TakeSelection>(0); });
+        request("takes listed for all", "listed without being chosen",
+                [](ImportOptions& o) { o.takeSelection = TakeSelection::All; });
+        request("an option frame rate of -24", "frame rate option", [](ImportOptions& o) { o.fps = -24.0; });
+        request("an option unit of -1 m", "unit option", [](ImportOptions& o) { o.metresPerUnit = -1.0; });
+        request("an unknown up axis option", "unknown up axis 9", [](ImportOptions& o) { o.up = static_cast<UpAxis>(9); });
+        request("an unknown time origin", "unknown time origin 3",
+                [](ImportOptions& o) { o.timeOrigin = static_cast<TimeOrigin>(3); });
+    }
+
+    void importFieldsOutOfRangeAreRefused()
+    {
+        QFETCH(QByteArray, message);
+        QFETCH(bool, isRequest);
+        QFETCH(QByteArray, expected);
+        try {
+            if (isRequest)
+                decodeRequest(message);
+            else
+                decodeReply(message);
+            QFAIL("the message was accepted");
+        } catch (const WireError& error) {
+            QVERIFY2(QByteArray(error.what()).contains(expected), error.what());
+        }
     }
 
     void aRequestIsNotAReplyNorTheOtherWayRound()

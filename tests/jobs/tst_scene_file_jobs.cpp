@@ -66,7 +66,7 @@ private slots:
         QCOMPARE(model::projectJson(imported->scene), model::projectJson(here.scene));
         QVERIFY(imported->scene.objects.size() >= 3);
         QCOMPARE(imported->animations.size(), here.animations.size());
-        QCOMPARE(imported->animations.front().channelCount, here.animations.front().channelCount);
+        QCOMPARE(imported->animations.front().nodes, here.animations.front().nodes);
         QCOMPARE(imported->warnings, here.warnings);
     }
 

@@ -1,0 +1,146 @@
+# Makes the Blender fixtures of tests/data: a scene of three animated objects exported with Blender's
+# default FBX, glTF (glb) and Collada settings, with Blender's own evaluation of every object's world
+# pose at every frame, and a glb whose two animations move the same object.
+#
+#   blender -b --factory-startup --python tests/interop/make_fixtures.py -- OUTDIR
+#
+# Written for Blender 3.4 (Debian 12's), whose glTF exporter needs python3-numpy. The files are
+# committed, so the tests need no Blender; run this again only to change them.
+
+import json
+import math
+import os
+import sys
+
+import bpy
+
+FPS = 30
+FRAME_START = 1
+FRAME_END = 11
+
+
+def output_folder():
+    arguments = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    if len(arguments) != 1:
+        sys.exit("usage: blender -b --factory-startup --python make_fixtures.py -- OUTDIR")
+    os.makedirs(arguments[0], exist_ok=True)
+    return arguments[0]
+
+
+def empty_scene():
+    for obj in list(bpy.data.objects):
+        bpy.data.objects.remove(obj)
+    for action in list(bpy.data.actions):
+        bpy.data.actions.remove(action)
+    scene = bpy.context.scene
+    scene.render.fps = FPS
+    scene.render.fps_base = 1.0
+    scene.frame_start = FRAME_START
+    scene.frame_end = FRAME_END
+    return scene
+
+
+def tetrahedron(name):
+    # The smallest closed mesh, so that the files stay a few kilobytes.
+    mesh = bpy.data.meshes.new(name + "Mesh")
+    vertices = [(0.5, 0.0, 0.0), (-0.25, 0.4, 0.0), (-0.25, -0.4, 0.0), (0.0, 0.0, 0.8)]
+    mesh.from_pydata(vertices, [], [(0, 2, 1), (0, 1, 3), (1, 2, 3), (2, 0, 3)])
+    mesh.update()
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.scene.collection.objects.link(obj)
+    return obj
+
+
+def key_rotations(obj, frames_and_angles):
+    # Keys the rotation in the object's own rotation mode: Euler angles in degrees, or a quaternion
+    # made from them (XYZ) for QUATERNION; inserting the first key creates the action "<name>Action".
+    for frame, degrees in frames_and_angles:
+        radians = [math.radians(a) for a in degrees]
+        if obj.rotation_mode == 'QUATERNION':
+            from mathutils import Euler
+            obj.rotation_quaternion = Euler(radians, 'XYZ').to_quaternion()
+            obj.keyframe_insert("rotation_quaternion", frame=frame)
+        else:
+            obj.rotation_euler = radians
+            obj.keyframe_insert("rotation_euler", frame=frame)
+
+
+def key_locations(obj, frames_and_locations):
+    for frame, location in frames_and_locations:
+        obj.location = location
+        obj.keyframe_insert("location", frame=frame)
+
+
+def build_three_objects():
+    scene = empty_scene()
+    quat = tetrahedron("Quat")
+    quat.rotation_mode = 'QUATERNION'
+    key_rotations(quat, [(1, (0, 0, 0)), (4, (40, 10, 70)), (8, (-20, 60, 150)), (11, (10, -30, 200))])
+    key_locations(quat, [(1, (0, 0, 0)), (11, (0, 1.5, 0.5))])
+
+    euler = tetrahedron("EulerXYZ")
+    euler.rotation_mode = 'XYZ'
+    euler.location = (3, 0, 0)
+    key_rotations(euler, [(1, (10, 0, 0)), (6, (80, 45, -30)), (11, (170, 85, 60))])
+
+    child = tetrahedron("ChildZXY")
+    child.rotation_mode = 'ZXY'
+    child.parent = euler
+    child.location = (0, 2, 0)
+    key_rotations(child, [(1, (0, 0, 0)), (3, (30, 60, 90)), (8, (-45, 20, 250)), (11, (0, 10, 300))])
+    key_locations(child, [(1, (0, 2, 0)), (11, (0, 2, 1))])
+    for obj in (quat, euler, child):
+        assert obj.animation_data.action.name == obj.name + "Action", obj.animation_data.action.name
+    return scene, [quat, euler, child]
+
+
+def evaluated_poses(scene, objects):
+    # Blender's own evaluation: each object's world rotation (w, x, y, z) and location at every frame,
+    # in Blender's Z-up world, metres.
+    frames = []
+    for frame in range(FRAME_START, FRAME_END + 1):
+        scene.frame_set(frame)
+        poses = {}
+        for obj in objects:
+            location, rotation, _scale = obj.matrix_world.decompose()
+            poses[obj.name] = [rotation.w, rotation.x, rotation.y, rotation.z, location.x, location.y, location.z]
+        frames.append({"frame": frame, "poses": poses})
+    scene.frame_set(FRAME_START)
+    return {"fps": FPS, "frame_start": FRAME_START, "frame_end": FRAME_END, "up": "z", "unit": "m",
+            "frames": frames}
+
+
+def export_all(folder, stem):
+    bpy.ops.export_scene.fbx(filepath=os.path.join(folder, stem + ".fbx"))
+    bpy.ops.export_scene.gltf(filepath=os.path.join(folder, stem + ".glb"))
+    bpy.ops.wm.collada_export(filepath=os.path.join(folder, stem + ".dae"))
+
+
+def build_two_actions_one_object():
+    # One object with two actions: "Spin" on an NLA track and the assigned "Wobble". Blender's glTF
+    # exporter writes each as an animation of its own, both moving "Wheel": a choice, not a merge.
+    scene = empty_scene()
+    wheel = tetrahedron("Wheel")
+    wheel.rotation_mode = 'XYZ'
+    key_rotations(wheel, [(1, (0, 0, 0)), (11, (0, 0, 180))])
+    spin = wheel.animation_data.action
+    spin.name = "Spin"
+    track = wheel.animation_data.nla_tracks.new()
+    track.strips.new("Spin", FRAME_START, spin)
+    wheel.animation_data.action = None
+    key_rotations(wheel, [(1, (0, 0, 0)), (6, (30, 0, 0)), (11, (0, 0, 0))])
+    wheel.animation_data.action.name = "Wobble"
+    return scene
+
+
+def main():
+    folder = output_folder()
+    scene, objects = build_three_objects()
+    with open(os.path.join(folder, "blender_three_objects.json"), "w") as out:
+        json.dump(evaluated_poses(scene, objects), out, indent=1)
+    export_all(folder, "blender_three_objects")
+    build_two_actions_one_object()
+    bpy.ops.export_scene.gltf(filepath=os.path.join(folder, "blender_two_actions.glb"))
+
+
+main()
