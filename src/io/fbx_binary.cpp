@@ -72,122 +72,57 @@ Node::Node(std::string_view name)
         throw std::length_error("an FBX node name is longer than 255 bytes");
 }
 
-Node& Node::addInt16(std::int16_t value)
+template <class T>
+Node& Node::addValue(char type, T value)
 {
-    properties_ += 'Y';
+    properties_ += type;
     append(properties_, value);
     ++propertyCount_;
     return *this;
 }
 
-Node& Node::addBool(bool value)
-{
-    properties_ += 'C';
-    properties_ += value ? '\1' : '\0';
-    ++propertyCount_;
-    return *this;
-}
+Node& Node::addInt16(std::int16_t value) { return addValue('Y', value); }
+Node& Node::addBool(bool value) { return addValue('C', static_cast<std::uint8_t>(value ? 1 : 0)); }
+Node& Node::addInt32(std::int32_t value) { return addValue('I', value); }
+Node& Node::addFloat(float value) { return addValue('F', value); }
+Node& Node::addDouble(double value) { return addValue('D', value); }
+Node& Node::addInt64(std::int64_t value) { return addValue('L', value); }
 
-Node& Node::addInt32(std::int32_t value)
+Node& Node::addBytes(char type, std::string_view bytes)
 {
-    properties_ += 'I';
-    append(properties_, value);
-    ++propertyCount_;
-    return *this;
-}
-
-Node& Node::addFloat(float value)
-{
-    properties_ += 'F';
-    append(properties_, value);
-    ++propertyCount_;
-    return *this;
-}
-
-Node& Node::addDouble(double value)
-{
-    properties_ += 'D';
-    append(properties_, value);
-    ++propertyCount_;
-    return *this;
-}
-
-Node& Node::addInt64(std::int64_t value)
-{
-    properties_ += 'L';
-    append(properties_, value);
-    ++propertyCount_;
-    return *this;
-}
-
-Node& Node::addString(std::string_view value)
-{
-    properties_ += 'S';
-    append(properties_, checkedCount(value.size()));
-    properties_ += value;
-    ++propertyCount_;
-    return *this;
-}
-
-Node& Node::addRaw(std::string_view bytes)
-{
-    properties_ += 'R';
+    properties_ += type;
     append(properties_, checkedCount(bytes.size()));
     properties_ += bytes;
     ++propertyCount_;
     return *this;
 }
 
-namespace {
+Node& Node::addString(std::string_view value) { return addBytes('S', value); }
+Node& Node::addRaw(std::string_view bytes) { return addBytes('R', bytes); }
 
-// An array property: its type, count, encoding 0 (raw), byte length and elements.
+// An array: its type, count, encoding 0 (raw), byte length and elements.
 template <class T>
-void appendArray(std::string& properties, char type, std::span<const T> values)
+Node& Node::addArrayOf(char type, std::span<const T> values)
 {
     const std::uint32_t bytes = checkedCount(values.size_bytes());
-    properties += type;
-    append(properties, static_cast<std::uint32_t>(values.size()));
-    append(properties, std::uint32_t{0});
-    append(properties, bytes);
-    properties.append(reinterpret_cast<const char*>(values.data()), bytes);
-}
-
-} // namespace
-
-Node& Node::addArray(std::span<const std::int32_t> values)
-{
-    appendArray(properties_, 'i', values);
+    properties_ += type;
+    append(properties_, static_cast<std::uint32_t>(values.size()));
+    append(properties_, std::uint32_t{0});
+    append(properties_, bytes);
+    properties_.append(reinterpret_cast<const char*>(values.data()), bytes);
     ++propertyCount_;
     return *this;
 }
 
-Node& Node::addArray(std::span<const float> values)
-{
-    appendArray(properties_, 'f', values);
-    ++propertyCount_;
-    return *this;
-}
-
-Node& Node::addArray(std::span<const double> values)
-{
-    appendArray(properties_, 'd', values);
-    ++propertyCount_;
-    return *this;
-}
-
-Node& Node::addArray(std::span<const std::int64_t> values)
-{
-    appendArray(properties_, 'l', values);
-    ++propertyCount_;
-    return *this;
-}
+Node& Node::addArray(std::span<const std::int32_t> values) { return addArrayOf('i', values); }
+Node& Node::addArray(std::span<const float> values) { return addArrayOf('f', values); }
+Node& Node::addArray(std::span<const double> values) { return addArrayOf('d', values); }
+Node& Node::addArray(std::span<const std::int64_t> values) { return addArrayOf('l', values); }
 
 Node& Node::addBoolArray(const std::vector<bool>& values)
 {
-    std::vector<std::uint8_t> bytes(values.begin(), values.end());
-    appendArray(properties_, 'b', std::span<const std::uint8_t>(bytes));
-    ++propertyCount_;
-    return *this;
+    const std::vector<std::uint8_t> bytes(values.begin(), values.end());
+    return addArrayOf('b', std::span<const std::uint8_t>(bytes));
 }
 
 Node& Node::addChild(std::string_view name) { return children_.emplace_back(name); }

@@ -59,6 +59,12 @@ public:
     const std::deque<Node>& children() const { return children_; }
 
 private:
+    template <class T>
+    Node& addValue(char type, T value);
+    Node& addBytes(char type, std::string_view bytes);
+    template <class T>
+    Node& addArrayOf(char type, std::span<const T> values);
+
     std::string name_;
     std::uint32_t propertyCount_ = 0;
     std::string properties_;

@@ -53,6 +53,13 @@ std::string objectName(std::string_view name, std::string_view objectClass)
     return result;
 }
 
+// An object of the Objects list: Type id, "name\0\1Class", subclass.
+Node& fbxObject(Node& objects, std::string_view type, std::int64_t id, std::string_view name,
+                std::string_view objectClass, std::string_view subclass)
+{
+    return objects.addChild(type).addInt64(id).addString(objectName(name, objectClass)).addString(subclass);
+}
+
 // A property of a Properties70 list: P "name", "type", "label", "flags", values...
 Node& property(Node& properties, std::string_view name, std::string_view type, std::string_view label,
                std::string_view flags)
@@ -72,7 +79,10 @@ void timeProperty(Node& properties, std::string_view name, std::int64_t ticks)
 
 void vectorProperty(Node& properties, std::string_view name, const Eigen::Vector3d& value, bool animated)
 {
-    property(properties, name, name, "", animated ? "A+" : "A").addDouble(value.x()).addDouble(value.y()).addDouble(value.z());
+    property(properties, name, name, "", animated ? "A+" : "A")
+        .addDouble(value.x())
+        .addDouble(value.y())
+        .addDouble(value.z());
 }
 
 Eigen::Vector3d eulerDegrees(const Eigen::Quaterniond& q)
@@ -199,8 +209,7 @@ private:
     void model(Node& objects, const BakedObject& object, std::int64_t id)
     {
         const bool animated = !object.samples.empty();
-        Node& model = objects.addChild("Model").addInt64(id).addString(objectName(object.name, "Model"))
-                          .addString(object.mesh ? "Mesh" : "Null");
+        Node& model = fbxObject(objects, "Model", id, object.name, "Model", object.mesh ? "Mesh" : "Null");
         model.addChild("Version").addInt32(kModelVersion);
         Node& properties = model.addChild("Properties70");
         vectorProperty(properties, "Lcl Translation", object.startPose.position, animated);
@@ -213,7 +222,7 @@ private:
     std::int64_t geometry(Node& objects, const model::Mesh& mesh, const std::string& name)
     {
         const std::int64_t id = ids_.next();
-        Node& geometry = objects.addChild("Geometry").addInt64(id).addString(objectName(name, "Geometry")).addString("Mesh");
+        Node& geometry = fbxObject(objects, "Geometry", id, name, "Geometry", "Mesh");
         geometry.addChild("GeometryVersion").addInt32(kGeometryVersion);
         geometry.addChild("Vertices").addArray(std::span<const double>(coordinates(mesh.positions)));
         std::vector<std::int32_t> corners(mesh.indices.begin(), mesh.indices.end());
@@ -249,7 +258,7 @@ private:
     std::int64_t animationStack(Node& objects)
     {
         const std::int64_t stackId = ids_.next();
-        Node& stack = objects.addChild("AnimationStack").addInt64(stackId).addString(objectName(kTakeName, "AnimStack")).addString("");
+        Node& stack = fbxObject(objects, "AnimationStack", stackId, kTakeName, "AnimStack", "");
         Node& properties = stack.addChild("Properties70");
         const auto [start, stop] = stackSpan();
         timeProperty(properties, "LocalStart", start);
@@ -258,8 +267,7 @@ private:
         timeProperty(properties, "ReferenceStop", stop);
         const std::int64_t layerId = ids_.next();
         // An empty property list: the FBX SDK expects a layer's nested list even when it holds nothing.
-        objects.addChild("AnimationLayer").addInt64(layerId).addString(objectName(kTakeName, "AnimLayer")).addString("")
-            .addChild("Properties70");
+        fbxObject(objects, "AnimationLayer", layerId, kTakeName, "AnimLayer", "").addChild("Properties70");
         connect(layerId, stackId);
         counts_["AnimationStack"] = 1;
         counts_["AnimationLayer"] = 1;
@@ -297,7 +305,7 @@ private:
     {
         static constexpr std::array<std::string_view, 3> kChannels{"d|X", "d|Y", "d|Z"};
         const std::int64_t id = ids_.next();
-        Node& node = objects.addChild("AnimationCurveNode").addInt64(id).addString(objectName(name, "AnimCurveNode")).addString("");
+        Node& node = fbxObject(objects, "AnimationCurveNode", id, name, "AnimCurveNode", "");
         Node& properties = node.addChild("Properties70");
         for (int axis = 0; axis < 3; ++axis)
             property(properties, kChannels[axis], "Number", "", "A").addDouble(values.front()[axis]);
@@ -315,7 +323,7 @@ private:
     std::int64_t curve(Node& objects, const std::vector<std::int64_t>& times, const std::vector<float>& values)
     {
         const std::int64_t id = ids_.next();
-        Node& curve = objects.addChild("AnimationCurve").addInt64(id).addString(objectName("", "AnimCurve")).addString("");
+        Node& curve = fbxObject(objects, "AnimationCurve", id, "", "AnimCurve", "");
         curve.addChild("Default").addDouble(values.front());
         curve.addChild("KeyVer").addInt32(kKeyVersion);
         curve.addChild("KeyTime").addArray(std::span<const std::int64_t>(times));

@@ -361,7 +361,9 @@ ExportReport exportScene(const model::Scene& scene, const QString& path, SceneFo
         try {
             bytes = fbxSceneFile(baked);
         } catch (const std::length_error& error) {
-            throw OutputError(path, FileError::tr("cannot be written as FBX: %1").arg(QString::fromUtf8(error.what())).toStdString());
+            throw OutputError(path, FileError::tr("cannot be written as FBX: %1")
+                                        .arg(QString::fromUtf8(error.what()))
+                                        .toStdString());
         }
         saveFileContents(path, QByteArray::fromRawData(bytes.data(), static_cast<qsizetype>(bytes.size())));
         report.files << path;

@@ -23,7 +23,10 @@ std::string le32(std::uint32_t v)
             static_cast<char>((v >> 24) & 0xff)};
 }
 
-std::string le64(std::uint64_t v) { return le32(static_cast<std::uint32_t>(v)) + le32(static_cast<std::uint32_t>(v >> 32)); }
+std::string le64(std::uint64_t v)
+{
+    return le32(static_cast<std::uint32_t>(v)) + le32(static_cast<std::uint32_t>(v >> 32));
+}
 
 std::string zeros(std::size_t n) { return std::string(n, '\0'); }
 
@@ -99,8 +102,10 @@ void TstFbxBinary::footerPadsAWholeBlockWhenAligned()
 void TstFbxBinary::scalarProperties()
 {
     Node node("S");
-    node.addInt16(-2).addBool(true).addBool(false).addInt32(-7).addFloat(1.5f).addDouble(-0.25).addInt64(std::int64_t{1} << 40);
-    std::string expected = std::string("Y\xfe\xff", 3) + "C\x01" + std::string("C\0", 2) + "I" + le32(static_cast<std::uint32_t>(-7));
+    node.addInt16(-2).addBool(true).addBool(false).addInt32(-7);
+    node.addFloat(1.5f).addDouble(-0.25).addInt64(std::int64_t{1} << 40);
+    std::string expected = std::string("Y\xfe\xff", 3) + "C\x01" + std::string("C\0", 2);
+    expected += "I" + le32(static_cast<std::uint32_t>(-7));
     expected += "F" + le32(0x3fc00000);          // 1.5f
     expected += "D" + le64(0xbfd0000000000000);  // -0.25
     expected += "L" + le64(std::uint64_t{1} << 40);

@@ -159,8 +159,9 @@ const FbxNode* propertyEntry(const FbxNode& owner, const std::string& name)
 // FBX's Euler XYZ written out independently of Gyre's core: R = Rz(z)·Ry(y)·Rx(x), angles in degrees.
 Eigen::Quaterniond fbxEulerXyz(double x, double y, double z)
 {
-    return Eigen::AngleAxisd(z * kDegree, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(y * kDegree, Eigen::Vector3d::UnitY()) *
-           Eigen::AngleAxisd(x * kDegree, Eigen::Vector3d::UnitX());
+    using Eigen::AngleAxisd;
+    return AngleAxisd(z * kDegree, Eigen::Vector3d::UnitZ()) * AngleAxisd(y * kDegree, Eigen::Vector3d::UnitY()) *
+           AngleAxisd(x * kDegree, Eigen::Vector3d::UnitX());
 }
 
 const model::SceneObject* objectNamed(const model::Scene& scene, const QString& name)
@@ -187,9 +188,10 @@ model::SceneObject spinner(model::Scene& scene, const char* name, model::ObjectI
     object.name = QString::fromUtf8(name);
     object.parent = parent;
     object.track.interpolation = InterpolationMethod::Slerp;
-    for (int k = 0; k < keys; ++k)
-        object.track.keys.push_back(
-            {k * keySpacing, {Eigen::Quaterniond(Eigen::AngleAxisd(k * step, axis.normalized())), {0.1 * k, 1.0, -0.5 * k}}, true});
+    for (int k = 0; k < keys; ++k) {
+        const Eigen::Quaterniond turned(Eigen::AngleAxisd(k * step, axis.normalized()));
+        object.track.keys.push_back({k * keySpacing, {turned, {0.1 * k, 1.0, -0.5 * k}}, true});
+    }
     return object;
 }
 
@@ -201,7 +203,8 @@ model::Scene awkwardScene()
     scene.fps = 30.0;
     scene.startTime = 0.0;
     scene.endTime = 2.0;
-    const model::SceneObject root = spinner(scene, "Würfel Ä 1", model::kNoObject, {0, 0, 1}, 170.0 * kDegree, 1.0 / 30.0, 61);
+    const model::SceneObject root =
+        spinner(scene, "Würfel Ä 1", model::kNoObject, {0, 0, 1}, 170.0 * kDegree, 1.0 / 30.0, 61);
     model::SceneObject middle = spinner(scene, "twin", root.id, {1, 1, 0}, 100.0 * kDegree, 0.25, 9);
     middle.mesh = std::make_shared<model::Mesh>(model::Mesh{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {}, {0, 1, 2}});
     const model::SceneObject leaf = spinner(scene, "twin", middle.id, {0.3, -1, 0.6}, 150.0 * kDegree, 0.5, 5);
@@ -231,7 +234,8 @@ void TstFbxExport::everyObjectAtEverySample_data()
 {
     QTest::addColumn<QString>("project");
     QTest::newRow("awkward names, chain, spins") << QString();
-    for (const QString& file : QDir(QStringLiteral(GYRE_SAMPLES_DIR)).entryList({QStringLiteral("*.gyre")}, QDir::Files, QDir::Name))
+    const QDir samples(QStringLiteral(GYRE_SAMPLES_DIR));
+    for (const QString& file : samples.entryList({QStringLiteral("*.gyre")}, QDir::Files, QDir::Name))
         QTest::newRow(qPrintable(file)) << QStringLiteral(GYRE_SAMPLES_DIR "/") + file;
 }
 
