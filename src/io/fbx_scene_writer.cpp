@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <span>
@@ -225,7 +226,14 @@ private:
         Node& geometry = fbxObject(objects, "Geometry", id, name, "Geometry", "Mesh");
         geometry.addChild("GeometryVersion").addInt32(kGeometryVersion);
         geometry.addChild("Vertices").addArray(std::span<const double>(coordinates(mesh.positions)));
-        std::vector<std::int32_t> corners(mesh.indices.begin(), mesh.indices.end());
+        // Corners are int32 in FBX; whole triangles only.
+        if (mesh.positions.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+            throw std::length_error("a mesh has more vertices than FBX can index");
+        std::vector<std::int32_t> corners;
+        corners.reserve(mesh.indices.size());
+        for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3)
+            for (std::size_t k = i; k < i + 3; ++k)
+                corners.push_back(static_cast<std::int32_t>(mesh.indices[k]));
         for (std::size_t last = 2; last < corners.size(); last += 3)
             corners[last] = -corners[last] - 1; // a polygon's last corner is written as its bitwise complement
         geometry.addChild("PolygonVertexIndex").addArray(std::span<const std::int32_t>(corners));

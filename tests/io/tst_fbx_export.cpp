@@ -224,6 +224,7 @@ private slots:
     void curvesAreUnwrappedAndPlayTheShortWay();
     void frameRateAndSpanAreStored_data();
     void frameRateAndSpanAreStored();
+    void aSpanBeyondFbxTicksIsRefused();
 
 private:
     QString path(const QString& name) const { return directory_.filePath(name); }
@@ -400,6 +401,23 @@ void TstFbxExport::frameRateAndSpanAreStored()
     QCOMPARE(channel.mNumRotationKeys, static_cast<unsigned>(expected.size()));
     for (unsigned k = 0; k < channel.mNumRotationKeys; ++k)
         QVERIFY(std::abs(channel.mRotationKeys[k].mTime / animation.mTicksPerSecond - expected[k]) < 1e-9);
+}
+
+// FBX ticks are 64-bit: a range of 10^9 s cannot be written. The error names the file, and no file
+// is left behind.
+void TstFbxExport::aSpanBeyondFbxTicksIsRefused()
+{
+    model::Scene scene;
+    scene.endTime = 1e9;
+    scene.objects = {spinner(scene, "still", model::kNoObject, {0, 1, 0}, 0.0, 1.0, 1)};
+    const QString file = path(QStringLiteral("too-long.fbx"));
+    try {
+        exportScene(scene, file, SceneFormat::Fbx, 24.0);
+        QFAIL("a span beyond FBX's ticks was written");
+    } catch (const OutputError& error) {
+        QVERIFY2(QString::fromUtf8(error.what()).startsWith(file + ": cannot be written as FBX"), error.what());
+    }
+    QVERIFY(!QFile::exists(file));
 }
 
 QTEST_GUILESS_MAIN(TstFbxExport)
