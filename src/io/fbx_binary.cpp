@@ -109,7 +109,8 @@ Node& Node::addArrayOf(char type, std::span<const T> values)
     append(properties_, static_cast<std::uint32_t>(values.size()));
     append(properties_, std::uint32_t{0});
     append(properties_, bytes);
-    properties_.append(reinterpret_cast<const char*>(values.data()), bytes);
+    if (bytes > 0) // an empty span's data() may be null
+        properties_.append(reinterpret_cast<const char*>(values.data()), bytes);
     ++propertyCount_;
     return *this;
 }

@@ -142,13 +142,14 @@ private:
         Node& settings = root_.addChild("GlobalSettings");
         settings.addChild("Version").addInt32(1000);
         Node& properties = settings.addChild("Properties70");
-        intProperty(properties, "UpAxis", 1);
+        // Gyre's axes: z up (the viewport's ground is the xy plane), −y forward, x to the side.
+        intProperty(properties, "UpAxis", 2);
         intProperty(properties, "UpAxisSign", 1);
-        intProperty(properties, "FrontAxis", 2);
-        intProperty(properties, "FrontAxisSign", 1);
+        intProperty(properties, "FrontAxis", 1);
+        intProperty(properties, "FrontAxisSign", -1);
         intProperty(properties, "CoordAxis", 0);
         intProperty(properties, "CoordAxisSign", 1);
-        intProperty(properties, "OriginalUpAxis", 1);
+        intProperty(properties, "OriginalUpAxis", 2);
         intProperty(properties, "OriginalUpAxisSign", 1);
         property(properties, "UnitScaleFactor", "double", "Number", "").addDouble(100.0);
         property(properties, "OriginalUnitScaleFactor", "double", "Number", "").addDouble(100.0);

@@ -1,8 +1,9 @@
 # Does Blender import Gyre's FBX as Gyre plays it? For each project: `gyre-cli export` writes it as
 # FBX, `gyre-cli bake` gives every object's pose relative to its parent at each frame and key time, and
-# Blender's FBX importer (default settings: the file's Y-up turned to Blender's Z-up) reads the file.
-# At every baked time the object's transform relative to its parent in Blender (for a top-level
-# object, relative to the importer's axis conversion) must match the bake: orientation within 0.01°,
+# Blender's FBX importer (default settings: it takes the axes the file names, Z up like Gyre's world
+# and Blender's, so it turns nothing) reads the file. At every baked time the object's transform
+# relative to its parent in Blender (for a top-level object, its world transform, the importer's
+# axis conversion taken out) must match the bake: orientation within 0.01°,
 # position within 1e-4 units, scale 1 (UnitScaleFactor 100: one unit is one Blender metre). The
 # scene's frame rate must be the project's, and each action must end at the project's end time.
 #
@@ -12,10 +13,8 @@
 # It prints one line per project and exits with status 1 if any check fails. Objects whose name
 # another object shares are skipped (gyre-cli bake selects objects by name).
 #
-# Two limits of Blender 3.4's importer show here, not of the file: it places keys at the frame rate
-# rounded to an integer (so a 12.5 fps project plays 4% fast; integer rates are exact), and it turns
-# each key into its own Euler XYZ in single precision, which near that Euler's gimbal lock (a turn
-# about Gyre's z axis, Blender's -Y, within a hair of ±90°) can be off by up to about 1°.
+# One limit of Blender 3.4's importer shows here, not of the file: it places keys at the frame rate
+# rounded to an integer (so a 12.5 fps project plays 4% fast; integer rates are exact).
 
 import json
 import math
@@ -86,8 +85,12 @@ def check_project(gyre_cli, project, folder):
         problems.append("keys placed at %d frames a second, so the motion plays at %g times its speed"
                         % (key_fps, blender_fps / key_fps))
 
-    # The importer turns the file's Y up, -Z forward into Blender's Z up, Y forward, at the top level.
-    to_blender = axis_conversion(from_forward="-Z", from_up="Y").to_4x4()
+    # The importer turns the file's axes into Blender's at the top level. Gyre's FBX names Blender's
+    # own axes (UpAxis Z, FrontAxis -Y, which io_scene_fbx calls up "Z", forward "Y"), so this is the
+    # identity: the scene stands as it does in Gyre.
+    to_blender = axis_conversion(from_forward="Y", from_up="Z").to_4x4()
+    if to_blender != to_blender.Identity(4):
+        problems.append("the importer's axis conversion is not the identity")
     worst_angle = worst_position = worst_scale = 0.0
     for object_id, name in name_of.items():
         if names.count(name) > 1:

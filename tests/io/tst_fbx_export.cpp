@@ -63,7 +63,8 @@ struct FbxNode {
     {
         const std::string& bytes = properties.at(index).second;
         std::vector<T> values(bytes.size() / sizeof(T));
-        std::memcpy(values.data(), bytes.data(), values.size() * sizeof(T));
+        if (!values.empty())
+            std::memcpy(values.data(), bytes.data(), values.size() * sizeof(T));
         return values;
     }
 
@@ -388,6 +389,10 @@ void TstFbxExport::frameRateAndSpanAreStored()
     QCOMPARE(propertyEntry(settings, "CustomFrameRate")->scalar<double>(4), fps);
     QCOMPARE(propertyEntry(settings, "TimeSpanStart")->scalar<std::int64_t>(4), std::llround(start * 46186158000.0));
     QCOMPARE(propertyEntry(settings, "TimeSpanStop")->scalar<std::int64_t>(4), std::llround(end * 46186158000.0));
+    // Gyre's world is z up (its viewport's ground is the xy plane) and its unit is a metre to Blender.
+    QCOMPARE(propertyEntry(settings, "UpAxis")->scalar<std::int32_t>(4), 2);
+    QCOMPARE(propertyEntry(settings, "UpAxisSign")->scalar<std::int32_t>(4), 1);
+    QCOMPARE(propertyEntry(settings, "UnitScaleFactor")->scalar<double>(4), 100.0);
 
     Assimp::Importer importer;
     const aiScene* read = importer.ReadFile(QFile::encodeName(file).toStdString(), 0);
