@@ -104,6 +104,7 @@ class FbxSceneBuilder {
 public:
     explicit FbxSceneBuilder(const BakedScene& scene)
         : scene_(scene)
+        , animated_(std::ranges::any_of(scene.objects, [](const BakedObject& o) { return !o.samples.empty(); }))
     {
     }
 
@@ -118,7 +119,7 @@ public:
         connections_ = &root_.addChild("Connections");
         objectsOf(objects);
         definitionsOf(definitions);
-        if (counts_["AnimationStack"] > 0)
+        if (animated_)
             takes();
         return fbx::encodeFile(root_);
     }
@@ -166,7 +167,8 @@ private:
         Node& document = documents.addChild("Document").addInt64(ids_.next()).addString("").addString("Scene");
         Node& properties = document.addChild("Properties70");
         property(properties, "SourceObject", "object", "", "");
-        property(properties, "ActiveAnimStackName", "KString", "", "").addString(kTakeName);
+        if (animated_)
+            property(properties, "ActiveAnimStackName", "KString", "", "").addString(kTakeName);
         document.addChild("RootNode").addInt64(0);
     }
 
@@ -199,8 +201,7 @@ private:
         counts_["Model"] = static_cast<int>(modelIds.size());
         counts_["Geometry"] = static_cast<int>(geometryIds.size());
 
-        const bool animated = std::ranges::any_of(scene_.objects, [](const BakedObject& o) { return !o.samples.empty(); });
-        if (!animated)
+        if (!animated_)
             return;
         const std::int64_t layer = animationStack(objects);
         for (std::size_t i = 0; i < scene_.objects.size(); ++i)
@@ -373,6 +374,7 @@ private:
     }
 
     const BakedScene& scene_;
+    const bool animated_; // whether any object moves: then the file has an animation stack
     Node root_{""};
     Node* connections_ = nullptr;
     Ids ids_;
