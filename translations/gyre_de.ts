@@ -927,6 +927,11 @@
         <translation>Objekt %1 „%2“ wird als „%3“ geschrieben, damit sein Name eindeutig ist</translation>
     </message>
     <message>
+        <location filename="../src/io/scene_export.cpp" line="364"/>
+        <source>cannot be written as FBX: %1</source>
+        <translation>kann nicht als FBX geschrieben werden: %1</translation>
+    </message>
+    <message>
         <location filename="../src/io/scene_export.cpp" line="89"/>
         <source>the mesh of &apos;%1&apos; has an index past its vertices</source>
         <translation>das Mesh von „%1“ hat einen Index jenseits seiner Vertices</translation>

@@ -927,6 +927,11 @@
         <translation>对象 %1“%2”写为“%3”，以使其名称唯一</translation>
     </message>
     <message>
+        <location filename="../src/io/scene_export.cpp" line="364"/>
+        <source>cannot be written as FBX: %1</source>
+        <translation>无法写成 FBX：%1</translation>
+    </message>
+    <message>
         <location filename="../src/io/scene_export.cpp" line="89"/>
         <source>the mesh of &apos;%1&apos; has an index past its vertices</source>
         <translation>“%1”的网格有超出其顶点范围的索引</translation>

@@ -157,7 +157,7 @@ Each setting below defaults to what the file says:
 const char* const kExport = R"(Usage: gyre-cli export PROJECT.gyre -o SCENE.(gltf|glb|dae|fbx|obj) [--fps F]
 
 Writes the project as a scene file, the format named by the extension: glTF 2.0 (.gltf with a .bin
-beside it, or .glb), Collada (.dae), FBX (.fbx, ASCII) or OBJ (.obj with a .mtl; meshes only, no
+beside it, or .glb), Collada (.dae), FBX (.fbx, binary FBX 7.4) or OBJ (.obj with a .mtl; meshes only, no
 motion). Every object's motion is baked at the frames and its keys, so every interpolation and fit
 plays the same after import.
 

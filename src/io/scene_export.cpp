@@ -1,6 +1,8 @@
 #include "io/scene_export.h"
 
 #include "io/assimp_math.h"
+#include "io/baked_scene.h"
+#include "io/fbx_scene_writer.h"
 #include "core/number_text.h"
 #include "model/output_target.h"
 #include "model/track_evaluation.h"
@@ -38,16 +40,16 @@ const char* assimpFormatId(SceneFormat format)
         return "glb2";
     case SceneFormat::Collada:
         return "collada";
-    case SceneFormat::Fbx:
-        return "fbxa"; // ASCII: see scene_export.h
     case SceneFormat::Obj:
         return "obj";
+    case SceneFormat::Fbx: // written by Gyre itself: see scene_export.h
+        break;
     }
     return "";
 }
 
-// Assimp's Collada and FBX writers of 5.2 write key times as seconds whatever mTicksPerSecond says,
-// and its glTF writer divides them by it: with one tick per second all three write the same times.
+// Assimp's Collada writer of 5.2 writes key times as seconds whatever mTicksPerSecond says, and its
+// glTF writer divides them by it: with one tick per second both write the same times.
 constexpr double kTicksPerSecond = 1.0;
 
 const char* const kRootName = "GyreScene";
@@ -58,19 +60,21 @@ T* newArray(std::size_t count)
     return count == 0 ? nullptr : new T[count];
 }
 
-// Node names unique within the file, since animation channels find their nodes by name.
+// Node names unique within the file, since animation channels find their nodes by name. A NUL
+// character, which ends a name in Assimp's strings and separates name from class in FBX, becomes '_'.
 class NodeNames {
 public:
     NodeNames() { used_.insert(kRootName); }
 
     std::string unique(const model::SceneObject& object, QStringList& warnings)
     {
-        const std::string wanted =
+        std::string wanted =
             object.name.isEmpty() ? "object_" + std::to_string(object.id) : object.name.toStdString();
+        std::ranges::replace(wanted, '\0', '_');
         std::string name = wanted;
         for (int n = 2; !used_.insert(name).second; ++n)
             name = wanted + '_' + std::to_string(n);
-        if (name != wanted || object.name.isEmpty())
+        if (name != object.name.toStdString())
             warnings << gyre::FileError::tr("object %1 '%2' is written as '%3' so that its name is unique")
                             .arg(object.id)
                             .arg(object.name, QString::fromStdString(name));
@@ -81,12 +85,104 @@ private:
     std::set<std::string> used_;
 };
 
-aiMesh* assimpMesh(const model::Mesh& mesh, const QString& objectName, const QString& path)
+bool hasTriangles(const model::SceneObject& object) { return object.mesh && !object.mesh->indices.empty(); }
+
+bool isAnimated(const model::MotionTrack& track) { return track.keys.size() > 1 || !track.sketch.fittedCurve.empty(); }
+
+// Names, parents, start poses, checked meshes and baked motion of every object (baked_scene.h).
+class SceneBaker {
+public:
+    SceneBaker(const model::Scene& scene, const QString& path, double fps, ExportReport& report)
+        : scene_(scene)
+        , path_(path)
+        , report_(report)
+    {
+        result_.range = {scene.startTime, scene.endTime, fps};
+    }
+
+    BakedScene bake(bool withMotion)
+    {
+        std::unordered_map<model::ObjectId, std::size_t> indexOfId;
+        for (const model::SceneObject& object : scene_.objects) {
+            BakedObject baked;
+            baked.name = names_.unique(object, report_.warnings);
+            baked.parent = parentIndex(object, indexOfId);
+            baked.startPose = startPose(object);
+            if (hasTriangles(object))
+                baked.mesh = &checkedMesh(*object.mesh, object.name);
+            if (withMotion && isAnimated(object.track))
+                baked.samples = bakeTrack(object);
+            indexOfId.emplace(object.id, result_.objects.size());
+            result_.objects.push_back(std::move(baked));
+        }
+        return std::move(result_);
+    }
+
+private:
+    // The parent's index, or none for a top-level object or a parent that does not come before it.
+    std::optional<std::size_t> parentIndex(const model::SceneObject& object,
+                                           const std::unordered_map<model::ObjectId, std::size_t>& indexOfId)
+    {
+        if (object.parent == model::kNoObject)
+            return std::nullopt;
+        if (const auto found = indexOfId.find(object.parent); found != indexOfId.end())
+            return found->second;
+        report_.warnings << FileError::tr("object %1 names parent %2, which does not come before it; "
+                                          "it is written at the top level")
+                                .arg(object.id)
+                                .arg(object.parent);
+        return std::nullopt;
+    }
+
+    Pose startPose(const model::SceneObject& object) const
+    {
+        try {
+            return model::unitSample(model::TrackMotion(object.track).at(scene_.startTime), scene_.startTime);
+        } catch (const std::invalid_argument& error) {
+            throw OutputError(path_, FileError::tr("the motion of '%1' cannot be evaluated: %2")
+                                         .arg(object.name, QString::fromUtf8(error.what()))
+                                         .toStdString());
+        }
+    }
+
+    const model::Mesh& checkedMesh(const model::Mesh& mesh, const QString& objectName) const
+    {
+        for (const std::uint32_t index : mesh.indices)
+            if (index >= mesh.positions.size())
+                throw OutputError(path_, FileError::tr("the mesh of '%1' has an index past its vertices")
+                                             .arg(objectName)
+                                             .toStdString());
+        return mesh;
+    }
+
+    std::vector<model::TimedPose> bakeTrack(const model::SceneObject& object)
+    {
+        // Summed as doubles and compared before any cast: a bound beyond the integer range cannot wrap.
+        samples_ += model::bakeSampleBound(result_.range, object.track.keys.size());
+        if (!(samples_ <= static_cast<double>(kMaxExportSamples)))
+            throw OutputError(path_, FileError::tr("baking at %1 fps gives more than %2 samples")
+                                         .arg(QString::fromStdString(formatNumber(result_.range.fps)))
+                                         .arg(kMaxExportSamples)
+                                         .toStdString());
+        try {
+            return model::bakeTrack(object.track, result_.range);
+        } catch (const std::invalid_argument& error) {
+            throw OutputError(path_, FileError::tr("the motion of '%1' cannot be baked: %2")
+                                         .arg(object.name, QString::fromUtf8(error.what()))
+                                         .toStdString());
+        }
+    }
+
+    const model::Scene& scene_;
+    const QString& path_;
+    ExportReport& report_;
+    NodeNames names_;
+    double samples_ = 0.0; // bakeSampleBound summed over the baked objects
+    BakedScene result_;
+};
+
+aiMesh* assimpMesh(const model::Mesh& mesh)
 {
-    for (const std::uint32_t index : mesh.indices)
-        if (index >= mesh.positions.size())
-            throw OutputError(
-                path, FileError::tr("the mesh of '%1' has an index past its vertices").arg(objectName).toStdString());
     auto result = std::make_unique<aiMesh>();
     result->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
     result->mMaterialIndex = 0;
@@ -136,8 +232,6 @@ aiNodeAnim* assimpChannel(const std::string& nodeName, const std::vector<model::
     return channel.release();
 }
 
-bool hasTriangles(const model::SceneObject& object) { return object.mesh && !object.mesh->indices.empty(); }
-
 aiMaterial* defaultMaterial()
 {
     auto material = std::make_unique<aiMaterial>();
@@ -148,155 +242,65 @@ aiMaterial* defaultMaterial()
     return material.release();
 }
 
-// Builds the aiScene of a Gyre scene: one node per object under a root, the meshes, and the baked
-// motion as one animation.
-class AssimpSceneBuilder {
-public:
-    AssimpSceneBuilder(const model::Scene& scene, const QString& path, double fps, ExportReport& report)
-        : scene_(scene)
-        , path_(path)
-        , range_{scene.startTime, scene.endTime, fps}
-        , report_(report)
-    {
-    }
+// The aiScene of a baked scene: one node per object under a root, the meshes (one aiMesh for objects
+// that share a Mesh), and the baked motion as one animation.
+std::unique_ptr<aiScene> assimpScene(const BakedScene& baked)
+{
+    auto result = std::make_unique<aiScene>();
+    result->mFlags |= AI_SCENE_FLAGS_NON_VERBOSE_FORMAT; // vertices are shared between faces
+    result->mRootNode = new aiNode(kRootName);
+    result->mNumMaterials = 1;
+    result->mMaterials = new aiMaterial*[1]{defaultMaterial()};
 
-    std::unique_ptr<aiScene> build(bool withMotion)
-    {
-        auto result = std::make_unique<aiScene>();
-        result->mFlags |= AI_SCENE_FLAGS_NON_VERBOSE_FORMAT; // vertices are shared between faces
-        result->mRootNode = new aiNode(kRootName);
-        result->mNumMaterials = 1;
-        result->mMaterials = new aiMaterial*[1]{defaultMaterial()};
-        std::vector<std::unique_ptr<aiNodeAnim>> channels;
-        std::vector<std::unique_ptr<aiNode>> nodes;
-        for (const model::SceneObject& object : scene_.objects) {
-            const std::string name = names_.unique(object, report_.warnings);
-            nodes.push_back(nodeOf(object, name));
-            if (withMotion && isAnimated(object.track))
-                channels.emplace_back(assimpChannel(name, bake(object)));
-        }
-        attachNodes(*result->mRootNode, nodes);
-        moveMeshes(*result);
-        if (!channels.empty())
-            addAnimation(*result, channels);
-        return result;
-    }
-
-private:
-    static bool isAnimated(const model::MotionTrack& track)
-    {
-        return track.keys.size() > 1 || !track.sketch.fittedCurve.empty();
-    }
-
-    std::vector<model::TimedPose> bake(const model::SceneObject& object)
-    {
-        // Summed as doubles and compared before any cast: a bound beyond the integer range cannot wrap.
-        samples_ += model::bakeSampleBound(range_, object.track.keys.size());
-        if (!(samples_ <= static_cast<double>(kMaxExportSamples)))
-            throw OutputError(path_, FileError::tr("baking at %1 fps gives more than %2 samples")
-                                         .arg(QString::fromStdString(formatNumber(range_.fps)))
-                                         .arg(kMaxExportSamples)
-                                         .toStdString());
-        try {
-            return model::bakeTrack(object.track, range_);
-        } catch (const std::invalid_argument& error) {
-            throw OutputError(path_, FileError::tr("the motion of '%1' cannot be baked: %2")
-                                         .arg(object.name, QString::fromUtf8(error.what()))
-                                         .toStdString());
-        }
-    }
-
-    std::unique_ptr<aiNode> nodeOf(const model::SceneObject& object, const std::string& name)
-    {
-        auto node = std::make_unique<aiNode>(name);
-        try {
-            node->mTransformation = assimp_math::toAssimpMatrix(model::unitSample(
-                model::TrackMotion(object.track).at(scene_.startTime), scene_.startTime));
-        } catch (const std::invalid_argument& error) {
-            throw OutputError(path_, FileError::tr("the motion of '%1' cannot be evaluated: %2")
-                                         .arg(object.name, QString::fromUtf8(error.what()))
-                                         .toStdString());
-        }
-        if (hasTriangles(object)) {
+    std::vector<std::unique_ptr<aiMesh>> meshes;
+    std::unordered_map<const model::Mesh*, unsigned> meshIndices;
+    std::vector<std::unique_ptr<aiNode>> nodes;
+    std::vector<std::unique_ptr<aiNodeAnim>> channels;
+    for (const BakedObject& object : baked.objects) {
+        auto node = std::make_unique<aiNode>(object.name);
+        node->mTransformation = assimp_math::toAssimpMatrix(object.startPose);
+        if (object.mesh) {
+            const auto [entry, isNew] = meshIndices.try_emplace(object.mesh, static_cast<unsigned>(meshes.size()));
+            if (isNew)
+                meshes.emplace_back(assimpMesh(*object.mesh));
             node->mNumMeshes = 1;
-            node->mMeshes = new unsigned[1]{meshIndex(*object.mesh, object.name)};
+            node->mMeshes = new unsigned[1]{entry->second};
         }
-        parentOf_.push_back(object.parent);
-        idOf_.push_back(object.id);
-        return node;
+        nodes.push_back(std::move(node));
+        if (!object.samples.empty())
+            channels.emplace_back(assimpChannel(object.name, object.samples));
     }
 
-    // Objects that share a Mesh share one aiMesh.
-    unsigned meshIndex(const model::Mesh& mesh, const QString& objectName)
-    {
-        const auto [entry, isNew] = meshIndices_.try_emplace(&mesh, static_cast<unsigned>(meshes_.size()));
-        if (isNew)
-            meshes_.emplace_back(assimpMesh(mesh, objectName, path_));
-        return entry->second;
+    // Each node hangs under its parent's node or the root; the tree then owns the nodes.
+    std::vector<std::vector<aiNode*>> children(nodes.size() + 1);
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+        children[baked.objects[i].parent.value_or(nodes.size())].push_back(nodes[i].get());
+    for (std::size_t i = 0; i <= nodes.size(); ++i) {
+        aiNode& parent = i == nodes.size() ? *result->mRootNode : *nodes[i];
+        parent.addChildren(static_cast<unsigned>(children[i].size()), children[i].data());
     }
+    for (std::unique_ptr<aiNode>& node : nodes)
+        static_cast<void>(node.release());
 
-    // Hangs each node under its parent's node, or under the root for a top-level object or a parent
-    // that does not come before it. The tree then owns the nodes.
-    void attachNodes(aiNode& root, std::vector<std::unique_ptr<aiNode>>& nodes)
-    {
-        const std::size_t rootIndex = nodes.size();
-        std::vector<std::vector<aiNode*>> children(nodes.size() + 1);
-        std::unordered_map<model::ObjectId, std::size_t> indexOfId;
-        for (std::size_t i = 0; i < nodes.size(); ++i) {
-            std::size_t parent = rootIndex;
-            if (parentOf_[i] != model::kNoObject) {
-                if (const auto found = indexOfId.find(parentOf_[i]); found != indexOfId.end())
-                    parent = found->second;
-                else
-                    report_.warnings << FileError::tr("object %1 names parent %2, which does not come before it; "
-                                                      "it is written at the top level")
-                                            .arg(idOf_[i])
-                                            .arg(parentOf_[i]);
-            }
-            children[parent].push_back(nodes[i].get());
-            indexOfId.emplace(idOf_[i], i);
-        }
-        for (std::size_t i = 0; i <= nodes.size(); ++i) {
-            aiNode& parent = i == rootIndex ? root : *nodes[i];
-            parent.addChildren(static_cast<unsigned>(children[i].size()), children[i].data());
-        }
-        for (std::unique_ptr<aiNode>& node : nodes)
-            static_cast<void>(node.release());
-    }
+    result->mNumMeshes = static_cast<unsigned>(meshes.size());
+    result->mMeshes = newArray<aiMesh*>(meshes.size());
+    for (std::size_t i = 0; i < meshes.size(); ++i)
+        result->mMeshes[i] = meshes[i].release();
 
-    void moveMeshes(aiScene& result)
-    {
-        result.mNumMeshes = static_cast<unsigned>(meshes_.size());
-        result.mMeshes = newArray<aiMesh*>(meshes_.size());
-        for (std::size_t i = 0; i < meshes_.size(); ++i)
-            result.mMeshes[i] = meshes_[i].release();
-    }
-
-    void addAnimation(aiScene& result, std::vector<std::unique_ptr<aiNodeAnim>>& channels) const
-    {
+    if (!channels.empty()) {
         auto animation = std::make_unique<aiAnimation>();
         animation->mName.Set("Gyre");
         animation->mTicksPerSecond = kTicksPerSecond;
-        animation->mDuration = range_.end * kTicksPerSecond;
+        animation->mDuration = baked.range.end * kTicksPerSecond;
         animation->mNumChannels = static_cast<unsigned>(channels.size());
         animation->mChannels = new aiNodeAnim*[channels.size()];
         for (std::size_t i = 0; i < channels.size(); ++i)
             animation->mChannels[i] = channels[i].release();
-        result.mNumAnimations = 1;
-        result.mAnimations = new aiAnimation*[1]{animation.release()};
+        result->mNumAnimations = 1;
+        result->mAnimations = new aiAnimation*[1]{animation.release()};
     }
-
-    const model::Scene& scene_;
-    const QString& path_;
-    model::BakeRange range_;
-    ExportReport& report_;
-    NodeNames names_;
-    double samples_ = 0.0; // bakeSampleBound summed over the baked objects
-    std::vector<model::ObjectId> parentOf_;
-    std::vector<model::ObjectId> idOf_;
-    std::vector<std::unique_ptr<aiMesh>> meshes_;
-    std::unordered_map<const model::Mesh*, unsigned> meshIndices_;
-};
+    return result;
+}
 
 void writeWhole(const QString& path, const aiExportDataBlob& blob)
 {
@@ -351,9 +355,21 @@ ExportReport exportScene(const model::Scene& scene, const QString& path, SceneFo
         throw OutputError(path, FileError::tr("the scene has no meshes, and OBJ holds nothing else").toStdString());
     if (!keepsMotion(format))
         report.warnings << FileError::tr("OBJ holds no motion: the meshes are written as posed at the start time");
-    const std::unique_ptr<const aiScene> assimpScene =
-        AssimpSceneBuilder(scene, path, fps, report).build(keepsMotion(format));
-    return writeWithAssimp(*assimpScene, path, format, std::move(report));
+    const BakedScene baked = SceneBaker(scene, path, fps, report).bake(keepsMotion(format));
+    if (format == SceneFormat::Fbx) {
+        std::string bytes;
+        try {
+            bytes = fbxSceneFile(baked);
+        } catch (const std::length_error& error) {
+            throw OutputError(path, FileError::tr("cannot be written as FBX: %1")
+                                        .arg(QString::fromUtf8(error.what()))
+                                        .toStdString());
+        }
+        saveFileContents(path, QByteArray::fromRawData(bytes.data(), static_cast<qsizetype>(bytes.size())));
+        report.files << path;
+        return report;
+    }
+    return writeWithAssimp(*assimpScene(baked), path, format, std::move(report));
 }
 
 } // namespace gyre

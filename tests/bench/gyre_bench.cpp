@@ -23,6 +23,7 @@
 #include <benchmark/benchmark.h>
 
 #include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 
 #include <cmath>
@@ -305,6 +306,19 @@ void BM_ExportGlbInWorker(benchmark::State& state)
         benchmark::DoNotOptimize(gyre::exportSceneInWorker(scene, path, gyre::SceneFormat::Glb, 120.0));
 }
 BENCHMARK(BM_ExportGlbInWorker)->Unit(benchmark::kMillisecond);
+
+// The same motion written as FBX through the worker, as the app and gyre-cli export it.
+void BM_ExportFbxInWorker(benchmark::State& state)
+{
+    gyre::test::useBuiltSceneWorker();
+    const gyre::model::Scene scene = gyre::importScene(largeBvh()).scene;
+    QTemporaryDir folder;
+    const QString path = folder.filePath(QStringLiteral("large.fbx"));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(gyre::exportSceneInWorker(scene, path, gyre::SceneFormat::Fbx, 120.0));
+    state.counters["bytes"] = static_cast<double>(QFileInfo(path).size());
+}
+BENCHMARK(BM_ExportFbxInWorker)->Unit(benchmark::kMillisecond);
 
 } // namespace
 
