@@ -57,7 +57,7 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
         emit changed();
     });
     trailObject_ = selection_.object();
-    motion_ = std::make_shared<SceneMotion>(document_.scene());
+    motion_ = std::make_shared<model::SceneMotion>(document_.scene());
     snapshotOriginalMotion();
     requestTrail();
 }
@@ -81,7 +81,7 @@ void DrawnMotion::onSceneReset()
     // Opening a project may wait for its motion; only dragging must not. A preview was of the old scene.
     previewTrack_.reset();
     ++motionGeneration_;
-    motion_ = std::make_shared<SceneMotion>(document_.scene());
+    motion_ = std::make_shared<model::SceneMotion>(document_.scene());
     trajectoryStale_ = true;
     trailPoseCount_ = 0; // the old scene's
     snapshotOriginalMotion();
@@ -120,7 +120,7 @@ void DrawnMotion::onSelectionChanged()
 void DrawnMotion::snapshotOriginalMotion()
 {
     originalScene_ = document_.scene();
-    originalMotion_ = SceneMotion(originalScene_);
+    originalMotion_ = model::SceneMotion(originalScene_);
 }
 
 model::Scene DrawnMotion::sceneToDraw() const
@@ -137,14 +137,14 @@ void DrawnMotion::rebuildMotionInBackground()
     // The whole scene each time, so that the newest request, the one that runs, has every change.
     const std::uint64_t generation = ++motionGeneration_;
     motionThread_.post([this, generation, scene = sceneToDraw()](const std::atomic<bool>&) {
-        auto built = std::make_shared<const SceneMotion>(scene);
+        auto built = std::make_shared<const model::SceneMotion>(scene);
         QMetaObject::invokeMethod(
             this, [this, generation, built = std::move(built)] { receiveMotion(generation, built); },
             Qt::QueuedConnection);
     });
 }
 
-void DrawnMotion::receiveMotion(std::uint64_t generation, std::shared_ptr<const SceneMotion> built)
+void DrawnMotion::receiveMotion(std::uint64_t generation, std::shared_ptr<const model::SceneMotion> built)
 {
     if (generation != motionGeneration_)
         return;

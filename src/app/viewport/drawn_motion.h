@@ -5,7 +5,7 @@
 // object's trajectory, and the stroboscopic trail of its subdivided polyscrew (SubdivisionJob).
 
 #include "app/selection.h"
-#include "app/viewport/scene_motion.h"
+#include "model/scene_motion.h"
 #include "jobs/subdivision_job.h"
 #include "model/document.h"
 
@@ -29,7 +29,7 @@ class DrawnMotion final : public QObject {
 public:
     DrawnMotion(model::Document& document, Selection& selection, QObject* parent = nullptr);
 
-    const SceneMotion& motion() const { return *motion_; }
+    const model::SceneMotion& motion() const { return *motion_; }
     // The object's world pose at `time` as opened or last saved; nullopt for an object added since.
     std::optional<Pose> originalWorldPose(model::ObjectId id, double time) const;
 
@@ -69,7 +69,7 @@ private:
     // The document's scene with the preview track in place of its object's track.
     model::Scene sceneToDraw() const;
     void rebuildMotionInBackground();
-    void receiveMotion(std::uint64_t generation, std::shared_ptr<const SceneMotion> built);
+    void receiveMotion(std::uint64_t generation, std::shared_ptr<const model::SceneMotion> built);
     void requestTrail();
     void receiveTrail(const std::vector<Pose>& poses, qint64 nanoseconds);
     void dropTrail();
@@ -78,12 +78,12 @@ private:
     model::Document& document_;
     Selection& selection_;
 
-    std::shared_ptr<const SceneMotion> motion_ = std::make_shared<SceneMotion>();
+    std::shared_ptr<const model::SceneMotion> motion_ = std::make_shared<model::SceneMotion>();
     std::uint64_t motionGeneration_ = 0; // of the newest motion asked for
     model::ObjectId previewObject_ = model::kNoObject;
     std::optional<model::MotionTrack> previewTrack_;
     model::Scene originalScene_; // as opened or last saved, for the ghost
-    SceneMotion originalMotion_;
+    model::SceneMotion originalMotion_;
 
     // Kept from frame to frame, so that following the motion allocates nothing once they have grown.
     std::vector<float> trailMatrices_;

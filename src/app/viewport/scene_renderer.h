@@ -6,7 +6,7 @@
 // the viewport gathers that from the document, its motion and the selection.
 
 #include "app/viewport/frame_lines.h"
-#include "app/viewport/scene_motion.h"
+#include "model/scene_motion.h"
 #include "core/pose.h"
 #include "model/scene.h"
 
@@ -29,7 +29,7 @@ namespace gyre::app {
 // trail, control poses (its keys) and ghost.
 struct FrameMeshes {
     const model::Scene* scene = nullptr;
-    const SceneMotion* motion = nullptr;
+    const model::SceneMotion* motion = nullptr;
     const model::SceneObject* selected = nullptr;
     Pose selectedParentFrame; // the world frame of the selected object's keys and trail
     bool trail = false;       // as last uploaded with setTrail

@@ -110,7 +110,7 @@ void Viewport::setShowTrail(bool show)
 void Viewport::frameScene()
 {
     const model::Scene& scene = document_.scene();
-    const SceneMotion& motion = drawn_.motion();
+    const model::SceneMotion& motion = drawn_.motion();
     Eigen::AlignedBox3d box;
     for (const model::SceneObject& object : scene.objects) {
         const Pose pose = motion.worldPose(object.id, scene.currentTime);
@@ -175,7 +175,7 @@ void Viewport::pickAt(const QPointF& position)
 {
     const Ray ray = camera_.ray(position.x(), position.y());
     const model::Scene& scene = document_.scene();
-    const SceneMotion& motion = drawn_.motion();
+    const model::SceneMotion& motion = drawn_.motion();
     std::vector<MeshPlacement> placements;
     std::vector<model::ObjectId> objects;
     std::vector<std::optional<std::size_t>> keys;
