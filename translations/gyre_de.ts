@@ -1844,6 +1844,11 @@
         <source>Autosave is off: %1</source>
         <translation>Automatische Sicherung ist aus: %1</translation>
     </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="167"/>
+        <source>Outliner</source>
+        <translation>Gliederung</translation>
+    </message>
 </context>
 <context>
     <name>gyre::app::NumberFields</name>
@@ -1859,6 +1864,22 @@
         <location filename="../src/app/sketch/pattern_pad.cpp" line="34"/>
         <source>Draw the pattern once, left to right: x along the strokes, y across them</source>
         <translation>Das Muster einmal von links nach rechts zeichnen: x entlang der Striche, y quer dazu</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::OutlinerPanel</name>
+    <message>
+        <location filename="../src/app/outliner/outliner_panel.cpp" line="28"/>
+        <source>Filter by name</source>
+        <translation>Nach Namen filtern</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/app/outliner/outliner_panel.cpp" line="130"/>
+        <source>Delete %n Objects</source>
+        <translation>
+            <numerusform>%n Objekt löschen</numerusform>
+            <numerusform>%n Objekte löschen</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1995,6 +2016,17 @@
         <translation>
             <numerusform>Fertig, mit %n Warnung dazu, was die Datei nicht aufnehmen konnte.</numerusform>
             <numerusform>Fertig, mit %n Warnungen dazu, was die Datei nicht aufnehmen konnte.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::SceneTreeModel</name>
+    <message numerus="yes">
+        <location filename="../src/app/outliner/scene_tree_model.cpp" line="284"/>
+        <source>Reparent %n Objects in Place</source>
+        <translation>
+            <numerusform>%n Objekt an Ort und Stelle umhängen</numerusform>
+            <numerusform>%n Objekte an Ort und Stelle umhängen</numerusform>
         </translation>
     </message>
 </context>
@@ -2442,6 +2474,11 @@
         <location filename="../src/model/commands/toggle_keyframe_constraint_command.cpp" line="10"/>
         <source>Toggle Keyframe Constraint</source>
         <translation>Fixierung des Schlüsselbilds umschalten</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/reparent_object_in_place_command.cpp" line="30"/>
+        <source>Reparent Object in Place</source>
+        <translation>Objekt an Ort und Stelle umhängen</translation>
     </message>
 </context>
 <context>

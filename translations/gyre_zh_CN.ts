@@ -1844,6 +1844,11 @@
         <source>Autosave is off: %1</source>
         <translation>自动保存已关闭：%1</translation>
     </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="167"/>
+        <source>Outliner</source>
+        <translation>大纲</translation>
+    </message>
 </context>
 <context>
     <name>gyre::app::NumberFields</name>
@@ -1859,6 +1864,21 @@
         <location filename="../src/app/sketch/pattern_pad.cpp" line="34"/>
         <source>Draw the pattern once, left to right: x along the strokes, y across them</source>
         <translation>从左到右绘制一次图案：x 沿笔画方向，y 垂直于笔画</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::OutlinerPanel</name>
+    <message>
+        <location filename="../src/app/outliner/outliner_panel.cpp" line="28"/>
+        <source>Filter by name</source>
+        <translation>按名称筛选</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/app/outliner/outliner_panel.cpp" line="130"/>
+        <source>Delete %n Objects</source>
+        <translation>
+            <numerusform>删除 %n 个对象</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1993,6 +2013,16 @@
         <source>Done. Warnings about what the file could not keep: %n.</source>
         <translation>
             <numerusform>已完成，有 %n 条关于文件无法保留内容的警告。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::SceneTreeModel</name>
+    <message numerus="yes">
+        <location filename="../src/app/outliner/scene_tree_model.cpp" line="284"/>
+        <source>Reparent %n Objects in Place</source>
+        <translation>
+            <numerusform>原位更改 %n 个对象的父级</numerusform>
         </translation>
     </message>
 </context>
@@ -2440,6 +2470,11 @@
         <location filename="../src/model/commands/toggle_keyframe_constraint_command.cpp" line="10"/>
         <source>Toggle Keyframe Constraint</source>
         <translation>切换关键帧约束</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/reparent_object_in_place_command.cpp" line="30"/>
+        <source>Reparent Object in Place</source>
+        <translation>原位更改对象的父级</translation>
     </message>
 </context>
 <context>

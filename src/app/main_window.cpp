@@ -1,6 +1,7 @@
 #include "app/main_window.h"
 
 #include "app/inspector_widget.h"
+#include "app/outliner/outliner_panel.h"
 #include "app/preferences_dialog.h"
 #include "app/screwbender_panel.h"
 #include "app/sketch/direction_sketch_panel.h"
@@ -162,7 +163,13 @@ void MainWindow::setUpDocks()
     history->setEmptyLabel(tr("<opened>"));
     ui_->historyDockLayout->addWidget(history);
     ui_->historyDock->hide();
-    for (QDockWidget* dock : {ui_->inspectorDock, ui_->screwBenderDock, ui_->historyDock, ui_->timelineDock,
+    // The outliner heads the right column, above the inspector of what it selects.
+    auto* outlinerDock = new QDockWidget(tr("Outliner"), this);
+    outlinerDock->setObjectName(QStringLiteral("outlinerDock")); // saveState's name for it
+    outlinerDock->setWidget(new OutlinerPanel(document_, selection_, outlinerDock));
+    addDockWidget(Qt::RightDockWidgetArea, outlinerDock);
+    splitDockWidget(outlinerDock, ui_->inspectorDock, Qt::Vertical);
+    for (QDockWidget* dock : {outlinerDock, ui_->inspectorDock, ui_->screwBenderDock, ui_->historyDock, ui_->timelineDock,
                               ui_->smoothnessDock, ui_->sphereDock, ui_->fitDock, ui_->magnitudeDock})
         ui_->menuPanels->addAction(dock->toggleViewAction());
     // The history dock has its own action in the Edit menu, kept in step with the dock.
@@ -273,6 +280,7 @@ void MainWindow::restoreLayout()
     // take their sizes once the window is laid out, so this waits for the event loop.
     QTimer::singleShot(0, this, [this] {
         resizeDocks({ui_->inspectorDock}, {400}, Qt::Horizontal);
+        resizeDocks({findChild<QDockWidget*>(QStringLiteral("outlinerDock"))}, {220}, Qt::Vertical);
         resizeDocks({ui_->timelineDock, ui_->magnitudeDock}, {130, 220}, Qt::Vertical);
         resizeDocks({ui_->sphereDock}, {340}, Qt::Horizontal);
     });

@@ -8,6 +8,8 @@
 // picture, named as the guide names it: scripts/user-guide-screenshots.sh regenerates them so.
 
 #include "app/main_window.h"
+#include "app/outliner/outliner_panel.h"
+#include "built_scene_worker.h"
 #include "app/sketch/magnitude_plot.h"
 #include "app/sketch/pattern_pad.h"
 #include "app/sketch/sphere_view.h"
@@ -31,6 +33,8 @@
 #include <QSet>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QTemporaryDir>
+#include <QTreeView>
 #include <QStatusBar>
 #include <QTest>
 #include <QToolBar>
@@ -121,7 +125,7 @@ bool appSourceHandlesKey(const QKeySequence& keys)
         return false;
     const QRegularExpression handled(QStringLiteral("case Qt::%1:|key\\(\\) == Qt::%1\\b").arg(QLatin1String(name)));
     const QDir sources(QStringLiteral(GYRE_APP_SOURCES));
-    for (const QString& folder : {QStringLiteral("."), QStringLiteral("sketch"), QStringLiteral("viewport")}) {
+    for (const QString& folder : {QStringLiteral("."), QStringLiteral("outliner"), QStringLiteral("sketch"), QStringLiteral("viewport")}) {
         const QDir directory(sources.filePath(folder));
         for (const QString& file : directory.entryList({QStringLiteral("*.cpp")}, QDir::Files))
             if (readText(directory.filePath(file)).contains(handled))
@@ -145,6 +149,50 @@ void drawBadge(QPainter& painter, const QWidget& window, const QWidget& widget, 
     painter.setFont(font);
     painter.drawText(QRect(centre - QPoint(kRadius, kRadius), QSize(2 * kRadius, 2 * kRadius)), Qt::AlignCenter,
                      QString::number(number));
+}
+
+// A motion capture as a BVH file: a human skeleton of named joints (bones a few units long, so that
+// each joint's block stands apart), every joint swinging on its own for four seconds at 30 frames a second.
+QByteArray humanBvh()
+{
+    struct Joint {
+        const char* name;
+        int depth;
+        double x, y, z; // offset from the parent
+    };
+    static const Joint joints[] = {
+        {"Hips", 0, 0, 0, 0},          {"Spine", 1, 0, 2, 0},        {"Chest", 2, 0, 2, 0},
+        {"Neck", 3, 0, 2, 0},          {"Head", 4, 0, 1.5, 0},       {"LeftShoulder", 3, 1.5, 1.5, 0},
+        {"LeftArm", 4, 2, 0, 0},       {"LeftForeArm", 5, 2.5, 0, 0}, {"LeftHand", 6, 2, 0, 0},
+        {"RightShoulder", 3, -1.5, 1.5, 0}, {"RightArm", 4, -2, 0, 0}, {"RightForeArm", 5, -2.5, 0, 0},
+        {"RightHand", 6, -2, 0, 0},    {"LeftUpLeg", 1, 1.2, -1, 0},  {"LeftLeg", 2, 0, -4, 0},
+        {"LeftFoot", 3, 0, -4, 0},     {"RightUpLeg", 1, -1.2, -1, 0}, {"RightLeg", 2, 0, -4, 0},
+        {"RightFoot", 3, 0, -4, 0},
+    };
+    QString text = QStringLiteral("HIERARCHY\n");
+    int depth = -1;
+    for (const Joint& joint : joints) {
+        for (; depth >= joint.depth; --depth)
+            text += QStringLiteral("}\n");
+        depth = joint.depth;
+        text += QStringLiteral("%1 %2\n{\nOFFSET %3 %4 %5\n")
+                    .arg(QLatin1String(depth == 0 ? "ROOT" : "JOINT"), QLatin1String(joint.name))
+                    .arg(joint.x).arg(joint.y).arg(joint.z);
+        text += depth == 0 ? QStringLiteral("CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n")
+                           : QStringLiteral("CHANNELS 3 Zrotation Xrotation Yrotation\n");
+    }
+    for (; depth >= 0; --depth)
+        text += QStringLiteral("}\n");
+    constexpr int kFrames = 120;
+    text += QStringLiteral("MOTION\nFrames: %1\nFrame Time: %2\n").arg(kFrames).arg(1.0 / 30.0, 0, 'g', 17);
+    for (int frame = 0; frame < kFrames; ++frame) {
+        QStringList values{QString::number(0.05 * frame), QStringLiteral("10"), QStringLiteral("0")};
+        for (std::size_t joint = 0; joint < std::size(joints); ++joint)
+            for (int axis = 0; axis < 3; ++axis)
+                values << QString::number(25.0 * std::sin(0.1 * frame * (axis + 1) + 0.9 * double(joint) + axis));
+        text += values.join(QLatin1Char(' ')) + QLatin1Char('\n');
+    }
+    return text.toUtf8();
 }
 
 // The main window as the guide shows it: its first-start layout (test settings are empty), shown.
@@ -316,14 +364,14 @@ private slots:
             const auto& toolBar = *guide.child<QToolBar>("playbackToolBar");
             const QRect lastTool = toolBar.actionGeometry(toolBar.actions().constLast());
             drawBadge(painter, window, toolBar, {lastTool.right() + 20, toolBar.height() / 2}, 2);
-            const std::pair<const char*, int> docks[] = {{"sphereDock", 3}, {"screwBenderDock", 4}, {"inspectorDock", 6},
-                                                         {"magnitudeDock", 7}, {"timelineDock", 8}};
+            const std::pair<const char*, int> docks[] = {{"sphereDock", 3}, {"screwBenderDock", 4}, {"outlinerDock", 6},
+                                                         {"inspectorDock", 7}, {"magnitudeDock", 8}, {"timelineDock", 9}};
             for (const auto& [name, number] : docks) {
                 const auto& dock = *guide.child<QDockWidget>(name);
                 drawBadge(painter, window, dock, {dock.width() - 70, 11}, number);
             }
             drawBadge(painter, window, *guide.child<app::Viewport>(), {24, 24}, 5);
-            drawBadge(painter, window, *window.statusBar(), {30, window.statusBar()->height() / 2}, 9);
+            drawBadge(painter, window, *window.statusBar(), {30, window.statusBar()->height() / 2}, 10);
         });
     }
 
@@ -416,6 +464,44 @@ private slots:
         guide.settle();
         QVERIFY(guide.child<app::Viewport>()->trailInstanceCount() > 0);
         guide.picture(QStringLiteral("guide-critter-cycle.png"));
+    }
+
+    // A motion capture opened as the guide tells (a scene file opened is imported) shows its skeleton
+    // in the Outliner; typing in the filter box leaves the matching joints with their ancestors.
+    void showsAMotionCapturesSkeletonInTheOutliner()
+    {
+        test::useBuiltSceneWorker();
+        QTemporaryDir folder;
+        const QString path = folder.filePath(QStringLiteral("walk.bvh"));
+        QFile file(path);
+        const QByteArray bvh = humanBvh();
+        QVERIFY(file.open(QIODevice::WriteOnly) && file.write(bvh) == bvh.size());
+        file.close();
+        GuideWindow guide;
+        app::MainWindow& window = guide.window();
+        QSignalSpy imported(&window.sceneFiles().jobs(), &jobs::SceneFileJobs::imported);
+        window.openFile(path);
+        QTRY_COMPARE_WITH_TIMEOUT(imported.count(), 1, 30'000);
+        QCOMPARE(window.document().scene().objects.size(), std::size_t{19});
+        window.playback().pause();
+        window.document().setCurrentTime(1.0);
+        guide.child<QAction>("actionFrameAll")->trigger(); // View ▸ Frame Scene
+        auto* outliner = guide.child<app::OutlinerPanel>();
+        const model::ObjectId foreArm = window.document().scene().objects[7].id;
+        QCOMPARE(window.document().object(foreArm)->name, QStringLiteral("LeftForeArm"));
+        const QModelIndex row = outliner->filteredModel().mapFromSource(outliner->sceneModel().indexOf(foreArm));
+        outliner->tree()->scrollTo(row);
+        QTest::mouseClick(outliner->tree()->viewport(), Qt::LeftButton, Qt::NoModifier, outliner->tree()->visualRect(row).center());
+        QCOMPARE(window.selection().object(), foreArm);
+        guide.settle();
+        guide.picture(QStringLiteral("guide-outliner.png"));
+
+        QTest::keyClicks(outliner->filterBox(), QStringLiteral("hand"));
+        QCOMPARE(outliner->filteredModel().rowCount(), 1); // Hips, leading to both hands
+        QVERIFY(outliner->filteredModel().match(outliner->filteredModel().index(0, 0), Qt::DisplayRole,
+                                                QStringLiteral("RightHand"), 1, Qt::MatchRecursive).size() == 1);
+        QVERIFY(outliner->filteredModel().match(outliner->filteredModel().index(0, 0), Qt::DisplayRole,
+                                                QStringLiteral("LeftLeg"), 1, Qt::MatchRecursive).isEmpty());
     }
 
 private:

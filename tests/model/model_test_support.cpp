@@ -11,6 +11,7 @@
 #include "model/commands/remove_keyframe_command.h"
 #include "model/commands/rename_object_command.h"
 #include "model/commands/reparent_object_command.h"
+#include "model/commands/reparent_object_in_place_command.h"
 #include "model/commands/retime_keyframes_command.h"
 #include "model/commands/set_fit_parameter_command.h"
 #include "model/commands/set_fit_window_command.h"
@@ -190,9 +191,12 @@ std::unique_ptr<QUndoCommand> RandomEdits::command(Document& document, EditKind 
         return std::make_unique<DeleteObjectCommand>(document, id);
     case EditKind::RenameObject:
         return std::make_unique<RenameObjectCommand>(document, id, QStringLiteral("renamed %1").arg(index(100)));
-    case EditKind::ReparentObject: {
+    case EditKind::ReparentObject:
+    case EditKind::ReparentObjectInPlace: {
         const std::vector<SceneObject>& objects = document.scene().objects;
         const ObjectId parent = number(0, 1) < 0.2 ? kNoObject : objects[index(objects.size())].id;
+        if (kind == EditKind::ReparentObjectInPlace)
+            return std::make_unique<ReparentObjectInPlaceCommand>(document, id, parent);
         return std::make_unique<ReparentObjectCommand>(document, id, parent);
     }
     case EditKind::AddKeyframe:

@@ -20,6 +20,7 @@ enum class EditKind {
     DeleteObject,
     RenameObject,
     ReparentObject,
+    ReparentObjectInPlace,
     AddKeyframe,
     RemoveKeyframe,
     MoveKeyframe,

@@ -16,6 +16,7 @@
 #include "model/commands/remove_keyframe_command.h"
 #include "model/commands/rename_object_command.h"
 #include "model/commands/reparent_object_command.h"
+#include "model/commands/reparent_object_in_place_command.h"
 #include "model/commands/retime_keyframes_command.h"
 #include "model/commands/set_fit_parameter_command.h"
 #include "model/commands/set_fit_window_command.h"
@@ -30,6 +31,7 @@
 #include "model/input_error.h"
 #include "model/project_file.h"
 #include "model/scene_queries.h"
+#include "model/track_evaluation.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -153,6 +155,7 @@ private slots:
     void renameObject();
     void reparentKeepsParentsFirst();
     void reparentRefusesCycles();
+    void reparentInPlaceKeepsTheWorldPoseAtEveryKey();
     void deleteRemovesTheSubtree();
     void timeRange();
     void signalsSayWhatChanged_data();
@@ -551,6 +554,65 @@ void TstCommands::reparentRefusesCycles()
     QVERIFY(refuses([&] { ReparentObjectCommand(document, 2, 9); }, "no object 9"));
 }
 
+namespace {
+
+// The world pose composed by hand up the parent chain, each track evaluated on its own.
+Pose worldPoseByHand(const Scene& scene, ObjectId id, double time)
+{
+    Pose world;
+    for (const SceneObject* object = findObject(scene, id); object != nullptr; object = findObject(scene, object->parent))
+        world = TrackMotion(object->track).at(time) * world;
+    return world;
+}
+
+} // namespace
+
+void TstCommands::reparentInPlaceKeepsTheWorldPoseAtEveryKey()
+{
+    // 1 and 2 (child of 1) move and turn; 3 is 2's child with keys between theirs, so that the old
+    // parent chain and the new parent are evaluated between their own keys; 4 is 3's child.
+    SceneObject mover = objectWithKeys(1, {0, 2});
+    mover.track.keys[1].pose = {Eigen::Quaterniond(Eigen::AngleAxisd(1.1, Eigen::Vector3d(1, 2, 3).normalized())), {0, 4, 1}};
+    SceneObject turner = objectWithKeys(2, {0, 1.5, 3}, 1);
+    SceneObject child = objectWithKeys(3, {0.25, 0.7, 1.2, 2.9}, 2);
+    child.track.keys[2].pose.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.8, Eigen::Vector3d::UnitX()));
+    SceneObject grandchild = objectWithKeys(4, {0.7, 1.2}, 3);
+    Document document;
+    import(document, {mover, turner, child, grandchild});
+    const QByteArray before = projectJson(document.scene());
+    const auto worldPoses = [&document](ObjectId id, ObjectId keysOf) {
+        std::vector<Pose> poses;
+        for (const Keyframe& key : document.object(keysOf)->track.keys)
+            poses.push_back(worldPoseByHand(document.scene(), id, key.time));
+        return poses;
+    };
+    const auto same = [](const std::vector<Pose>& a, const std::vector<Pose>& b) {
+        for (std::size_t i = 0; i < a.size(); ++i)
+            if (a[i].orientation.angularDistance(b[i].orientation) > 1e-9 || (a[i].position - b[i].position).norm() > 1e-9)
+                return false;
+        return a.size() == b.size();
+    };
+    for (const ObjectId newParent : {ObjectId{1}, kNoObject}) {
+        const std::vector<Pose> childBefore = worldPoses(3, 3);
+        const std::vector<Pose> grandchildBefore = worldPoses(4, 3);
+        document.undoStack().push(new ReparentObjectInPlaceCommand(document, 3, newParent));
+        QCOMPARE(document.object(3)->parent, newParent);
+        QVERIFY(same(worldPoses(3, 3), childBefore));
+        QVERIFY(same(worldPoses(4, 3), grandchildBefore)); // relative to 3, at 3's keys
+        QCOMPARE(keyTimes(document, 3), (std::vector<double>{0.25, 0.7, 1.2, 2.9}));
+    }
+    // The plain reparent moves it: the check above is not true of any reparenting.
+    const std::vector<Pose> unparented = worldPoses(3, 3);
+    document.undoStack().push(new ReparentObjectCommand(document, 3, 2));
+    QVERIFY(!same(worldPoses(3, 3), unparented));
+    document.undoStack().undo();
+    document.undoStack().undo();
+    document.undoStack().undo();
+    QCOMPARE(projectJson(document.scene()), before);
+    QVERIFY(refuses([&] { ReparentObjectInPlaceCommand(document, 1, 4); }, "cannot be the parent of object 1"));
+    QVERIFY(refuses([&] { ReparentObjectInPlaceCommand(document, 9, 1); }, "no object 9"));
+}
+
 void TstCommands::deleteRemovesTheSubtree()
 {
     Document document;
@@ -615,6 +677,8 @@ void TstCommands::signalsSayWhatChanged_data()
         {"objectAdded:4", "objectAdded:5"});
     row("rename", [](Document& d) { return new RenameObjectCommand(d, 2, QStringLiteral("x")); }, {"objectChanged:2"});
     row("reparent", [](Document& d) { return new ReparentObjectCommand(d, 2, 3); }, {"objectChanged:2"});
+    row("reparent in place", [](Document& d) { return new ReparentObjectInPlaceCommand(d, 2, 3); },
+        {"objectChanged:2", "keyframesChanged:2"});
     // Children go before their parents, so a view never holds an object whose parent it has dropped.
     row("delete", [](Document& d) { return new DeleteObjectCommand(d, 1); }, {"objectRemoved:2", "objectRemoved:1"});
     row("time range", [](Document& d) { return new SetTimeRangeCommand(d, {25, 0, 4}); }, {"sceneSettingsChanged"});

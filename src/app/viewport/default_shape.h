@@ -9,4 +9,10 @@ namespace gyre::app {
 // Built once; flat-shaded (each face has its own vertices and normal).
 const model::Mesh& defaultShapeMesh();
 
+// The mesh drawn for the object: its own, or the default shape.
+inline const model::Mesh& displayMesh(const model::SceneObject& object)
+{
+    return object.mesh ? *object.mesh : defaultShapeMesh();
+}
+
 } // namespace gyre::app

@@ -25,6 +25,18 @@ void ParentField::set(Scene& scene, const FieldTarget& target, Value value)
                      [&rank](const SceneObject& a, const SceneObject& b) { return rank(a) < rank(b); });
 }
 
+ParentAndKeysField::Value ParentAndKeysField::get(const Scene& scene, const FieldTarget& target)
+{
+    return {ParentField::get(scene, target), objectIn(scene, target.object).track.keys};
+}
+
+void ParentAndKeysField::set(Scene& scene, const FieldTarget& target, Value value)
+{
+    // The keys first: ParentField::set reorders the objects.
+    objectIn(scene, target.object).track.keys = std::move(value.second);
+    ParentField::set(scene, target, std::move(value.first));
+}
+
 TimeRangeField::Value TimeRangeField::get(const Scene& scene, const FieldTarget&)
 {
     return {scene.fps, scene.startTime, scene.endTime};

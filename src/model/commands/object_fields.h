@@ -116,6 +116,16 @@ struct ParentField {
     static void set(Scene& scene, const FieldTarget& target, Value value);
 };
 
+// The parent with the order of all objects, and the object's keys: what reparenting in place changes,
+// since it re-expresses the keys in the new parent's frame.
+struct ParentAndKeysField {
+    using Value = std::pair<ParentField::Value, SharedVector<Keyframe>>;
+    static constexpr Changes kChanges = Changes(Change::Object) | Change::Keyframes;
+    static constexpr int kMergeId = kNeverMerge;
+    static Value get(const Scene& scene, const FieldTarget& target);
+    static void set(Scene& scene, const FieldTarget& target, Value value);
+};
+
 // The frame rate and time range of the scene.
 struct TimeRange {
     double fps = 24.0;

@@ -9,9 +9,6 @@
 
 namespace gyre::model {
 
-namespace {
-
-// The new parent and the order of objects that puts the object's subtree after it.
 ParentField::Value reparented(const Document& document, ObjectId object, ObjectId newParent)
 {
     requireObject(document, object);
@@ -30,8 +27,6 @@ ParentField::Value reparented(const Document& document, ObjectId object, ObjectI
     order.insert(std::find(order.begin(), order.end(), newParent) + 1, subtree.begin(), subtree.end());
     return {newParent, order};
 }
-
-} // namespace
 
 ReparentObjectCommand::ReparentObjectCommand(Document& document, ObjectId object, ObjectId newParent,
                                              QUndoCommand* parent)

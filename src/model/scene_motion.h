@@ -3,6 +3,7 @@
 // up its parent chain, since a track gives the pose relative to the parent. Built once per change of
 // the scene, not per frame; building subdivides every screw track, so the viewport builds it off the
 // UI thread while the artist drags.
+// Reparenting with the world pose kept asks it for the old and new parents' frames at each key.
 
 #include "core/pose.h"
 #include "model/scene.h"
@@ -10,25 +11,25 @@
 
 #include <unordered_map>
 
-namespace gyre::app {
+namespace gyre::model {
 
 class SceneMotion {
 public:
     SceneMotion() = default; // no objects
-    explicit SceneMotion(const model::Scene& scene);
+    explicit SceneMotion(const Scene& scene);
 
     // The object's pose in the world at `time`; an unknown object is at the identity.
-    Pose worldPose(model::ObjectId id, double time) const;
+    Pose worldPose(ObjectId id, double time) const;
     // The world pose of the frame its track is relative to: its parent's world pose, or the identity.
-    Pose parentWorldPose(model::ObjectId id, double time) const;
+    Pose parentWorldPose(ObjectId id, double time) const;
 
 private:
     struct Entry {
-        model::ObjectId parent = model::kNoObject;
-        model::TrackMotion motion;
+        ObjectId parent = kNoObject;
+        TrackMotion motion;
     };
 
-    std::unordered_map<model::ObjectId, Entry> entries_;
+    std::unordered_map<ObjectId, Entry> entries_;
 };
 
-} // namespace gyre::app
+} // namespace gyre::model

@@ -1,14 +1,14 @@
-#include "app/viewport/scene_motion.h"
+#include "model/scene_motion.h"
 
-namespace gyre::app {
+namespace gyre::model {
 
-SceneMotion::SceneMotion(const model::Scene& scene)
+SceneMotion::SceneMotion(const Scene& scene)
 {
-    for (const model::SceneObject& object : scene.objects)
-        entries_.insert_or_assign(object.id, Entry{object.parent, model::TrackMotion(object.track)});
+    for (const SceneObject& object : scene.objects)
+        entries_.insert_or_assign(object.id, Entry{object.parent, TrackMotion(object.track)});
 }
 
-Pose SceneMotion::worldPose(model::ObjectId id, double time) const
+Pose SceneMotion::worldPose(ObjectId id, double time) const
 {
     const auto found = entries_.find(id);
     if (found == entries_.end())
@@ -16,7 +16,7 @@ Pose SceneMotion::worldPose(model::ObjectId id, double time) const
     return parentWorldPose(id, time) * found->second.motion.at(time);
 }
 
-Pose SceneMotion::parentWorldPose(model::ObjectId id, double time) const
+Pose SceneMotion::parentWorldPose(ObjectId id, double time) const
 {
     Pose world;
     // At most one step per object, so a broken hierarchy cannot loop forever.
@@ -30,4 +30,4 @@ Pose SceneMotion::parentWorldPose(model::ObjectId id, double time) const
     return world;
 }
 
-} // namespace gyre::app
+} // namespace gyre::model

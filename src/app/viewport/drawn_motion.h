@@ -1,0 +1,105 @@
+#pragma once
+// The motion the viewport draws, following the document: the scene's motion rebuilt off the UI
+// thread after each change (a moment behind while a newer one is built), a live fit's preview track
+// in place of its object's own, the motion as opened or last saved (the ghost), the selected
+// object's trajectory, and the stroboscopic trail of its subdivided polyscrew (SubdivisionJob).
+
+#include "app/selection.h"
+#include "model/scene_motion.h"
+#include "jobs/subdivision_job.h"
+#include "model/document.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace gyre::app {
+
+class DrawnMotion final : public QObject {
+    Q_OBJECT
+
+public:
+    DrawnMotion(model::Document& document, Selection& selection, QObject* parent = nullptr);
+
+    const model::SceneMotion& motion() const { return *motion_; }
+    // The object's world pose at `time` as opened or last saved; nullopt for an object added since.
+    std::optional<Pose> originalWorldPose(model::ObjectId id, double time) const;
+
+    // Follows `track` for `object` instead of its own track, until called with nullopt.
+    void setPreviewTrack(model::ObjectId object, std::optional<model::MotionTrack> track);
+
+    // The trail and the control poses belong to ScrewBender's editing. Another track's keys may all
+    // sit in one place (a spinning top's 85 keys at its tip), where they would only hide the object.
+    static bool isScrewBenderTrack(const model::SceneObject* object);
+
+    // The selected object's subdivided poses, local to its parent: a column-major 4×4 matrix each.
+    const std::vector<float>& trailMatrices() const { return trailMatrices_; }
+    std::size_t trailPoseCount() const { return trailPoseCount_; }
+    // Whether the trail changed since the last call, which then uploads it.
+    bool takeTrailChange() { return std::exchange(trailChanged_, false); }
+    // The worker's time for the newest trail, and the time from its request to its arrival.
+    double subdivisionMilliseconds() const { return subdivisionMilliseconds_; }
+    double subdivisionLatencyMilliseconds() const { return subdivisionLatencyMilliseconds_; }
+
+    // The world path of the selected object's mesh centre over the scene's time range, one point a
+    // frame (at most kMaxTrajectorySamples + 1); empty without a selected object.
+    const std::vector<Eigen::Vector3f>& trajectory();
+    static constexpr int kMaxTrajectorySamples = 4096;
+
+signals:
+    // Something drawn changed: the viewport repaints.
+    void changed();
+    // A new scene's motion is in place: the viewport frames it.
+    void sceneReset();
+
+private:
+    void onSceneReset();
+    void onObjectsChanged();
+    void onTrackChanged(model::ObjectId id);
+    void onSelectionChanged();
+    void snapshotOriginalMotion();
+    // The document's scene with the preview track in place of its object's track.
+    model::Scene sceneToDraw() const;
+    void rebuildMotionInBackground();
+    void receiveMotion(std::uint64_t generation, std::shared_ptr<const model::SceneMotion> built);
+    void requestTrail();
+    void receiveTrail(const std::vector<Pose>& poses, qint64 nanoseconds);
+    void dropTrail();
+    void rebuildTrajectory();
+
+    model::Document& document_;
+    Selection& selection_;
+
+    std::shared_ptr<const model::SceneMotion> motion_ = std::make_shared<model::SceneMotion>();
+    std::uint64_t motionGeneration_ = 0; // of the newest motion asked for
+    model::ObjectId previewObject_ = model::kNoObject;
+    std::optional<model::MotionTrack> previewTrack_;
+    model::Scene originalScene_; // as opened or last saved, for the ghost
+    model::SceneMotion originalMotion_;
+
+    // Kept from frame to frame, so that following the motion allocates nothing once they have grown.
+    std::vector<float> trailMatrices_;
+    bool trailChanged_ = false;
+    std::size_t trailPoseCount_ = 0;
+    model::ObjectId trailObject_ = model::kNoObject; // whose trail trailMatrices_ holds
+    std::vector<Eigen::Vector3f> trajectory_;
+    bool trajectoryStale_ = true;
+
+    double subdivisionMilliseconds_ = 0.0;
+    double subdivisionLatencyMilliseconds_ = 0.0;
+    QElapsedTimer sinceTrailRequest_;
+
+    // Last: joined first, so no trail or motion arrives once the members above are gone.
+    jobs::SubdivisionJob subdivision_;
+    jobs::JobThread motionThread_;
+};
+
+} // namespace gyre::app

@@ -1,0 +1,98 @@
+#pragma once
+// The viewport's OpenGL side: the mesh and line shaders, each mesh's buffers (uploaded on first use,
+// dropped when no object holds the mesh any more), the instance buffers of the trail and the control
+// poses, and one frame's drawing in its order: lines under the meshes, the objects, the translucent
+// trail, control poses and ghost, and the handles on top. It decides nothing about what is shown:
+// the viewport gathers that from the document, its motion and the selection.
+
+#include "app/viewport/frame_lines.h"
+#include "model/scene_motion.h"
+#include "core/pose.h"
+#include "model/scene.h"
+
+#include <QOpenGLBuffer>
+#include <QOpenGLExtraFunctions>
+#include <QOpenGLShaderProgram>
+#include <QOpenGLVertexArrayObject>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+namespace gyre::app {
+
+// The meshes of one frame: every object of the scene at its current time, and the selected object's
+// trail, control poses (its keys) and ghost.
+struct FrameMeshes {
+    const model::Scene* scene = nullptr;
+    const model::SceneMotion* motion = nullptr;
+    const model::SceneObject* selected = nullptr;
+    Pose selectedParentFrame; // the world frame of the selected object's keys and trail
+    bool trail = false;       // as last uploaded with setTrail
+    bool controlPoses = false;
+    std::optional<std::size_t> highlightedKey;
+    std::optional<Pose> ghost; // the selected object's original world pose, where it is drawn
+};
+
+class SceneRenderer final : protected QOpenGLExtraFunctions {
+public:
+    // Control poses are drawn as small copies of their object.
+    static constexpr double kControlPoseScale = 0.6;
+
+    SceneRenderer() = default;
+    SceneRenderer(const SceneRenderer&) = delete;
+    SceneRenderer& operator=(const SceneRenderer&) = delete;
+
+    // With the widget's context current: builds the shaders and buffers.
+    void initialize();
+    // With the context current: frees everything initialize and drawing made. Safe to call twice.
+    void release();
+    bool isInitialized() const { return meshProgram_ != nullptr; }
+
+    // The radius of the bounding sphere of the object's mesh about its origin (uploading the mesh).
+    float meshRadius(const model::SceneObject& object) { return gpuMesh(object).radius; }
+    // The next frame drops the buffers of meshes no object holds any more.
+    void dropUnusedMeshesNextFrame() { meshesMayBeUnused_ = true; }
+    // Uploads the trail's instances: column-major 4×4 matrices in the selected object's parent frame.
+    void setTrail(const std::vector<float>& matrices);
+
+    void drawFrame(const Eigen::Matrix4d& viewProjection, const Eigen::Vector3d& eye, const FrameLines& lines,
+                   const FrameMeshes& meshes);
+
+private:
+    struct GpuMesh {
+        std::shared_ptr<const model::Mesh> owner; // keeps the mesh, and so its address, alive; null for the default shape
+        std::unique_ptr<QOpenGLVertexArrayObject> vertexArray;
+        QOpenGLBuffer vertices{QOpenGLBuffer::VertexBuffer};
+        QOpenGLBuffer indices{QOpenGLBuffer::IndexBuffer};
+        int indexCount = 0;
+        float radius = 1.0F; // of the bounding sphere about the local origin
+        std::optional<GLenum> frontFace; // GL_CCW or GL_CW for a closed mesh, whose back faces are culled
+    };
+
+    GpuMesh& gpuMesh(const model::SceneObject& object);
+    void dropUnusedMeshes();
+    void drawMesh(GpuMesh& mesh, QOpenGLBuffer& instances, int instanceCount);
+    void drawLines(GLenum mode, LineRange range);
+    void uploadLines(const FrameLines& lines);
+    void uploadControlPoses(const model::SceneObject& object);
+    void setMeshColors(const Rgba& start, const Rgba& end);
+
+    std::unique_ptr<QOpenGLShaderProgram> meshProgram_;
+    std::unique_ptr<QOpenGLShaderProgram> lineProgram_;
+    std::unordered_map<const model::Mesh*, GpuMesh> gpuMeshes_;
+    bool meshesMayBeUnused_ = false;
+    QOpenGLBuffer identityInstance_{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer trailInstances_{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer controlPoseInstances_{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer lineBuffer_{QOpenGLBuffer::VertexBuffer};
+    std::unique_ptr<QOpenGLVertexArrayObject> lineArray_;
+    int trailInstanceCount_ = 0;
+    std::vector<float> controlPoseMatrices_; // kept from frame to frame: drawing allocates nothing once grown
+};
+
+} // namespace gyre::app
