@@ -111,8 +111,8 @@ ImportDialog::ImportDialog(const QString& path, const SceneImport& firstRead, QW
     unit_->setToolTip(file.unitSource);
     form->addRow(tr("One unit of the file:"), unit_);
     up_->setObjectName(QStringLiteral("importUp"));
-    up_->addItem(tr("Y up"), static_cast<int>(UpAxis::Y));
-    up_->addItem(tr("Z up (turned to Y up)"), static_cast<int>(UpAxis::Z));
+    up_->addItem(tr("Y up (turned to Z up)"), static_cast<int>(UpAxis::Y));
+    up_->addItem(tr("Z up"), static_cast<int>(UpAxis::Z));
     up_->setCurrentIndex(up_->findData(static_cast<int>(file.values.up)));
     up_->setToolTip(file.upSource);
     form->addRow(tr("Up axis:"), up_);

@@ -150,7 +150,7 @@ Each setting below defaults to what the file says:
                        frames every key falls); keys are never resampled
   --unit METRES        the length of the file's unit in metres (FBX UnitScaleFactor, Collada <unit>;
                        0.01 for a centimetre file); positions and meshes are scaled to metres
-  --up y|z             the file's up axis (FBX UpAxis, Collada up_axis); a Z-up scene is turned Y-up
+  --up y|z             the file's up axis (FBX UpAxis, Collada up_axis); a Y-up scene is turned Z-up, Gyre's up
   --time-origin zero   the first key at t = 0 for every format (default); file: times as in the file
   -o, --output FILE    the project file)";
 

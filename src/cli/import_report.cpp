@@ -74,7 +74,7 @@ std::string settingsLine(const SceneImport& imported)
     line += ", 1 unit = " + formatNumber(applied.metresPerUnit) + " m" +
             origin(applied.metresPerUnit == file.values.metresPerUnit, file.unitSource,
                    formatNumber(file.values.metresPerUnit) + " m");
-    line += ", " + upText(applied.up) + "-up" + (applied.up == UpAxis::Z ? " turned Y-up" : "") +
+    line += ", " + upText(applied.up) + "-up" + (applied.up == UpAxis::Y ? " turned Z-up" : "") +
             origin(applied.up == file.values.up, file.upSource, upText(file.values.up) + "-up");
     if (imported.timeShift != 0.0)
         line += ", key times moved by " + formatNumber(imported.timeShift) + " s to start at 0";

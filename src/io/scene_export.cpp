@@ -3,6 +3,7 @@
 #include "io/assimp_math.h"
 #include "io/baked_scene.h"
 #include "io/fbx_scene_writer.h"
+#include "io/up_axis.h"
 #include "core/number_text.h"
 #include "model/output_target.h"
 #include "model/track_evaluation.h"
@@ -244,6 +245,24 @@ aiMaterial* defaultMaterial()
 
 // The aiScene of a baked scene: one node per object under a root, the meshes (one aiMesh for objects
 // that share a Mesh), and the baked motion as one animation.
+// glTF is Y-up by its specification, Assimp's Collada writer says Y_UP, and OBJ is Y-up by custom:
+// Gyre's Z-up scene goes out turned, yUpToZUp()⁻¹ before each top-level pose, which Gyre's import and
+// Blender's importers turn back. (FBX says Z-up in its GlobalSettings and goes out as it is.)
+void turnZUpToYUp(BakedScene& baked)
+{
+    const Eigen::Quaterniond turn = yUpToZUp().conjugate();
+    const auto turned = [&turn](const Pose& pose) {
+        return Pose{(turn * pose.orientation).normalized(), turn * pose.position};
+    };
+    for (BakedObject& object : baked.objects) {
+        if (object.parent)
+            continue;
+        object.startPose = turned(object.startPose);
+        for (model::TimedPose& sample : object.samples)
+            sample.pose = turned(sample.pose);
+    }
+}
+
 std::unique_ptr<aiScene> assimpScene(const BakedScene& baked)
 {
     auto result = std::make_unique<aiScene>();
@@ -355,7 +374,9 @@ ExportReport exportScene(const model::Scene& scene, const QString& path, SceneFo
         throw OutputError(path, FileError::tr("the scene has no meshes, and OBJ holds nothing else").toStdString());
     if (!keepsMotion(format))
         report.warnings << FileError::tr("OBJ holds no motion: the meshes are written as posed at the start time");
-    const BakedScene baked = SceneBaker(scene, path, fps, report).bake(keepsMotion(format));
+    BakedScene baked = SceneBaker(scene, path, fps, report).bake(keepsMotion(format));
+    if (format != SceneFormat::Fbx)
+        turnZUpToYUp(baked);
     if (format == SceneFormat::Fbx) {
         std::string bytes;
         try {

@@ -533,10 +533,10 @@ void shiftTimes(model::Scene& scene, const std::set<model::ObjectId>& animated, 
                 key.time += shift;
 }
 
-// A Z-up scene turned Y-up: -90° about X (Z becomes Y, Y becomes -Z) before each top-level pose.
-void turnZUpToYUp(model::Scene& scene)
+// A Y-up scene turned Z-up, Gyre's world: yUpToZUp() before each top-level pose.
+void turnYUpToZUp(model::Scene& scene)
 {
-    const Eigen::Quaterniond turn(Eigen::AngleAxisd(-M_PI / 2.0, Eigen::Vector3d::UnitX()));
+    const Eigen::Quaterniond turn = yUpToZUp();
     for (model::SceneObject& object : scene.objects)
         if (object.parent == model::kNoObject)
             for (model::Keyframe& key : object.track.keys)
@@ -598,8 +598,8 @@ SceneImport importScene(const QString& path, const ImportOptions& options)
     if (options.timeOrigin == TimeOrigin::FirstKey && std::isfinite(earliest))
         result.timeShift = -earliest;
     shiftTimes(result.scene, builder.animatedObjects(), result.timeShift);
-    if (result.applied.up == UpAxis::Z)
-        turnZUpToYUp(result.scene);
+    if (result.applied.up == UpAxis::Y)
+        turnYUpToZUp(result.scene);
     result.scene.fps = result.applied.fps;
     setTimeRange(animations, result.timeShift, result.scene);
     return result;

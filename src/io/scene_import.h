@@ -16,14 +16,15 @@
 //   and every value of a node without a channel, is the node's own transform; a node without a
 //   channel gets one key at time 0. Imported tracks use slerp, which plays the file's motion.
 // - Settings (ImportSettings): frame rate, unit and up axis as the file says (scene_import_settings.h)
-//   unless the options say otherwise; positions and meshes are scaled to metres, a Z-up scene turned
-//   Y-up, and the times moved so the first key is at 0 unless TimeOrigin::File.
+//   unless the options say otherwise; positions and meshes are scaled to metres, a Y-up scene turned
+//   Z-up (Gyre's world), and the times moved so the first key is at 0 unless TimeOrigin::File.
 // - Scale: Gyre's tracks are rigid. A node's scale (its first scaling key when animated) is baked
 //   into its own mesh; a uniform scale also into its descendants' positions and meshes. A scale that
 //   changes over time, or that is not uniform on a node with children, is reported as a warning.
 // - Skinning, morph targets, cameras, lights and materials are not imported (warnings say so).
 
 #include "core/name_table.h"
+#include "io/up_axis.h"
 #include "model/input_error.h"
 #include "model/scene.h"
 
@@ -38,11 +39,6 @@ namespace gyre {
 
 // The ticks per second assumed when a file gives none: what Assimp's own viewer assumes.
 inline constexpr double kDefaultTicksPerSecond = 25.0;
-
-// The axis a file calls up. Gyre's world is Y-up: a Z-up file is turned by -90° about X (Z becomes Y,
-// Y becomes -Z), the conversion Blender's exporters apply, on its top-level objects.
-enum class UpAxis : quint8 { Y = 1, Z = 2 };
-inline constexpr NameTable<UpAxis, 2> kUpAxisNames{{{UpAxis::Y, "y"}, {UpAxis::Z, "z"}}};
 
 // Where the imported motion's time 0 is. FirstKey (the default): the earliest key of the imported
 // motion is at t = 0 whatever the format (FBX and BVH files say so already; glTF and Collada from

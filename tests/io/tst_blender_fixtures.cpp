@@ -25,7 +25,9 @@ namespace {
 
 using test::kPi;
 
-const QString kData = QStringLiteral(GYRE_TEST_DATA);
+// The committed files, or a folder the script just wrote (tests/interop: Blender run live).
+const QString kData = qEnvironmentVariableIsSet("GYRE_BLENDER_FILES") ? qEnvironmentVariable("GYRE_BLENDER_FILES")
+                                                                     : QStringLiteral(GYRE_TEST_DATA);
 const QStringList kObjects{QStringLiteral("Quat"), QStringLiteral("EulerXYZ"), QStringLiteral("ChildZXY")};
 
 QString dataFile(const QString& name) { return kData + QLatin1Char('/') + name; }
@@ -77,8 +79,9 @@ double degrees(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b)
     return a.angularDistance(b) * 180.0 / kPi;
 }
 
-// Blender's Z-up world seen Y-up, as its exporters convert it: -90° about X (Z up becomes Y up).
-const Eigen::Quaterniond kZUpToYUp(Eigen::AngleAxisd(-kPi / 2.0, Eigen::Vector3d::UnitX()));
+// A Y-up world seen Z-up, as Gyre's and Blender's are: +90° about X (Y up becomes Z up). Blender's
+// exporters turn its world by the inverse for Y-up formats.
+const Eigen::Quaterniond kYUpToZUp(Eigen::AngleAxisd(kPi / 2.0, Eigen::Vector3d::UnitX()));
 
 } // namespace
 
@@ -98,8 +101,9 @@ void TstBlenderFixtures::everyObjectMovesAsBlenderEvaluatedIt_data()
 {
     QTest::addColumn<QString>("file");
     QTest::addColumn<double>("toleranceDegrees");
-    // FBX turns the world (the root objects) to Y-up; glTF turns every node's frame, so a world
-    // orientation R becomes C R C⁻¹; Collada stays Z-up and Gyre turns it as FBX does.
+    // Gyre's world is Z-up as Blender's. FBX turns the world (the root objects) to Y-up and Gyre turns
+    // it back; glTF turns every node's frame too, so a world orientation R is C R C⁻¹ in the file
+    // (C = kYUpToZUp⁻¹) and R·C⁻¹ after Gyre's turn; Collada stays Z-up and is not turned.
     QTest::addColumn<bool>("framesTurned");
     QTest::newRow("fbx") << "blender_three_objects.fbx" << 0.01 << false;
     QTest::newRow("glb") << "blender_three_objects.glb" << 0.2 << true;
@@ -131,11 +135,9 @@ void TstBlenderFixtures::everyObjectMovesAsBlenderEvaluatedIt()
             const double time = (frame.frame - frames.front().frame) / 30.0;
             const Pose gyre = worldPose(scene, *object, time);
             const Pose& blender = frame.poses.at(name);
-            Eigen::Quaterniond expected = kZUpToYUp * blender.orientation;
-            if (framesTurned)
-                expected = expected * kZUpToYUp.conjugate();
+            const Eigen::Quaterniond expected = framesTurned ? blender.orientation * kYUpToZUp : blender.orientation;
             const double angle = degrees(gyre.orientation, expected);
-            const double distance = (gyre.position - kZUpToYUp * blender.position).norm();
+            const double distance = (gyre.position - blender.position).norm();
             worstDegrees = std::max(worstDegrees, angle);
             worstMetres = std::max(worstMetres, distance);
             QVERIFY2(angle <= toleranceDegrees,
@@ -237,15 +239,15 @@ void TstBlenderFixtures::optionsOverrideWhatTheFileSays()
     QVERIFY(std::abs(shifted.timeShift + 1.0 / 30.0) < 1e-6);
     QCOMPARE(unshifted.timeShift, 0.0);
     QVERIFY(std::abs(unshifted.scene.objects.at(0).track.keys.front().time - 1.0 / 30.0) < 1e-6);
-    // Read as Z-up, the top-level objects are turned once more, by -90° about X.
-    const Pose before = shifted.scene.objects.at(0).track.keys.back().pose;
-    const Pose after = unshifted.scene.objects.at(0).track.keys.back().pose;
-    QVERIFY(degrees(after.orientation, kZUpToYUp * before.orientation) < 1e-9);
-    QVERIFY((after.position - kZUpToYUp * before.position).norm() < 1e-9);
+    // Read as Z-up, the top-level objects miss the turn a Y-up file gets, +90° about X.
+    const Pose turned = shifted.scene.objects.at(0).track.keys.back().pose;
+    const Pose asIs = unshifted.scene.objects.at(0).track.keys.back().pose;
+    QVERIFY(degrees(turned.orientation, kYUpToZUp * asIs.orientation) < 1e-9);
+    QVERIFY((turned.position - kYUpToZUp * asIs.position).norm() < 1e-9);
 }
 
 // Blender's Collada says <unit meter="1"/> and Z_UP. The same file in centimetres comes in 100 times
-// smaller; said to be Y-up, it is not turned; said to be X-up, it is read as Y-up with a warning.
+// smaller; said to be Y-up, it is turned Z-up; said to be X-up, it is read as Y-up with a warning.
 void TstBlenderFixtures::colladaUnitAndUpAxisComeFromItsAsset()
 {
     QFile original(dataFile(QStringLiteral("blender_three_objects.dae")));
@@ -276,9 +278,9 @@ void TstBlenderFixtures::colladaUnitAndUpAxisComeFromItsAsset()
 
     const SceneImport yUp = importScene(variant("y.dae", R"(<unit meter="1"/>)", "<up_axis>Y_UP</up_axis>"));
     QCOMPARE(yUp.file.values.up, UpAxis::Y);
-    const Pose turned = metres.scene.objects.front().track.keys.back().pose;
-    const Pose asIs = yUp.scene.objects.front().track.keys.back().pose;
-    QVERIFY(degrees(turned.orientation, kZUpToYUp * asIs.orientation) < 1e-9);
+    const Pose asIs = metres.scene.objects.front().track.keys.back().pose;
+    const Pose turned = yUp.scene.objects.front().track.keys.back().pose;
+    QVERIFY(degrees(turned.orientation, kYUpToZUp * asIs.orientation) < 1e-9);
 
     const SceneImport xUp = importScene(variant("x.dae", R"(<unit meter="1"/>)", "<up_axis>X_UP</up_axis>"));
     QCOMPARE(xUp.file.values.up, UpAxis::Y);

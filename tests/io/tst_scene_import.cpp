@@ -24,6 +24,15 @@ namespace {
 // Assimp keeps rotations and positions in single precision.
 constexpr double kFloatTolerance = 1e-6;
 
+// The file's poses as they are: taken as Z-up, Gyre's world, so nothing is turned. The tests of keys,
+// hierarchy and scale use it; a file's up axis is tested on its own (bvhStandsUp, tst_blender_fixtures).
+SceneImport importAsIs(const QString& file)
+{
+    ImportOptions options;
+    options.up = UpAxis::Z;
+    return importScene(file, options);
+}
+
 const model::SceneObject* objectNamed(const model::Scene& scene, const QString& name)
 {
     for (const model::SceneObject& object : scene.objects)
@@ -88,6 +97,7 @@ private slots:
     void frameRateFromTheKeys_data();
     void frameRateFromTheKeys();
     void bvhKeysComeThroughExactly();
+    void bvhStandsUp();
     void missingEmptyAndDirectory();
     void randomBytes_data();
     void randomBytes();
@@ -111,7 +121,7 @@ void TstSceneImport::keysAtTheUnionOfRotationAndPositionTimes()
                                      {nodeAnimation("joint", {{0, aboutZ(0.0)}, {10, aboutZ(0.6)}, {20, aboutZ(1.0)}},
                                                     {{5, p[0]}, {20, p[1]}, {30, p[2]}})})});
     writeAssbin(*scene, path("union.assbin"));
-    const SceneImport imported = importScene(path("union.assbin"));
+    const SceneImport imported = importAsIs(path("union.assbin"));
 
     QCOMPARE(imported.scene.objects.size(), std::size_t{1});
     const model::MotionTrack& track = imported.scene.objects[0].track;
@@ -163,7 +173,7 @@ void TstSceneImport::hierarchyMeshesAndStaticNodes()
     attachMeshes(*addNode(*body, "head", headTransform), {1});
     addNode(*scene->mRootNode, "lamp");
     writeAssbin(*scene, path("hierarchy.assbin"));
-    const SceneImport imported = importScene(path("hierarchy.assbin"));
+    const SceneImport imported = importAsIs(path("hierarchy.assbin"));
 
     const std::vector<model::SceneObject>& objects = imported.scene.objects;
     QCOMPARE(objects.size(), std::size_t{3});
@@ -203,7 +213,7 @@ void TstSceneImport::rootThatCarriesSomethingIsAnObject()
     aiMatrix4x4::Translation({0, 0, 4}, scene->mRootNode->mTransformation);
     attachMeshes(*addNode(*scene->mRootNode, "child"), {0});
     writeAssbin(*scene, path("root.assbin"));
-    const SceneImport imported = importScene(path("root.assbin"));
+    const SceneImport imported = importAsIs(path("root.assbin"));
     QCOMPARE(imported.scene.objects.size(), std::size_t{2});
     QCOMPARE(imported.scene.objects[0].name, QStringLiteral("root"));
     QCOMPARE(imported.scene.objects[1].parent, imported.scene.objects[0].id);
@@ -438,7 +448,7 @@ void TstSceneImport::bvhKeysComeThroughExactly()
     const double frameTime = 1.0 / 30.0;
     const QString file = path("chain.bvh");
     writeFile(file, bvhChain(joints, frames, frameTime));
-    const SceneImport imported = importScene(file);
+    const SceneImport imported = importAsIs(file);
     QVERIFY(std::abs(imported.scene.fps - 1.0 / frameTime) < 1e-4); // Assimp reads the frame time as a float
     QCOMPARE(imported.file.fpsSource, QStringLiteral("the BVH frame time"));
     for (int j = 0; j < joints; ++j) {
@@ -458,6 +468,33 @@ void TstSceneImport::bvhKeysComeThroughExactly()
             QVERIFY((key.pose.position - position).norm() < 1e-5);
         }
     }
+}
+
+// BVH is Y-up: by default its root joint, the only top-level object, is turned +90° about X into
+// Gyre's Z-up world, so the skeleton's bones, along +Y in the file, point up (+Z); the joints below
+// keep their keys. Taken as Z-up it would lie on the floor.
+void TstSceneImport::bvhStandsUp()
+{
+    const QString file = path("standing.bvh");
+    writeFile(file, bvhChain(3, 4, 1.0 / 30.0));
+    const SceneImport standing = importScene(file);
+    const SceneImport lying = importAsIs(file);
+    QCOMPARE(standing.file.values.up, UpAxis::Y);
+    const Eigen::Quaterniond turn(Eigen::AngleAxisd(kPi / 2.0, Eigen::Vector3d::UnitX()));
+    for (std::size_t i = 0; i < standing.scene.objects.size(); ++i) {
+        const bool topLevel = standing.scene.objects[i].parent == model::kNoObject;
+        QCOMPARE(topLevel, i == 0);
+        for (std::size_t k = 0; k < standing.scene.objects[i].track.keys.size(); ++k) {
+            const Pose a = lying.scene.objects[i].track.keys[k].pose;
+            const Pose expected = topLevel ? Pose{turn * a.orientation, turn * a.position} : a;
+            QVERIFY(poseDistance(standing.scene.objects[i].track.keys[k].pose, expected) < 1e-12);
+        }
+    }
+    // Up in the file is up in Gyre: the first bone's height above the floor (its y in the file, Y-up)
+    // is its z in Gyre, and its depth (z in the file, toward the viewer) is −y.
+    const Eigen::Vector3d bone = standing.scene.objects[0].track.keys[0].pose.orientation * Eigen::Vector3d::UnitY();
+    const Eigen::Vector3d fileBone = lying.scene.objects[0].track.keys[0].pose.orientation * Eigen::Vector3d::UnitY();
+    QVERIFY(std::abs(bone.z() - fileBone.y()) < 1e-12 && std::abs(bone.y() + fileBone.z()) < 1e-12);
 }
 
 void TstSceneImport::missingEmptyAndDirectory()

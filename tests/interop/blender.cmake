@@ -1,0 +1,33 @@
+# Blender 3.4 (Debian's `blender`), a real client written by others, both ways:
+# - blender_exports_scenes runs make_fixtures.py: Blender builds its three-object scene and exports it
+#   with its default FBX, glb and Collada settings; tst_blender_exports then imports what it wrote, as
+#   tst_blender_fixtures does the committed copies, and checks every frame against Blender's own
+#   evaluation (0.01° FBX and Collada, 0.2° glb).
+# - blender_imports_gyre_fbx_<sample>: gyre-cli exports every bundled sample as FBX, Blender imports it with its
+#   default importer, and every object's pose at every baked time must match gyre-cli bake (0.01°),
+#   with the project's frame rate and the clip's full length.
+# scripts/install-deps.sh installs Blender with the other packages; without it these tests fail and
+# say so, rather than pass unseen.
+find_program(GYRE_BLENDER blender)
+set(blender_exports ${CMAKE_CURRENT_BINARY_DIR}/blender-exports)
+if(GYRE_BLENDER)
+    set(blender_command ${GYRE_BLENDER} -b --factory-startup --python-exit-code 1 --python)
+else()
+    set(blender_command ${CMAKE_COMMAND} -E echo "blender is not installed: run scripts/install-deps.sh" && false)
+endif()
+
+add_test(NAME blender_exports_scenes
+         COMMAND ${blender_command} ${CMAKE_CURRENT_SOURCE_DIR}/make_fixtures.py -- ${blender_exports})
+set_tests_properties(blender_exports_scenes PROPERTIES LABELS interop FIXTURES_SETUP blender_exports)
+
+add_test(NAME tst_blender_exports COMMAND tst_blender_fixtures)
+set_tests_properties(tst_blender_exports PROPERTIES LABELS interop FIXTURES_REQUIRED blender_exports
+    ENVIRONMENT "GYRE_BLENDER_FILES=${blender_exports};QT_QPA_PLATFORM=offscreen;LSAN_OPTIONS=suppressions=${PROJECT_SOURCE_DIR}/tests/sanitizers/lsan-assimp.supp")
+
+file(GLOB bundled_samples ${PROJECT_SOURCE_DIR}/resources/samples/*.gyre)
+foreach(sample IN LISTS bundled_samples)
+    get_filename_component(name ${sample} NAME_WE)
+    add_test(NAME blender_imports_gyre_fbx_${name}
+             COMMAND ${blender_command} ${CMAKE_CURRENT_SOURCE_DIR}/blender_import_fbx.py -- $<TARGET_FILE:gyre-cli> ${sample})
+    set_tests_properties(blender_imports_gyre_fbx_${name} PROPERTIES LABELS interop)
+endforeach()
