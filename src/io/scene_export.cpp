@@ -355,7 +355,9 @@ ExportReport exportScene(const model::Scene& scene, const QString& path, SceneFo
         throw OutputError(path, FileError::tr("the scene has no meshes, and OBJ holds nothing else").toStdString());
     if (!keepsMotion(format))
         report.warnings << FileError::tr("OBJ holds no motion: the meshes are written as posed at the start time");
-    const BakedScene baked = SceneBaker(scene, path, fps, report).bake(keepsMotion(format));
+    BakedScene baked = SceneBaker(scene, path, fps, report).bake(keepsMotion(format));
+    if (format == SceneFormat::Gltf || format == SceneFormat::Glb)
+        report.warnings << prepareGltfTimes(baked, scene); // float32, not negative, increasing
     if (format == SceneFormat::Fbx) {
         std::string bytes;
         try {
