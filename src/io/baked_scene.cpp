@@ -12,15 +12,15 @@ namespace {
 
 // A sample's time as glTF readers read it: float32 seconds, which Assimp's reader (Gyre's own import)
 // multiplies by 1000 in float32 to get milliseconds. That product's step is up to 1.024 times the
-// seconds' step, so two float32 seconds one step apart can become the same millisecond; samples with
-// the same milliseconds have the same seconds too (rounding is monotonic), so merging by milliseconds
-// makes both increase strictly.
+// seconds' step, so two float32 seconds one step apart can become the same millisecond. Samples with
+// the same seconds have the same milliseconds, and rounding is monotonic, so once no two samples share
+// their milliseconds, both the seconds and the milliseconds increase strictly.
 float readTime(const model::TimedPose& sample)
 {
     return static_cast<float>(static_cast<float>(sample.time) * 1000.0f);
 }
 
-// One sample per float32 time (prepareGltfTimes); `keyTimes` increasing, shifted as the samples are.
+// One sample per time as read back (readTime, prepareGltfTimes); `keyTimes` increasing, shifted as the samples are.
 std::vector<model::TimedPose> mergedSamples(const std::vector<model::TimedPose>& samples,
                                             const std::vector<double>& keyTimes)
 {
