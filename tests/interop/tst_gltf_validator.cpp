@@ -175,11 +175,13 @@ private slots:
     void validatesAndImportsBack_data()
     {
         QTest::addColumn<QString>("project");
-        for (const QFileInfo& sample : QDir(GYRE_SAMPLES_DIR).entryInfoList({"*.gyre"}, QDir::Files, QDir::Name))
+        const QFileInfoList samples = QDir(GYRE_SAMPLES_DIR).entryInfoList({"*.gyre"}, QDir::Files, QDir::Name);
+        QVERIFY2(!samples.isEmpty(), GYRE_SAMPLES_DIR);
+        for (const QFileInfo& sample : samples)
             QTest::newRow(qPrintable(sample.fileName())) << sample.filePath();
         const std::pair<const char*, model::Scene> hostile[] = {
-            {"keys 1e-9 s apart", closeKeys()}, {"times near 1e6 s", farTimes()}, {"times before 0 s", negativeTimes()},
-            {"a single key", singleKey()},
+            {"keys 1e-9 s apart", closeKeys()}, {"times near 1e6 s", farTimes()},
+            {"times before 0 s", negativeTimes()}, {"a single key", singleKey()},
             {"an object without a mesh", meshless()}, {"UTF-8 names", utf8Names()}};
         for (const auto& [name, project] : hostile) {
             const QString file = path(QString(name).replace(' ', '_') + ".gyre");
