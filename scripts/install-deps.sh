@@ -6,10 +6,14 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 list="$here/packaging/debian-packages.txt"
 
 mapfile -t wanted < <(sed -e 's/#.*//' -e 's/[[:space:]]//g' "$list" | grep -v '^$')
+# What installed packages provide counts as installed: a nodejs from elsewhere that bundles npm
+# provides npm and conflicts with Debian's.
+provided="$(dpkg-query -W -f='${db:Status-Abbrev} ${Provides}\n' | awk '$1 == "ii"' | cut -d' ' -f2- |
+            tr ',' '\n' | sed -e 's/(.*)//' -e 's/[[:space:]]//g')"
 missing=()
 for package in "${wanted[@]}"; do
     status="$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)"
-    [[ "$status" == "install ok installed" ]] || missing+=("$package")
+    [[ "$status" == "install ok installed" ]] || grep -qx "$package" <<<"$provided" || missing+=("$package")
 done
 [[ ${#missing[@]} -eq 0 ]] && exit 0
 

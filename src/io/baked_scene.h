@@ -2,10 +2,13 @@
 // A scene as the exporters write it (scene_export.h): each object with a name unique in the file, its
 // parent resolved to an earlier object, its local pose at the start time, its mesh checked, and its
 // motion baked (model::bakeTrack). Both writers, Assimp's and Gyre's FBX writer, start from it.
+// Its objects are the scene's, in the scene's order.
 
 #include "core/pose.h"
 #include "model/scene.h"
 #include "model/track_evaluation.h"
+
+#include <QStringList>
 
 #include <cstddef>
 #include <optional>
@@ -26,5 +29,17 @@ struct BakedScene {
     std::vector<BakedObject> objects;
     model::BakeRange range; // the scene's start and end time and the frame rate of the bake
 };
+
+// Makes `baked`, the bake of `scene` (its objects in the scene's order), hold the times glTF asks of an
+// animation sampler's input: float32 seconds, the first not below 0, strictly increasing.
+// - A scene that starts before 0 s is moved later by its start, so that it starts at 0.
+// - Two baked times a float32 step apart or less (keys 1e-9 s apart; frames at 30 fps near 1e6 s,
+//   where the step is 1/16 s) round to the same float32, and Assimp's glTF reader, Gyre's own import,
+//   turns float32 seconds into float32 milliseconds, which can join two seconds one step apart. Of each
+//   run of an object's samples that read back as the same milliseconds, one is kept: the last at one of
+//   the object's key times (the artist's pose), else the last of the run. Rounding is monotonic, so the
+//   kept times strictly increase as float32 seconds and as Assimp's milliseconds.
+// Returns a warning for each of these that changed something.
+QStringList prepareGltfTimes(BakedScene& baked, const model::Scene& scene);
 
 } // namespace gyre

@@ -377,6 +377,8 @@ ExportReport exportScene(const model::Scene& scene, const QString& path, SceneFo
     BakedScene baked = SceneBaker(scene, path, fps, report).bake(keepsMotion(format));
     if (format != SceneFormat::Fbx)
         turnZUpToYUp(baked);
+    if (format == SceneFormat::Gltf || format == SceneFormat::Glb)
+        report.warnings << prepareGltfTimes(baked, scene); // float32, not negative, increasing
     if (format == SceneFormat::Fbx) {
         std::string bytes;
         try {

@@ -543,7 +543,8 @@ void turnYUpToZUp(model::Scene& scene)
                 key.pose = {(turn * key.pose.orientation).normalized(), turn * key.pose.position};
 }
 
-// The span of the motion: from the earliest key to the latest key or the animations' end.
+// The span of the motion: from the earliest key to the latest key or the animations' end; a still
+// scene gets the span of a new project.
 void setTimeRange(const std::vector<const aiAnimation*>& animations, double shift, model::Scene& scene)
 {
     double start = std::numeric_limits<double>::infinity();
@@ -556,6 +557,8 @@ void setTimeRange(const std::vector<const aiAnimation*>& animations, double shif
     }
     scene.startTime = std::isfinite(start) ? start : 0.0;
     scene.endTime = std::isfinite(end) ? std::max(end, scene.startTime) : scene.startTime;
+    if (!(scene.endTime > scene.startTime)) // a still scene: the span a new project has, to key in
+        scene.endTime = scene.startTime + (model::Scene{}.endTime - model::Scene{}.startTime);
     scene.currentTime = scene.startTime;
 }
 

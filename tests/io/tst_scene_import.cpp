@@ -204,6 +204,9 @@ void TstSceneImport::hierarchyMeshesAndStaticNodes()
         QCOMPARE(object.track.keys.size(), std::size_t{1});
     QVERIFY(poseDistance(objects[0].track.keys[0].pose, {Eigen::Quaterniond::Identity(), {1, 2, 3}}) < kFloatTolerance);
     QVERIFY(poseDistance(objects[1].track.keys[0].pose, {aboutZd(0.5), Eigen::Vector3d::Zero()}) < kFloatTolerance);
+    // A still scene gets a new project's span, so it can be saved and keyed.
+    QCOMPARE(imported.scene.startTime, 0.0);
+    QCOMPARE(imported.scene.endTime, model::Scene{}.endTime);
 }
 
 void TstSceneImport::rootThatCarriesSomethingIsAnObject()
