@@ -2,6 +2,7 @@
 
 #include "model/commands/set_keyframe_time_command.h"
 
+#include <QEvent>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -104,19 +105,20 @@ TimelineWidget::TimelineWidget(model::Document& document, Selection& selection, 
 {
     setFocusPolicy(Qt::StrongFocus);
     setAttribute(Qt::WA_OpaquePaintEvent);
-    auto repaint = [this] { update(); };
-    connect(&document_, &model::Document::currentTimeChanged, this, repaint);
-    connect(&document_, &model::Document::sceneSettingsChanged, this, repaint);
+    // The cursor alone moves with the current time; the rest is redrawn when what it shows changes.
+    connect(&document_, &model::Document::currentTimeChanged, this, [this] { update(); });
+    auto invalidate = [this] { invalidateStaticLayer(); };
+    connect(&document_, &model::Document::sceneSettingsChanged, this, invalidate);
     connect(&document_, &model::Document::keyframesChanged, this, [this](model::ObjectId id) {
         if (id == selection_.object())
-            update();
+            invalidateStaticLayer();
     });
     connect(&document_, &model::Document::sceneReset, this, [this] {
         // The keys a drag was moving are gone with the old scene.
         endKeyDrag();
-        update();
+        invalidateStaticLayer();
     });
-    connect(&selection_, &Selection::changed, this, repaint);
+    connect(&selection_, &Selection::changed, this, invalidate);
 }
 
 QSize TimelineWidget::sizeHint() const
@@ -163,14 +165,58 @@ std::optional<QPoint> TimelineWidget::keyMarkerCentre(std::size_t key) const
     return QPoint(static_cast<int>(std::lround(xForTime(object->track.keys[key].time))), keyLaneRect().center().y());
 }
 
-void TimelineWidget::paintEvent(QPaintEvent*)
+void TimelineWidget::invalidateStaticLayer()
 {
-    QPainter painter(this);
+    staticLayerStale_ = true;
+    // A hidden widget is not painted: the layer is rebuilt at the first paint once it is shown.
+    update();
+}
+
+void TimelineWidget::resizeEvent(QResizeEvent* event)
+{
+    staticLayerStale_ = true;
+    QWidget::resizeEvent(event);
+}
+
+void TimelineWidget::changeEvent(QEvent* event)
+{
+    switch (event->type()) {
+    case QEvent::PaletteChange:
+    case QEvent::FontChange:
+    case QEvent::StyleChange:
+    case QEvent::LanguageChange: // the labels' "s" and "f"
+        invalidateStaticLayer();
+        break;
+    default:
+        break;
+    }
+    QWidget::changeEvent(event);
+}
+
+void TimelineWidget::rebuildStaticLayer()
+{
+    const qreal pixelRatio = devicePixelRatioF();
+    staticLayer_ = QPixmap((QSizeF(size()) * pixelRatio).toSize());
+    staticLayer_.setDevicePixelRatio(pixelRatio);
+    QPainter painter(&staticLayer_);
+    painter.setFont(font()); // a painter on a pixmap starts with the application's font, not the widget's
     painter.setRenderHint(QPainter::Antialiasing);
     painter.fillRect(rulerRect(), palette().button());
     painter.fillRect(keyLaneRect(), palette().base());
     paintRuler(painter);
     paintKeyMarkers(painter);
+    staticLayerStale_ = false;
+    ++staticLayerBuilds_;
+}
+
+void TimelineWidget::paintEvent(QPaintEvent*)
+{
+    // The screen's pixel ratio changes when the window moves to another screen.
+    if (staticLayerStale_ || staticLayer_.devicePixelRatio() != devicePixelRatioF())
+        rebuildStaticLayer();
+    QPainter painter(this);
+    painter.drawPixmap(0, 0, staticLayer_);
+    painter.setRenderHint(QPainter::Antialiasing);
     paintCursor(painter);
     if (hasFocus()) {
         painter.setPen(QPen(palette().highlight(), 1.0));

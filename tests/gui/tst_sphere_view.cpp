@@ -3,8 +3,11 @@
 // direction of its angular velocity circles z and each direction belongs to one time. A stroke drawn
 // over that curve arrives in one undo step with the times of the curve under its ends; turning the
 // sphere changes nothing in the document; erasing the middle of a stroke splits it; the pad sets the
-// pattern; Escape takes back a stroke being drawn.
+// pattern; Escape takes back a stroke being drawn. All but the current-time dot is drawn into cached
+// images, redrawn when the curves or the view change and not when only the time moves; a hidden view
+// samples nothing while the scene plays, and catches up when shown.
 
+#include "app/playback.h"
 #include "app/selection.h"
 #include "app/sketch/direction_sketch_panel.h"
 #include "app/sketch/pattern_pad.h"
@@ -13,6 +16,7 @@
 #include "fit/angular_velocity_target.h"
 #include "gui_test_support.h"
 #include "jobs/sketch_fit.h"
+#include "model/commands/add_keyframe_command.h"
 #include "model/commands/add_stroke_command.h"
 #include "model/commands/apply_fit_result_command.h"
 #include "model/commands/import_objects_command.h"
@@ -29,7 +33,9 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <vector>
@@ -445,7 +451,77 @@ private slots:
         QCOMPARE(document_->undoStack().count(), steps);
     }
 
+    void movingTheCurrentTimeRedrawsOnlyTheDot()
+    {
+        view_->grabFramebuffer(); // whatever the set-up left to redraw
+        const int builds = view_->layerBuilds();
+        for (double seconds : {1.2, 1.6, 2.0}) {
+            document_->setCurrentTime(seconds);
+            const QImage shot = view_->grabFramebuffer();
+            const Eigen::Vector3d dot = *app::directionAt(view_->curves().motion, seconds);
+            QVERIFY(view_->facesViewer(dot));
+            const QPointF pixel = view_->projectToWidget(dot) * view_->devicePixelRatioF();
+            const QColor colour = shot.pixelColor(pixel.toPoint());
+            // The dot's gold, not the orange of the curve under it.
+            QVERIFY2(colour.red() > 200 && colour.green() > 180 && colour.blue() < 90, qPrintable(colour.name()));
+        }
+        QCOMPARE(view_->layerBuilds(), builds);
+
+        // Turning the sphere redraws the layers once, however many moves the paint follows.
+        const QPointF centre(view_->width() / 2.0, view_->height() / 2.0);
+        dragThrough(view_, {centre, centre + QPointF(20, 0), centre + QPointF(40, 10)}, Qt::RightButton);
+        view_->grabFramebuffer();
+        QCOMPARE(view_->layerBuilds(), builds + 1);
+
+        // New curves redraw them too.
+        QSignalSpy updated(view_, &app::SphereView::curvesUpdated);
+        addKeyAfterTheLast();
+        QVERIFY(updated.wait(5000));
+        view_->grabFramebuffer();
+        QCOMPARE(view_->layerBuilds(), builds + 2);
+    }
+
+    void aHiddenViewSamplesNothingWhilePlayingUntilShown()
+    {
+        app::Playback playback(*document_);
+        QSignalSpy updated(view_, &app::SphereView::curvesUpdated);
+        QSignalSpy frames(document_.get(), &model::Document::currentTimeChanged);
+        panel_->hide();
+        const int builds = view_->layerBuilds();
+        playback.play();
+        addKeyAfterTheLast(); // the motion now runs to 3.5 s
+        // Ten frames of playback, far longer than the sampler's interval.
+        while (frames.count() < 10)
+            QVERIFY(frames.wait(5000));
+        QCOMPARE(updated.count(), 0);
+        QCOMPARE(view_->layerBuilds(), builds);
+        QVERIFY(lastMotionTime() <= kLastKey + 1e-9);
+
+        panel_->show();
+        QVERIFY(updated.wait(5000));
+        QVERIFY(lastMotionTime() > kLastKey + 0.25);
+        playback.pause();
+    }
+
 private:
+    // A key at 3.5 s turned on from the last one, so that the motion goes on past kLastKey.
+    void addKeyAfterTheLast()
+    {
+        model::Keyframe key = track().keys.back();
+        key.time = kLastKey + 0.5;
+        key.pose.orientation = Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitY()) * key.pose.orientation;
+        document_->undoStack().push(new model::AddKeyframeCommand(*document_, object_, key));
+    }
+
+    double lastMotionTime() const
+    {
+        double last = -std::numeric_limits<double>::infinity();
+        for (const app::DirectionRun& run : view_->curves().motion)
+            if (!run.empty())
+                last = std::max(last, run.back().time);
+        return last;
+    }
+
     const model::MotionTrack& track() const { return document_->object(object_)->track; }
     const std::vector<model::DirectionStroke>& strokes() const { return track().sketch.directionStrokes; }
 

@@ -1,14 +1,18 @@
 // The timeline driven with the mouse on the bundled sample (keys at 0, 1, ..., 5 s, 30 fps): dragging
 // a key marker retimes the key by the distance dragged, one undo step per drag, and stops before its
 // neighbour; clicking the ruler scrubs without an undo step; clicking a marker selects the key. The
-// bar above it edits the time range as one undo step.
+// bar above it edits the time range as one undo step. The ruler and the markers are drawn into a cached
+// pixmap, redrawn when a key or the range changes and not when only the current time moves.
 
 #include "app/main_window.h"
 #include "app/timeline_widget.h"
 #include "gui_test_support.h"
+#include "model/commands/add_keyframe_command.h"
+#include "model/commands/set_time_range_command.h"
 
 #include <QApplication>
 #include <QDoubleSpinBox>
+#include <QImage>
 #include <QMouseEvent>
 #include <QTest>
 
@@ -138,7 +142,89 @@ private slots:
         QCOMPARE(end->value(), 6.0);
     }
 
+    void movingTheCurrentTimeRedrawsOnlyTheCursor()
+    {
+        window_->document().setCurrentTime(0.0);
+        timeline_->grab(); // whatever the window's set-up left to redraw
+        const int builds = timeline_->staticLayerBuilds();
+        for (double seconds : {0.5, 1.5, 2.5, 3.5}) {
+            window_->document().setCurrentTime(seconds);
+            const QImage shot = timeline_->grab().toImage();
+            // The cursor's red line crosses the key lane above the markers.
+            const QColor cursor = pixelAt(shot, QPointF(timeline_->xForTime(seconds), timeline_->keyLaneRect().top() + 3));
+            QVERIFY2(cursor.red() > 150 && cursor.green() < 120, qPrintable(cursor.name()));
+        }
+        QCOMPARE(timeline_->staticLayerBuilds(), builds);
+    }
+
+    void addingAKeyDrawsItsMarker()
+    {
+        model::Document& document = window_->document();
+        document.setCurrentTime(0.0); // the cursor away from the new key
+        const QPointF centre(timeline_->xForTime(2.5), timeline_->keyLaneRect().center().y());
+        QCOMPARE(markerPixels(timeline_->grab().toImage(), centre), 0);
+        const int builds = timeline_->staticLayerBuilds();
+
+        model::Keyframe key = window_->selection().selectedObject()->track.keys[kDraggedKey];
+        key.time = 2.5; // between the keys at 2 s and 3 s
+        document.undoStack().push(new model::AddKeyframeCommand(document, window_->selection().object(), key));
+        QVERIFY(markerPixels(timeline_->grab().toImage(), centre) > 0);
+        QCOMPARE(timeline_->staticLayerBuilds(), builds + 1);
+
+        document.undoStack().undo();
+        QCOMPARE(markerPixels(timeline_->grab().toImage(), centre), 0);
+        QCOMPARE(timeline_->staticLayerBuilds(), builds + 2);
+    }
+
+    void changingTheRangeOrTheSizeRedrawsTheMarkers()
+    {
+        model::Document& document = window_->document();
+        document.setCurrentTime(0.0);
+        const QPoint before = *timeline_->keyMarkerCentre(4);
+        QVERIFY(markerPixels(timeline_->grab().toImage(), before) > 0);
+        const int builds = timeline_->staticLayerBuilds();
+
+        // Twice the range: the key at 4 s moves left, where no key was.
+        const model::Scene& scene = document.scene();
+        document.undoStack().push(
+            new model::SetTimeRangeCommand(document, {scene.fps, scene.startTime, 2.0 * scene.endTime}));
+        const QPoint after = *timeline_->keyMarkerCentre(4);
+        QVERIFY(after.x() < before.x() - 20);
+        QImage shot = timeline_->grab().toImage();
+        QVERIFY(markerPixels(shot, after) > 0);
+        QCOMPARE(markerPixels(shot, before), 0);
+        QCOMPARE(timeline_->staticLayerBuilds(), builds + 1);
+
+        // Narrower: the markers follow the new width.
+        timeline_->resize(timeline_->width() - 200, timeline_->height());
+        const QPoint narrower = *timeline_->keyMarkerCentre(4);
+        QVERIFY(narrower.x() < after.x());
+        shot = timeline_->grab().toImage();
+        QVERIFY(markerPixels(shot, narrower) > 0);
+        QCOMPARE(timeline_->staticLayerBuilds(), builds + 2);
+    }
+
 private:
+    // The colour of the grabbed widget at a widget point, whatever the device pixel ratio.
+    static QColor pixelAt(const QImage& shot, const QPointF& point)
+    {
+        const QPointF pixel = point * shot.devicePixelRatio();
+        return shot.pixelColor(static_cast<int>(std::floor(pixel.x())), static_cast<int>(std::floor(pixel.y())));
+    }
+
+    // How many pixels within a marker's half-width of `centre` differ from the key lane's background:
+    // none where no marker is drawn, the diamond's outline and fill where one is.
+    int markerPixels(const QImage& shot, const QPointF& centre) const
+    {
+        const QColor background = timeline_->palette().color(QPalette::Base);
+        int count = 0;
+        for (int dy = -4; dy <= 4; ++dy)
+            for (int dx = -4; dx <= 4; ++dx)
+                if (pixelAt(shot, centre + QPointF(dx, dy)) != background)
+                    ++count;
+        return count;
+    }
+
     double keyTime(std::size_t key) const
     {
         return window_->selection().selectedObject()->track.keys[key].time;

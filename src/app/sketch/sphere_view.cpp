@@ -6,11 +6,12 @@
 
 #include <QAction>
 #include <QActionGroup>
+#include <QEvent>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QRadialGradient>
-#include <QSurfaceFormat>
+#include <QShowEvent>
 
 #include <algorithm>
 #include <array>
@@ -56,6 +57,24 @@ QPen faded(QPen pen, double opacity)
     color.setAlphaF(static_cast<float>(static_cast<double>(color.alphaF()) * opacity));
     pen.setColor(color);
     return pen;
+}
+
+// The current-time dot at `opacity`, centred in a transparent image with room for its rim's pen and
+// the antialiasing around it.
+QImage currentTimeDot(double opacity, qreal pixelRatio)
+{
+    const double half = kCurrentTimeRadius + 2.0;
+    QImage dot((QSizeF(2.0 * half, 2.0 * half) * pixelRatio).toSize(), QImage::Format_ARGB32_Premultiplied);
+    dot.setDevicePixelRatio(pixelRatio);
+    dot.fill(Qt::transparent);
+    QPainter painter(&dot);
+    painter.setRenderHint(QPainter::Antialiasing);
+    QColor fill = kCurrentTimeColor;
+    fill.setAlphaF(static_cast<float>(opacity));
+    painter.setBrush(fill);
+    painter.setPen(faded(QPen(kRimColor, 1.5), opacity));
+    painter.drawEllipse(QPointF(half, half), kCurrentTimeRadius, kCurrentTimeRadius);
+    return dot;
 }
 
 // Circles of latitude every 30° about the world z axis, and meridians every 30°.
@@ -128,32 +147,36 @@ SphereView::SphereView(model::Document& document, Selection& selection, QWidget*
           },
           [this](const SphereCurves& curves) { showCurves(curves); })
 {
-    // QPainter draws smooth lines on an OpenGL surface only with multisampling.
-    QSurfaceFormat surface = format();
-    surface.setSamples(4);
-    setFormat(surface);
     setFocusPolicy(Qt::StrongFocus);
     setCursor(Qt::CrossCursor);
     createActions();
 
     auto recomputeFor = [this](model::ObjectId id) {
         if (id == selection_.object())
-            sampler_.schedule();
+            scheduleSampling();
     };
     connect(&document_, &model::Document::keyframesChanged, this, recomputeFor);
     connect(&document_, &model::Document::trackSettingsChanged, this, recomputeFor);
     connect(&document_, &model::Document::sketchChanged, this, [this](model::ObjectId id) {
         if (id == selection_.object()) {
-            update(); // the strokes as drawn, at once; the patterned ones and a new fit follow
-            sampler_.schedule();
+            invalidateLayers(); // the strokes as drawn, at once; the patterned ones and a new fit follow
+            scheduleSampling();
         }
     });
-    connect(&document_, &model::Document::sceneSettingsChanged, this, [this] { sampler_.schedule(); });
+    connect(&document_, &model::Document::sceneSettingsChanged, this, [this] {
+        invalidateLayers(); // the time ticks, at once; the curves over the new range follow
+        scheduleSampling();
+    });
+    connect(&document_, &model::Document::objectChanged, this, [this](model::ObjectId id) {
+        if (id == selection_.object())
+            invalidateLayers(); // the message names the object
+    });
     connect(&document_, &model::Document::sceneReset, this, [this] {
         endDrag();
         forgetCurves();
-        sampler_.schedule();
+        scheduleSampling();
     });
+    // Only the dot moves: update() repaints the cached layers, and does nothing while the view is hidden.
     connect(&document_, &model::Document::currentTimeChanged, this, [this] { update(); });
     connect(&selection_, &Selection::changed, this, [this, shown = selection.object()]() mutable {
         if (selection_.object() == shown)
@@ -161,9 +184,9 @@ SphereView::SphereView(model::Document& document, Selection& selection, QWidget*
         shown = selection_.object();
         endDrag();
         forgetCurves();
-        sampler_.schedule();
+        scheduleSampling();
     });
-    sampler_.schedule();
+    scheduleSampling();
 }
 
 SphereView::~SphereView() = default;
@@ -195,7 +218,7 @@ void SphereView::createActions()
     addAction(resetViewAction_);
     connect(resetViewAction_, &QAction::triggered, this, [this] {
         projection_.setRotation(SphereProjection::defaultRotation());
-        update();
+        invalidateLayers();
     });
 }
 
@@ -245,19 +268,37 @@ QString SphereView::message() const
 // ---------------------------------------------------------------------------------------------
 // Curves
 
+void SphereView::scheduleSampling()
+{
+    if (!isVisible()) {
+        samplingDeferred_ = true;
+        return;
+    }
+    sampler_.schedule();
+}
+
+void SphereView::showEvent(QShowEvent* event)
+{
+    if (samplingDeferred_) {
+        samplingDeferred_ = false;
+        sampler_.schedule();
+    }
+    QOpenGLWidget::showEvent(event);
+}
+
 void SphereView::forgetCurves()
 {
     // Another object's curves are not shown, not even until this one's arrive.
     curves_ = {};
     curvesShown_ = false;
-    update();
+    invalidateLayers();
 }
 
 void SphereView::showCurves(SphereCurves curves)
 {
     curves_ = std::move(curves);
     curvesShown_ = selection_.selectedObject() != nullptr;
-    update();
+    invalidateLayers();
     emit curvesUpdated();
 }
 
@@ -267,7 +308,15 @@ void SphereView::showCurves(SphereCurves curves)
 void SphereView::resizeEvent(QResizeEvent* event)
 {
     projection_.setViewportSize(width(), height());
+    layersStale_ = true;
     QOpenGLWidget::resizeEvent(event);
+}
+
+void SphereView::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::FontChange || event->type() == QEvent::LanguageChange)
+        invalidateLayers();
+    QOpenGLWidget::changeEvent(event);
 }
 
 void SphereView::mousePressEvent(QMouseEvent* event)
@@ -302,7 +351,7 @@ void SphereView::mouseMoveEvent(QMouseEvent* event)
     switch (drag_) {
     case DragKind::Turn:
         projection_.turnTo(event->position());
-        update();
+        invalidateLayers();
         break;
     case DragKind::Draw:
         extendStroke(event->position());
@@ -405,21 +454,65 @@ void SphereView::cancelDrag()
 // ---------------------------------------------------------------------------------------------
 // Drawing
 
+void SphereView::invalidateLayers()
+{
+    layersStale_ = true;
+    update();
+}
+
+QImage SphereView::layerImage() const
+{
+    const qreal pixelRatio = devicePixelRatioF();
+    QImage image((QSizeF(size()) * pixelRatio).toSize(), QImage::Format_ARGB32_Premultiplied);
+    image.setDevicePixelRatio(pixelRatio);
+    image.fill(Qt::transparent);
+    return image;
+}
+
+void SphereView::rebuildLayers()
+{
+    auto startPainting = [this](QPainter& painter) {
+        painter.setRenderHint(QPainter::Antialiasing);
+        painter.setRenderHint(QPainter::TextAntialiasing);
+        painter.setFont(font()); // a painter on an image starts with the application's font
+    };
+    const bool selected = selection_.selectedObject() != nullptr;
+    backLayer_ = layerImage();
+    backLayer_.fill(kBackground);
+    if (selected) {
+        QPainter painter(&backLayer_);
+        startPainting(painter);
+        drawSphereLayers(painter, Side::Back);
+    }
+    frontLayer_ = layerImage();
+    {
+        QPainter painter(&frontLayer_);
+        startPainting(painter);
+        if (selected) {
+            drawDisc(painter);
+            drawSphereLayers(painter, Side::Front);
+            drawLegend(painter);
+        }
+        drawMessage(painter, message());
+    }
+    currentTimeDots_[static_cast<std::size_t>(Side::Back)] = currentTimeDot(kBackOpacity, devicePixelRatioF());
+    currentTimeDots_[static_cast<std::size_t>(Side::Front)] = currentTimeDot(1.0, devicePixelRatioF());
+    layersStale_ = false;
+    ++layerBuilds_;
+}
+
 void SphereView::paintGL()
 {
+    // The screen's pixel ratio changes when the window moves to another screen.
+    if (layersStale_ || backLayer_.devicePixelRatio() != devicePixelRatioF())
+        rebuildLayers();
     QPainter painter(this);
-    painter.setRenderHint(QPainter::Antialiasing);
-    painter.setRenderHint(QPainter::TextAntialiasing);
-    painter.fillRect(rect(), kBackground);
-    if (selection_.selectedObject() == nullptr) {
-        drawMessage(painter, message());
-        return;
-    }
-    drawSphereLayers(painter, Side::Back);
-    drawDisc(painter);
-    drawSphereLayers(painter, Side::Front);
-    drawLegend(painter);
-    drawMessage(painter, message());
+    painter.drawImage(QPointF(0.0, 0.0), backLayer_);
+    if (selection_.selectedObject() != nullptr)
+        drawCurrentTime(painter, Side::Back);
+    painter.drawImage(QPointF(0.0, 0.0), frontLayer_);
+    if (selection_.selectedObject() != nullptr)
+        drawCurrentTime(painter, Side::Front);
 }
 
 void SphereView::drawSphereLayers(QPainter& painter, Side side) const
@@ -430,7 +523,6 @@ void SphereView::drawSphereLayers(QPainter& painter, Side side) const
     drawStrokes(painter, side);
     drawMotion(painter, side);
     drawTimeTicks(painter, side);
-    drawCurrentTime(painter, side);
 }
 
 void SphereView::drawDisc(QPainter& painter) const
@@ -577,13 +669,11 @@ void SphereView::drawCurrentTime(QPainter& painter, Side side) const
     const std::optional<Eigen::Vector3d> direction = directionAt(curves_.motion, document_.scene().currentTime);
     if (!direction || projection_.facesViewer(*direction) != (side == Side::Front))
         return;
-    const double opacity = side == Side::Front ? 1.0 : kBackOpacity;
-    QColor fill = kCurrentTimeColor;
-    fill.setAlphaF(static_cast<float>(opacity));
-    painter.setBrush(fill);
-    painter.setPen(faded(QPen(kRimColor, 1.5), opacity));
-    painter.drawEllipse(projection_.project(*direction), kCurrentTimeRadius, kCurrentTimeRadius);
-    painter.setBrush(Qt::NoBrush);
+    const QImage& dot = currentTimeDots_[static_cast<std::size_t>(side)];
+    // Its corner on a device pixel, so that the image is copied rather than resampled.
+    const double pixelRatio = dot.devicePixelRatio();
+    const QPointF corner = projection_.project(*direction) - QPointF(dot.width(), dot.height()) / (2.0 * pixelRatio);
+    painter.drawImage(QPointF(std::round(corner.x() * pixelRatio), std::round(corner.y() * pixelRatio)) / pixelRatio, dot);
 }
 
 void SphereView::drawLegend(QPainter& painter) const
