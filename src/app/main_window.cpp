@@ -13,6 +13,7 @@
 #include "app/time_bar.h"
 #include "app/timeline_widget.h"
 #include "app/viewport/viewport.h"
+#include "app/wheel_guard.h"
 #include "io/scene_import.h"
 #include "model/input_error.h"
 #include "ui_main_window.h"
@@ -65,6 +66,17 @@ QString projectFilter()
     return MainWindow::tr("Gyre projects (*.gyre)");
 }
 
+// `panel` in a scroll area that fills `dockLayout`: the panel keeps its own height, and the dock can be
+// made shorter than it, leaving the height of the window to the plots that need it.
+void addScrolled(QLayout* dockLayout, QWidget* panel)
+{
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(panel);
+    dockLayout->addWidget(scroll);
+}
+
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -74,6 +86,8 @@ MainWindow::MainWindow(QWidget* parent)
     , playback_(document_)
 {
     registerResources();
+    // Before any box is made, so that every one is guarded from its first polish.
+    WheelGuard::install(this);
     ui_->setupUi(this);
     setUpActions();
     setUpDocks();
@@ -172,9 +186,10 @@ void MainWindow::setUpDocks()
     for (QDockWidget* dock : {outlinerDock, ui_->inspectorDock, ui_->screwBenderDock, ui_->historyDock, ui_->timelineDock,
                               ui_->smoothnessDock, ui_->sphereDock, ui_->fitDock, ui_->magnitudeDock})
         ui_->menuPanels->addAction(dock->toggleViewAction());
-    // The history dock has its own action in the Edit menu, kept in step with the dock.
-    connect(ui_->actionUndoHistory, &QAction::toggled, ui_->historyDock, &QDockWidget::setVisible);
-    connect(ui_->historyDock, &QDockWidget::visibilityChanged, ui_->actionUndoHistory, &QAction::setChecked);
+    // The history dock has its own action in the Edit menu, checked while the dock is open, as the
+    // dock's own action in View ▸ Panels is (tabbed behind another dock included).
+    connect(ui_->actionUndoHistory, &QAction::triggered, this, &MainWindow::toggleUndoHistory);
+    connect(ui_->historyDock->toggleViewAction(), &QAction::toggled, ui_->actionUndoHistory, &QAction::setChecked);
     // Three smoothness plots need height more than width: they share the right side with the
     // inspector, leaving the bottom to the speed plot and the timeline.
     tabifyDockWidget(ui_->inspectorDock, ui_->smoothnessDock);
@@ -188,13 +203,28 @@ void MainWindow::setUpDocks()
     splitDockWidget(ui_->magnitudeDock, ui_->timelineDock, Qt::Vertical);
 }
 
+void MainWindow::toggleUndoHistory()
+{
+    QDockWidget* dock = ui_->historyDock;
+    // Tabbed behind another dock, it is open but unseen: it comes to the front rather than closing.
+    const bool inFront = !dock->isHidden() && !dock->visibleRegion().isEmpty();
+    if (inFront) {
+        dock->hide();
+    } else {
+        dock->show();
+        dock->raise();
+    }
+    ui_->actionUndoHistory->setChecked(!dock->isHidden());
+}
+
 void MainWindow::createViews()
 {
     ui_->inspectorDockLayout->addWidget(new InspectorWidget(document_, selection_, ui_->inspectorDockContents));
-    ui_->screwBenderDockLayout->addWidget(new ScrewBenderPanel(document_, selection_, ui_->screwBenderDockContents));
+    // Scrolled, so that the sphere above it and the speed plot below can be given the column's height.
+    addScrolled(ui_->screwBenderDockLayout, new ScrewBenderPanel(document_, selection_));
     ui_->timelineDockLayout->addWidget(new TimeBar(document_, ui_->timelineDockContents));
     ui_->timelineDockLayout->addWidget(new TimelineWidget(document_, selection_, playback_, ui_->timelineDockContents), 1);
-    ui_->smoothnessDockLayout->addWidget(new SmoothnessPanel(document_, selection_, ui_->smoothnessDockContents));
+    addScrolled(ui_->smoothnessDockLayout, new SmoothnessPanel(document_, selection_));
     ui_->magnitudeDockLayout->addWidget(new MagnitudePlot(document_, selection_, ui_->magnitudeDockContents));
     createFitViews();
     createViewport();
@@ -218,11 +248,7 @@ void MainWindow::createFitViews()
 {
     fitController_ = new FitController(document_, selection_, this);
     // Scrolled, like the inspector it shares its tabs with, so its height does not set the window's.
-    auto* scroll = new QScrollArea(ui_->fitDockContents);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(new FitPanel(document_, selection_, *fitController_, scroll));
-    ui_->fitDockLayout->addWidget(scroll);
+    addScrolled(ui_->fitDockLayout, new FitPanel(document_, selection_, *fitController_));
     statusBar()->addPermanentWidget(new FitProgress(*fitController_, *statusBar(), statusBar()));
 }
 
@@ -255,17 +281,37 @@ void MainWindow::createViewport()
     // A live fit's motion follows the pen while a stroke is drawn.
     connect(fitController_, &FitController::previewChanged, viewport_, &Viewport::setPreviewTrack);
 
+    showFrameRateWhileMoving();
+}
+
+void MainWindow::showFrameRateWhileMoving()
+{
     auto* frameStats = new QLabel(statusBar());
-    frameStats->setToolTip(tr("Viewport frame rate while drawing, and the time to subdivide the trail: "
+    frameStats->setObjectName(QStringLiteral("frameRateLabel"));
+    frameStats->setToolTip(tr("Viewport frame rate while something moves, and the time to subdivide the trail: "
                               "on the worker, and from the request to its arrival"));
+    frameStats->hide();
     statusBar()->addPermanentWidget(frameStats);
+    // An idle window redraws now and then (a tooltip, a panel's resize): its rate says nothing.
+    const auto moving = [this] { return playback_.isPlaying() || viewport_->isDragging(); };
     connect(viewport_, &Viewport::frameStatsChanged, frameStats,
-            [frameStats](double framesPerSecond, double subdivisionMs, double latencyMs) {
+            [frameStats, moving](double framesPerSecond, double subdivisionMs, double latencyMs) {
+                if (!moving())
+                    return;
                 frameStats->setText(tr("%1 fps · subdivision %2 ms (%3 ms to arrive)")
                                         .arg(framesPerSecond, 0, 'f', 0)
                                         .arg(subdivisionMs, 0, 'f', 1)
                                         .arg(latencyMs, 0, 'f', 1));
+                frameStats->show();
             });
+    const auto hideWhenStill = [frameStats, moving] {
+        if (!moving()) {
+            frameStats->hide();
+            frameStats->clear();
+        }
+    };
+    connect(&playback_, &Playback::playingChanged, frameStats, hideWhenStill);
+    connect(viewport_, &Viewport::draggingChanged, frameStats, hideWhenStill);
 }
 
 void MainWindow::restoreLayout()

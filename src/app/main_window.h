@@ -65,6 +65,9 @@ protected:
 private:
     void setUpActions();
     void setUpDocks();
+    // Edit ▸ Undo History: brings the history to the front, open or tabbed behind another dock, or
+    // closes it when it is in front.
+    void toggleUndoHistory();
     void createViews();
     // The sphere to draw the angular velocity's direction on, or a note saying why there is none.
     void createSphereView();
@@ -72,6 +75,8 @@ private:
     void createFitViews();
     // The 3D viewport in the middle, or a note saying why there is none.
     void createViewport();
+    // The viewport's frame rate in the status bar, shown only while playback or a drag moves the view.
+    void showFrameRateWhileMoving();
     void restoreLayout();
     void saveLayout() const;
     void updateTitle();

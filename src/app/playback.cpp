@@ -40,6 +40,11 @@ void Playback::pause()
     if (!isPlaying())
         return;
     timer_.stop();
+    // Playing passes between frames; it stops on the nearest one, the frame the time bar names, so
+    // that a key made now lands on it.
+    const model::Scene& scene = document_.scene();
+    const double frame = std::round(scene.currentTime * scene.fps);
+    document_.setCurrentTime(std::clamp(frame / scene.fps, scene.startTime, scene.endTime));
     emit playingChanged(false);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Playing the scene: moves the document's current time at wall-clock speed between the scene's start
-// and end, stepping a frame at a time, looping or stopping at the end. Scrubbing and playing change
+// and end, stepping a frame at a time, looping or stopping at the end; paused, it rests on a frame
+// (a multiple of 1/fps, as keys snap to). Scrubbing and playing change
 // only the current time, which is not undoable (document.h).
 
 #include "model/document.h"

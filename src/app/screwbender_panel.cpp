@@ -9,7 +9,9 @@
 #include "ui_screwbender_panel.h"
 
 #include <QSignalBlocker>
+#include <QUndoCommand>
 
+#include <memory>
 #include <stdexcept>
 
 namespace gyre::app {
@@ -50,6 +52,14 @@ QString schemeLabel(SubdivisionScheme scheme)
         return ScrewBenderPanel::tr("Jarek");
     }
     return {};
+}
+
+// Whether `settings` are still those every track starts with.
+bool isUntouched(const SubdivisionSettings& settings)
+{
+    const SubdivisionSettings initial;
+    return settings.scheme == initial.scheme && settings.levels == initial.levels && settings.cyclic == initial.cyclic
+           && settings.decoupled == initial.decoupled;
 }
 
 } // namespace
@@ -135,10 +145,28 @@ void ScrewBenderPanel::applyInterpolation()
     if (method == selection_.selectedObject()->track.interpolation)
         return;
     try {
-        pushAlone(document_.undoStack(), new model::SetInterpolationCommand(document_, selection_.object(), method));
+        pushAlone(document_.undoStack(), interpolationChange(method));
     } catch (const std::invalid_argument& error) {
         showError(tr("The interpolation was not changed: %1.").arg(QString::fromUtf8(error.what())));
     }
+}
+
+QUndoCommand* ScrewBenderPanel::interpolationChange(InterpolationMethod method) const
+{
+    const model::ObjectId object = selection_.object();
+    const SubdivisionSettings& subdivision = selection_.selectedObject()->track.subdivision;
+    // A track that becomes a screw track with the subdivision never set is open: most motions do
+    // not return to their start, and a cyclic polyscrew would bend the last key back to the first.
+    // Ticking cyclic makes it a cycle.
+    if (method != InterpolationMethod::Screw || !isUntouched(subdivision))
+        return new model::SetInterpolationCommand(document_, object, method);
+    auto both = std::make_unique<QUndoCommand>(tr("Interpolate by Screws"));
+    SubdivisionSettings open = subdivision;
+    open.cyclic = false;
+    // Children of `both`, which owns them; open first, so that the pose count is checked for it.
+    new model::SetSubdivisionCommand(document_, object, open, both.get());
+    new model::SetInterpolationCommand(document_, object, method, both.get());
+    return both.release();
 }
 
 void ScrewBenderPanel::applySubdivision()

@@ -9,6 +9,8 @@
 
 #include <QWidget>
 
+class QUndoCommand;
+
 #include <memory>
 
 namespace Ui {
@@ -27,6 +29,9 @@ public:
 private:
     void showSelectedTrack();
     void applyInterpolation();
+    // The undo step that makes the selected track interpolate by `method`; a new screw track is open.
+    // Throws std::invalid_argument as the commands do.
+    QUndoCommand* interpolationChange(InterpolationMethod method) const;
     // Sets the track's subdivision to what the scheme, levels, sequence and decoupled widgets show.
     void applySubdivision();
     void showError(const QString& message);

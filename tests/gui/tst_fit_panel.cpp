@@ -230,7 +230,7 @@ private slots:
         });
         QTRY_VERIFY_WITH_TIMEOUT(!progress_->isVisible(), kFitTimeoutMilliseconds);
         QVERIFY(roundsShown > 0);
-        QCOMPARE(statusBar_->currentMessage(), QStringLiteral("Fit cancelled."));
+        QCOMPARE(statusBar_->currentMessage(), QStringLiteral("Fit cancelled; nothing was applied."));
         QVERIFY(!controller_->isFitting());
         QVERIFY(button("fitButton")->isEnabled());
         QTest::qWait(300);
@@ -381,7 +381,7 @@ private slots:
         const int stepsAfterEdit = stack.count();
         auto* status = panel_->findChild<QLabel*>(QStringLiteral("fitStatusLabel"));
         QTRY_VERIFY_WITH_TIMEOUT(!controller_->isFitting(), kFitTimeoutMilliseconds);
-        QCOMPARE(status->text(), QStringLiteral("Fit dropped: the track changed while it ran."));
+        QCOMPARE(status->text(), QStringLiteral("Fit not applied: the track changed while it ran."));
         QCOMPARE(stack.count(), stepsAfterEdit);
         QVERIFY(track().sketch.fittedCurve.empty());
     }

@@ -9,6 +9,7 @@
 #include "gui_test_support.h"
 #include "model/commands/apply_fit_result_command.h"
 #include "model/commands/import_objects_command.h"
+#include "model/commands/retime_keyframes_command.h"
 #include "model/commands/set_fit_window_command.h"
 #include "model/commands/set_magnitude_curve_command.h"
 #include "model/commands/set_time_range_command.h"
@@ -267,16 +268,62 @@ private slots:
         QVERIFY(std::abs(window().first - 2.0) <= secondsPerPixel());
     }
 
-    void withoutAWindowTheBandIsImpliedAndADragSetsOne()
+    void withoutAWindowTheBandIsImpliedAndThePanToolSetsOne()
     {
         QVERIFY(!plot_->shownWindowIsOwn());
         QCOMPARE(plot_->shownWindow(), std::optional(std::pair(0.0, double(kKeyCount - 1))));
+        plot_->panAction()->trigger();
         dragBy(edge(0.0), 1.0);
         QVERIFY(track().sketch.window.has_value());
         QVERIFY(plot_->shownWindowIsOwn());
         QVERIFY(std::abs(window().first - 1.0) <= secondsPerPixel());
         document_->undoStack().undo();
         QVERIFY(!track().sketch.window.has_value());
+    }
+
+    void theFirstStrokeDrawsOverTheImpliedBandsEdgeAndGrip()
+    {
+        // The implied window spans the keys, 0 to 5 s: a stroke from its start edge, in its grip strip,
+        // draws and leaves the window alone.
+        QVERIFY(!plot_->shownWindowIsOwn());
+        const QPointF start = grip(0.0);
+        const double topMagnitude = plot_->valueAt(start).second;
+        draw({{0.0, topMagnitude}, {1.0, topMagnitude}, {2.0, topMagnitude}});
+        QVERIFY(!track().sketch.window.has_value());
+        QCOMPARE(track().sketch.magnitude.size(), std::size_t(3));
+        QVERIFY(std::abs(track().sketch.magnitude.front().time) <= secondsPerPixel());
+        QCOMPARE(document_->undoStack().count(), 1);
+        QCOMPARE(document_->undoStack().text(0), QStringLiteral("Draw Magnitude Curve"));
+    }
+
+    void theHeightFollowsTheMotionUnlessZoomedByHand()
+    {
+        // Keys twice as close turn twice as fast: the curve doubles, and the value axis follows it.
+        const double highestBefore = highest(Curve::Current);
+        QVERIFY(plot_->plot()->yAxis->range().upper >= highestBefore);
+        retime(0.5);
+        QVERIFY(highest(Curve::Current) > 1.9 * highestBefore);
+        QVERIFY2(plot_->plot()->yAxis->range().upper >= highest(Curve::Current),
+                 qPrintable(QStringLiteral("%1 shown for a curve up to %2")
+                                .arg(plot_->plot()->yAxis->range().upper)
+                                .arg(highest(Curve::Current))));
+        QCOMPARE(plot_->plot()->yAxis->range().lower, 0.0);
+
+        // Panned by hand, the view stays where the artist put it while the motion changes...
+        plot_->panAction()->trigger();
+        const QPointF middle = plot_->plotArea().center();
+        dragThrough(plot_->plot(), {middle, middle + QPointF(0, 20), middle + QPointF(0, 40)});
+        QVERIFY(plot_->viewMovedByHand());
+        const QCPRange panned = plot_->plot()->yAxis->range();
+        retime(2.0);
+        QCOMPARE(plot_->plot()->yAxis->range().lower, panned.lower);
+        QCOMPARE(plot_->plot()->yAxis->range().upper, panned.upper);
+        // ...until Fit View (a double-click, or F), which shows the curves again.
+        QTest::mouseDClick(plot_->plot(), Qt::LeftButton, {}, middle.toPoint());
+        QVERIFY(!plot_->viewMovedByHand());
+        QCOMPARE(plot_->plot()->yAxis->range().lower, 0.0);
+        QVERIFY(plot_->plot()->yAxis->range().upper >= highest(Curve::Current));
+        QVERIFY(plot_->plot()->yAxis->range().upper < 1.5 * highest(Curve::Current));
     }
 
     void aSketchWithoutAWindowImpliesTheSpanItCovers()
@@ -397,6 +444,22 @@ private:
         for (const Aim& aim : aims)
             points.push_back(plot_->pixelFor(aim.time, aim.magnitude));
         dragThrough(plot_->plot(), points);
+    }
+
+    double highest(Curve curve) const
+    {
+        double found = 0.0;
+        for (const QCPGraphData& point : *plot_->graph(curve)->data())
+            found = std::max(found, point.value);
+        return found;
+    }
+
+    // Moves every key to `factor` times its time, one undo step, and waits for the new curves.
+    void retime(double factor)
+    {
+        QSignalSpy updated(plot_.get(), &app::MagnitudePlot::curvesUpdated);
+        document_->undoStack().push(new model::RetimeKeyframesCommand(*document_, object_, factor, 0.0));
+        QVERIFY(updated.wait(5000));
     }
 
     void setWindow(double start, double end)

@@ -528,7 +528,7 @@ private:
             return;
         guide.settle();
         const QString message = guide.fitFromTheFitTab();
-        QVERIFY2(message.startsWith(QStringLiteral("Fit converged")), qPrintable(message));
+        QVERIFY2(message.startsWith(QStringLiteral("Fit applied: the motion now follows the sketch")), qPrintable(message));
         QVERIFY(!guide.track().sketch.fittedCurve.empty());
         guide.settle();
         checkShowsTheFit(guide);

@@ -1,9 +1,11 @@
 #include "app/sketch/fit_controller.h"
 
 #include "app/undo_gesture.h"
+#include "fit/angular_velocity_fit.h"
 #include "jobs/fit_input.h"
 #include "model/commands/apply_fit_result_command.h"
 
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -11,16 +13,36 @@ namespace gyre::app {
 
 namespace {
 
-QString endOfFitMessage(const jobs::FitSummary& summary)
+// What an explicit fit did, in words, once its result is applied to `input`.
+QString appliedFitMessage(const jobs::FitSummary& summary, const model::MotionTrack& input)
 {
-    const QString how = summary.converged ? FitController::tr("Fit converged")
-                                          : FitController::tr("Fit stopped (%1)").arg(summary.outcome);
-    return FitController::tr("%1: %2 rounds, %3 iterations, largest fragment error %4 rad²/s, %5 s.")
-        .arg(how)
+    const QString delta = QString::number(input.sketch.delta, 'g', 3);
+    const QString largest = QString::number(summary.largestFragmentError, 'g', 3);
+    const std::optional<fit::FitOutcome> outcome = valueNamed(fit::kFitOutcomeNames, summary.outcome.toStdString());
+    switch (outcome.value_or(fit::FitOutcome::RoundLimit)) {
+    case fit::FitOutcome::Converged:
+        return FitController::tr("Fit applied: the motion now follows the sketch within δ = %1 rad²/s "
+                                 "(largest error %2, %3 rounds, %4 s).")
+            .arg(delta, largest)
+            .arg(summary.rounds)
+            .arg(summary.seconds, 0, 'g', 2);
+    case fit::FitOutcome::VariableFrameLimit:
+        return FitController::tr("Fit stopped at its limit of added control points, still off the sketch by up "
+                                 "to %1 rad²/s (δ = %2); its last result was applied.")
+            .arg(largest, delta);
+    case fit::FitOutcome::NoPlaceForFrame:
+        return FitController::tr("Fit could not meet δ = %1 rad²/s: where it is furthest off (%2 rad²/s) it has no "
+                                 "room for another control point, often because constrained keys there disagree "
+                                 "with the sketch; its result was applied.")
+            .arg(delta, largest);
+    case fit::FitOutcome::RoundLimit:
+    case fit::FitOutcome::Cancelled: // answered by FitJob::cancelled, never as a result
+        break;
+    }
+    return FitController::tr("Fit stopped after %1 rounds, still off the sketch by up to %2 rad²/s (δ = %3); "
+                             "its last result was applied.")
         .arg(summary.rounds)
-        .arg(summary.iterations)
-        .arg(summary.largestFragmentError, 0, 'g', 3)
-        .arg(summary.seconds, 0, 'g', 2);
+        .arg(largest, delta);
 }
 
 } // namespace
@@ -34,9 +56,9 @@ FitController::FitController(model::Document& document, Selection& selection, QO
             [this](model::ObjectId, const jobs::FitJobProgress& progress) { emit progressed(progress); });
     connect(&fitJob_, &jobs::FitJob::finished, this, &FitController::onFitFinished);
     connect(&fitJob_, &jobs::FitJob::failed, this, [this](model::ObjectId, const QString& message) {
-        emit fitEnded(tr("Fit failed: %1").arg(message));
+        emit fitEnded(tr("Fit failed, nothing was applied: %1").arg(message));
     });
-    connect(&fitJob_, &jobs::FitJob::cancelled, this, [this] { emit fitEnded(tr("Fit cancelled.")); });
+    connect(&fitJob_, &jobs::FitJob::cancelled, this, [this] { emit fitEnded(tr("Fit cancelled; nothing was applied.")); });
 
     connect(&liveJob_, &jobs::FitJob::finished, this,
             [this](model::ObjectId object, const model::MotionTrack& input, const model::FitResult& result,
@@ -95,7 +117,7 @@ void FitController::setLive(bool live)
 void FitController::onFitFinished(model::ObjectId object, const model::MotionTrack& input,
                                   const model::FitResult& result, const jobs::FitSummary& summary)
 {
-    HeldResult held{object, input, result, endOfFitMessage(summary)};
+    HeldResult held{object, input, result, appliedFitMessage(summary, input)};
     if (isMacroOpen(document_.undoStack()))
         heldFit_ = std::move(held);
     else
@@ -107,7 +129,7 @@ void FitController::settleFit(const HeldResult& held)
     if (applyIfCurrent(held.object, held.input, held.result))
         emit fitEnded(held.appliedMessage);
     else
-        emit fitEnded(tr("Fit dropped: the track changed while it ran."));
+        emit fitEnded(tr("Fit not applied: the track changed while it ran."));
 }
 
 void FitController::onLiveFinished(model::ObjectId object, const model::MotionTrack& input,

@@ -384,6 +384,8 @@ void MagnitudePlot::showCurves(const SampledCurves& curves)
     if (fitViewOnNextCurves_) {
         fitViewOnNextCurves_ = false;
         fitView();
+    } else if (!gesture_) {
+        followCurvesHeight();
     }
     plot_->replot();
     emit curvesUpdated();
@@ -442,12 +444,20 @@ void MagnitudePlot::fitView()
 {
     const model::Scene& scene = document_.scene();
     plot_->xAxis->setRange(scene.startTime, scene.endTime);
+    viewMovedByHand_ = false;
+    followCurvesHeight();
+    plot_->replot();
+}
+
+void MagnitudePlot::followCurvesHeight()
+{
+    if (viewMovedByHand_)
+        return;
     double highest = kSmallestShownMagnitude;
     for (QCPGraph* graph : {currentGraph_, sketchedGraph_, fittedGraph_, beforeFitGraph_})
         for (const QCPGraphData& point : *graph->data())
             highest = std::max(highest, point.value);
     plot_->yAxis->setRange(0.0, highest * kHeadroom);
-    plot_->replot();
 }
 
 void MagnitudePlot::clearMagnitude()
@@ -469,6 +479,9 @@ bool MagnitudePlot::eventFilter(QObject* watched, QEvent* event)
         return moved(*static_cast<QMouseEvent*>(event));
     case QEvent::MouseButtonRelease:
         return released(*static_cast<QMouseEvent*>(event));
+    case QEvent::Wheel:
+        viewMovedByHand_ = true; // QCustomPlot zooms
+        return false;
     case QEvent::MouseButtonDblClick:
         if (static_cast<QMouseEvent*>(event)->button() != Qt::LeftButton)
             return false;
@@ -511,6 +524,8 @@ bool MagnitudePlot::moved(const QMouseEvent& event)
     }
     if (event.buttons() == Qt::NoButton)
         updateHoverCursor(event.position());
+    else if (event.buttons().testFlag(Qt::LeftButton) && panAction_->isChecked())
+        viewMovedByHand_ = true; // QCustomPlot pans
     return false;
 }
 
@@ -519,6 +534,9 @@ bool MagnitudePlot::released(const QMouseEvent& event)
     if (event.button() != Qt::LeftButton || !gesture_)
         return false;
     endGesture();
+    // The height held still under the pen now follows what was drawn.
+    followCurvesHeight();
+    plot_->replot();
     return true;
 }
 
@@ -526,6 +544,10 @@ std::optional<MagnitudePlot::WindowPart> MagnitudePlot::windowPartAt(const QPoin
 {
     const QRect area = plotArea();
     if (!shownWindow_ || pixel.y() < area.top() || pixel.y() > area.bottom())
+        return std::nullopt;
+    // The pen draws over the window the fit would take by itself, whose edges are often the keys'
+    // first and last, where a stroke starts; the Pan tool, or a window of the sketch's own, grabs it.
+    if (drawAction_->isChecked() && !shownWindowIsOwn_)
         return std::nullopt;
     const double startX = plot_->xAxis->coordToPixel(shownWindow_->first);
     const double endX = plot_->xAxis->coordToPixel(shownWindow_->second);

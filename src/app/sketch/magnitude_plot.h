@@ -18,10 +18,13 @@
 // - After a fit, |ω| of the fitted motion over the fit's span in red, and in grey dashed the motion
 //   without its fit, to compare before and after.
 //
-// The window's edges and grip take the press in either tool. In the Pan tool a left drag pans; in
-// both the wheel zooms time. Double-click or Fit view shows the scene's range and the curves' height.
-// The view keeps its ranges while the curves change, so the pen's scale never moves under it; another
-// object, scene or time range refits it.
+// The window's edges and grip take the press in the Pan tool, and in the Draw tool when the window is
+// the sketch's own: the dashed window of a track without one spans the keys, where strokes start, and
+// the pen draws over it. In the Pan tool a left drag pans; in both the wheel zooms time. Double-click
+// or Fit view shows the scene's range and the curves' height. The height follows the curves when the
+// motion changes (an edit, a fit), but not while a drag on the plot is open, so the pen's scale never
+// moves under it, nor once the artist has zoomed or panned, until Fit view; another object, scene or
+// time range refits both axes.
 
 #include "app/selection.h"
 #include "app/undo_gesture.h"
@@ -71,6 +74,8 @@ public:
     std::pair<double, double> valueAt(const QPointF& pixel) const;
     // The axis rectangle, in the plot's pixels.
     QRect plotArea() const;
+    // Whether the artist zoomed or panned the view since it was last fitted: then it stays as it is.
+    bool viewMovedByHand() const { return viewMovedByHand_; }
     // The window the band shows, and whether it is the sketch's own rather than implied.
     std::optional<std::pair<double, double>> shownWindow() const { return shownWindow_; }
     bool shownWindowIsOwn() const { return shownWindowIsOwn_; }
@@ -120,6 +125,8 @@ private:
     void showKeys(const SampledCurves& curves);
     void showWindow();
     void moveCursor();
+    // The value axis from zero to above the highest curve, unless the artist zoomed or panned.
+    void followCurvesHeight();
     void showSelection();
     void setTool(bool drawing);
     void showToolCursor();
@@ -158,6 +165,7 @@ private:
     // The object whose curves were last shown: another one refits the view when its curves arrive.
     model::ObjectId shownObject_ = model::kNoObject;
     bool fitViewOnNextCurves_ = true;
+    bool viewMovedByHand_ = false; // zoomed or panned since the last Fit view
 
     std::unique_ptr<UndoGesture> gesture_; // open while a drag edits the document
     model::ObjectId gestureObject_ = model::kNoObject;

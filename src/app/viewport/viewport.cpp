@@ -220,6 +220,7 @@ void Viewport::mousePressEvent(QMouseEvent* event)
         const bool grabbed = handle && handleDrag_.start(*handle, *handles, selection_.object(), *selection_.key(), position, camera_);
         drag_.kind = grabbed ? DragKind::Handle : DragKind::Orbit;
     }
+    setDragging(drag_.kind != DragKind::None);
     event->accept();
 }
 
@@ -258,7 +259,16 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event)
         pickAt(event->position());
     handleDrag_.finish(); // ends the drag's undo step
     drag_.kind = DragKind::None;
+    setDragging(false);
     event->accept();
+}
+
+void Viewport::setDragging(bool dragging)
+{
+    if (dragging == dragging_)
+        return;
+    dragging_ = dragging;
+    emit draggingChanged(dragging_);
 }
 
 void Viewport::wheelEvent(QWheelEvent* event)

@@ -68,6 +68,8 @@ public:
     // Whether the last frame drew the ghost: the original motion differs at the current time.
     bool drewGhost() const { return drewGhost_; }
     std::uint64_t framesDrawn() const { return framesDrawn_; }
+    // Whether a mouse drag orbits, pans or moves a handle, from its press to its release.
+    bool isDragging() const { return dragging_; }
 
     // Where to press to grab a handle of the selected key; nullopt when no key is selected.
     std::optional<QPointF> handleScreenPosition(Handle handle) const;
@@ -81,6 +83,8 @@ signals:
     // to back (pauses of more than kIdleFrameGap are left out), the worker's time for the newest
     // trail, and the time from its request to its arrival on the UI thread.
     void frameStatsChanged(double framesPerSecond, double subdivisionMilliseconds, double subdivisionLatencyMilliseconds);
+    // A drag began or ended (isDragging).
+    void draggingChanged(bool dragging);
 
 protected:
     void initializeGL() override;
@@ -109,6 +113,7 @@ private:
     void releaseGl();
     void buildLines();
     void measureFrame();
+    void setDragging(bool dragging);
 
     model::Document& document_;
     Selection& selection_;
@@ -130,6 +135,7 @@ private:
     std::uint64_t framesDrawn_ = 0;
 
     Drag drag_;
+    bool dragging_ = false;
     HandleDrag handleDrag_;
 
     QElapsedTimer frameClock_;
