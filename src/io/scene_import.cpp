@@ -20,6 +20,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -135,8 +136,9 @@ QString keyProblem(const Key* keys, unsigned count, const char* kind)
     return {};
 }
 
-// The error for a node whose keys keyProblem() refuses.
-InputError nodeKeyError(const QString& path, const aiNode& node, const QString& problem)
+// The error for a node whose keys keyProblem() refuses, or whose mesh checkMesh() refuses:
+// "node 'name': what is wrong".
+InputError nodeError(const QString& path, const aiNode& node, const QString& problem)
 {
     return InputError(path, FileError::tr("node '%1': %2").arg(nameOf(node.mName), problem).toStdString());
 }
@@ -396,6 +398,15 @@ private:
         }
         object.track.interpolation = InterpolationMethod::Slerp;
         object.mesh = meshes_.meshOf(node, inheritedScale * scale, result_.warnings);
+        // The rule every document's mesh keeps (value_checks.h), said of the node here: the parent
+        // applies it again to the reply, where a breach could only read as a malformed reply.
+        if (object.mesh) {
+            try {
+                model::checkMesh(*object.mesh);
+            } catch (const std::invalid_argument& problem) {
+                throw nodeError(path_, node, QString::fromUtf8(problem.what()));
+            }
+        }
         if (!isUniform(scale) && node.mNumChildren > 0)
             result_.warnings << FileError::tr("node '%1' has a non-uniform scale; its children get the mean scale")
                                     .arg(object.name);
@@ -414,7 +425,7 @@ private:
             problem = keyProblem(channel.mPositionKeys, channel.mNumPositionKeys,
                                  QT_TRANSLATE_NOOP("gyre::FileError", "position"));
         if (!problem.isEmpty())
-            throw nodeKeyError(path_, node, problem);
+            throw nodeError(path_, node, problem);
         return keyframesOf(channel, ticksPerSecond(*animated.animation), nodePose, positionScale);
     }
 
@@ -426,7 +437,7 @@ private:
         const QString problem =
             keyProblem(channel.mScalingKeys, channel.mNumScalingKeys, QT_TRANSLATE_NOOP("gyre::FileError", "scaling"));
         if (!problem.isEmpty())
-            throw nodeKeyError(path_, node, problem);
+            throw nodeError(path_, node, problem);
         const Eigen::Vector3d first = toEigen(channel.mScalingKeys[0].mValue);
         for (unsigned i = 1; i < channel.mNumScalingKeys; ++i)
             if ((toEigen(channel.mScalingKeys[i].mValue) - first).norm() > kScaleTolerance * first.norm()) {

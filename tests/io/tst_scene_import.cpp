@@ -99,6 +99,7 @@ private slots:
     void bvhKeysComeThroughExactly();
     void bvhStandsUp();
     void missingEmptyAndDirectory();
+    void meshThatIsNotFiniteIsRefusedNamingItsNode();
     void randomBytes_data();
     void randomBytes();
     void truncatedAndBitFlippedExports_data();
@@ -511,6 +512,22 @@ void TstSceneImport::missingEmptyAndDirectory()
         } catch (const InputError& error) {
             QVERIFY2(QString::fromStdString(error.what()).startsWith(file + ": "), error.what());
         }
+    }
+}
+
+// Found by tst_fuzz_readers: a vertex that overflows float came through the worker, whose parent then
+// refused its reply as malformed, blaming Gyre for the file.
+void TstSceneImport::meshThatIsNotFiniteIsRefusedNamingItsNode()
+{
+    const QString file = path(QStringLiteral("overflowing-vertex.obj"));
+    writeFile(file, "o plate\nv 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n");
+    try {
+        importScene(file);
+        QFAIL("a vertex at infinity was imported");
+    } catch (const InputError& error) {
+        const QString message = QString::fromUtf8(error.what());
+        QVERIFY2(message.startsWith(file + QStringLiteral(": node '")), error.what());
+        QVERIFY2(message.contains(QStringLiteral("mesh position is not finite")), error.what());
     }
 }
 
