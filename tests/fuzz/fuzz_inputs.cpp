@@ -1,7 +1,10 @@
 #include "fuzz_inputs.h"
 
+#include "io/bvh_fixture.h"
 #include "io/number_csv.h"
 #include "io/pose_csv.h"
+#include "io/scene_export.h"
+#include "io/scene_worker.h"
 #include "model/input_error.h"
 #include "model/project_file.h"
 #include "model/track_evaluation.h"
@@ -29,6 +32,10 @@ using model::Scene;
 using model::SceneObject;
 
 constexpr std::array<std::string_view, 4> kOmegaColumns{"time", "wx", "wy", "wz"};
+
+// The seeds are a few kilobytes, which Assimp reads in milliseconds: a mutant that takes the worker
+// longer than this has sent a reader into a loop, and costs a refusal, not a hung test.
+const SceneWorkerLimits kSceneWorkerLimits{qint64{1} << 30, std::chrono::seconds(10)};
 
 Eigen::Quaterniond turn(double degrees, const Eigen::Vector3d& axis)
 {
@@ -182,6 +189,14 @@ QByteArray versionOneProject()
     return QJsonDocument(project).toJson();
 }
 
+// The mesh scene with its screw track the child of its squad track: a hierarchy for the scene formats.
+Scene exchangeScene()
+{
+    Scene scene = meshScene();
+    scene.objects.back().parent = scene.objects.front().id;
+    return scene;
+}
+
 std::vector<Seed> projectSeeds()
 {
     return {{QStringLiteral("keyed.gyre"), Reader::Project, model::projectJson(keyedScene())},
@@ -243,6 +258,20 @@ std::optional<std::string> evaluateTracks(const Scene& scene, Outcome& outcome)
 
 } // namespace
 
+std::vector<Seed> makeSceneSeeds(const QString& scratchDir)
+{
+    std::vector<Seed> seeds;
+    for (const SceneFormat format : {SceneFormat::Glb, SceneFormat::Collada, SceneFormat::Fbx, SceneFormat::Obj}) {
+        const std::string_view extension = nameOf(kSceneFormatNames, format);
+        const QString fileName = QStringLiteral("scene.") + QLatin1String(extension.data(), extension.size());
+        const QString path = QDir(scratchDir).filePath(fileName);
+        exportScene(exchangeScene(), path, format, 10.0);
+        seeds.push_back({fileName, Reader::Scene, contentsOf(path)});
+    }
+    seeds.push_back({QStringLiteral("capture.bvh"), Reader::Scene, test::bvhChain(3, 6, 1.0 / 30.0)});
+    return seeds;
+}
+
 std::vector<Seed> makeSeeds(const QString& scratchDir)
 {
     std::vector<Seed> seeds = poseSeeds(scratchDir);
@@ -269,6 +298,12 @@ Outcome readInput(Reader reader, const QByteArray& bytes, const QString& path)
             outcome.evaluationProblem = evaluateTracks(scene, outcome);
             return outcome;
         }
+        case Reader::Scene: {
+            const Scene scene = importSceneInWorker(path, {}, kSceneWorkerLimits).scene;
+            outcome.accepted = true;
+            outcome.evaluationProblem = evaluateTracks(scene, outcome);
+            return outcome;
+        }
         }
     } catch (const InputError& refusal) {
         outcome.refusal = refusal.what();
@@ -285,11 +320,14 @@ std::optional<std::string> refusalProblem(Reader reader, const std::string& mess
         return "does not begin with the file's path " + prefix;
     const QString rest = QString::fromStdString(message.substr(prefix.size()));
     // CSV: `path:line: what`. Project: `path: field: what`, `path: the top level: what`, or the JSON
-    // parser's `path: not valid JSON: what at byte N`, or `path: is empty; ...`.
+    // parser's `path: not valid JSON: what at byte N`, or `path: is empty; ...`. Scene: `path: what`.
     static const QRegularExpression csvPlace(QStringLiteral("^:[1-9][0-9]*: \\S"));
+    static const QRegularExpression scenePlace(QStringLiteral("^: \\S"));
     static const QRegularExpression projectPlace(
         QStringLiteral("^: (([A-Za-z]+(\\[[0-9]+\\])*)(\\.[A-Za-z]+(\\[[0-9]+\\])*)*: \\S|the top level: \\S|"
                        "not valid JSON: .* at byte [0-9]+$|is empty; )"));
+    if (reader == Reader::Scene)
+        return scenePlace.match(rest).hasMatch() ? std::nullopt : std::optional<std::string>("says nothing after the path");
     const QRegularExpression& place = reader == Reader::Project ? projectPlace : csvPlace;
     if (!place.match(rest).hasMatch())
         return "names no " + std::string(reader == Reader::Project ? "field" : "line") + " after the path";
