@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Builds Gyre's Debian package (Release, `cpack -G DEB`), checks what it holds, and installs it with apt
 # on a clean Debian 12: a minimal system made by debootstrap from Debian's archive, with nothing of the
-# build machine in it. There the installed gyre-cli must run a verb, and the installed gyre must open
-# its bundled sample on a virtual X server and draw its window (kept as build-package/installed-gyre.png
-# to look at). test.sh runs this after the tests. Needs root, or sudo, for debootstrap and chroot.
+# build machine in it (scripts/clean-debian.sh; GYRE_CLEAN_DEBIAN names one already made). There the
+# installed gyre-cli must run a verb, and the installed gyre must open its bundled sample on a virtual
+# X server and draw its window (kept as build-package/installed-gyre.png to look at). test.sh runs this
+# after the tests. Needs root, or sudo, for debootstrap and chroot.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${GYRE_PACKAGE_BUILD_DIR:-$here/build-package}"
-mirror="${GYRE_DEBIAN_MIRROR:-http://deb.debian.org/debian}"
 app_id=org.gyre.Gyre
 
 fail() { echo "package-test: $*" >&2; exit 1; }
@@ -34,19 +34,16 @@ done
 
 sudo_cmd=()
 [[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
-root="$(mktemp -d /tmp/gyre-clean-debian.XXXXXX)"
-chmod 755 "$root" # apt downloads as its own user, _apt, who must reach the system's folders
-# --one-file-system: never follow a mount out of the clean system.
-trap '"${sudo_cmd[@]}" rm -rf --one-file-system "$root"' EXIT
-echo "package-test: making a clean Debian 12 in $root"
-"${sudo_cmd[@]}" debootstrap --variant=minbase bookworm "$root" "$mirror" >"$build/debootstrap.log" \
-    || fail "debootstrap could not make a Debian 12 system from $mirror (log: $build/debootstrap.log)"
-"${sudo_cmd[@]}" cp /etc/resolv.conf "$root/etc/resolv.conf"
-"${sudo_cmd[@]}" tee "$root/etc/apt/sources.list" >/dev/null <<SOURCES
-deb $mirror bookworm main
-deb $mirror bookworm-updates main
-deb ${mirror%/debian}/debian-security bookworm-security main
-SOURCES
+# The clean system scripts/test.sh made while the tests ran, or a new one.
+root="${GYRE_CLEAN_DEBIAN:-}"
+if [[ -z "$root" ]]; then
+    root="$(mktemp -d /tmp/gyre-clean-debian.XXXXXX)"
+    # --one-file-system: never follow a mount out of the clean system.
+    trap '"${sudo_cmd[@]}" rm -rf --one-file-system "$root"' EXIT
+    echo "package-test: making a clean Debian 12 in $root"
+    "$here/scripts/clean-debian.sh" "$root"
+fi
+[[ -x "$root/usr/bin/Xvfb" ]] || fail "$root is not a clean Debian 12 made by scripts/clean-debian.sh"
 "${sudo_cmd[@]}" cp "$package" "$root/tmp/"
 in_root() {
     "${sudo_cmd[@]}" chroot "$root" env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root LANG=C.UTF-8 \
@@ -54,9 +51,7 @@ in_root() {
 }
 
 # As a user installs it: apt fetches what the package depends on.
-# There is no terminal in the chroot for dpkg to log through: Use-Pty=0.
-in_root apt-get update -q
-in_root apt-get install -y -q -o Dpkg::Use-Pty=0 "/tmp/$(basename "$package")" xvfb xauth
+in_root apt-get install -y -q -o Dpkg::Use-Pty=0 "/tmp/$(basename "$package")"
 
 version="$(dpkg-deb --field "$package" Version)"
 [[ "$(in_root gyre-cli --version)" == "gyre-cli $version" ]] || fail "the installed gyre-cli is not the package's version, $version"
