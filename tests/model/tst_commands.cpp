@@ -1,6 +1,7 @@
-// Each command on its own: what it changes, what it refuses, how consecutive edits within a gesture
-// merge into one undo step (tst_gestures has the gestures themselves), and which of the document's signals it emits. Also the document's own state: the current
-// time outside the undo history, and the modified state that follows the stack's clean state.
+// Each command on its own: what it changes, what it refuses, and which of the document's signals it
+// emits (tst_gestures: how edits within a gesture merge into one undo step). Also the document's own
+// state: the current time outside the undo history, and the modified state that follows the stack's
+// clean state.
 
 #include "model_test_support.h"
 
@@ -141,8 +142,6 @@ private slots:
     void addKeyframeRefusesBadKeys();
     void removeKeyframe();
     void moveKeyframeStaysBetweenNeighbours();
-    void dragsMergeIntoOneStep();
-    void differentEditsDoNotMerge();
     void retimeMapsTheWholeTrack();
     void keyframeEdits();
     void trackSettings();
@@ -217,84 +216,6 @@ void TstCommands::moveKeyframeStaysBetweenNeighbours()
     document.undoStack().push(new SetKeyframeTimeCommand(document, id, 2, 100));
     document.undoStack().push(new SetKeyframeTimeCommand(document, id, 0, -100));
     QCOMPARE(keyTimes(document, id), (std::vector<double>{-100, 1, 100}));
-}
-
-void TstCommands::dragsMergeIntoOneStep()
-{
-    Document document;
-    const ObjectId id = import(document, {objectWithKeys(1, {0, 1, 2})}).front();
-    QUndoStack& stack = document.undoStack();
-    {
-        Gesture drag(document);
-        for (double time : {1.1, 1.2, 1.3})
-            drag.push(new SetKeyframeTimeCommand(document, id, 1, time));
-    }
-    QCOMPARE(stack.count(), 2);
-    QCOMPARE(keyTimes(document, id)[1], 1.3);
-    stack.undo();
-    QCOMPARE(keyTimes(document, id)[1], 1.0);
-    stack.redo();
-    QCOMPARE(keyTimes(document, id)[1], 1.3);
-
-    const Eigen::Quaterniond before = document.object(id)->track.keys[0].pose.orientation;
-    {
-        Gesture turn(document);
-        for (double angle : {0.1, 0.2, 0.3})
-            turn.push(new SetKeyframeOrientationCommand(
-                document, id, 0, Eigen::Quaterniond(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitX()))));
-    }
-    QCOMPARE(stack.count(), 3);
-    stack.undo();
-    QCOMPARE(document.object(id)->track.keys[0].pose.orientation.coeffs(), before.coeffs());
-    stack.redo();
-
-    // A drag saved halfway goes on in a new step: the saved state stays reachable.
-    Gesture drag(document);
-    drag.push(new SetKeyframePositionCommand(document, id, 0, {1, 0, 0}));
-    stack.setClean();
-    drag.push(new SetKeyframePositionCommand(document, id, 0, {2, 0, 0}));
-    QCOMPARE(stack.count(), 5);
-    stack.undo();
-    QVERIFY(stack.isClean());
-}
-
-void TstCommands::differentEditsDoNotMerge()
-{
-    Document document;
-    const ObjectId id = import(document, {objectWithKeys(1, {0, 1, 2})}).front();
-    QUndoStack& stack = document.undoStack();
-    const QByteArray before = projectJson(document.scene());
-    const auto pushEdits = [&](GestureId gesture) {
-        document.push(new SetKeyframeTimeCommand(document, id, 1, 1.5), gesture);
-        document.push(new SetKeyframeTimeCommand(document, id, 2, 2.5), gesture); // another key
-        document.push(new SetKeyframePositionCommand(document, id, 2, {1, 2, 3}), gesture); // another field
-        document.push(new SetFitParameterCommand(document, id, FitParameter::Alpha, 0.5), gesture);
-        document.push(new SetFitParameterCommand(document, id, FitParameter::Beta, 0.5), gesture); // another parameter
-        document.push(new SetFitParameterCommand(document, id, FitParameter::Beta, 0.7), gesture);
-    };
-    // Within a gesture they are one step; undoing it restores every field, so none merged into another.
-    {
-        Gesture gesture(document);
-        pushEdits(gesture.id());
-    }
-    QCOMPARE(stack.count(), 2);
-    const QByteArray edited = projectJson(document.scene());
-    QCOMPARE(document.object(id)->track.sketch.beta, 0.7);
-    stack.undo();
-    QCOMPARE(projectJson(document.scene()), before);
-    stack.redo();
-    QCOMPARE(projectJson(document.scene()), edited);
-
-    // Outside a gesture nothing merges, not even the same parameter set twice.
-    stack.undo();
-    pushEdits(kNoGesture);
-    QCOMPARE(stack.count(), 7);
-    stack.undo();
-    QCOMPARE(document.object(id)->track.sketch.beta, 0.5);
-    stack.redo();
-    stack.push(new ToggleKeyframeConstraintCommand(document, id, 0));
-    stack.push(new ToggleKeyframeConstraintCommand(document, id, 0)); // toggles never merge
-    QCOMPARE(stack.count(), 9);
 }
 
 void TstCommands::retimeMapsTheWholeTrack()

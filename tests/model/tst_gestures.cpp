@@ -7,11 +7,13 @@
 #include "model/commands/edit_stroke_command.h"
 #include "model/commands/erase_stroke_command.h"
 #include "model/commands/import_objects_command.h"
+#include "model/commands/set_fit_parameter_command.h"
 #include "model/commands/set_fit_window_command.h"
 #include "model/commands/set_keyframe_orientation_command.h"
 #include "model/commands/set_keyframe_position_command.h"
 #include "model/commands/set_keyframe_time_command.h"
 #include "model/commands/set_magnitude_curve_command.h"
+#include "model/commands/toggle_keyframe_constraint_command.h"
 #include "model/gesture.h"
 #include "model/project_file.h"
 
@@ -92,6 +94,86 @@ private slots:
         QCOMPARE(f.keyTime(1), 1.3);
         f.stack().undo();
         QCOMPARE(f.keyTime(1), 1.0);
+    }
+
+    void dragsMergeIntoOneStep()
+    {
+        Fixture f;
+        Document& document = f.document;
+        const ObjectId id = f.id;
+        QUndoStack& stack = f.stack();
+        {
+            Gesture drag(document);
+            for (double time : {1.1, 1.2, 1.3})
+                drag.push(new SetKeyframeTimeCommand(document, id, 1, time));
+        }
+        QCOMPARE(stack.count(), 2);
+        QCOMPARE(f.keyTime(1), 1.3);
+        stack.undo();
+        QCOMPARE(f.keyTime(1), 1.0);
+        stack.redo();
+        QCOMPARE(f.keyTime(1), 1.3);
+
+        const Eigen::Quaterniond before = document.object(id)->track.keys[0].pose.orientation;
+        {
+            Gesture turn(document);
+            for (double angle : {0.1, 0.2, 0.3})
+                turn.push(new SetKeyframeOrientationCommand(
+                    document, id, 0, Eigen::Quaterniond(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitX()))));
+        }
+        QCOMPARE(stack.count(), 3);
+        stack.undo();
+        QCOMPARE(document.object(id)->track.keys[0].pose.orientation.coeffs(), before.coeffs());
+        stack.redo();
+
+        // A drag saved halfway goes on in a new step: the saved state stays reachable.
+        Gesture drag(document);
+        drag.push(new SetKeyframePositionCommand(document, id, 0, {1, 0, 0}));
+        stack.setClean();
+        drag.push(new SetKeyframePositionCommand(document, id, 0, {2, 0, 0}));
+        QCOMPARE(stack.count(), 5);
+        stack.undo();
+        QVERIFY(stack.isClean());
+    }
+
+    void differentEditsDoNotMerge()
+    {
+        Fixture f;
+        Document& document = f.document;
+        const ObjectId id = f.id;
+        QUndoStack& stack = f.stack();
+        const QByteArray before = f.json();
+        const auto pushEdits = [&](GestureId gesture) {
+            document.push(new SetKeyframeTimeCommand(document, id, 1, 1.5), gesture);
+            document.push(new SetKeyframeTimeCommand(document, id, 2, 2.5), gesture); // another key
+            document.push(new SetKeyframePositionCommand(document, id, 2, {1, 2, 3}), gesture); // another field
+            document.push(new SetFitParameterCommand(document, id, FitParameter::Alpha, 0.5), gesture);
+            document.push(new SetFitParameterCommand(document, id, FitParameter::Beta, 0.5), gesture); // another parameter
+            document.push(new SetFitParameterCommand(document, id, FitParameter::Beta, 0.7), gesture);
+        };
+        // Within a gesture they are one step; undoing it restores every field, so none merged into another.
+        {
+            Gesture gesture(document);
+            pushEdits(gesture.id());
+        }
+        QCOMPARE(stack.count(), 2);
+        const QByteArray edited = f.json();
+        QCOMPARE(document.object(id)->track.sketch.beta, 0.7);
+        stack.undo();
+        QCOMPARE(f.json(), before);
+        stack.redo();
+        QCOMPARE(f.json(), edited);
+
+        // Outside a gesture nothing merges, not even the same parameter set twice.
+        stack.undo();
+        pushEdits(kNoGesture);
+        QCOMPARE(stack.count(), 7);
+        stack.undo();
+        QCOMPARE(document.object(id)->track.sketch.beta, 0.5);
+        stack.redo();
+        stack.push(new ToggleKeyframeConstraintCommand(document, id, 0));
+        stack.push(new ToggleKeyframeConstraintCommand(document, id, 0)); // toggles never merge
+        QCOMPARE(stack.count(), 9);
     }
 
     void commandsPushedAloneNeverMerge()
