@@ -1,7 +1,7 @@
 #pragma once
 // A gesture a view holds while the artist drags, from press to release: it begins on the
-// document when made and ends when finished or destroyed. Every command pushed through it joins
-// its undo step (document.h, "Gestures").
+// document when made and ends when finished or destroyed, so the document must outlive it. Every
+// command pushed through it joins its undo step (document.h, "Gestures").
 
 #include "model/document.h"
 

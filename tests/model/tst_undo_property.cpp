@@ -119,16 +119,20 @@ void TstUndoProperty::randomSequences()
                 gesture.emplace(document);
         }
         QCOMPARE(document.isGestureOpen(), gesture.has_value());
+        const bool joinsStep = gesture && document.newestStepGesture() == gesture->id();
         if (!gesture)
             ++pushedAlone;
-        else if (document.newestStepGesture() == gesture->id() && kind != gestureKind)
+        else if (joinsStep && kind != gestureKind)
             ++otherKindInGesture;
         gestureKind = kind;
         const int countBefore = stack.count();
         document.push(command.release(), gesture ? gesture->id() : kNoGesture);
         ++pushed[static_cast<std::size_t>(kind)];
         if (stack.count() == countBefore) {
-            ++merges; // the top step now holds this edit too; its "before" state is unchanged
+            // The top step now holds this edit too, its "before" state unchanged; or the edit began a
+            // gesture and changed nothing.
+            if (joinsStep)
+                ++merges;
             states.back() = projectJson(document.scene());
         } else if (stack.count() == countBefore + 1) {
             states.push_back(projectJson(document.scene()));
