@@ -1,6 +1,5 @@
 #include "app/inspector_widget.h"
 
-#include "app/undo_gesture.h"
 #include "core/rotation.h"
 #include "model/commands/set_keyframe_time_command.h"
 #include "model/commands/set_keyframe_orientation_command.h"
@@ -242,7 +241,7 @@ void InspectorWidget::applyTime()
         if (time == shownKeyframe().time)
             showSelectedKey();
         else
-            pushAlone(document_.undoStack(), new model::SetKeyframeTimeCommand(document_, shownObject_, *shownKey_, time));
+            document_.push(new model::SetKeyframeTimeCommand(document_, shownObject_, *shownKey_, time));
     });
 }
 
@@ -250,8 +249,7 @@ void InspectorWidget::applyConstraint(bool constrained)
 {
     tryEdit(tr("The constraint was not changed: %1."), [this, constrained] {
         if (constrained != shownKeyframe().constrained)
-            pushAlone(document_.undoStack(),
-                      new model::ToggleKeyframeConstraintCommand(document_, shownObject_, *shownKey_));
+            document_.push(new model::ToggleKeyframeConstraintCommand(document_, shownObject_, *shownKey_));
     });
 }
 
@@ -263,8 +261,7 @@ void InspectorWidget::applyPosition()
         if (position == shownKeyframe().pose.position)
             showSelectedKey();
         else
-            pushAlone(document_.undoStack(),
-                      new model::SetKeyframePositionCommand(document_, shownObject_, *shownKey_, position));
+            document_.push(new model::SetKeyframePositionCommand(document_, shownObject_, *shownKey_, position));
     });
 }
 
@@ -353,8 +350,7 @@ void InspectorWidget::setOrientation(const NumberFields& fields, const std::opti
                                      const Eigen::Quaterniond& orientation, const QString& adjustment)
 {
     if (orientation.coeffs() != shownKeyframe().pose.orientation.coeffs())
-        pushAlone(document_.undoStack(),
-                  new model::SetKeyframeOrientationCommand(document_, shownObject_, *shownKey_, orientation));
+        document_.push(new model::SetKeyframeOrientationCommand(document_, shownObject_, *shownKey_, orientation));
     if (exactlyTyped)
         typedRotation_ = TypedRotation{shownObject_, *shownKey_, &fields, chosenConvention(), *exactlyTyped,
                                        shownKeyframe().pose.orientation};

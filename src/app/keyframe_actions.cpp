@@ -1,6 +1,5 @@
 #include "app/keyframe_actions.h"
 
-#include "app/undo_gesture.h"
 #include "model/commands/add_keyframe_command.h"
 #include "model/commands/remove_keyframe_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
@@ -49,7 +48,7 @@ void KeyframeActions::addKeyframe()
     const model::Keyframe key{time, model::TrackMotion(object->track).at(time), true};
     const model::ObjectId id = object->id;
     try {
-        pushAlone(document_.undoStack(), new model::AddKeyframeCommand(document_, id, key));
+        document_.push(new model::AddKeyframeCommand(document_, id, key));
     } catch (const std::invalid_argument& error) {
         statusBar_->showMessage(tr("Cannot add a keyframe: %1").arg(QString::fromUtf8(error.what())),
                                 kMessageMilliseconds);
@@ -66,15 +65,14 @@ void KeyframeActions::removeKeyframe()
     if (selection_.selectedKey() == nullptr)
         return;
     const model::ObjectId object = selection_.object();
-    pushAlone(document_.undoStack(), new model::RemoveKeyframeCommand(document_, object, *selection_.key()));
+    document_.push(new model::RemoveKeyframeCommand(document_, object, *selection_.key()));
     selection_.selectObject(object); // the key is gone; its index now names its neighbour
 }
 
 void KeyframeActions::toggleConstraint()
 {
     if (selection_.selectedKey() != nullptr)
-        pushAlone(document_.undoStack(),
-                  new model::ToggleKeyframeConstraintCommand(document_, selection_.object(), *selection_.key()));
+        document_.push(new model::ToggleKeyframeConstraintCommand(document_, selection_.object(), *selection_.key()));
     updateActions();
 }
 

@@ -1,7 +1,6 @@
 #include "app/scene_file_actions.h"
 
 #include "app/import_dialog.h"
-#include "app/undo_gesture.h"
 #include "model/commands/import_objects_command.h"
 #include "model/commands/set_time_range_command.h"
 
@@ -183,7 +182,7 @@ void SceneFileActions::addImportedObjects(const QString& path, const std::shared
     }
     const auto* objects = static_cast<const model::ImportObjectsCommand*>(step->child(0));
     const model::ObjectId first = objects->ids().front();
-    pushAlone(document_.undoStack(), step);
+    document_.push(step);
     selection_.selectObject(first);
     statusBar_->showMessage(tr("Objects imported from %1: %n", nullptr, static_cast<int>(imported->scene.objects.size()))
                                 .arg(name),

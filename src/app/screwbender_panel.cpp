@@ -1,6 +1,5 @@
 #include "app/screwbender_panel.h"
 
-#include "app/undo_gesture.h"
 #include "core/orientation_curves.h"
 #include "core/subdivision.h"
 #include "model/commands/set_interpolation_command.h"
@@ -145,7 +144,7 @@ void ScrewBenderPanel::applyInterpolation()
     if (method == selection_.selectedObject()->track.interpolation)
         return;
     try {
-        pushAlone(document_.undoStack(), interpolationChange(method));
+        document_.push(interpolationChange(method));
     } catch (const std::invalid_argument& error) {
         showError(tr("The interpolation was not changed: %1.").arg(QString::fromUtf8(error.what())));
     }
@@ -182,7 +181,7 @@ void ScrewBenderPanel::applySubdivision()
         settings.decoupled == current.decoupled)
         return;
     try {
-        pushAlone(document_.undoStack(), new model::SetSubdivisionCommand(document_, selection_.object(), settings));
+        document_.push(new model::SetSubdivisionCommand(document_, selection_.object(), settings));
     } catch (const std::invalid_argument& error) {
         showError(tr("The subdivision was not changed: %1.").arg(QString::fromUtf8(error.what())));
     }

@@ -1,6 +1,5 @@
 #include "app/time_bar.h"
 
-#include "app/undo_gesture.h"
 #include "model/commands/set_time_range_command.h"
 #include "model/value_checks.h"
 
@@ -117,7 +116,7 @@ void TimeBar::applyTimeRange(Change change)
         showTimeRange();
         return;
     }
-    pushAlone(document_.undoStack(), new model::SetTimeRangeCommand(document_, range));
+    document_.push(new model::SetTimeRangeCommand(document_, range));
 }
 
 } // namespace gyre::app

@@ -425,7 +425,7 @@ void TimelineWidget::dragKeyTo(double x, Qt::KeyboardModifiers modifiers)
     if (target == object->track.keys[keyDrag_->key].time)
         return;
     if (!dragGesture_)
-        dragGesture_.emplace(document_.undoStack());
+        dragGesture_.emplace(document_);
     dragGesture_->push(new model::SetKeyframeTimeCommand(document_, object->id, keyDrag_->key, target));
 }
 

@@ -17,8 +17,8 @@
 
 #include "app/playback.h"
 #include "app/selection.h"
-#include "app/undo_gesture.h"
 #include "model/document.h"
+#include "model/gesture.h"
 
 #include <QPixmap>
 #include <QPoint>
@@ -92,7 +92,7 @@ private:
     Selection& selection_;
     Playback& playback_;
     std::optional<KeyDrag> keyDrag_;
-    std::optional<UndoGesture> dragGesture_;
+    std::optional<model::Gesture> dragGesture_;
     bool scrubbing_ = false;
     QPixmap staticLayer_; // the ruler and the key markers, without the cursor
     bool staticLayerStale_ = true;

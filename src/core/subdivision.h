@@ -47,6 +47,7 @@ struct SubdivisionSettings {
     // The decoupled alternative the paper compares against: positions by the linear scheme,
     // orientations by the same Split&Tweak on rotations alone (slerp in place of the screw).
     bool decoupled = false;
+    bool operator==(const SubdivisionSettings&) const = default;
 };
 
 // How many poses `levels` subdivisions of `controlPoses` poses give: n·2^L for a cycle,

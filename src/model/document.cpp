@@ -1,8 +1,10 @@
 #include "model/document.h"
 
+#include "model/commands/perform_gesture_command.h"
 #include "model/project_file.h"
 #include "model/scene_queries.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -23,6 +25,36 @@ Document::~Document()
 }
 
 const SceneObject* Document::object(ObjectId id) const { return findObject(scene_, id); }
+
+void Document::push(QUndoCommand* command, GestureId gesture)
+{
+    // Every step is a PerformGestureCommand: QUndoStack merges two steps only when they carry the
+    // same gesture (id() and mergeWith), and deletes one that its gesture made obsolete.
+    undoStack_.push(new PerformGestureCommand(gesture, command));
+}
+
+GestureId Document::beginGesture()
+{
+    openGestures_.push_back(++lastGesture_);
+    return lastGesture_;
+}
+
+void Document::endGesture(GestureId gesture)
+{
+    const auto open = std::find(openGestures_.begin(), openGestures_.end(), gesture);
+    if (open == openGestures_.end())
+        return;
+    openGestures_.erase(open);
+    emit gestureEnded(gesture);
+}
+
+GestureId Document::newestStepGesture() const
+{
+    if (undoStack_.index() == 0)
+        return kNoGesture;
+    const auto* step = dynamic_cast<const PerformGestureCommand*>(undoStack_.command(undoStack_.index() - 1));
+    return step != nullptr ? step->gesture() : kNoGesture;
+}
 
 void Document::setCurrentTime(double seconds)
 {

@@ -6,6 +6,14 @@
 // The current time is the one value outside the undo history: scrubbing is looking, not editing, so
 // setCurrentTime neither pushes a command nor makes the document modified. It is still saved with the
 // file, so a project opens where it was left.
+//
+// Gestures. A drag of the artist pushes a command at every mouse move; the document makes it one
+// undo step. beginGesture hands out an id; every command pushed with that id joins the gesture's
+// step (PerformGestureCommand), and consecutive edits of the same field within it merge into one.
+// Pushes with another id, or with none, are steps of their own, so two drags of the same key are
+// two steps. A gesture whose edits bring the document back to where it began leaves no step.
+// isGestureOpen says whether the artist is still in the middle of one (a finished fit waits for
+// its end, gestureEnded); gesture.h wraps begin and end for a view that holds a gesture.
 
 #include "model/scene.h"
 
@@ -13,7 +21,14 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <cstdint>
+#include <vector>
+
 namespace gyre::model {
+
+// Names one gesture; ids are never handed out twice in a session. kNoGesture: a command alone.
+using GestureId = std::uint64_t;
+inline constexpr GestureId kNoGesture = 0;
 
 class Document : public QObject {
     Q_OBJECT
@@ -34,6 +49,21 @@ public:
     const QString& filePath() const { return filePath_; }
     // Changed since it was loaded or saved: the undo stack is away from its clean state.
     bool isModified() const { return !undoStack_.isClean(); }
+
+    // Pushes `command` (taking it) onto the undo stack as part of `gesture`: it joins the gesture's
+    // step while that step is still the newest (nothing pushed, undone or saved in between), or
+    // begins one. A gesture that has ended may be continued this way. With kNoGesture the command
+    // is a step of its own, never merged with another.
+    void push(QUndoCommand* command, GestureId gesture = kNoGesture);
+    // A new gesture, open until endGesture.
+    GestureId beginGesture();
+    // Ends `gesture` and emits gestureEnded; nothing if it is not open.
+    void endGesture(GestureId gesture);
+    // Whether any gesture is open: the artist is in the middle of a drag.
+    bool isGestureOpen() const { return !openGestures_.empty(); }
+    // The gesture of the newest step on the undo stack (the one undo would take back), or
+    // kNoGesture if that step belongs to none or there is none.
+    GestureId newestStepGesture() const;
 
     // Throws std::invalid_argument for a time that is not finite.
     void setCurrentTime(double seconds);
@@ -69,6 +99,8 @@ signals:
     void currentTimeChanged(double seconds);
     void modifiedChanged(bool modified);
     void filePathChanged(const QString& path);
+    // `gesture` ended; isGestureOpen() already tells whether another is still open.
+    void gestureEnded(gyre::model::GestureId gesture);
 
 private:
     friend class DocumentEditor;
@@ -79,6 +111,8 @@ private:
     Scene scene_;
     QUndoStack undoStack_;
     QString filePath_;
+    std::vector<GestureId> openGestures_;
+    GestureId lastGesture_ = kNoGesture;
 };
 
 } // namespace gyre::model

@@ -40,11 +40,13 @@ struct Mesh {
 struct DirectionStroke {
     std::vector<Eigen::Vector3d> points;
     std::vector<double> times;  // empty, or one per point, increasing
+    bool operator==(const DirectionStroke&) const = default;
 };
 
 struct MagnitudePoint {
     double time = 0.0;
     double magnitude = 0.0;  // |ω| in rad/s
+    bool operator==(const MagnitudePoint&) const = default;
 };
 
 // The sketch-editing state of a track (the sketch-editing paper's interface).

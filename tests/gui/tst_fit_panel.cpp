@@ -8,7 +8,6 @@
 #include "app/sketch/fit_controller.h"
 #include "app/sketch/fit_panel.h"
 #include "app/sketch/fit_progress.h"
-#include "app/undo_gesture.h"
 #include "app/viewport/viewport.h"
 #include "gui_test_support.h"
 #include "jobs/sketch_fit.h"
@@ -20,6 +19,7 @@
 #include "model/commands/set_interpolation_command.h"
 #include "model/commands/set_magnitude_curve_command.h"
 #include "model/document.h"
+#include "model/gesture.h"
 #include "model/track_evaluation.h"
 
 #include <QCheckBox>
@@ -128,9 +128,9 @@ private slots:
         stack.push(import);
         object_ = import->ids().front();
         // The sketch, as the sphere view and the magnitude plot make it.
-        app::pushAlone(stack, new model::AddStrokeCommand(*document_, object_, tiltingStroke(1.0, 3.0, kTilt)));
-        app::pushAlone(stack, new model::SetMagnitudeCurveCommand(*document_, object_, {{1.0, kSpinRate}, {3.0, kSpinRate}}));
-        app::pushAlone(stack, new model::SetFitWindowCommand(*document_, object_, std::pair(1.0, 3.0)));
+        document_->push(new model::AddStrokeCommand(*document_, object_, tiltingStroke(1.0, 3.0, kTilt)));
+        document_->push(new model::SetMagnitudeCurveCommand(*document_, object_, {{1.0, kSpinRate}, {3.0, kSpinRate}}));
+        document_->push(new model::SetFitWindowCommand(*document_, object_, std::pair(1.0, 3.0)));
 
         selection_ = std::make_unique<app::Selection>(*document_);
         selection_->selectObject(object_);
@@ -300,7 +300,7 @@ private slots:
         // A stroke redrawn as the pen moves: every move an edit inside one gesture.
         const int stepsBeforeStroke = stack.count();
         {
-            app::UndoGesture gesture(stack);
+            model::Gesture gesture(*document_);
             for (double tilt : {0.9, 1.0, 1.1}) {
                 gesture.push(new model::EditStrokeCommand(*document_, object_, 0, tiltingStroke(1.0, 3.0, tilt)));
                 const std::size_t previewsBefore = previews.size();
@@ -311,10 +311,10 @@ private slots:
                          tiltingStroke(1.0, 3.0, tilt).points.back());
                 // Nothing applied: the gesture is the only step past the start, and still open.
                 QCOMPARE(stack.count(), stepsBeforeStroke + 1);
-                QVERIFY(app::isMacroOpen(stack));
+                QVERIFY(document_->isGestureOpen());
             }
         }
-        QVERIFY(!app::isMacroOpen(stack));
+        QVERIFY(!document_->isGestureOpen());
         QTRY_VERIFY_WITH_TIMEOUT(stack.count() == stepsBeforeStroke + 2, kFitTimeoutMilliseconds);
         QCOMPARE(stack.undoText(), kApplyFitText);
         QCOMPARE(stack.text(stack.count() - 2), QStringLiteral("Edit Stroke"));
@@ -377,7 +377,7 @@ private slots:
     {
         QUndoStack& stack = document_->undoStack();
         QTest::mouseClick(button("fitButton"), Qt::LeftButton);
-        pushAloneEdit();
+        pushEditAlone();
         const int stepsAfterEdit = stack.count();
         auto* status = panel_->findChild<QLabel*>(QStringLiteral("fitStatusLabel"));
         QTRY_VERIFY_WITH_TIMEOUT(!controller_->isFitting(), kFitTimeoutMilliseconds);
@@ -388,8 +388,7 @@ private slots:
 
     void aScrewTrackSaysToChooseHermiteAndCannotBeFitted()
     {
-        app::pushAlone(document_->undoStack(),
-                       new model::SetInterpolationCommand(*document_, object_, InterpolationMethod::Screw));
+        document_->push(new model::SetInterpolationCommand(*document_, object_, InterpolationMethod::Screw));
         QVERIFY(!button("fitButton")->isEnabled());
         auto* message = panel_->findChild<QLabel*>(QStringLiteral("fitProblemLabel"));
         QVERIFY(message->isVisible());
@@ -408,9 +407,9 @@ private slots:
         auto* import = new model::ImportObjectsCommand(*document_, {spinningObject(8.0, 0.5)});
         stack.push(import);
         const model::ObjectId realistic = import->ids().front();
-        app::pushAlone(stack, new model::AddStrokeCommand(*document_, realistic, tiltingStroke(2.0, 6.0, kTilt)));
-        app::pushAlone(stack, new model::SetMagnitudeCurveCommand(
-                                  *document_, realistic, {{2.0, kSpinRate}, {4.0, 2 * kSpinRate}, {6.0, kSpinRate}}));
+        document_->push(new model::AddStrokeCommand(*document_, realistic, tiltingStroke(2.0, 6.0, kTilt)));
+        document_->push(new model::SetMagnitudeCurveCommand(
+            *document_, realistic, {{2.0, kSpinRate}, {4.0, 2 * kSpinRate}, {6.0, kSpinRate}}));
         selection_->selectObject(realistic);
         const int stepsBefore = stack.count();
         QElapsedTimer clock;
@@ -435,17 +434,15 @@ private:
     // δ tiny and a magnitude the keys cannot follow over the whole track: variable frames round after round.
     void makeSlowToFit()
     {
-        QUndoStack& stack = document_->undoStack();
-        app::pushAlone(stack, new model::SetFitParameterCommand(*document_, object_, model::FitParameter::Delta, 1e-9));
-        app::pushAlone(stack, new model::SetFitWindowCommand(*document_, object_, std::pair(0.0, 4.0)));
-        app::pushAlone(stack, new model::SetMagnitudeCurveCommand(*document_, object_, {{0.0, 4 * kSpinRate}, {4.0, kSpinRate}}));
-        app::pushAlone(stack, new model::EditStrokeCommand(*document_, object_, 0, tiltingStroke(0.0, 4.0, kTilt)));
+        document_->push(new model::SetFitParameterCommand(*document_, object_, model::FitParameter::Delta, 1e-9));
+        document_->push(new model::SetFitWindowCommand(*document_, object_, std::pair(0.0, 4.0)));
+        document_->push(new model::SetMagnitudeCurveCommand(*document_, object_, {{0.0, 4 * kSpinRate}, {4.0, kSpinRate}}));
+        document_->push(new model::EditStrokeCommand(*document_, object_, 0, tiltingStroke(0.0, 4.0, kTilt)));
     }
 
-    void pushAloneEdit()
+    void pushEditAlone()
     {
-        app::pushAlone(document_->undoStack(),
-                       new model::EditStrokeCommand(*document_, object_, 0, tiltingStroke(1.0, 3.0, 0.8)));
+        document_->push(new model::EditStrokeCommand(*document_, object_, 0, tiltingStroke(1.0, 3.0, 0.8)));
     }
 
     std::unique_ptr<model::Document> document_;

@@ -12,7 +12,6 @@
 #include "app/sketch/direction_sketch_panel.h"
 #include "app/sketch/pattern_pad.h"
 #include "app/sketch/sphere_view.h"
-#include "app/undo_gesture.h"
 #include "fit/angular_velocity_target.h"
 #include "gui_test_support.h"
 #include "jobs/sketch_fit.h"
@@ -230,7 +229,7 @@ private slots:
             stroke.points.push_back(view_->sphereAt(centre + QPointF(20.0 * (i - 5), 0.0)));
             stroke.times.push_back(1.0 + 0.1 * i);
         }
-        app::pushAlone(document_->undoStack(), new model::AddStrokeCommand(*document_, object_, stroke));
+        document_->push(new model::AddStrokeCommand(*document_, object_, stroke));
         QUndoStack& stack = document_->undoStack();
         QCOMPARE(stack.count(), 1);
 
@@ -368,7 +367,7 @@ private slots:
             fitted.curve.push_back({t, q, derivative});
         }
         QSignalSpy updated(view_, &app::SphereView::curvesUpdated);
-        app::pushAlone(document_->undoStack(), new model::ApplyFitResultCommand(*document_, object_, fitted));
+        document_->push(new model::ApplyFitResultCommand(*document_, object_, fitted));
         QVERIFY(updated.wait(5000));
 
         const app::SphereCurves& curves = view_->curves();
@@ -422,8 +421,8 @@ private slots:
         const model::ObjectId top = selection_->object();
         const jobs::SketchFitProblem problem = jobs::sketchFitProblem(document_->object(top)->track);
         const fit::FitResult result = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
-        app::pushAlone(document_->undoStack(), new model::ApplyFitResultCommand(
-                                                   *document_, top, jobs::appliedFitResult(document_->object(top)->track, result)));
+        document_->push(
+            new model::ApplyFitResultCommand(*document_, top, jobs::appliedFitResult(document_->object(top)->track, result)));
         document_->setCurrentTime(6.0);
         QVERIFY(updated.wait(5000));
         while (updated.wait(300)) {

@@ -1,34 +1,37 @@
-// A gesture is one undo step: its commands merge, and the next gesture is a step of its own even
-// where the model's commands would merge with it.
+// A gesture is one undo step, as the artist makes it with the real widgets on the bundled sample (keys
+// at 0, 1, ..., 5 s, 30 fps): a drag of a key marker on the timeline is one step, the next drag of the
+// same key another, and a drag that comes back to where it began leaves no step and the saved state
+// as it was. The document knows a drag is under way while the button is held. Values typed into the
+// inspector one after the other are steps of their own, even in the same field.
 
-#include "app/undo_gesture.h"
-#include "model/commands/set_keyframe_position_command.h"
-#include "model/document.h"
-#include "model/commands/import_objects_command.h"
+#include "inspected_window.h"
 
+#include "app/timeline_widget.h"
+#include "gui_test_support.h"
+#include "model/project_file.h"
+
+#include <QSignalSpy>
 #include <QTest>
 
+#include <cmath>
+#include <memory>
+#include <vector>
+
 using namespace gyre;
+using test::enter;
+using test::InspectedWindow;
 
 namespace {
 
-// A document with one object and one key at the origin.
-model::ObjectId addObjectWithKey(model::Document& document)
-{
-    model::SceneObject object;
-    object.id = 1;
-    object.name = QStringLiteral("block");
-    object.track.keys.push_back(model::Keyframe{});
-    auto* command = new model::ImportObjectsCommand(document, {object});
-    document.undoStack().push(command);
-    const model::ObjectId id = command->ids().front();
-    document.undoStack().clear();
-    return id;
-}
+constexpr std::size_t kDraggedKey = 2; // at 2 s, between keys at 1 s and 3 s
 
-double keyX(const model::Document& document, model::ObjectId id)
+// Presses at `from`, moves through `through` with the left button held, and releases at the last.
+void drag(QWidget* widget, const QPoint& from, const std::vector<QPoint>& through)
 {
-    return document.object(id)->track.keys.front().pose.position.x();
+    QTest::mousePress(widget, Qt::LeftButton, {}, from);
+    for (const QPoint& at : through)
+        test::sendMove(widget, at, Qt::LeftButton);
+    QTest::mouseRelease(widget, Qt::LeftButton, {}, through.back());
 }
 
 } // namespace
@@ -37,37 +40,118 @@ class TestUndoGesture : public QObject {
     Q_OBJECT
 
 private slots:
-    void aGestureIsOneStepAndTheNextIsAnother()
+    void initTestCase() { test::useTestSettings(); }
+
+    void init()
     {
-        model::Document document;
-        const model::ObjectId id = addObjectWithKey(document);
-        QUndoStack& stack = document.undoStack();
-        {
-            app::UndoGesture drag(stack);
-            for (int step = 1; step <= 5; ++step)
-                drag.push(new model::SetKeyframePositionCommand(document, id, 0, Eigen::Vector3d(step, 0, 0)));
-        }
-        app::UndoGesture second(stack);
-        second.push(new model::SetKeyframePositionCommand(document, id, 0, Eigen::Vector3d(7, 0, 0)));
-        QVERIFY(second.isOpen());
-        second.finish();
-        QCOMPARE(stack.count(), 2);
-        QCOMPARE(keyX(document, id), 7.0);
-        stack.undo();
-        QCOMPARE(keyX(document, id), 5.0);
-        stack.undo();
-        QCOMPARE(keyX(document, id), 0.0);
+        inspected_ = std::make_unique<InspectedWindow>(kDraggedKey);
+        inspected_->window().resize(1400, 900);
+        QVERIFY(QTest::qWaitForWindowExposed(&inspected_->window()));
+        timeline_ = inspected_->window().findChild<app::TimelineWidget*>();
+        QVERIFY(timeline_ != nullptr);
+        QVERIFY(timeline_->isVisible());
+        QCOMPARE(keyTime(), 2.0);
     }
 
-    void pushAloneNeverMerges()
+    void cleanup() { inspected_.reset(); }
+
+    void twoDragsOfTheSameKeyAreTwoSteps()
     {
-        model::Document document;
-        const model::ObjectId id = addObjectWithKey(document);
-        app::pushAlone(document.undoStack(), new model::SetKeyframePositionCommand(document, id, 0, Eigen::Vector3d(1, 0, 0)));
-        app::pushAlone(document.undoStack(), new model::SetKeyframePositionCommand(document, id, 0, Eigen::Vector3d(2, 0, 0)));
-        QCOMPARE(document.undoStack().count(), 2);
-        QCOMPARE(document.undoStack().text(1), document.undoStack().text(0));
+        model::Document& document = inspected_->window().document();
+        QUndoStack& stack = document.undoStack();
+        const int stepsBefore = stack.count();
+        QSignalSpy ended(&document, &model::Document::gestureEnded);
+
+        const QPoint from = marker();
+        QTest::mousePress(timeline_, Qt::LeftButton, {}, from);
+        for (double seconds : {0.1, 0.3, 0.5}) {
+            test::sendMove(timeline_, from + QPoint(pixelsFor(seconds), 0), Qt::LeftButton);
+            QVERIFY(document.isGestureOpen());
+            QCOMPARE(stack.count(), stepsBefore + 1); // every move merges into the drag's one step
+        }
+        QTest::mouseRelease(timeline_, Qt::LeftButton, {}, from + QPoint(pixelsFor(0.5), 0));
+        QVERIFY(!document.isGestureOpen());
+        QCOMPARE(ended.count(), 1);
+        QCOMPARE(keyTime(), 2.5);
+
+        const QPoint again = marker();
+        drag(timeline_, again, {again - QPoint(pixelsFor(0.1), 0), again - QPoint(pixelsFor(0.2), 0)});
+        QCOMPARE(keyTime(), 2.3);
+        QCOMPARE(stack.count(), stepsBefore + 2);
+        stack.undo();
+        QCOMPARE(keyTime(), 2.5);
+        stack.undo();
+        QCOMPARE(keyTime(), 2.0);
     }
+
+    void aDragBackToWhereItBeganLeavesNoStep()
+    {
+        model::Document& document = inspected_->window().document();
+        QUndoStack& stack = document.undoStack();
+        const int stepsBefore = stack.count();
+        const bool cleanBefore = stack.isClean();
+        const QByteArray before = model::projectJson(document.scene());
+
+        const QPoint from = marker();
+        QTest::mousePress(timeline_, Qt::LeftButton, {}, from);
+        test::sendMove(timeline_, from + QPoint(pixelsFor(0.4), 0), Qt::LeftButton);
+        QCOMPARE(stack.count(), stepsBefore + 1);
+        QVERIFY(!stack.isClean() || !cleanBefore);
+        test::sendMove(timeline_, from + QPoint(pixelsFor(0.2), 0), Qt::LeftButton);
+        test::sendMove(timeline_, from, Qt::LeftButton);
+        QTest::mouseRelease(timeline_, Qt::LeftButton, {}, from);
+
+        QCOMPARE(keyTime(), 2.0);
+        QCOMPARE(stack.count(), stepsBefore);
+        QCOMPARE(stack.isClean(), cleanBefore);
+        QCOMPARE(document.isModified(), !cleanBefore);
+        QCOMPARE(model::projectJson(document.scene()), before);
+    }
+
+    void aDragBackToWhereItBeganAfterASaveLeavesTheDocumentSaved()
+    {
+        model::Document& document = inspected_->window().document();
+        QUndoStack& stack = document.undoStack();
+        stack.setClean();
+        QVERIFY(!document.isModified());
+        const int stepsBefore = stack.count();
+        const QPoint from = marker();
+        drag(timeline_, from, {from + QPoint(pixelsFor(0.3), 0), from + QPoint(pixelsFor(0.6), 0), from});
+        QCOMPARE(keyTime(), 2.0);
+        QCOMPARE(stack.count(), stepsBefore);
+        QVERIFY(stack.isClean());
+        QVERIFY(!document.isModified());
+    }
+
+    void valuesTypedOneAfterAnotherAreStepsOfTheirOwn()
+    {
+        QUndoStack& stack = inspected_->window().document().undoStack();
+        const int stepsBefore = stack.count();
+        enter(inspected_->field("timeEdit"), QStringLiteral("2.25"));
+        enter(inspected_->field("timeEdit"), QStringLiteral("2.5")); // the same field again
+        enter(inspected_->field("positionXEdit"), QStringLiteral("1.5")); // another field
+        QCOMPARE(stack.count(), stepsBefore + 3);
+        stack.undo();
+        QCOMPARE(inspected_->key(kDraggedKey).pose.position.x(), 4.0);
+        QCOMPARE(keyTime(), 2.5);
+        stack.undo();
+        QCOMPARE(keyTime(), 2.25);
+        stack.undo();
+        QCOMPARE(keyTime(), 2.0);
+    }
+
+private:
+    double keyTime() const { return inspected_->key(kDraggedKey).time; }
+    QPoint marker() const { return *timeline_->keyMarkerCentre(kDraggedKey); }
+
+    // The width of `seconds` on the ruler, to the nearest pixel.
+    int pixelsFor(double seconds) const
+    {
+        return static_cast<int>(std::lround(timeline_->xForTime(seconds) - timeline_->xForTime(0.0)));
+    }
+
+    std::unique_ptr<InspectedWindow> inspected_;
+    app::TimelineWidget* timeline_ = nullptr;
 };
 
 QTEST_MAIN(TestUndoGesture)

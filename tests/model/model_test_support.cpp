@@ -154,14 +154,12 @@ EditKind RandomEdits::kind(const Document& document)
     return lastKind_;
 }
 
-bool RandomEdits::repeat() { return repeating_; }
-
 ObjectId RandomEdits::object(const Document& document)
 {
     const std::vector<SceneObject>& objects = document.scene().objects;
     if (objects.empty())
         return kNoObject;
-    if (!(repeat() && document.object(lastObject_)))
+    if (!(repeating() && document.object(lastObject_)))
         lastObject_ = objects[index(objects.size())].id;
     return lastObject_;
 }
@@ -182,7 +180,7 @@ std::unique_ptr<QUndoCommand> RandomEdits::command(Document& document, EditKind 
     const std::size_t strokes = track.sketch.directionStrokes.size();
     // The key or stroke to act on: the last one again when repeating, so that edits merge.
     const auto pick = [&](std::size_t count) {
-        if (!(repeat() && lastIndex_ < count))
+        if (!(repeating() && lastIndex_ < count))
             lastIndex_ = index(count);
         return lastIndex_;
     };

@@ -54,6 +54,8 @@ public:
     // The kind of the next edit; imports give way to deletions once the scene has enough objects,
     // so that every step stays cheap to compare.
     EditKind kind(const Document& document);
+    // Whether the latest kind() repeats the kind before it, and command() then its target.
+    bool repeating() const { return repeating_; }
 
     // Random values.
     Eigen::Quaterniond rotation();
@@ -73,7 +75,6 @@ public:
 
 private:
     ObjectId object(const Document& document);
-    bool repeat();
 
     std::mt19937 engine_;
     EditKind lastKind_ = EditKind::ImportObjects;

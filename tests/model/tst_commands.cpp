@@ -1,6 +1,7 @@
-// Each command on its own: what it changes, what it refuses, how consecutive edits merge into one undo
-// step, and which of the document's signals it emits. Also the document's own state: the current
-// time outside the undo history, and the modified state that follows the stack's clean state.
+// Each command on its own: what it changes, what it refuses, and which of the document's signals it
+// emits (tst_gestures: how edits within a gesture merge into one undo step). Also the document's own
+// state: the current time outside the undo history, and the modified state that follows the stack's
+// clean state.
 
 #include "model_test_support.h"
 
@@ -28,6 +29,7 @@
 #include "model/commands/set_subdivision_command.h"
 #include "model/commands/set_time_range_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
+#include "model/gesture.h"
 #include "model/input_error.h"
 #include "model/project_file.h"
 #include "model/scene_queries.h"
@@ -140,8 +142,6 @@ private slots:
     void addKeyframeRefusesBadKeys();
     void removeKeyframe();
     void moveKeyframeStaysBetweenNeighbours();
-    void dragsMergeIntoOneStep();
-    void differentEditsDoNotMerge();
     void retimeMapsTheWholeTrack();
     void keyframeEdits();
     void trackSettings();
@@ -216,55 +216,6 @@ void TstCommands::moveKeyframeStaysBetweenNeighbours()
     document.undoStack().push(new SetKeyframeTimeCommand(document, id, 2, 100));
     document.undoStack().push(new SetKeyframeTimeCommand(document, id, 0, -100));
     QCOMPARE(keyTimes(document, id), (std::vector<double>{-100, 1, 100}));
-}
-
-void TstCommands::dragsMergeIntoOneStep()
-{
-    Document document;
-    const ObjectId id = import(document, {objectWithKeys(1, {0, 1, 2})}).front();
-    QUndoStack& stack = document.undoStack();
-    for (double time : {1.1, 1.2, 1.3})
-        stack.push(new SetKeyframeTimeCommand(document, id, 1, time));
-    QCOMPARE(stack.count(), 2);
-    QCOMPARE(keyTimes(document, id)[1], 1.3);
-    stack.undo();
-    QCOMPARE(keyTimes(document, id)[1], 1.0);
-    stack.redo();
-    QCOMPARE(keyTimes(document, id)[1], 1.3);
-
-    const Eigen::Quaterniond before = document.object(id)->track.keys[0].pose.orientation;
-    for (double angle : {0.1, 0.2, 0.3})
-        stack.push(new SetKeyframeOrientationCommand(
-            document, id, 0, Eigen::Quaterniond(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitX()))));
-    QCOMPARE(stack.count(), 3);
-    stack.undo();
-    QCOMPARE(document.object(id)->track.keys[0].pose.orientation.coeffs(), before.coeffs());
-    stack.redo();
-
-    // A drag that starts after a save is a new step: the saved state stays reachable.
-    stack.push(new SetKeyframePositionCommand(document, id, 0, {1, 0, 0}));
-    stack.setClean();
-    stack.push(new SetKeyframePositionCommand(document, id, 0, {2, 0, 0}));
-    QCOMPARE(stack.count(), 5);
-    stack.undo();
-    QVERIFY(stack.isClean());
-}
-
-void TstCommands::differentEditsDoNotMerge()
-{
-    Document document;
-    const ObjectId id = import(document, {objectWithKeys(1, {0, 1, 2})}).front();
-    QUndoStack& stack = document.undoStack();
-    stack.push(new SetKeyframeTimeCommand(document, id, 1, 1.5));
-    stack.push(new SetKeyframeTimeCommand(document, id, 2, 2.5)); // another key
-    stack.push(new SetKeyframePositionCommand(document, id, 2, {1, 2, 3})); // another field
-    stack.push(new SetFitParameterCommand(document, id, FitParameter::Alpha, 0.5));
-    stack.push(new SetFitParameterCommand(document, id, FitParameter::Beta, 0.5)); // another parameter
-    stack.push(new SetFitParameterCommand(document, id, FitParameter::Beta, 0.7));
-    QCOMPARE(stack.count(), 6);
-    stack.push(new ToggleKeyframeConstraintCommand(document, id, 0));
-    stack.push(new ToggleKeyframeConstraintCommand(document, id, 0)); // toggles never merge
-    QCOMPARE(stack.count(), 8);
 }
 
 void TstCommands::retimeMapsTheWholeTrack()
@@ -374,8 +325,11 @@ void TstCommands::strokes()
     const auto strokes = [&] { return document.object(id)->track.sketch.directionStrokes; };
     QCOMPARE(strokes().size(), std::size_t{2});
     QCOMPARE(strokes()[0].points[0], Eigen::Vector3d::UnitZ()); // normalised
-    stack.push(new EditStrokeCommand(document, id, 0, {{Eigen::Vector3d::UnitY()}, {}}));
-    stack.push(new EditStrokeCommand(document, id, 0, {{-Eigen::Vector3d::UnitY()}, {}}));
+    {
+        Gesture edit(document);
+        edit.push(new EditStrokeCommand(document, id, 0, {{Eigen::Vector3d::UnitY()}, {}}));
+        edit.push(new EditStrokeCommand(document, id, 0, {{-Eigen::Vector3d::UnitY()}, {}}));
+    }
     QCOMPARE(stack.count(), 4); // the two edits merged
     stack.push(new EraseStrokeCommand(document, id, 0));
     QCOMPARE(strokes().size(), std::size_t{1});
@@ -628,8 +582,11 @@ void TstCommands::deleteRemovesTheSubtree()
 void TstCommands::timeRange()
 {
     Document document;
-    document.undoStack().push(new SetTimeRangeCommand(document, {30, 1, 5}));
-    document.undoStack().push(new SetTimeRangeCommand(document, {30, 1, 6}));
+    {
+        Gesture edit(document);
+        edit.push(new SetTimeRangeCommand(document, {30, 1, 5}));
+        edit.push(new SetTimeRangeCommand(document, {30, 1, 6}));
+    }
     QCOMPARE(document.undoStack().count(), 1);
     QCOMPARE(document.scene().fps, 30.0);
     QCOMPARE(document.scene().endTime, 6.0);

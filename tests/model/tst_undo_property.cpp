@@ -4,18 +4,28 @@
 // refuses its edit must change nothing. At the end the whole stack unwinds to the initial document and
 // winds forward to the final one.
 //
+// The commands go through the document's gestures as the views push them: an edit that repeats the
+// one before continues its gesture (drags merge); other edits begin a gesture, continue the open one
+// with a command of another kind (a stroke added and then edited), or are pushed alone. A step that
+// a gesture brings back to where it began leaves the stack, and the document must be that earlier
+// state exactly. The gestures draw from a generator of their own, so each seed's edits are those it
+// always made.
+//
 // Four seeds of kDefaultSteps steps each by default, each seed a test function of its own that stays
 // well under a minute in the sanitizer build on two busy cores. GYRE_PROPERTY_SEED runs one other
 // seed, GYRE_PROPERTY_STEPS another length: a failure found that way is kept by adding its seed here.
 
 #include "model_test_support.h"
 
+#include "model/gesture.h"
 #include "model/project_file.h"
 
 #include <QTest>
 
 #include <algorithm>
 #include <array>
+#include <optional>
+#include <random>
 #include <stdexcept>
 
 using namespace gyre::model;
@@ -83,6 +93,11 @@ void TstUndoProperty::randomSequences()
     std::array<int, kEditKinds> pushed{};
     int merges = 0;
     int refusals = 0;
+    std::mt19937 gestureDice(seed);
+    std::optional<Gesture> gesture;
+    EditKind gestureKind = EditKind::ImportObjects; // of the gesture's latest command
+    int pushedAlone = 0;
+    int otherKindInGesture = 0;
 
     for (int step = 0; step < steps; ++step) {
         const EditKind kind = edits.kind(document);
@@ -96,16 +111,41 @@ void TstUndoProperty::randomSequences()
         }
         if (!command)
             continue;
+        // 0: alone, 1: a new gesture, 2: the open gesture, whatever kind it had.
+        const unsigned choice = edits.repeating() ? 2 : std::uniform_int_distribution<unsigned>(0, 2)(gestureDice);
+        if (choice != 2 || !gesture) {
+            gesture.reset();
+            if (choice != 0)
+                gesture.emplace(document);
+        }
+        QCOMPARE(document.isGestureOpen(), gesture.has_value());
+        const bool joinsStep = gesture && document.newestStepGesture() == gesture->id();
+        if (!gesture)
+            ++pushedAlone;
+        else if (joinsStep && kind != gestureKind)
+            ++otherKindInGesture;
+        gestureKind = kind;
         const int countBefore = stack.count();
-        stack.push(command.release());
+        document.push(command.release(), gesture ? gesture->id() : kNoGesture);
         ++pushed[static_cast<std::size_t>(kind)];
-        if (stack.count() == countBefore)
-            ++merges; // the top command now holds this edit too; its "before" state is unchanged
-        else
-            states.emplace_back();
-        states.back() = projectJson(document.scene());
+        if (stack.count() == countBefore) {
+            // The top step now holds this edit too, its "before" state unchanged; or the edit began a
+            // gesture and changed nothing.
+            if (joinsStep)
+                ++merges;
+            states.back() = projectJson(document.scene());
+        } else if (stack.count() == countBefore + 1) {
+            states.push_back(projectJson(document.scene()));
+        } else {
+            // The gesture came back to where its step began, and the step went.
+            QCOMPARE(stack.count(), countBefore - 1);
+            states.pop_back();
+            QCOMPARE(projectJson(document.scene()), states.back());
+        }
         QVERIFY(parentsComeFirst(document.scene()));
         QCOMPARE(states.size(), static_cast<std::size_t>(stack.count()) + 1);
+        if (stack.count() == 0)
+            continue;
 
         stack.undo();
         QCOMPARE(projectJson(document.scene()), states[states.size() - 2]);
@@ -117,6 +157,10 @@ void TstUndoProperty::randomSequences()
         QVERIFY2(pushed[static_cast<std::size_t>(kind)] > 0, qPrintable(QStringLiteral("kind %1 never pushed").arg(kind)));
     QVERIFY(merges > 0);
     QVERIFY(refusals > 0);
+    QVERIFY(pushedAlone > 0);
+    QVERIFY(otherKindInGesture > 0);
+    gesture.reset();
+    QVERIFY(!document.isGestureOpen());
 
     stack.setIndex(0);
     QCOMPARE(projectJson(document.scene()), states.front());

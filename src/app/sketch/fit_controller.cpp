@@ -1,6 +1,5 @@
 #include "app/sketch/fit_controller.h"
 
-#include "app/undo_gesture.h"
 #include "fit/angular_velocity_fit.h"
 #include "jobs/fit_input.h"
 #include "model/commands/apply_fit_result_command.h"
@@ -73,7 +72,8 @@ FitController::FitController(model::Document& document, Selection& selection, QO
     connect(&document_, &model::Document::sketchChanged, this, &FitController::onInputsMayHaveChanged);
     connect(&document_, &model::Document::trackSettingsChanged, this, &FitController::onInputsMayHaveChanged);
     connect(&document_, &model::Document::sceneReset, this, &FitController::onSelectionChanged);
-    connect(&document_.undoStack(), &QUndoStack::indexChanged, this, &FitController::onUndoIndexChanged);
+    connect(&document_, &model::Document::gestureEnded, this, &FitController::settleHeld);
+    connect(&document_.undoStack(), &QUndoStack::indexChanged, this, &FitController::settleHeld);
     connect(&selection_, &Selection::changed, this, [this, shown = selection.object()]() mutable {
         // Another key of the same object is selected: the fit is the same.
         if (selection_.object() != shown) {
@@ -118,7 +118,7 @@ void FitController::onFitFinished(model::ObjectId object, const model::MotionTra
                                   const model::FitResult& result, const jobs::FitSummary& summary)
 {
     HeldResult held{object, input, result, appliedFitMessage(summary, input)};
-    if (isMacroOpen(document_.undoStack()))
+    if (document_.isGestureOpen())
         heldFit_ = std::move(held);
     else
         settleFit(held);
@@ -139,7 +139,7 @@ void FitController::onLiveFinished(model::ObjectId object, const model::MotionTr
         return;
     // Reset before applying: the push's indexChanged must find nothing older to apply.
     heldLiveResult_.reset();
-    if (!isMacroOpen(document_.undoStack()) && applyIfCurrent(object, input, result)) {
+    if (!document_.isGestureOpen() && applyIfCurrent(object, input, result)) {
         clearPreview();
         return;
     }
@@ -155,9 +155,9 @@ void FitController::onInputsMayHaveChanged(model::ObjectId object)
         requestLiveFit();
 }
 
-void FitController::onUndoIndexChanged()
+void FitController::settleHeld()
 {
-    if (isMacroOpen(document_.undoStack()))
+    if (document_.isGestureOpen())
         return;
     // A gesture ended (or a step was pushed, undone or redone): what was held waits no longer.
     if (std::optional<HeldResult> held = std::exchange(heldFit_, std::nullopt))
@@ -199,7 +199,7 @@ bool FitController::applyIfCurrent(model::ObjectId object, const model::MotionTr
     if (current == nullptr || !jobs::sameFitInput(input, current->track))
         return false;
     try {
-        pushAlone(document_.undoStack(), new model::ApplyFitResultCommand(document_, object, result));
+        document_.push(new model::ApplyFitResultCommand(document_, object, result));
     } catch (const std::invalid_argument&) {
         // A result the document refuses (value_checks.h) is one not to apply.
         return false;

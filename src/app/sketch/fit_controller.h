@@ -5,9 +5,10 @@
 //
 // A result is applied as one undo step (ApplyFitResultCommand) only if its input still matches the
 // document (jobs::sameFitInput); an explicit fit whose track changed while it ran is dropped, and
-// says so. While a gesture is open (a stroke being drawn pushes its commands at every mouse move),
-// nothing is applied: a live result is shown as a preview of the motion (previewChanged, for the
-// viewport), and the newest result is applied when the gesture ends and it matches the document.
+// says so. While a gesture is open (Document::isGestureOpen: a stroke being drawn pushes its commands
+// at every mouse move), nothing is applied: a live result is shown as a preview of the motion
+// (previewChanged, for the viewport), and the newest result is applied when the gesture ends
+// (Document::gestureEnded) and it matches the document.
 // Live fits follow only changes made with nothing to redo, so undo and redo never lose history to a
 // fit; and applying a fit changes none of the inputs, so it starts no other fit. The UI thread never
 // waits: every fit runs on a FitJob.
@@ -63,7 +64,8 @@ private:
     // The explicit fit's result, when no gesture is open: applied, or dropped for a changed track.
     void settleFit(const HeldResult& held);
     void onInputsMayHaveChanged(model::ObjectId object);
-    void onUndoIndexChanged();
+    // After a gesture ended or the undo history moved: applies what was held, unless a gesture is open.
+    void settleHeld();
     void onSelectionChanged();
     // Posts a live fit of the selected track unless its inputs are those of the newest live fit.
     void requestLiveFit();

@@ -1,6 +1,5 @@
 #include "app/sketch/fit_panel.h"
 
-#include "app/undo_gesture.h"
 #include "jobs/sketch_fit.h"
 #include "model/commands/remove_fit_command.h"
 #include "model/commands/set_fit_parameter_command.h"
@@ -225,7 +224,7 @@ void FitPanel::removeFit()
 void FitPanel::push(const std::function<QUndoCommand*()>& makeCommand)
 {
     try {
-        pushAlone(document_.undoStack(), makeCommand());
+        document_.push(makeCommand());
     } catch (const std::invalid_argument& error) {
         showStatus(tr("Not changed: %1.").arg(QString::fromUtf8(error.what())));
         // The widgets go back to what the track holds.

@@ -465,7 +465,7 @@ void MagnitudePlot::clearMagnitude()
     const model::SceneObject* object = selection_.selectedObject();
     if (object == nullptr || object->track.sketch.magnitude.empty())
         return;
-    pushAlone(document_.undoStack(), new model::SetMagnitudeCurveCommand(document_, object->id, {}));
+    document_.push(new model::SetMagnitudeCurveCommand(document_, object->id, {}));
 }
 
 bool MagnitudePlot::eventFilter(QObject* watched, QEvent* event)
@@ -505,7 +505,7 @@ bool MagnitudePlot::pressed(const QMouseEvent& event)
     } else {
         return false; // QCustomPlot pans
     }
-    gesture_ = std::make_unique<UndoGesture>(document_.undoStack());
+    gesture_.emplace(document_);
     gestureObject_ = object->id;
     if (stroke_)
         extendStroke(pixel);
@@ -611,7 +611,7 @@ void MagnitudePlot::extendStroke(const QPointF& pixel)
         drawn.pop_back();
     drawn.push_back(point);
     // A single point spans no time and draws nothing; if the stroke had drawn, it takes that back.
-    if (drawn.size() < 2 && !gesture_->isOpen())
+    if (drawn.size() < 2 && !gesture_->hasStep())
         return;
     std::vector<model::MagnitudePoint> curve = drawn.size() < 2 ? stroke_->before : withStroke(stroke_->before, drawn);
     gesture_->push(new model::SetMagnitudeCurveCommand(document_, gestureObject_, std::move(curve)));

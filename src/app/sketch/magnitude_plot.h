@@ -27,9 +27,9 @@
 // time range refits both axes.
 
 #include "app/selection.h"
-#include "app/undo_gesture.h"
 #include "app/selected_track_sampler.h"
 #include "model/document.h"
+#include "model/gesture.h"
 
 #include <QPointF>
 #include <QRect>
@@ -37,7 +37,6 @@
 #include <QWidget>
 
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -167,7 +166,7 @@ private:
     bool fitViewOnNextCurves_ = true;
     bool viewMovedByHand_ = false; // zoomed or panned since the last Fit view
 
-    std::unique_ptr<UndoGesture> gesture_; // open while a drag edits the document
+    std::optional<model::Gesture> gesture_; // open while a drag edits the document
     model::ObjectId gestureObject_ = model::kNoObject;
     std::optional<WindowDrag> windowDrag_;
     std::optional<Stroke> stroke_;

@@ -143,6 +143,7 @@ PatternPad::PatternPad(model::Document& document, Selection& selection, QWidget*
     , canvas_(new PatternCanvas(this))
     , repeatBox_(new QSpinBox(this))
     , clearButton_(new QPushButton(tr("Clear Pattern"), this))
+    , repeatEdits_(model::Gesture(document).id())
 {
     repeatBox_->setRange(0, kMaxRepeat);
     repeatBox_->setSpecialValueText(tr("off"));
@@ -161,7 +162,7 @@ PatternPad::PatternPad(model::Document& document, Selection& selection, QWidget*
     layout->addWidget(canvas_, 1);
     layout->addLayout(controls);
 
-    connect(canvas_, &PatternCanvas::drawingStarted, this, [this] { gesture_.emplace(document_.undoStack()); });
+    connect(canvas_, &PatternCanvas::drawingStarted, this, [this] { gesture_.emplace(document_); });
     connect(canvas_, &PatternCanvas::drawn, this, &PatternPad::setPatternDrawn);
     connect(canvas_, &PatternCanvas::drawingFinished, this, [this] { gesture_.reset(); });
     connect(repeatBox_, &QSpinBox::valueChanged, this, &PatternPad::setRepeat);
@@ -201,9 +202,10 @@ void PatternPad::setRepeat(int repeat)
     const model::SceneObject* object = selection_.selectedObject();
     if (object == nullptr || repeat == object->track.sketch.patternRepeat)
         return;
-    // Pushed on its own, so that consecutive edits of the box merge into one step (the gestures of
-    // drawing end their steps, so a drawn pattern never merges with them).
-    document_.undoStack().push(new model::SetPatternCommand(document_, object->id, object->track.sketch.pattern, repeat));
+    // Merges with the box's previous edit while that is the newest step; a drawn pattern is another
+    // gesture, so never merges with these.
+    document_.push(new model::SetPatternCommand(document_, object->id, object->track.sketch.pattern, repeat),
+                   repeatEdits_);
 }
 
 void PatternPad::clearPattern()
@@ -211,7 +213,7 @@ void PatternPad::clearPattern()
     const model::SceneObject* object = selection_.selectedObject();
     if (object == nullptr)
         return;
-    pushAlone(document_.undoStack(), new model::SetPatternCommand(document_, object->id, {}, 0));
+    document_.push(new model::SetPatternCommand(document_, object->id, {}, 0));
 }
 
 } // namespace gyre::app

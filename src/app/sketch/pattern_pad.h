@@ -8,8 +8,8 @@
 // Pad units: the canvas's height is one unit, x runs from its left edge, y from its middle, up.
 
 #include "app/selection.h"
-#include "app/undo_gesture.h"
 #include "model/document.h"
+#include "model/gesture.h"
 
 #include <Eigen/Core>
 #include <QWidget>
@@ -89,7 +89,10 @@ private:
     PatternCanvas* canvas_;
     QSpinBox* repeatBox_;
     QPushButton* clearButton_;
-    std::optional<UndoGesture> gesture_;
+    std::optional<model::Gesture> gesture_; // while a pattern is drawn
+    // The Repeat box's edits, one gesture that ends at once (nothing waits for the artist to leave
+    // the box) and that each edit continues: consecutive edits merge into one step.
+    model::GestureId repeatEdits_;
 };
 
 } // namespace gyre::app

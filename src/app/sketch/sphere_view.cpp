@@ -335,7 +335,7 @@ void SphereView::mousePressEvent(QMouseEvent* event)
     if (event->button() != Qt::LeftButton || selection_.selectedObject() == nullptr)
         return;
     dragObject_ = selection_.object();
-    gesture_.emplace(document_.undoStack());
+    gesture_.emplace(document_);
     if (tool_ == Tool::Draw) {
         drag_ = DragKind::Draw;
         strokePoints_ = {projection_.cast(position)};
@@ -445,10 +445,11 @@ void SphereView::endDrag()
 
 void SphereView::cancelDrag()
 {
-    const bool changedDocument = gesture_ && gesture_->isOpen();
-    endDrag();
-    if (changedDocument)
+    // Taken back while the gesture is still open, so that nothing waiting for its end (a fit held
+    // back while drawing) lands first and is undone in its place.
+    if (gesture_ && gesture_->hasStep())
         document_.undoStack().undo();
+    endDrag();
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -45,8 +45,8 @@
 #include "app/selection.h"
 #include "app/sketch/direction_curves.h"
 #include "app/sketch/sphere_projection.h"
-#include "app/undo_gesture.h"
 #include "model/document.h"
+#include "model/gesture.h"
 
 #include <Eigen/Core>
 #include <QImage>
@@ -182,7 +182,7 @@ private:
     model::ObjectId dragObject_ = model::kNoObject;
     std::vector<Eigen::Vector3d> strokePoints_;
     std::optional<std::size_t> strokeIndex_; // of the stroke being drawn, once it is in the document
-    std::optional<UndoGesture> gesture_;
+    std::optional<model::Gesture> gesture_;
 
     SelectedTrackSampler<SphereCurves> sampler_; // last: joined before the members its work uses are destroyed
 };

@@ -41,7 +41,7 @@ bool HandleDrag::start(Handle handle, const HandleFrame& handles, model::ObjectI
     } else {
         startScreenAngle_ = screenAngle(position, camera);
     }
-    gesture_.emplace(document_.undoStack());
+    gesture_.emplace(document_);
     return true;
 }
 

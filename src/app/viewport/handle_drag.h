@@ -1,11 +1,11 @@
 #pragma once
 // A drag of a handle: it moves the key along or turns it about an axis of its parent frame as the
-// cursor goes, pushing one command per move under one UndoGesture, so the whole drag is one undo step.
+// cursor goes, pushing one command per move within one gesture of the document, so the whole drag is one undo step.
 
-#include "app/undo_gesture.h"
 #include "app/viewport/orbit_camera.h"
 #include "app/viewport/pose_handles.h"
 #include "model/document.h"
+#include "model/gesture.h"
 
 #include <QPointF>
 
@@ -33,7 +33,7 @@ private:
     double screenAngle(const QPointF& position, const OrbitCamera& camera) const;
 
     model::Document& document_;
-    std::optional<UndoGesture> gesture_;
+    std::optional<model::Gesture> gesture_;
     Handle handle_ = Handle::MoveX;
     model::ObjectId object_ = model::kNoObject;
     std::size_t key_ = 0;

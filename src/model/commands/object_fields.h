@@ -20,28 +20,16 @@ namespace gyre::model {
 SceneObject& objectIn(Scene& scene, ObjectId id);
 const SceneObject& objectIn(const Scene& scene, ObjectId id);
 
-// Merge ids of the fields whose consecutive edits merge; each is unique.
-enum MergeId : int {
-    kKeyframeTimeMerge = 1,
-    kKeyframeOrientationMerge,
-    kKeyframePositionMerge,
-    kSubdivisionMerge,
-    kStrokeMerge,
-    kMagnitudeCurveMerge,
-    kPatternMerge,
-    kFitWindowMerge,
-    kFitParameterMerge,
-    kTimeRangeMerge,
-};
-inline constexpr int kNeverMerge = -1;
+// Whether consecutive edits of a field within one gesture merge into one (ChangeValueCommand).
+enum class Merge : bool { Never = false, WithinGesture = true };
 
 // A field of an object that `Member` gives a reference to, given the object and target.index (the
 // keyframe's or stroke's index, where the field belongs to one).
-template <auto Member, class ValueType, int MergeIdValue, Change... ChangeValues>
+template <auto Member, class ValueType, Merge Merges, Change... ChangeValues>
 struct MemberField {
     using Value = ValueType;
     static constexpr Changes kChanges = (Changes() | ... | ChangeValues);
-    static constexpr int kMergeId = MergeIdValue;
+    static constexpr bool kMerges = static_cast<bool>(Merges);
     static Value get(const Scene& scene, const FieldTarget& target)
     {
         return Member(objectIn(scene, target.object), target.index);
@@ -81,37 +69,37 @@ inline constexpr auto sketchFitParameter = [](auto& object, std::size_t paramete
     return chosen == FitParameter::Alpha ? sketch.alpha : chosen == FitParameter::Beta ? sketch.beta : sketch.delta;
 };
 
-using KeyframeTimeField = MemberField<keyTime, double, kKeyframeTimeMerge, Change::Keyframes>;
+using KeyframeTimeField = MemberField<keyTime, double, Merge::WithinGesture, Change::Keyframes>;
 using KeyframeOrientationField =
-    MemberField<keyOrientation, Eigen::Quaterniond, kKeyframeOrientationMerge, Change::Keyframes>;
-using KeyframePositionField = MemberField<keyPosition, Eigen::Vector3d, kKeyframePositionMerge, Change::Keyframes>;
-using KeyframeConstraintField = MemberField<keyConstrained, bool, kNeverMerge, Change::Keyframes>;
-using ObjectNameField = MemberField<objectName, QString, kNeverMerge, Change::Object>;
-using InterpolationField = MemberField<trackInterpolation, InterpolationMethod, kNeverMerge, Change::TrackSettings>;
-using SubdivisionField = MemberField<trackSubdivision, SubdivisionSettings, kSubdivisionMerge, Change::TrackSettings>;
-using StrokeField = MemberField<sketchStroke, DirectionStroke, kStrokeMerge, Change::Sketch>;
-using MagnitudeCurveField = MemberField<sketchMagnitude, std::vector<MagnitudePoint>, kMagnitudeCurveMerge, Change::Sketch>;
-using FitWindowField = MemberField<sketchWindow, std::optional<std::pair<double, double>>, kFitWindowMerge, Change::Sketch>;
-using FitParameterField = MemberField<sketchFitParameter, double, kFitParameterMerge, Change::Sketch>;
+    MemberField<keyOrientation, Eigen::Quaterniond, Merge::WithinGesture, Change::Keyframes>;
+using KeyframePositionField = MemberField<keyPosition, Eigen::Vector3d, Merge::WithinGesture, Change::Keyframes>;
+using KeyframeConstraintField = MemberField<keyConstrained, bool, Merge::Never, Change::Keyframes>;
+using ObjectNameField = MemberField<objectName, QString, Merge::Never, Change::Object>;
+using InterpolationField = MemberField<trackInterpolation, InterpolationMethod, Merge::Never, Change::TrackSettings>;
+using SubdivisionField = MemberField<trackSubdivision, SubdivisionSettings, Merge::WithinGesture, Change::TrackSettings>;
+using StrokeField = MemberField<sketchStroke, DirectionStroke, Merge::WithinGesture, Change::Sketch>;
+using MagnitudeCurveField = MemberField<sketchMagnitude, std::vector<MagnitudePoint>, Merge::WithinGesture, Change::Sketch>;
+using FitWindowField = MemberField<sketchWindow, std::optional<std::pair<double, double>>, Merge::WithinGesture, Change::Sketch>;
+using FitParameterField = MemberField<sketchFitParameter, double, Merge::WithinGesture, Change::Sketch>;
 
 // The pattern and how often it repeats, drawn and set together.
 inline constexpr auto sketchPattern = [](auto& object, std::size_t) {
     return std::tie(object.track.sketch.pattern, object.track.sketch.patternRepeat);
 };
 using PatternField =
-    MemberField<sketchPattern, std::tuple<std::vector<Eigen::Vector2d>, int>, kPatternMerge, Change::Sketch>;
+    MemberField<sketchPattern, std::tuple<std::vector<Eigen::Vector2d>, int>, Merge::WithinGesture, Change::Sketch>;
 
 // The keyframes and the sketch together: what a retiming or an applied fit changes.
 inline constexpr auto keyframesAndSketch = [](auto& object, std::size_t) {
     return std::tie(object.track.keys, object.track.sketch);
 };
-using KeyframesAndSketchField = MemberField<keyframesAndSketch, std::tuple<SharedVector<Keyframe>, SketchState>, kNeverMerge, Change::Keyframes, Change::Sketch>;
+using KeyframesAndSketchField = MemberField<keyframesAndSketch, std::tuple<SharedVector<Keyframe>, SketchState>, Merge::Never, Change::Keyframes, Change::Sketch>;
 
 // The parent and, because parents come before their children, the order of all objects.
 struct ParentField {
     using Value = std::pair<ObjectId, std::vector<ObjectId>>;
     static constexpr Changes kChanges = Change::Object;
-    static constexpr int kMergeId = kNeverMerge;
+    static constexpr bool kMerges = false;
     static Value get(const Scene& scene, const FieldTarget& target);
     static void set(Scene& scene, const FieldTarget& target, Value value);
 };
@@ -121,7 +109,7 @@ struct ParentField {
 struct ParentAndKeysField {
     using Value = std::pair<ParentField::Value, SharedVector<Keyframe>>;
     static constexpr Changes kChanges = Changes(Change::Object) | Change::Keyframes;
-    static constexpr int kMergeId = kNeverMerge;
+    static constexpr bool kMerges = false;
     static Value get(const Scene& scene, const FieldTarget& target);
     static void set(Scene& scene, const FieldTarget& target, Value value);
 };
@@ -131,12 +119,13 @@ struct TimeRange {
     double fps = 24.0;
     double startTime = 0.0;
     double endTime = 10.0;
+    bool operator==(const TimeRange&) const = default;
 };
 
 struct TimeRangeField {
     using Value = TimeRange;
     static constexpr Changes kChanges = Change::SceneSettings;
-    static constexpr int kMergeId = kTimeRangeMerge;
+    static constexpr bool kMerges = true;
     static Value get(const Scene& scene, const FieldTarget& target);
     static void set(Scene& scene, const FieldTarget& target, Value value);
 };
