@@ -277,9 +277,12 @@ void SphereView::forgetCurves()
 
 void SphereView::showCurves(SphereCurves curves)
 {
-    curves_ = std::move(curves);
-    curvesShown_ = selection_.selectedObject() != nullptr;
-    invalidateLayers();
+    const bool shown = selection_.selectedObject() != nullptr;
+    if (shown != curvesShown_ || !sameCurves(curves, curves_)) {
+        curves_ = std::move(curves);
+        curvesShown_ = shown;
+        invalidateLayers();
+    }
     emit curvesUpdated();
 }
 
