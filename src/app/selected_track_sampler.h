@@ -1,16 +1,15 @@
 #pragma once
 // Curves of the selected object's motion for a view, sampled off the UI thread: building a track's
 // motion grows with 2^levels for a screw track, far beyond what the UI thread can spare. Requests are
-// coalesced to one every kIntervalMilliseconds; the timer is not restarted by later requests, so while
-// a key or a stroke is dragged the curves follow every interval instead of waiting for the drag to end.
-// Only the newest request's curves are shown (LatestResultJob).
+// coalesced to one every kIntervalMilliseconds, and a view off screen samples nothing until it is
+// shown again (ViewRefresh). Only the newest request's curves are shown (LatestResultJob).
 
 #include "app/latest_result_job.h"
 #include "app/selection.h"
+#include "app/view_refresh.h"
 #include "model/document.h"
 
-#include <QObject>
-#include <QTimer>
+#include <QWidget>
 
 #include <functional>
 #include <stdexcept>
@@ -29,26 +28,21 @@ public:
     using MakeSampling = std::function<std::function<Curves()>(const model::SceneObject&, const model::Scene&)>;
     using Show = std::function<void(const Curves&)>;
 
-    // `receiver` owns the sampler (it is a member), so the sampler outlives every call queued on it.
-    SelectedTrackSampler(QObject& receiver, const Selection& selection, const model::Document& document,
+    // `view` owns the sampler (it is a member), so the sampler outlives every call queued on it.
+    SelectedTrackSampler(QWidget& view, const Selection& selection, const model::Document& document,
                          MakeSampling makeSampling, Show show)
         : selection_(selection)
         , document_(document)
         , makeSampling_(std::move(makeSampling))
         , show_(std::move(show))
-        , job_(receiver)
+        , refresh_(view, kIntervalMilliseconds, [this] { sampleNow(); })
+        , job_(view)
     {
-        timer_.setSingleShot(true);
-        timer_.setInterval(kIntervalMilliseconds);
-        QObject::connect(&timer_, &QTimer::timeout, &receiver, [this] { sampleNow(); });
     }
 
-    // Samples the selected object's track within kIntervalMilliseconds.
-    void schedule()
-    {
-        if (!timer_.isActive())
-            timer_.start();
-    }
+    // Samples the selected object's track within kIntervalMilliseconds if the view is on screen,
+    // else once it is shown again.
+    void schedule() { refresh_.request(); }
 
 private:
     void sampleNow()
@@ -74,7 +68,7 @@ private:
     const model::Document& document_;
     MakeSampling makeSampling_;
     Show show_;
-    QTimer timer_;
+    ViewRefresh refresh_;
     LatestResultJob job_; // last: joined before the members its work uses are destroyed
 };
 

@@ -7,7 +7,9 @@
 //
 // The curves follow the selection and the track's keys and settings, asked for at most every
 // SelectedTrackSampler::kIntervalMilliseconds while they change (a dragged key changes them at every
-// mouse move). They are sampled on a job thread of the panel's own: 2000 samples of the bundled sample's screw
+// mouse move), and not at all while the panel is off screen, as it is when the window opens, tabbed
+// behind the inspector: replotting it there took 37% of the UI thread's time in a drag (issue 18).
+// They are sampled on a job thread of the panel's own: 2000 samples of the bundled sample's screw
 // motion took 20–40 ms in a Debug build, and building a TrackMotion grows with 2^levels (0.2 s at 8
 // subdivision levels, seconds at 12 and more), far beyond what the UI thread can spare.
 

@@ -2,7 +2,8 @@
 // its current curve is the speed of that turn, measured here from the orientations; strokes drawn with
 // the mouse become the sketch's magnitude curve, one undo step each, a later stroke replacing only its
 // own span; the window's edges and grip drag the fit window by the dragged amount, clamped to the
-// keys; a fit applied to the track shows as the fitted curve beside the motion before it.
+// keys; a fit applied to the track shows as the fitted curve beside the motion before it. A key moved
+// but not turned costs no replot, and a plot off screen samples nothing until it is shown (issue 18).
 
 #include "app/selection.h"
 #include "app/sketch/magnitude_plot.h"
@@ -10,6 +11,8 @@
 #include "model/commands/apply_fit_result_command.h"
 #include "model/commands/import_objects_command.h"
 #include "model/commands/retime_keyframes_command.h"
+#include "model/commands/set_keyframe_orientation_command.h"
+#include "model/commands/set_keyframe_position_command.h"
 #include "model/commands/set_fit_window_command.h"
 #include "model/commands/set_magnitude_curve_command.h"
 #include "model/commands/set_time_range_command.h"
@@ -398,6 +401,47 @@ private slots:
         QVERIFY(!plot_->drawAction()->isEnabled());
         selection_->selectObject(object_);
         QVERIFY(plot_->plot()->isVisible());
+    }
+
+    void aKeyMovedButNotTurnedCostsNoReplot()
+    {
+        QSignalSpy updated(plot_.get(), &app::MagnitudePlot::curvesUpdated);
+        QSignalSpy replotted(plot_->plot(), &QCustomPlot::afterReplot);
+        document_->undoStack().push(
+            new model::SetKeyframePositionCommand(*document_, object_, 2, Eigen::Vector3d(0.5, 0.0, 0.0)));
+        QVERIFY(updated.wait(5000));
+        QCOMPARE(replotted.count(), 0);
+
+        // Turned, it changes the speed: one replot.
+        document_->undoStack().push(
+            new model::SetKeyframeOrientationCommand(*document_, object_, 2, turnAboutZ(2 * kQuarterTurn + 0.3)));
+        QVERIFY(updated.wait(5000));
+        QCOMPARE(replotted.count(), 1);
+        QCOMPARE(plot_->graph(Curve::ConstrainedKeys)->data()->at(2)->value,
+                 model::TrackMotion(track()).angularVelocity(2.0).norm());
+    }
+
+    void anOffScreenPlotSamplesAndReplotsNothingUntilShown()
+    {
+        constexpr int kInterval = app::SelectedTrackSampler<int>::kIntervalMilliseconds;
+        plot_->hide();
+        QSignalSpy updated(plot_.get(), &app::MagnitudePlot::curvesUpdated);
+        QSignalSpy replotted(plot_->plot(), &QCustomPlot::afterReplot);
+        // A key turned a little further at each move of a drag, each move longer than the sampler's interval.
+        for (int move = 1; move <= 5; ++move) {
+            document_->undoStack().push(new model::SetKeyframeOrientationCommand(
+                *document_, object_, 2, turnAboutZ(2 * kQuarterTurn + 0.1 * move)));
+            QVERIFY(!updated.wait(2 * kInterval));
+        }
+        QCOMPARE(replotted.count(), 0);
+
+        plot_->show();
+        QVERIFY(updated.wait(5000));
+        QCOMPARE(plot_->graph(Curve::ConstrainedKeys)->data()->at(2)->value,
+                 model::TrackMotion(track()).angularVelocity(2.0).norm());
+        // Once: nothing more is asked for.
+        QVERIFY(!updated.wait(2 * kInterval));
+        QCOMPARE(updated.count(), 1);
     }
 
     void screenshotWithASketchAndAWindow()

@@ -1,12 +1,16 @@
 // The smoothness plots of the bundled sample checked against the track's motion evaluated here: the
 // position curve is the motion of the chosen point, the velocity and acceleration curves are its
 // central differences in units/s and units/s², and choosing another point changes the curves.
+// Tabbed behind another dock, the panel samples and replots nothing until it is brought to the front
+// (issue 18).
 
 #include "app/main_window.h"
 #include "app/smoothness_panel.h"
 #include "gui_test_support.h"
+#include "model/commands/set_keyframe_position_command.h"
 #include "model/track_evaluation.h"
 
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QSignalSpy>
 #include <QTest>
@@ -46,6 +50,8 @@ private slots:
     {
         window_ = std::make_unique<app::MainWindow>();
         window_->show();
+        // The window opens with the inspector in front of the panel, which then samples nothing.
+        dock("smoothnessDock")->raise();
         panel_ = window_->findChild<app::SmoothnessPanel*>();
         QVERIFY(panel_ != nullptr);
         QSignalSpy updated(panel_, &app::SmoothnessPanel::curvesUpdated);
@@ -135,7 +141,39 @@ private slots:
         QVERIFY(std::abs(valueAt(*panel_, Quantity::Position, Component::X, sample) - originX) > 1e-3);
     }
 
+    void aPanelTabbedAwayDoesNothingWhileAKeyIsDraggedUntilShown()
+    {
+        constexpr int kInterval = app::SelectedTrackSampler<model::PointTrajectory>::kIntervalMilliseconds;
+        dock("inspectorDock")->raise();
+        // Qt keeps a dock tabbed behind another visible, out of the window.
+        QTRY_VERIFY(panel_->visibleRegion().isEmpty());
+        QVERIFY(panel_->isVisible());
+        QSignalSpy updated(panel_, &app::SmoothnessPanel::curvesUpdated);
+        QSignalSpy replotted(panel_->plot(), &QCustomPlot::afterReplot);
+        model::Document& document = window_->document();
+        const model::ObjectId object = window_->selection().object();
+        const Eigen::Vector3d start = document.object(object)->track.keys[0].pose.position;
+        // Each move of the drag longer than the sampler's interval.
+        for (int move = 1; move <= 5; ++move) {
+            document.undoStack().push(new model::SetKeyframePositionCommand(
+                document, object, 0, start + Eigen::Vector3d(0.1 * move, 0.0, 0.0)));
+            QVERIFY(!updated.wait(2 * kInterval));
+        }
+        QCOMPARE(replotted.count(), 0);
+
+        dock("smoothnessDock")->raise();
+        QVERIFY(updated.wait(5000));
+        QCOMPARE(replotted.count(), 1);
+        const model::TrackMotion motion(document.object(object)->track);
+        QCOMPARE(valueAt(*panel_, Quantity::Position, Component::X, 0), motion.at(timeAt(*panel_, 0)).position.x());
+        // Once: nothing more is asked for.
+        QVERIFY(!updated.wait(2 * kInterval));
+        QCOMPARE(updated.count(), 1);
+    }
+
 private:
+    QDockWidget* dock(const char* name) const { return window_->findChild<QDockWidget*>(QString::fromLatin1(name)); }
+
     std::unique_ptr<app::MainWindow> window_;
     app::SmoothnessPanel* panel_ = nullptr;
 };

@@ -4,8 +4,8 @@
 // over that curve arrives in one undo step with the times of the curve under its ends; turning the
 // sphere changes nothing in the document; erasing the middle of a stroke splits it; the pad sets the
 // pattern; Escape takes back a stroke being drawn. All but the current-time dot is drawn into cached
-// images, redrawn when the curves or the view change and not when only the time moves; a hidden view
-// samples nothing while the scene plays, and catches up when shown.
+// images, redrawn when the curves or the view change and not when only the time moves or a key moves
+// without turning; a hidden view samples nothing while the scene plays, and catches up when shown.
 
 #include "app/playback.h"
 #include "app/selection.h"
@@ -17,6 +17,7 @@
 #include "jobs/sketch_fit.h"
 #include "model/commands/add_keyframe_command.h"
 #include "model/commands/add_stroke_command.h"
+#include "model/commands/set_keyframe_position_command.h"
 #include "model/commands/apply_fit_result_command.h"
 #include "model/commands/import_objects_command.h"
 #include "model/document.h"
@@ -478,6 +479,18 @@ private slots:
         QVERIFY(updated.wait(5000));
         view_->grabFramebuffer();
         QCOMPARE(view_->layerBuilds(), builds + 2);
+    }
+
+    void aKeyMovedButNotTurnedRedrawsNothing()
+    {
+        view_->grabFramebuffer(); // whatever the set-up left to redraw
+        const int builds = view_->layerBuilds();
+        QSignalSpy updated(view_, &app::SphereView::curvesUpdated);
+        document_->undoStack().push(
+            new model::SetKeyframePositionCommand(*document_, object_, 10, Eigen::Vector3d(0.5, 0.0, 0.0)));
+        QVERIFY(updated.wait(5000));
+        view_->grabFramebuffer();
+        QCOMPARE(view_->layerBuilds(), builds);
     }
 
     void aHiddenViewSamplesNothingWhilePlayingUntilShown()

@@ -253,11 +253,19 @@ public:
         return window_.statusBar()->currentMessage();
     }
 
-    // Waits until the sphere, the speed plot and the smoothness plots show the track as it is now (each
-    // has a recompute pending after a change of the track or the selection), and the viewport has drawn it.
+    // Waits until the sphere, the speed plot and the smoothness plots, those of them on screen, show the
+    // track as it is now (each has a recompute pending after a change of the track or the selection; one
+    // off screen, as the smoothness plots are behind the inspector, does nothing until it is shown), and
+    // the viewport has drawn it.
     void settle()
     {
-        waitForCurves({child<app::SphereView>(), child<app::MagnitudePlot>(), child<app::SmoothnessPanel>()});
+        std::vector<const QObject*> onScreen;
+        for (const QWidget* view : {static_cast<const QWidget*>(child<app::SphereView>()),
+                                    static_cast<const QWidget*>(child<app::MagnitudePlot>()),
+                                    static_cast<const QWidget*>(child<app::SmoothnessPanel>())})
+            if (view->isVisible() && !view->visibleRegion().isEmpty())
+                onScreen.push_back(view);
+        waitForCurves(onScreen);
         auto* viewport = child<app::Viewport>();
         const std::uint64_t framesBefore = viewport->framesDrawn();
         viewport->update();
@@ -266,7 +274,7 @@ public:
     }
 
     // Waits until each of `views` has sent curvesUpdated.
-    static void waitForCurves(std::initializer_list<const QObject*> views)
+    static void waitForCurves(const std::vector<const QObject*>& views)
     {
         std::vector<std::unique_ptr<QSignalSpy>> updates;
         for (const QObject* view : views)

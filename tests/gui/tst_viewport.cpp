@@ -1,7 +1,8 @@
 // The viewport driven with the mouse on the bundled sample: handle drags change the selected key in
 // one undo step each, clicks select, the stroboscopic trail follows the subdivision settings, the
-// ghost shows the motion as opened. One test also measures drawing while a handle is dragged with
-// thousands of trail instances, and prints the figures (tests never assert on time).
+// ghost shows the motion as opened. Two tests also measure while a handle is dragged with thousands of
+// trail instances: the viewport's drawing, and the UI thread's own time per move with every dock
+// shown (issue 18); they print the figures (tests never assert on time).
 
 #include "app/main_window.h"
 #include "app/viewport/viewport.h"
@@ -9,6 +10,7 @@
 #include "model/commands/set_subdivision_command.h"
 
 #include <QApplication>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QMouseEvent>
 #include <QTest>
@@ -16,6 +18,7 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <ctime>
 #include <memory>
 #include <numbers>
 
@@ -65,6 +68,48 @@ QPointF pastTheXArrow(const app::Viewport& viewport)
     const QPointF grab = *viewport.handleScreenPosition(Handle::MoveX);
     return grab + (grab - base);
 }
+
+// CPU time of the calling thread: what the UI thread spends itself, not the job threads or
+// llvmpipe's rasterising threads.
+double threadMilliseconds()
+{
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) / 1e6;
+}
+
+// The UI thread's CPU time inside one widget's paint events: each paint event is sent on to the
+// widget from within the filter, so that the filter sees where it ends.
+class PaintClock : public QObject {
+public:
+    explicit PaintClock(QWidget& widget)
+        : widget_(widget)
+    {
+        widget_.installEventFilter(this);
+    }
+    ~PaintClock() override { widget_.removeEventFilter(this); }
+
+    double milliseconds() const { return milliseconds_; }
+    void reset() { milliseconds_ = 0; }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (watched != &widget_ || event->type() != QEvent::Paint || painting_)
+            return false;
+        painting_ = true;
+        const double start = threadMilliseconds();
+        QCoreApplication::sendEvent(&widget_, event);
+        milliseconds_ += threadMilliseconds() - start;
+        painting_ = false;
+        return true;
+    }
+
+private:
+    QWidget& widget_;
+    double milliseconds_ = 0;
+    bool painting_ = false;
+};
 
 } // namespace
 
@@ -266,6 +311,63 @@ private slots:
               "subdivision %.1f ms on the worker, %.1f ms from request to arrival",
               instances, kMoves, kMoves / orbitSeconds, 1000 * orbitSeconds / kMoves, kMoves / dragSeconds,
               1000 * dragSeconds / kMoves, framesPerSecond, subdivisionMs, latencyMs);
+    }
+
+    // Issue 18: what a drag move costs the UI thread itself, with every dock open (the smoothness
+    // plots tabbed behind the inspector, the speed plot and the sphere on screen) and 1,536 trail
+    // instances. Prints per move the UI thread's CPU time, the part of it in the viewport's paint
+    // events (Gyre's draw calls and the GL driver's work on this thread) and in composing the window
+    // (every widget's pixels into the OpenGL window, and the swap), and the wall time from one move
+    // to its frame.
+    void measuresTheUiThreadPerDragMoveWithEveryDockShown()
+    {
+        Session session;
+        for (QDockWidget* dock : session.window.findChildren<QDockWidget*>())
+            dock->show();
+        QVERIFY(QTest::qWaitForWindowExposed(&session.window));
+        SubdivisionSettings settings = session.window.document().object(session.object)->track.subdivision;
+        settings.levels = 8;
+        session.window.document().undoStack().push(
+            new model::SetSubdivisionCommand(session.window.document(), session.object, settings));
+        const std::size_t instances = *subdividedPoseCount(6, settings.levels, settings.cyclic);
+        QTRY_COMPARE(session.viewport->trailInstanceCount(), instances);
+        session.window.selection().selectKey(session.object, 0);
+
+        PaintClock viewportPaint(*session.viewport);
+        double composeMilliseconds = 0, composeStart = 0;
+        connect(session.viewport, &QOpenGLWidget::aboutToCompose, this, [&] { composeStart = threadMilliseconds(); });
+        connect(session.viewport, &QOpenGLWidget::frameSwapped, this,
+                [&] { composeMilliseconds += threadMilliseconds() - composeStart; });
+
+        constexpr int kWarmUpMoves = 10;
+        constexpr int kMoves = 60;
+        const QPointF grab = *session.viewport->handleScreenPosition(Handle::MoveX);
+        const QPointF end = pastTheXArrow(*session.viewport);
+        double uiStart = 0;
+        QElapsedTimer clock;
+        QTest::mousePress(session.viewport, Qt::LeftButton, Qt::NoModifier, grab.toPoint());
+        for (int move = 1; move <= kWarmUpMoves + kMoves; ++move) {
+            if (move == kWarmUpMoves + 1) {
+                viewportPaint.reset();
+                composeMilliseconds = 0;
+                uiStart = threadMilliseconds();
+                clock.start();
+            }
+            // Back and forth along the arrow, each move waiting for its frame, as fast as it goes.
+            const double phase = 0.5 - 0.5 * std::cos(2 * std::numbers::pi * move / 30.0);
+            const std::uint64_t drawn = session.viewport->framesDrawn();
+            test::sendMove(session.viewport, grab + (end - grab) * phase, Qt::LeftButton);
+            while (session.viewport->framesDrawn() == drawn)
+                QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+        }
+        const double uiMilliseconds = threadMilliseconds() - uiStart;
+        const double wallMilliseconds = double(clock.nsecsElapsed()) / 1e6;
+        QTest::mouseRelease(session.viewport, Qt::LeftButton, Qt::NoModifier, grab.toPoint());
+        QTRY_COMPARE(session.viewport->trailInstanceCount(), instances);
+        qInfo("%zu trail instances, every dock shown, per drag move over %d moves: UI thread %.1f ms of CPU, of it "
+              "%.1f ms in the viewport's paint and %.1f ms composing the window; %.1f ms wall from move to frame",
+              instances, kMoves, uiMilliseconds / kMoves, viewportPaint.milliseconds() / kMoves,
+              composeMilliseconds / kMoves, wallMilliseconds / kMoves);
     }
 };
 

@@ -61,6 +61,21 @@ std::optional<double> nearestSampleTime(const std::vector<DirectionRun>& runs, c
     return nearestTime;
 }
 
+bool sameCurves(const SphereCurves& a, const SphereCurves& b)
+{
+    const auto sameRuns = [](const std::vector<DirectionRun>& first, const std::vector<DirectionRun>& second) {
+        const auto sameSample = [](const fit::TimedVector& p, const fit::TimedVector& q) {
+            return p.time == q.time && p.value == q.value;
+        };
+        return std::equal(first.begin(), first.end(), second.begin(), second.end(),
+                          [&](const DirectionRun& p, const DirectionRun& q) {
+                              return std::equal(p.begin(), p.end(), q.begin(), q.end(), sameSample);
+                          });
+    };
+    return a.fitSpan == b.fitSpan && sameRuns(a.motion, b.motion) && sameRuns(a.beforeFit, b.beforeFit)
+        && sameRuns(a.targetStrokes, b.targetStrokes);
+}
+
 SphereCurves sphereCurves(const model::MotionTrack& track, double start, double end)
 {
     const int sampleCount = std::clamp(static_cast<int>(std::ceil((end - start) * kSamplesPerSecond)) + 1, 2, kMaxSamples);

@@ -44,6 +44,10 @@ struct SphereCurves {
     std::vector<std::vector<fit::TimedVector>> targetStrokes;
 };
 
+// Whether `a` and `b` draw the same, sample for sample. A key moved but not turned, at every move of a
+// drag, leaves the direction of ω as it was: the view then redraws nothing (issue 18).
+bool sameCurves(const SphereCurves& a, const SphereCurves& b);
+
 // Samples per second of scene time, and the most samples of one curve.
 inline constexpr double kSamplesPerSecond = 240.0;
 inline constexpr int kMaxSamples = 20000;

@@ -93,6 +93,19 @@ std::vector<model::MagnitudePoint> withStroke(const std::vector<model::Magnitude
     return merged;
 }
 
+// Gives `graph` these points unless it has exactly them already; true if they changed. A change that
+// leaves a curve as it was (a key moved, not turned) then costs no replot.
+bool setDataIfChanged(QCPGraph& graph, const QVector<double>& keys, const QVector<double>& values)
+{
+    const QCPGraphDataContainer& shown = *graph.data();
+    bool same = shown.size() == keys.size();
+    for (qsizetype i = 0; same && i < keys.size(); ++i)
+        same = shown.at(static_cast<int>(i))->key == keys[i] && shown.at(static_cast<int>(i))->value == values[i];
+    if (!same)
+        graph.setData(keys, values, true);
+    return !same;
+}
+
 QCPScatterStyle keyMarker(const QBrush& fill)
 {
     return QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(kKeyColour, 1.5), fill, 10);
@@ -137,6 +150,7 @@ MagnitudePlot::MagnitudePlot(model::Document& document, Selection& selection, QW
     , stack_(new QStackedLayout)
     , placeholder_(new QLabel(tr("Select an object to see and sketch the speed of its rotation."), this))
     , plot_(new QCustomPlot(this))
+    , replot_(*this, 0, [this] { plot_->replot(); })
     , sampler_(
           *this, selection, document,
           [](const model::SceneObject& object, const model::Scene& scene) {
@@ -300,6 +314,7 @@ void MagnitudePlot::addWindowBand()
     windowGrip_ = new QCPItemRect(plot_);
     for (QCPItemRect* rect : {windowBand_, windowGrip_}) {
         rect->setLayer(QStringLiteral("grid")); // under the curves
+        rect->setVisible(false); // as the window shown so far, none (showWindow)
         for (QCPItemPosition* corner : {rect->topLeft, rect->bottomRight})
             corner->setTypeY(QCPItemPosition::ptAxisRectRatio);
     }
@@ -376,18 +391,20 @@ void MagnitudePlot::showToolCursor()
 
 void MagnitudePlot::showCurves(const SampledCurves& curves)
 {
-    currentGraph_->setData(curves.times, curves.speeds, true);
-    fittedGraph_->setData(curves.fittedTimes, curves.fitted, true);
-    beforeFitGraph_->setData(curves.fittedTimes, curves.beforeFit, true);
-    constrainedKeysGraph_->setData(curves.constrainedKeyTimes, curves.constrainedKeySpeeds, true);
-    freeKeysGraph_->setData(curves.freeKeyTimes, curves.freeKeySpeeds, true);
+    // Every graph is compared, none skipped: `|` rather than `||`.
+    const bool changed = setDataIfChanged(*currentGraph_, curves.times, curves.speeds)
+                       | setDataIfChanged(*fittedGraph_, curves.fittedTimes, curves.fitted)
+                       | setDataIfChanged(*beforeFitGraph_, curves.fittedTimes, curves.beforeFit)
+                       | setDataIfChanged(*constrainedKeysGraph_, curves.constrainedKeyTimes, curves.constrainedKeySpeeds)
+                       | setDataIfChanged(*freeKeysGraph_, curves.freeKeyTimes, curves.freeKeySpeeds);
     if (fitViewOnNextCurves_) {
         fitViewOnNextCurves_ = false;
         fitView();
-    } else if (!gesture_) {
-        followCurvesHeight();
+    } else if (changed) {
+        if (!gesture_)
+            followCurvesHeight();
+        plot_->replot();
     }
-    plot_->replot();
     emit curvesUpdated();
 }
 
@@ -401,18 +418,23 @@ void MagnitudePlot::showSketch()
             magnitudes.push_back(point.magnitude);
         }
     }
-    sketchedGraph_->setData(times, magnitudes, true);
+    if (setDataIfChanged(*sketchedGraph_, times, magnitudes))
+        replot_.request();
     clearMagnitudeAction_->setEnabled(!times.isEmpty());
-    plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
 void MagnitudePlot::showWindow()
 {
     const model::SceneObject* object = selection_.selectedObject();
-    shownWindowIsOwn_ = object != nullptr && object->track.sketch.window.has_value();
-    shownWindow_.reset();
+    const bool own = object != nullptr && object->track.sketch.window.has_value();
+    std::optional<std::pair<double, double>> window;
     if (object != nullptr)
-        shownWindow_ = shownWindowIsOwn_ ? object->track.sketch.window : impliedWindow(object->track);
+        window = own ? object->track.sketch.window : impliedWindow(object->track);
+    // Most key edits (a key moved or turned) leave the window as it is.
+    if (window == shownWindow_ && own == shownWindowIsOwn_)
+        return;
+    shownWindow_ = window;
+    shownWindowIsOwn_ = own;
 
     windowBand_->setVisible(shownWindow_.has_value());
     windowGrip_->setVisible(shownWindow_.has_value());
@@ -430,7 +452,7 @@ void MagnitudePlot::showWindow()
     windowBand_->setBrush(QColor(kWindowColour.red(), kWindowColour.green(), kWindowColour.blue(), alpha));
     windowGrip_->setPen(Qt::NoPen);
     windowGrip_->setBrush(QColor(kWindowColour.red(), kWindowColour.green(), kWindowColour.blue(), 2 * alpha));
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replot_.request();
 }
 
 void MagnitudePlot::moveCursor()

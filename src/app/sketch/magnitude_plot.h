@@ -4,7 +4,10 @@
 //
 // - The current curve |ω(t)| of the track's motion, sampled on a job thread of the plot's own (a
 //   screw track with many subdivision levels is slow to build), at most every
-//   SelectedTrackSampler::kIntervalMilliseconds while the track changes; the keys on it, filled where constrained and hollow where the fit may
+//   SelectedTrackSampler::kIntervalMilliseconds while the track changes and not while the plot is off
+//   screen. Only a curve that changed is set again, and the plot replots only then: a key moved but
+//   not turned, at every move of a drag, left the speed as it was yet cost a quarter of the UI
+//   thread's time (issue 18). The keys on it, filled where constrained and hollow where the fit may
 //   move them, as the timeline draws them.
 // - The current time as a vertical line.
 // - The edit window as a shaded band: the sketch's own window solid; the one the fit would take
@@ -28,6 +31,7 @@
 
 #include "app/selection.h"
 #include "app/selected_track_sampler.h"
+#include "app/view_refresh.h"
 #include "model/document.h"
 #include "model/gesture.h"
 
@@ -171,6 +175,9 @@ private:
     std::optional<WindowDrag> windowDrag_;
     std::optional<Stroke> stroke_;
 
+    // Replots for changes made on the UI thread (the sketch, the window): one per turn of the event
+    // loop, none while the plot is off screen.
+    ViewRefresh replot_;
     SelectedTrackSampler<SampledCurves> sampler_; // last: joined before the members its work uses are destroyed
 };
 

@@ -11,7 +11,6 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QRadialGradient>
-#include <QShowEvent>
 
 #include <algorithm>
 #include <array>
@@ -153,19 +152,19 @@ SphereView::SphereView(model::Document& document, Selection& selection, QWidget*
 
     auto recomputeFor = [this](model::ObjectId id) {
         if (id == selection_.object())
-            scheduleSampling();
+            sampler_.schedule();
     };
     connect(&document_, &model::Document::keyframesChanged, this, recomputeFor);
     connect(&document_, &model::Document::trackSettingsChanged, this, recomputeFor);
     connect(&document_, &model::Document::sketchChanged, this, [this](model::ObjectId id) {
         if (id == selection_.object()) {
             invalidateLayers(); // the strokes as drawn, at once; the patterned ones and a new fit follow
-            scheduleSampling();
+            sampler_.schedule();
         }
     });
     connect(&document_, &model::Document::sceneSettingsChanged, this, [this] {
         invalidateLayers(); // the time ticks, at once; the curves over the new range follow
-        scheduleSampling();
+        sampler_.schedule();
     });
     connect(&document_, &model::Document::objectChanged, this, [this](model::ObjectId id) {
         if (id == selection_.object())
@@ -174,7 +173,7 @@ SphereView::SphereView(model::Document& document, Selection& selection, QWidget*
     connect(&document_, &model::Document::sceneReset, this, [this] {
         endDrag();
         forgetCurves();
-        scheduleSampling();
+        sampler_.schedule();
     });
     // Only the dot moves: update() repaints the cached layers, and does nothing while the view is hidden.
     connect(&document_, &model::Document::currentTimeChanged, this, [this] { update(); });
@@ -184,9 +183,9 @@ SphereView::SphereView(model::Document& document, Selection& selection, QWidget*
         shown = selection_.object();
         endDrag();
         forgetCurves();
-        scheduleSampling();
+        sampler_.schedule();
     });
-    scheduleSampling();
+    sampler_.schedule();
 }
 
 SphereView::~SphereView() = default;
@@ -268,24 +267,6 @@ QString SphereView::message() const
 // ---------------------------------------------------------------------------------------------
 // Curves
 
-void SphereView::scheduleSampling()
-{
-    if (!isVisible()) {
-        samplingDeferred_ = true;
-        return;
-    }
-    sampler_.schedule();
-}
-
-void SphereView::showEvent(QShowEvent* event)
-{
-    if (samplingDeferred_) {
-        samplingDeferred_ = false;
-        sampler_.schedule();
-    }
-    QOpenGLWidget::showEvent(event);
-}
-
 void SphereView::forgetCurves()
 {
     // Another object's curves are not shown, not even until this one's arrive.
@@ -296,9 +277,12 @@ void SphereView::forgetCurves()
 
 void SphereView::showCurves(SphereCurves curves)
 {
-    curves_ = std::move(curves);
-    curvesShown_ = selection_.selectedObject() != nullptr;
-    invalidateLayers();
+    const bool shown = selection_.selectedObject() != nullptr;
+    if (shown != curvesShown_ || !sameCurves(curves, curves_)) {
+        curves_ = std::move(curves);
+        curvesShown_ = shown;
+        invalidateLayers();
+    }
     emit curvesUpdated();
 }
 

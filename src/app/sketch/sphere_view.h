@@ -114,7 +114,6 @@ signals:
 
 protected:
     void resizeEvent(QResizeEvent* event) override;
-    void showEvent(QShowEvent* event) override;
     void changeEvent(QEvent* event) override;
     void paintGL() override;
     void mousePressEvent(QMouseEvent* event) override;
@@ -127,8 +126,6 @@ private:
     enum class Side { Back, Front };
 
     void createActions();
-    // Samples the selected track soon if the view is visible, else once it is shown.
-    void scheduleSampling();
     void showCurves(SphereCurves curves);
     void forgetCurves();
 
@@ -170,7 +167,6 @@ private:
 
     SphereCurves curves_;
     bool curvesShown_ = false; // curves_ answer a request for the selected object
-    bool samplingDeferred_ = false; // asked for while hidden
 
     QImage backLayer_;  // the background and all behind the disc
     QImage frontLayer_; // the disc, all in front of it, the legend and the message
