@@ -17,7 +17,7 @@ clean_log="$clean_root.log"
 clean_pid=$!
 # Whatever ends this script, the clean system goes: stopped first if it is still being made.
 # --one-file-system: never follow a mount out of it.
-trap 'kill "$clean_pid" 2>/dev/null; wait "$clean_pid" 2>/dev/null;
+trap 'kill "$clean_pid" 2>/dev/null || true; wait "$clean_pid" 2>/dev/null || true
       "${sudo_cmd[@]}" rm -rf --one-file-system "$clean_root" "$clean_log"' EXIT
 
 # Line tables only (-g1): the sanitizers' reports keep every file and line, and the build takes a
