@@ -122,14 +122,15 @@ void OutlinerPanel::deleteSelectedObjects()
     const std::vector<model::ObjectId> ids = selectedObjects();
     if (ids.empty())
         return;
-    QUndoStack& stack = document_.undoStack();
     if (ids.size() == 1) {
-        stack.push(new model::DeleteObjectCommand(document_, ids.front()));
+        document_.push(new model::DeleteObjectCommand(document_, ids.front()));
         return;
     }
+    // One undo step, named for all of them: a macro opened and closed here.
+    QUndoStack& stack = document_.undoStack();
     stack.beginMacro(tr("Delete %n Objects", nullptr, int(ids.size())));
     for (model::ObjectId id : ids)
-        stack.push(new model::DeleteObjectCommand(document_, id));
+        document_.push(new model::DeleteObjectCommand(document_, id));
     stack.endMacro();
 }
 

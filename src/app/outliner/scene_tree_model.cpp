@@ -136,7 +136,7 @@ bool SceneTreeModel::setData(const QModelIndex& index, const QVariant& value, in
     // A nameless object could not be found in the outliner again; an unchanged name is no edit.
     if (object == nullptr || role != Qt::EditRole || name.isEmpty() || name == object->name)
         return false;
-    document_.undoStack().push(new model::RenameObjectCommand(document_, object->id, name));
+    document_.push(new model::RenameObjectCommand(document_, object->id, name));
     return true; // the document's objectChanged has told the views
 }
 
@@ -274,16 +274,16 @@ bool SceneTreeModel::dropMimeData(const QMimeData* data, Qt::DropAction action, 
     const std::vector<model::ObjectId> dropped = droppedObjects(data, newParent);
     if (action != Qt::MoveAction || dropped.empty())
         return false;
-    QUndoStack& stack = document_.undoStack();
     if (dropped.size() == 1) {
-        stack.push(new model::ReparentObjectInPlaceCommand(document_, dropped.front(), newParent));
+        document_.push(new model::ReparentObjectInPlaceCommand(document_, dropped.front(), newParent));
         return true;
     }
-    // One undo step. Each command takes the object order as it finds it, so they are made one after
-    // another.
+    // One undo step, named for all of them: a macro opened and closed here. Each command takes the
+    // object order as it finds it, so they are made one after another.
+    QUndoStack& stack = document_.undoStack();
     stack.beginMacro(tr("Reparent %n Objects in Place", nullptr, int(dropped.size())));
     for (model::ObjectId id : dropped)
-        stack.push(new model::ReparentObjectInPlaceCommand(document_, id, newParent));
+        document_.push(new model::ReparentObjectInPlaceCommand(document_, id, newParent));
     stack.endMacro();
     return true;
 }
