@@ -17,6 +17,7 @@
 #include "io/scene_export.h"
 #include "io/scene_import.h"
 #include "model/scene.h"
+#include "io/scene_wire.h"
 #include "io/scene_worker.h"
 #include "built_scene_worker.h"
 
@@ -252,6 +253,25 @@ void BM_ImportBvhInWorker(benchmark::State& state)
         benchmark::DoNotOptimize(gyre::importSceneInWorker(largeBvh()));
 }
 BENCHMARK(BM_ImportBvhInWorker)->Unit(benchmark::kMillisecond);
+
+// The parts of the worker's cost that are not starting a process: the worker writing the imported
+// capture as its reply, and the parent reading it back with every value checked.
+void BM_EncodeImportReply(benchmark::State& state)
+{
+    const gyre::wire::Reply reply = gyre::importScene(largeBvh());
+    for (auto _ : state)
+        benchmark::DoNotOptimize(gyre::wire::encodeReply(reply));
+}
+BENCHMARK(BM_EncodeImportReply)->Unit(benchmark::kMillisecond);
+
+void BM_DecodeImportReply(benchmark::State& state)
+{
+    const QByteArray bytes = gyre::wire::encodeReply(gyre::importScene(largeBvh()));
+    state.counters["bytes"] = static_cast<double>(bytes.size());
+    for (auto _ : state)
+        benchmark::DoNotOptimize(gyre::wire::decodeReply(bytes));
+}
+BENCHMARK(BM_DecodeImportReply)->Unit(benchmark::kMillisecond);
 
 // The imported motion baked at 120 fps (every key a frame) and written as glb.
 void BM_ExportGlb(benchmark::State& state)

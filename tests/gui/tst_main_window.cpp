@@ -3,6 +3,8 @@
 // scene import and export off the UI thread, and the layout kept between sessions.
 
 #include "app/main_window.h"
+#include "app/sketch/magnitude_plot.h"
+#include "app/sketch/sphere_view.h"
 #include "built_scene_worker.h"
 #include "gui_test_support.h"
 #include "io/bvh_fixture.h"
@@ -146,6 +148,10 @@ private slots:
     {
         app::MainWindow window;
         window.show();
+        // The sphere and the speed plot sample the new scene's curves on their threads; the click
+        // comes once they have shown them.
+        QSignalSpy sphereCurves(window.findChild<app::SphereView*>(), &app::SphereView::curvesUpdated);
+        QSignalSpy speedCurves(window.findChild<app::MagnitudePlot*>(), &app::MagnitudePlot::curvesUpdated);
         window.openSample(QStringLiteral(":/samples/spinning-top.gyre"));
         window.playback().pause();
         for (const char* dock : {"sphereDock", "magnitudeDock", "fitDock"})
@@ -156,8 +162,8 @@ private slots:
         const model::MotionTrack before = window.document().object(top)->track;
         QVERIFY(!before.sketch.fittedCurve.empty());
 
-        // The views sample the new scene's curves on their threads first; the click comes after.
-        QTest::qWait(2000);
+        for (QSignalSpy* curves : {&sphereCurves, &speedCurves})
+            QVERIFY(curves->count() > 0 || curves->wait(10'000));
         QSignalSpy applied(&window.document().undoStack(), &QUndoStack::indexChanged);
         QElapsedTimer clock;
         clock.start();

@@ -349,8 +349,7 @@ private slots:
         QVERIFY2(farthest > 0.01, qPrintable(QString::number(farthest)));
 
         view_->drawAction()->trigger();
-        panel_->resize(500, 560);
-        QTest::qWait(100);
+        panel_->resize(500, 560); // a shown widget gets its resize event at once
         const QImage shot = view_->grabFramebuffer();
         QVERIFY(!shot.isNull());
         shot.save(QStringLiteral("sphere-view.png"));
@@ -431,13 +430,12 @@ private slots:
         QVERIFY(view_->curves().fitSpan.has_value());
         QVERIFY(!view_->curves().beforeFit.empty());
         QVERIFY(!view_->curves().targetStrokes.empty());
-        panel_->resize(500, 540);
-        QTest::qWait(100);
+        panel_->resize(500, 540); // a shown widget gets its resize event at once
         // Looking down at the pole, about which the top's axis turns.
         const QPointF centre(view_->width() / 2.0, view_->height() / 2.0);
         dragThrough(view_, {view_->projectToWidget(Eigen::Vector3d::UnitZ()), centre - QPointF(0.0, 0.3 * view_->sphereRadius())},
                     Qt::RightButton);
-        QTest::qWait(100);
+        // grabFramebuffer draws the view as it is now, turned by the drag.
         view_->grabFramebuffer().save(QStringLiteral("sphere-view-top.png"));
     }
 
