@@ -136,13 +136,21 @@ wire::Reply runWorker(const QString& path, const QByteArray& request, const Scen
     reply += process.readAllStandardOutput();
     errors = (errors + process.readAllStandardError()).right(kKeptErrorBytes);
 
+#if defined(__SANITIZE_ADDRESS__)
+    // The sanitizer's allocation bound, standing in for the address-space limit, ends the worker by
+    // its report and abort(): the same failure as status kWorkerOutOfMemoryStatus without it.
+    const bool outOfMemory = errors.contains("SUMMARY: AddressSanitizer: allocation-size-too-big") ||
+                             errors.contains("SUMMARY: AddressSanitizer: out-of-memory");
+#else
+    const bool outOfMemory = process.exitStatus() == QProcess::NormalExit && process.exitCode() == kWorkerOutOfMemoryStatus;
+#endif
+    if (outOfMemory)
+        throw fail(FileError::tr("the scene reader needed more than %1 of memory for this file and was stopped")
+                       .arg(sizeText(limits.memoryBytes)));
     if (process.exitStatus() == QProcess::CrashExit) // Qt gives the signal as the exit code
         throw fail(FileError::tr("the scene reader crashed on this file (signal %1, %2)%3")
                        .arg(process.exitCode())
                        .arg(signalName(process.exitCode()), lastErrorLine(errors)));
-    if (process.exitCode() == kWorkerOutOfMemoryStatus)
-        throw fail(FileError::tr("the scene reader needed more than %1 of memory for this file and was stopped")
-                       .arg(sizeText(limits.memoryBytes)));
     if (process.exitCode() != 0)
         throw fail(FileError::tr("the scene reader failed (exit status %1)%2")
                        .arg(process.exitCode())

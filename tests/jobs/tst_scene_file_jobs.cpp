@@ -101,9 +101,8 @@ private slots:
 
     void aFileThatExhaustsTheMemoryLimitFailsByName()
     {
-#if defined(__SANITIZE_ADDRESS__)
-        QSKIP("AddressSanitizer's shadow memory needs an unlimited address space, so the worker runs without one");
-#endif
+        // Under AddressSanitizer, whose shadow memory needs an unlimited address space, its bound on one
+        // allocation stands in for the limit (io/scene_worker.cpp): the message is the same.
         jobs_.setWorkerLimits({qint64{1} << 30, SceneWorkerLimits{}.time});
         const QString path = writeFile(folder_, QStringLiteral("huge.dae"), test::hugeCollada());
         const QString message = failureOf(path);
