@@ -45,6 +45,20 @@ struct Session {
     }
 
     const model::Keyframe& key(std::size_t index) { return window.document().object(object)->track.keys[index]; }
+
+    // Subdivides the sample's track to `levels` and selects its first key; returns the trail's
+    // instance count, once the viewport draws that many.
+    std::size_t trailAtLevels(int levels)
+    {
+        SubdivisionSettings settings = window.document().object(object)->track.subdivision;
+        settings.levels = levels;
+        window.document().push(new model::SetSubdivisionCommand(window.document(), object, settings));
+        const std::size_t instances = *subdividedPoseCount(6, settings.levels, settings.cyclic);
+        if (!QTest::qWaitFor([&] { return viewport->trailInstanceCount() == instances; }))
+            qFatal("The viewport did not draw the trail of %zu instances", instances);
+        window.selection().selectKey(object, 0);
+        return instances;
+    }
 };
 
 // From `from`, an arc of `radians` (counter-clockwise on screen) about `centre`.
@@ -257,13 +271,7 @@ private slots:
     {
         Session session;
         QVERIFY(QTest::qWaitForWindowExposed(&session.window));
-        SubdivisionSettings settings = session.window.document().object(session.object)->track.subdivision;
-        settings.levels = 8;
-        session.window.document().undoStack().push(
-            new model::SetSubdivisionCommand(session.window.document(), session.object, settings));
-        const std::size_t instances = *subdividedPoseCount(6, settings.levels, settings.cyclic);
-        QTRY_COMPARE(session.viewport->trailInstanceCount(), instances);
-        session.window.selection().selectKey(session.object, 0);
+        const std::size_t instances = session.trailAtLevels(8);
 
         double framesPerSecond = 0, subdivisionMs = 0, latencyMs = 0;
         connect(session.viewport, &app::Viewport::frameStatsChanged, this, [&](double fps, double ms, double latency) {
@@ -325,13 +333,7 @@ private slots:
         for (QDockWidget* dock : session.window.findChildren<QDockWidget*>())
             dock->show();
         QVERIFY(QTest::qWaitForWindowExposed(&session.window));
-        SubdivisionSettings settings = session.window.document().object(session.object)->track.subdivision;
-        settings.levels = 8;
-        session.window.document().undoStack().push(
-            new model::SetSubdivisionCommand(session.window.document(), session.object, settings));
-        const std::size_t instances = *subdividedPoseCount(6, settings.levels, settings.cyclic);
-        QTRY_COMPARE(session.viewport->trailInstanceCount(), instances);
-        session.window.selection().selectKey(session.object, 0);
+        const std::size_t instances = session.trailAtLevels(8);
 
         PaintClock viewportPaint(*session.viewport);
         double composeMilliseconds = 0, composeStart = 0;
