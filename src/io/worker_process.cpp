@@ -98,13 +98,14 @@ WorkerProcess::WorkerProcess(const QString& program, qint64 memoryBytes)
     int channel[2];
     if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, channel) != 0)
         throwErrno();
-    int errorPipe[2];
+    int errorPipe[2] = {-1, -1};
     // The child writes errno here when execve fails; a successful exec closes it (O_CLOEXEC).
     int execPipe[2];
     if (pipe2(errorPipe, O_CLOEXEC) != 0 || pipe2(execPipe, O_CLOEXEC) != 0) {
         const int error = errno;
         for (int fd : {channel[0], channel[1], errorPipe[0], errorPipe[1]})
-            close(fd);
+            if (fd >= 0)
+                close(fd);
         throw std::system_error(error, std::generic_category());
     }
 #if !defined(__SANITIZE_ADDRESS__)
