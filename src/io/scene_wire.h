@@ -26,6 +26,9 @@ inline constexpr quint32 kMagic = 0x57535947; // "GYSW" read as little-endian by
 // of an import.
 inline constexpr quint16 kVersion = 2;
 
+// The largest request or reply either side accepts: more is not a scene Gyre could hold.
+inline constexpr qint64 kMaxMessageBytes = qint64{1} << 30;
+
 // A message that is not what the wire format allows.
 class WireError : public std::runtime_error {
 public:

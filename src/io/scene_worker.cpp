@@ -1,28 +1,23 @@
 #include "io/scene_worker.h"
 
 #include "io/scene_wire.h"
+#include "io/worker_process.h"
 
 #include <QCoreApplication>
 #include <QDeadlineTimer>
 #include <QFileInfo>
-#include <QProcess>
 
-#include <sys/resource.h>
+#include <sys/wait.h>
 
-#include <algorithm>
 #include <cstring>
+#include <memory>
 #include <mutex>
+#include <system_error>
 
 namespace gyre {
 
 namespace {
 
-// A reply larger than this is not a scene Gyre could hold: the worker is stopped.
-constexpr qint64 kMaxReplyBytes = qint64{1} << 30;
-// How often a waiting call looks at the clock and at the cancel flag.
-constexpr int kPollMilliseconds = 50;
-// The end of the worker's standard error kept for the message: an assertion's text, for example.
-constexpr qsizetype kKeptErrorBytes = 4096;
 constexpr qsizetype kMaxQuotedErrorChars = 300;
 
 QString sizeText(qint64 bytes)
@@ -49,18 +44,6 @@ QString lastErrorLine(const QByteArray& errors)
     return line.isEmpty() ? QString() : QStringLiteral(": ") + line;
 }
 
-void limitAddressSpace([[maybe_unused]] qint64 bytes)
-{
-#if !defined(__SANITIZE_ADDRESS__)
-    // In the child between fork and exec, where only async-signal-safe calls are allowed: setrlimit
-    // is a plain system call. Its failure leaves the limit off; the time limit still holds.
-    const rlimit limit{static_cast<rlim_t>(bytes), static_cast<rlim_t>(bytes)};
-    setrlimit(RLIMIT_AS, &limit);
-#endif
-    // AddressSanitizer reserves terabytes of address space for its shadow memory, so a worker built
-    // with it cannot start under any address-space limit; such builds rely on the time limit alone.
-}
-
 QString executableDirectory()
 {
     if (QCoreApplication::instance())
@@ -68,13 +51,104 @@ QString executableDirectory()
     return QFileInfo(QFileInfo(QStringLiteral("/proc/self/exe")).canonicalFilePath()).path();
 }
 
-// Runs the worker on `request` and returns its reply, or throws Error (InputError or OutputError)
-// naming `path`.
+// The one worker this process keeps between requests, with the lock that gives it one request at a
+// time. Destroyed at exit, after the thread pool's jobs have ended with the application: its
+// destructor uses POSIX calls only, so the order of static destruction cannot matter.
+struct SharedWorker {
+    std::mutex mutex;
+    std::unique_ptr<WorkerProcess> process;
+};
+
+SharedWorker& sharedWorker()
+{
+    static SharedWorker worker;
+    return worker;
+}
+
 template <class Error>
+Error workerError(const QString& path, const QString& what)
+{
+    return Error(path, what.toStdString());
+}
+
+// Whether a worker that has ended ran out of memory.
+bool ranOutOfMemory([[maybe_unused]] const WorkerProcess& worker)
+{
+#if defined(__SANITIZE_ADDRESS__)
+    // The sanitizer's allocation bound, standing in for the address-space limit, ends the worker by
+    // its report and abort(): the same failure as status kWorkerOutOfMemoryStatus without it.
+    return worker.errors().contains("SUMMARY: AddressSanitizer: allocation-size-too-big") ||
+           worker.errors().contains("SUMMARY: AddressSanitizer: out-of-memory");
+#else
+    return WIFEXITED(worker.status()) && WEXITSTATUS(worker.status()) == kWorkerOutOfMemoryStatus;
+#endif
+}
+
+// Sends `request` to `worker` and returns the reply, a Result or the file's Failure, or throws Error
+// naming `path`. Sets `outOfMemory` instead of throwing when the worker ran out of memory, which the
+// caller may retry.
+template <class Result, class Error>
+wire::Reply askWorker(WorkerProcess& worker, const QString& path, const QByteArray& request,
+                     const SceneWorkerLimits& limits, const std::atomic_bool* cancel, bool& outOfMemory)
+{
+    const auto fail = [&path](const QString& what) { return workerError<Error>(path, what); };
+    QByteArray reply;
+    const auto decode = [&] {
+        wire::Reply decoded;
+        try {
+            decoded = wire::decodeReply(reply);
+        } catch (const wire::WireError& error) {
+            worker.kill();
+            throw fail(FileError::tr("the scene reader's reply is malformed: %1").arg(QString::fromUtf8(error.what())));
+        }
+        if (!std::holds_alternative<Result>(decoded) && !std::holds_alternative<wire::Failure>(decoded)) {
+            worker.kill();
+            throw fail(FileError::tr("the scene reader's reply is malformed: the wrong kind of reply"));
+        }
+        return decoded;
+    };
+    const WorkerProcess::Outcome outcome =
+        worker.exchange(request, reply, wire::kMaxMessageBytes, QDeadlineTimer(limits.time), cancel);
+    if (outcome == WorkerProcess::Outcome::Replied)
+        return decode();
+    worker.kill();
+    switch (outcome) {
+    case WorkerProcess::Outcome::Cancelled:
+        throw SceneWorkerCancelled();
+    case WorkerProcess::Outcome::TimedOut:
+        throw fail(FileError::tr("the scene reader took longer than %1 s and was stopped; the file may be "
+                                 "damaged or too large")
+                       .arg(FileError::number(std::chrono::duration<double>(limits.time).count())));
+    case WorkerProcess::Outcome::TooLarge:
+        throw fail(FileError::tr("the scene reader's reply is larger than %1").arg(sizeText(wire::kMaxMessageBytes)));
+    default:
+        break;
+    }
+    const int status = worker.status();
+    if (ranOutOfMemory(worker)) {
+        outOfMemory = true;
+        return {};
+    }
+    if (WIFSIGNALED(status))
+        throw fail(FileError::tr("the scene reader crashed on this file (signal %1, %2)%3")
+                       .arg(WTERMSIG(status))
+                       .arg(signalName(WTERMSIG(status)), lastErrorLine(worker.errors())));
+    if (WEXITSTATUS(status) != 0)
+        throw fail(FileError::tr("the scene reader failed (exit status %1)%2")
+                       .arg(WEXITSTATUS(status))
+                       .arg(lastErrorLine(worker.errors())));
+    // Ended with success before a whole frame: what came is read as the reply, untrusted as ever.
+    return decode();
+}
+
+// Runs the worker on `request` and returns its reply, or throws Error (InputError or OutputError)
+// naming `path`. The worker of an earlier request answers if it runs the same program under the same
+// limit; any failure but the file's own error reply ends it, and the next request starts another.
+template <class Result, class Error>
 wire::Reply runWorker(const QString& path, const QByteArray& request, const SceneWorkerLimits& limits,
                       const std::atomic_bool* cancel)
 {
-    const auto fail = [&path](const QString& what) { return Error(path, what.toStdString()); };
+    const auto fail = [&path](const QString& what) { return workerError<Error>(path, what); };
     const QString program = sceneWorkerProgram();
     if (program.isEmpty())
         throw fail(FileError::tr("the scene reader %1 is not installed beside %2")
@@ -82,83 +156,40 @@ wire::Reply runWorker(const QString& path, const QByteArray& request, const Scen
     // Checked before forking, for a plainer message than exec's.
     if (const QFileInfo info(program); !info.isFile() || !info.isExecutable())
         throw fail(FileError::tr("the scene reader %1 is missing or not executable").arg(program));
-    QProcess process;
-    process.setProgram(program);
-    const qint64 memoryBytes = limits.memoryBytes;
-    process.setChildProcessModifier([memoryBytes] { limitAddressSpace(memoryBytes); });
-#if defined(__SANITIZE_ADDRESS__)
-    // A sanitizer's report ends a process with status 1, which would read as a failure of the worker
-    // rather than the crash it stands for: ended by abort(), its memory errors are crashes here too.
-    // With no address-space limit (limitAddressSpace), AddressSanitizer's own bound on one allocation
-    // stands in for it, so a file that asks for gigabytes is stopped before it takes them.
-    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-    const auto addOptions = [&environment](const QString& name, const QString& added) {
-        const QString options = environment.value(name);
-        environment.insert(name, options.isEmpty() ? added : options + QLatin1Char(':') + added);
-    };
-    addOptions(QStringLiteral("ASAN_OPTIONS"),
-               QStringLiteral("abort_on_error=1:max_allocation_size_mb=%1").arg(memoryBytes >> 20));
-    addOptions(QStringLiteral("UBSAN_OPTIONS"), QStringLiteral("abort_on_error=1"));
-    process.setProcessEnvironment(environment);
-#endif
-    process.start(QIODevice::ReadWrite);
-    if (!process.waitForStarted())
-        throw fail(FileError::tr("the scene reader %1 cannot be started: %2").arg(program, process.errorString()));
-    process.write(request);
-    process.closeWriteChannel();
 
-    const QDeadlineTimer deadline(limits.time);
-    QByteArray reply;
-    QByteArray errors;
-    const auto stop = [&process] {
-        process.kill();
-        process.waitForFinished();
-    };
-    while (process.state() != QProcess::NotRunning) {
-        if (cancel && cancel->load()) {
-            stop();
-            throw SceneWorkerCancelled();
+    SharedWorker& shared = sharedWorker();
+    const std::lock_guard lock(shared.mutex);
+    std::unique_ptr<WorkerProcess>& worker = shared.process;
+    // The address-space limit holds for the worker's whole life, and heap left from earlier requests
+    // counts against it: a reused worker that runs out of memory gets the request again, once, in a
+    // fresh process, so that only a file a fresh worker cannot read fails for memory.
+    for (int attempt = 0;; ++attempt) {
+        if (worker && (!worker->isRunning() || worker->program() != program ||
+                       worker->memoryBytes() != limits.memoryBytes))
+            worker.reset();
+        if (!worker) {
+            try {
+                worker = std::make_unique<WorkerProcess>(program, limits.memoryBytes);
+            } catch (const std::system_error& error) {
+                throw fail(FileError::tr("the scene reader %1 cannot be started: %2")
+                               .arg(program, QString::fromLocal8Bit(error.what())));
+            }
         }
-        if (deadline.hasExpired()) {
-            stop();
-            throw fail(FileError::tr("the scene reader took longer than %1 s and was stopped; the file may be "
-                                     "damaged or too large")
-                           .arg(FileError::number(std::chrono::duration<double>(limits.time).count())));
+        const bool reused = worker->served() > 0;
+        bool outOfMemory = false;
+        wire::Reply reply;
+        try {
+            reply = askWorker<Result, Error>(*worker, path, request, limits, cancel, outOfMemory);
+        } catch (...) {
+            worker.reset();
+            throw;
         }
-        process.waitForFinished(static_cast<int>(std::min<qint64>(deadline.remainingTime(), kPollMilliseconds)));
-        reply += process.readAllStandardOutput();
-        errors = (errors + process.readAllStandardError()).right(kKeptErrorBytes);
-        if (reply.size() > kMaxReplyBytes) {
-            stop();
-            throw fail(FileError::tr("the scene reader's reply is larger than %1").arg(sizeText(kMaxReplyBytes)));
-        }
-    }
-    reply += process.readAllStandardOutput();
-    errors = (errors + process.readAllStandardError()).right(kKeptErrorBytes);
-
-#if defined(__SANITIZE_ADDRESS__)
-    // The sanitizer's allocation bound, standing in for the address-space limit, ends the worker by
-    // its report and abort(): the same failure as status kWorkerOutOfMemoryStatus without it.
-    const bool outOfMemory = errors.contains("SUMMARY: AddressSanitizer: allocation-size-too-big") ||
-                             errors.contains("SUMMARY: AddressSanitizer: out-of-memory");
-#else
-    const bool outOfMemory = process.exitStatus() == QProcess::NormalExit && process.exitCode() == kWorkerOutOfMemoryStatus;
-#endif
-    if (outOfMemory)
-        throw fail(FileError::tr("the scene reader needed more than %1 of memory for this file and was stopped")
-                       .arg(sizeText(limits.memoryBytes)));
-    if (process.exitStatus() == QProcess::CrashExit) // Qt gives the signal as the exit code
-        throw fail(FileError::tr("the scene reader crashed on this file (signal %1, %2)%3")
-                       .arg(process.exitCode())
-                       .arg(signalName(process.exitCode()), lastErrorLine(errors)));
-    if (process.exitCode() != 0)
-        throw fail(FileError::tr("the scene reader failed (exit status %1)%2")
-                       .arg(process.exitCode())
-                       .arg(lastErrorLine(errors)));
-    try {
-        return wire::decodeReply(reply);
-    } catch (const wire::WireError& error) {
-        throw fail(FileError::tr("the scene reader's reply is malformed: %1").arg(QString::fromUtf8(error.what())));
+        if (!outOfMemory)
+            return reply;
+        worker.reset();
+        if (!reused || attempt > 0)
+            throw fail(FileError::tr("the scene reader needed more than %1 of memory for this file and was stopped")
+                           .arg(sizeText(limits.memoryBytes)));
     }
 }
 
@@ -179,9 +210,7 @@ Result resultOf(const QString& path, wire::Reply reply)
 {
     if (auto* result = std::get_if<Result>(&reply))
         return std::move(*result);
-    if (const auto* failure = std::get_if<wire::Failure>(&reply))
-        rethrow<Error>(path, *failure);
-    throw Error(path, FileError::tr("the scene reader's reply is malformed: the wrong kind of reply").toStdString());
+    rethrow<Error>(path, std::get<wire::Failure>(reply)); // runWorker let no other kind through
 }
 
 // The locale's name, guarded: the app sets it on its UI thread, jobs read it on the thread pool.
@@ -218,14 +247,14 @@ SceneImport importSceneInWorker(const QString& path, const ImportOptions& option
                                 const std::atomic_bool* cancel)
 {
     const QByteArray request = wire::encodeRequest(wire::ImportRequest{path, sceneWorkerLocale(), options});
-    return resultOf<SceneImport, InputError>(path, runWorker<InputError>(path, request, limits, cancel));
+    return resultOf<SceneImport, InputError>(path, runWorker<SceneImport, InputError>(path, request, limits, cancel));
 }
 
 ExportReport exportSceneInWorker(const model::Scene& scene, const QString& path, SceneFormat format, double fps,
                                  const SceneWorkerLimits& limits)
 {
     const QByteArray request = wire::encodeRequest(wire::ExportRequest{path, sceneWorkerLocale(), format, fps, scene});
-    return resultOf<ExportReport, OutputError>(path, runWorker<OutputError>(path, request, limits, nullptr));
+    return resultOf<ExportReport, OutputError>(path, runWorker<ExportReport, OutputError>(path, request, limits, nullptr));
 }
 
 } // namespace gyre

@@ -1,12 +1,14 @@
 #pragma once
 // Scene import and export in a process of their own. Assimp can crash, abort or allocate without bound
 // on a damaged file; run in gyre-scene-worker (src/worker), that costs an error naming the file
-// instead of the program. The worker gets its request on standard input and writes one reply on
-// standard output (scene_wire.h); this side limits its memory and its time, and reads the reply as
-// untrusted input.
+// instead of the program. The worker gets requests on standard input and writes a reply to each on
+// standard output (scene_wire.h); this side limits its memory and its time, and reads the replies as
+// untrusted input. One worker is kept between requests, so that only the first pays for starting a
+// process and the next ones run on its warm heap; any failure but the file's own error replaces it
+// (worker_process.h).
 //
-// These functions block until the worker ends; the app calls them on its thread pool (jobs), gyre-cli
-// directly. Their results and errors are those of importScene and exportScene, plus these, each an
+// These functions block until the worker answers, one call at a time; the app calls them on its thread
+// pool (jobs), gyre-cli directly. Their results and errors are those of importScene and exportScene, plus these, each an
 // InputError (import) or OutputError (export) naming the file:
 //   "<file>: the scene reader crashed (signal 11, SIGSEGV) …"
 //   "<file>: the scene reader needed more than 2 GiB of memory …"
@@ -50,7 +52,8 @@ void setSceneWorkerLocale(const QLocale& locale);
 QString sceneWorkerProgram();
 
 // importScene(path, options) in the worker. Setting `cancel` kills the worker and throws
-// SceneWorkerCancelled.
+// SceneWorkerCancelled. A worker that has already answered and runs out of memory gets the file once
+// more in a fresh one before the memory message: its limit counts heap left from earlier files.
 SceneImport importSceneInWorker(const QString& path, const ImportOptions& options = {},
                                 const SceneWorkerLimits& limits = {}, const std::atomic_bool* cancel = nullptr);
 

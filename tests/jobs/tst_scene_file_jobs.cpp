@@ -1,7 +1,8 @@
 // Scene import and export through gyre-scene-worker: what comes back equals an import in this process;
 // a file that crashes Assimp, one that exhausts the memory limit, a worker that hangs, one that
 // answers nonsense and one that is missing each end in `failed` naming the file, and the same
-// SceneFileJobs then imports a good file.
+// SceneFileJobs then imports a good file. One worker process answers imports in a row, and any failure
+// but the file's own error reply replaces it.
 
 #include "built_scene_worker.h"
 #include "io/bvh_fixture.h"
@@ -56,6 +57,71 @@ private slots:
     }
 
     void cleanup() { qputenv(kSceneWorkerVariable, builtWorker_); }
+
+    // Two imports in a row are answered by one worker process, started once.
+    void oneWorkerAnswersImportsInARow()
+    {
+        const QString log = useCountingWorker(QStringLiteral("in-a-row"));
+        QVERIFY(importGood());
+        QVERIFY(importGood());
+        QCOMPARE(startsIn(log), 1);
+    }
+
+    // A worker that crashed is replaced: the next import starts a new one, which reads the file.
+    void aCrashedWorkerIsReplaced()
+    {
+        const QString log = useCountingWorker(QStringLiteral("crash"));
+        QVERIFY(importGood());
+        const QString path = writeFile(folder_, QStringLiteral("crash-then-good.dae"), test::crashingCollada());
+        QVERIFY(failureOf(path).contains(QStringLiteral("the scene reader crashed on this file")));
+        QCOMPARE(startsIn(log), 1);
+        QVERIFY(importGood());
+        QCOMPARE(startsIn(log), 2);
+        QVERIFY(importGood());
+        QCOMPARE(startsIn(log), 2);
+    }
+
+    // A worker stopped at the time limit, in the middle of a reply, is replaced.
+    void aWorkerStoppedAtTheTimeLimitIsReplaced()
+    {
+        const QString log = useCountingWorker(QStringLiteral("time-limit"));
+        QVERIFY(importGood());
+        jobs_.setWorkerLimits({SceneWorkerLimits{}.memoryBytes, std::chrono::milliseconds(1)});
+        const QString message = failureOf(largeFile());
+        jobs_.setWorkerLimits({});
+        QVERIFY2(message.contains(QStringLiteral("the scene reader took longer than 0.001 s")), qPrintable(message));
+        QVERIFY(importGood());
+        QCOMPARE(startsIn(log), 2);
+    }
+
+    // A cancelled import kills its worker; the next import starts a new one.
+    void aCancelledWorkerIsReplaced()
+    {
+        const QString log = useCountingWorker(QStringLiteral("cancel"));
+        QVERIFY(importGood());
+        QSignalSpy cancelled(&jobs_, &SceneFileJobs::cancelled);
+        QVERIFY(jobs_.startImport(largeFile()));
+        jobs_.cancelImport();
+        QVERIFY(arrives(cancelled, 10000));
+        QVERIFY(importGood());
+        QCOMPARE(startsIn(log), 2);
+    }
+
+    // A reused worker whose memory runs out gets the file again in a fresh worker, since heap left from
+    // earlier imports counts against its limit; a file too large for a fresh one fails as before.
+    void aReusedWorkerOutOfMemoryRetriesInAFreshOne()
+    {
+        const QString log = useCountingWorker(QStringLiteral("memory"));
+        jobs_.setWorkerLimits({qint64{1} << 30, SceneWorkerLimits{}.time});
+        QVERIFY(importGood());
+        const QString path = writeFile(folder_, QStringLiteral("huge-after-good.dae"), test::hugeCollada());
+        const QString message = failureOf(path);
+        QVERIFY(importGood());
+        jobs_.setWorkerLimits({});
+        QCOMPARE(message, path + QStringLiteral(": the scene reader needed more than 1 GiB of memory for this file "
+                                                "and was stopped"));
+        QCOMPARE(startsIn(log), 3); // the first, the retry of the huge file, the one after its failure
+    }
 
     // Every field the worker sends equals an import in this process: the project text holds them all.
     void importsExactlyAsAnImportInThisProcess()
@@ -170,6 +236,33 @@ private slots:
     }
 
 private:
+    // Points GYRE_SCENE_WORKER at a script that writes a line to a log, then becomes the built worker:
+    // the log's lines count the workers started. Returns the log's path.
+    QString useCountingWorker(const QString& name)
+    {
+        const QString log = folder_.filePath(name + QStringLiteral(".log"));
+        const QByteArray script = "#!/bin/sh\necho started >> '" + QFile::encodeName(log) + "'\nexec '" +
+                                  builtWorker_ + "'\n";
+        const QString program = writeFile(folder_, name + QStringLiteral("-worker"), script,
+                                          QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+        qputenv(kSceneWorkerVariable, QFile::encodeName(program));
+        return log;
+    }
+
+    static int startsIn(const QString& log)
+    {
+        QFile file(log);
+        return file.open(QIODevice::ReadOnly) ? static_cast<int>(file.readAll().count('\n')) : 0;
+    }
+
+    // A motion capture the worker needs far longer than a millisecond to read and send.
+    QString largeFile()
+    {
+        if (largeFile_.isEmpty())
+            largeFile_ = writeFile(folder_, QStringLiteral("large.bvh"), test::bvhChain(40, 4000, 1.0 / 120.0));
+        return largeFile_;
+    }
+
     std::shared_ptr<const SceneImport> importGood()
     {
         QSignalSpy imported(&jobs_, &SceneFileJobs::imported);
@@ -193,6 +286,7 @@ private:
 
     QTemporaryDir folder_;
     QString goodFile_;
+    QString largeFile_;
     QByteArray builtWorker_;
     SceneFileJobs jobs_;
 };
