@@ -24,16 +24,17 @@ namespace {
 // How often a waiting call looks at the cancel flag.
 constexpr qint64 kPollMilliseconds = 50;
 
+constexpr qsizetype kKeptErrorBytes = 4096;
+constexpr int kFrameHeaderBytes = 8;
+// How long an idle worker is given to end after its channel closes before it is killed.
+constexpr int kEndMilliseconds = 2000;
+
 // The poll timeout: what is left of `deadline`, at most kPollMilliseconds.
 int pollTimeout(const QDeadlineTimer& deadline)
 {
     const qint64 remaining = deadline.remainingTime(); // -1 for a deadline that never comes
     return static_cast<int>(remaining < 0 ? kPollMilliseconds : std::min(remaining, kPollMilliseconds));
 }
-constexpr qsizetype kKeptErrorBytes = 4096;
-constexpr int kFrameHeaderBytes = 8;
-// How long an idle worker is given to end after its channel closes before it is killed.
-constexpr int kEndMilliseconds = 2000;
 
 [[noreturn]] void throwErrno() { throw std::system_error(errno, std::generic_category()); }
 
