@@ -277,6 +277,7 @@ void MainWindow::createViewport()
     connect(ui_->actionShowTrajectory, &QAction::toggled, viewport_, &Viewport::setShowTrajectory);
     connect(ui_->actionShowControlPoses, &QAction::toggled, viewport_, &Viewport::setShowControlPoses);
     connect(ui_->actionShowTrail, &QAction::toggled, viewport_, &Viewport::setShowTrail);
+    connect(viewport_, &Viewport::drawingFailed, this, [this](const QString& message) { statusBar()->showMessage(message); });
     connect(ui_->actionFrameAll, &QAction::triggered, viewport_, &Viewport::frameScene);
     // A live fit's motion follows the pen while a stroke is drawn.
     connect(fitController_, &FitController::previewChanged, viewport_, &Viewport::setPreviewTrack);

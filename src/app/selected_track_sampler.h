@@ -2,17 +2,16 @@
 // Curves of the selected object's motion for a view, sampled off the UI thread: building a track's
 // motion grows with 2^levels for a screw track, far beyond what the UI thread can spare. Requests are
 // coalesced to one every kIntervalMilliseconds, and a view off screen samples nothing until it is
-// shown again (ViewRefresh). Only the newest request's curves are shown (LatestResultJob).
+// shown again (ViewRefresh). Only the newest request's curves are shown (a newest-wins Job).
 
-#include "app/latest_result_job.h"
 #include "app/selection.h"
 #include "app/view_refresh.h"
+#include "jobs/job.h"
 #include "model/document.h"
 
 #include <QWidget>
 
 #include <functional>
-#include <stdexcept>
 #include <utility>
 
 namespace gyre::app {
@@ -23,12 +22,13 @@ public:
     static constexpr int kIntervalMilliseconds = 50;
 
     // Called on the UI thread with the selected object and the scene; returns the sampling to run on
-    // the job thread, holding copies of what it reads. The sampling may throw std::invalid_argument
-    // for a track too large to evaluate (track_evaluation.h): the view then shows no curves.
+    // the job, holding copies of what it reads. The sampling may throw std::invalid_argument for a
+    // track too large to evaluate (track_evaluation.h): the view then shows no curves, as it does for
+    // any other failure rather than the curves of an older track.
     using MakeSampling = std::function<std::function<Curves()>(const model::SceneObject&, const model::Scene&)>;
     using Show = std::function<void(const Curves&)>;
 
-    // `view` owns the sampler (it is a member), so the sampler outlives every call queued on it.
+    // `view` owns the sampler (it is a member); while it is off screen nothing is sampled (ViewRefresh).
     SelectedTrackSampler(QWidget& view, const Selection& selection, const model::Document& document,
                          MakeSampling makeSampling, Show show)
         : selection_(selection)
@@ -36,7 +36,8 @@ public:
         , makeSampling_(std::move(makeSampling))
         , show_(std::move(show))
         , refresh_(view, kIntervalMilliseconds, [this] { sampleNow(); })
-        , job_(view)
+        , job_(jobs::JobPolicy::NewestWins, {.finished = [this](const Curves& curves) { show_(curves); },
+                                             .failed = [this](const QString&) { show_(Curves{}); }})
     {
     }
 
@@ -53,15 +54,10 @@ private:
             show_(Curves{});
             return;
         }
-        job_.post<Curves>(
-            [sampling = makeSampling_(*object, document_.scene())] {
-                try {
-                    return sampling();
-                } catch (const std::invalid_argument&) {
-                    return Curves{};
-                }
-            },
-            show_);
+        job_.post([sampling = makeSampling_(*object, document_.scene())](const jobs::JobRun<jobs::NoProgress>& run) {
+            run.throwIfStopped(); // cancelled before it started
+            return sampling();
+        });
     }
 
     const Selection& selection_;
@@ -69,7 +65,7 @@ private:
     MakeSampling makeSampling_;
     Show show_;
     ViewRefresh refresh_;
-    LatestResultJob job_; // last: joined before the members its work uses are destroyed
+    jobs::Job<Curves> job_; // last: waits for the work before the members it uses go
 };
 
 } // namespace gyre::app

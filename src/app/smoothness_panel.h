@@ -9,7 +9,7 @@
 // SelectedTrackSampler::kIntervalMilliseconds while they change (a dragged key changes them at every
 // mouse move), and not at all while the panel is off screen, as it is when the window opens, tabbed
 // behind the inspector: replotting it there took 37% of the UI thread's time in a drag (issue 18).
-// They are sampled on a job thread of the panel's own: 2000 samples of the bundled sample's screw
+// They are sampled by a job of the panel's own: 2000 samples of the bundled sample's screw
 // motion took 20–40 ms in a Debug build, and building a TrackMotion grows with 2^levels (0.2 s at 8
 // subdivision levels, seconds at 12 and more), far beyond what the UI thread can spare.
 
@@ -74,7 +74,7 @@ private:
     // The scene's range the time axis was last set to, start and end in seconds.
     std::pair<double, double> shownSceneRange_{0.0, 0.0};
     // The curves of the selection, keys and point as they are at the newest request.
-    SelectedTrackSampler<model::PointTrajectory> sampler_; // last: joined before the members its work uses are destroyed
+    SelectedTrackSampler<model::PointTrajectory> sampler_; // last: waits for its work before the members it uses go
 };
 
 } // namespace gyre::app

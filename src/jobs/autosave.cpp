@@ -11,10 +11,7 @@
 #include <QSaveFile>
 #include <QUuid>
 
-#include <QMetaObject>
-
 #include <algorithm>
-#include <exception>
 
 namespace gyre::jobs {
 
@@ -102,7 +99,16 @@ Autosave::Autosave(Document& document, const QString& directory, std::chrono::mi
         if (!modified)
             removeCopy();
     });
-    writer_ = std::make_unique<JobThread>();
+    writer_ = std::make_unique<Job<CopyChange>>(JobPolicy::NewestWins,
+                                                Job<CopyChange>::Handlers{
+                                                    .finished = [this](CopyChange change) {
+                                                        if (change == CopyChange::Written)
+                                                            emit autosaved(recoveryPath_);
+                                                    },
+                                                    .failed = [this](const QString& error) {
+                                                        changedSinceCopy_ = true; // try again at the next tick
+                                                        emit autosaveFailed(error);
+                                                    }});
     connect(&timer_, &QTimer::timeout, this, &Autosave::copyIfChanged);
     timer_.start(interval);
 }
@@ -121,35 +127,21 @@ void Autosave::copyIfChanged()
     changedSinceCopy_ = false;
     // The snapshot shares the tracks' keys with the document (model::SharedVector): what the UI
     // thread pays here does not grow with the length of the motion.
-    writer_->post([this, scene = document_.scene(), documentPath = document_.filePath()](const std::atomic<bool>&) {
-        QString error;
-        try {
-            writeInfo(infoPath_, documentPath);
-            model::writeProject(recoveryPath_, scene);
-        } catch (const std::exception& failure) {
-            error = QString::fromUtf8(failure.what());
-        }
-        QMetaObject::invokeMethod(this, [this, error] { reportWrite(error); }, Qt::QueuedConnection);
+    writer_->post([this, scene = document_.scene(), documentPath = document_.filePath()](const JobRun<NoProgress>&) {
+        writeInfo(infoPath_, documentPath);
+        model::writeProject(recoveryPath_, scene);
+        return CopyChange::Written;
     });
-}
-
-void Autosave::reportWrite(const QString& error)
-{
-    if (error.isEmpty()) {
-        emit autosaved(recoveryPath_);
-        return;
-    }
-    changedSinceCopy_ = true; // try again at the next tick
-    emit autosaveFailed(error);
 }
 
 void Autosave::removeCopy()
 {
     changedSinceCopy_ = false;
     // After any write still under way, in place of one still waiting.
-    writer_->post([recoveryPath = recoveryPath_, infoPath = infoPath_](const std::atomic<bool>&) {
+    writer_->post([recoveryPath = recoveryPath_, infoPath = infoPath_](const JobRun<NoProgress>&) {
         QFile::remove(recoveryPath);
         QFile::remove(infoPath);
+        return CopyChange::Removed;
     });
 }
 

@@ -4,9 +4,10 @@
 // While the document has unsaved changes, an Autosave writes a recovery copy of it every interval
 // into a directory of its own (the app passes QStandardPaths' AppLocalDataLocation). The UI thread
 // only takes a snapshot of the scene, which shares every track's keys with the document (SharedVector),
-// so it costs microseconds however long the capture; the project text is made and written on a
-// worker thread of its own. Writes and removals run on that worker in the order asked, a newer one
-// replacing one still waiting, so the files on disk always end as the last request left them.
+// so it costs microseconds however long the capture; the project text is made and written by a job
+// (job.h). Writes and removals run in the order asked, a newer one replacing one still waiting
+// (newest wins): each write or removal sets all of the session's files, so only the last request
+// decides what is on disk, and a queue would only write copies overwritten at once.
 //
 // Each session holds a QLockFile there for as long as it runs, so a later start can tell the copy of a
 // session that crashed (its lock is stale or gone) from the copy of one still running. The copy goes
@@ -17,7 +18,7 @@
 // A session's files: <id>.gyre (the copy, a project file), <id>.json (which document it copies),
 // <id>.lock.
 
-#include "jobs/job_thread.h"
+#include "jobs/job.h"
 #include "model/document.h"
 
 #include <QDateTime>
@@ -67,10 +68,11 @@ signals:
     void autosaveFailed(const QString& message);
 
 private:
+    // What a request did to the session's files.
+    enum class CopyChange { Written, Removed };
+
     void copyIfChanged();
     void removeCopy();
-    // On the UI thread, when the worker has written a copy or failed to.
-    void reportWrite(const QString& error);
 
     model::Document& document_;
     QString recoveryPath_;
@@ -78,7 +80,7 @@ private:
     std::unique_ptr<QLockFile> lock_;
     QTimer timer_;
     bool changedSinceCopy_ = false; // since the last copy was asked for, or since the session began
-    std::unique_ptr<JobThread> writer_; // reset first in the destructor: joined before the files go
+    std::unique_ptr<Job<CopyChange>> writer_; // reset first in the destructor: done before the files go
 };
 
 } // namespace gyre::jobs

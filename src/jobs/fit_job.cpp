@@ -5,7 +5,6 @@
 
 #include <QElapsedTimer>
 
-#include <stdexcept>
 #include <string_view>
 #include <utility>
 
@@ -28,6 +27,13 @@ FitSummary summaryOf(const fit::FitResult& result, double seconds)
 
 FitJob::FitJob(QObject* parent)
     : QObject(parent)
+    , job_(JobPolicy::NewestWins,
+           {.finished = [this](const Answer& answer) { emit finished(object_, answer.input, answer.applied, answer.summary); },
+            // SketchFitError says what the artist should do; the fit's own refusals name what is wrong;
+            // any other failure (out of memory, a solver error) is reported as it is.
+            .failed = [this](const QString& message) { emit failed(object_, message); },
+            .cancelled = [this] { emit cancelled(object_); },
+            .progressed = [this](const FitJobProgress& progress) { emit progressed(object_, progress); }})
 {
 }
 
@@ -35,70 +41,35 @@ FitJob::~FitJob() = default;
 
 void FitJob::request(model::ObjectId object, model::MotionTrack track)
 {
-    const std::uint64_t generation = ++newestGeneration_;
-    auto cancelRequested = std::make_shared<std::atomic<bool>>(false);
-    running_ = Running{generation, object, cancelRequested};
-    thread_.post([this, generation, cancelRequested, input = std::move(track)](const std::atomic<bool>& superseded) {
+    object_ = object;
+    job_.post([input = std::move(track)](const JobRun<FitJobProgress>& run) {
         QElapsedTimer clock;
         clock.start();
-        const auto sendToUi = [this](auto call) { QMetaObject::invokeMethod(this, std::move(call), Qt::QueuedConnection); };
-        try {
-            const SketchFitProblem problem = sketchFitProblem(input);
-            const int maxRounds = problem.settings.maxRounds;
-            int reportedRound = 0;
-            QElapsedTimer sinceReport;
-            fit::FitHooks hooks;
-            hooks.isCancelled = [&superseded, &cancelRequested] { return superseded || *cancelRequested; };
-            hooks.onProgress = [&](const fit::FitProgress& progress) {
-                if (progress.round == reportedRound && sinceReport.isValid()
-                    && sinceReport.elapsed() < kProgressIntervalMilliseconds)
-                    return;
-                reportedRound = progress.round;
-                sinceReport.start();
-                const FitJobProgress report{progress.round, maxRounds, progress.iteration, progress.largestFragmentError};
-                sendToUi([this, generation, report] { deliverProgress(generation, report); });
-            };
-            const fit::FitResult result = fitAngularVelocity(problem.keys, problem.target, problem.settings, hooks);
-            if (result.outcome == fit::FitOutcome::Cancelled) {
-                sendToUi([this, generation] { answer(generation, [this](model::ObjectId id) { emit cancelled(id); }); });
+        const SketchFitProblem problem = sketchFitProblem(input);
+        const int maxRounds = problem.settings.maxRounds;
+        int reportedRound = 0;
+        QElapsedTimer sinceReport;
+        fit::FitHooks hooks;
+        hooks.isCancelled = [&run] { return run.stopRequested(); };
+        hooks.onProgress = [&](const fit::FitProgress& progress) {
+            if (progress.round == reportedRound && sinceReport.isValid()
+                && sinceReport.elapsed() < kProgressIntervalMilliseconds)
                 return;
-            }
-            const FitSummary summary = summaryOf(result, static_cast<double>(clock.nsecsElapsed()) * 1e-9);
-            sendToUi([this, generation, input, applied = appliedFitResult(input, result), summary] {
-                answer(generation, [&](model::ObjectId id) { emit finished(id, input, applied, summary); });
-            });
-        } catch (...) {
-            // SketchFitError says what the artist should do; the fit's own refusals name what is wrong; any
-            // other failure (out of memory, a solver error) is reported as it is.
-            sendToUi([this, generation, message = QString::fromStdString(currentExceptionText())] {
-                answer(generation, [&](model::ObjectId id) { emit failed(id, message); });
-            });
-        }
+            reportedRound = progress.round;
+            sinceReport.start();
+            run.progress({progress.round, maxRounds, progress.iteration, progress.largestFragmentError});
+        };
+        const fit::FitResult result = fitAngularVelocity(problem.keys, problem.target, problem.settings, hooks);
+        // A fit stopped early answers nothing: its request is cancelled or superseded.
+        run.throwIfStopped();
+        const FitSummary summary = summaryOf(result, static_cast<double>(clock.nsecsElapsed()) * 1e-9);
+        return Answer{input, appliedFitResult(input, result), summary};
     });
 }
 
 void FitJob::cancel()
 {
-    if (running_)
-        *running_->cancelRequested = true;
-}
-
-void FitJob::answer(std::uint64_t generation, const std::function<void(model::ObjectId)>& emitAnswer)
-{
-    if (!running_ || running_->generation != generation)
-        return;
-    const Running answered = *running_;
-    running_.reset();
-    if (*answered.cancelRequested)
-        emit cancelled(answered.object);
-    else
-        emitAnswer(answered.object);
-}
-
-void FitJob::deliverProgress(std::uint64_t generation, const FitJobProgress& progress)
-{
-    if (running_ && running_->generation == generation && !*running_->cancelRequested)
-        emit progressed(running_->object, progress);
+    job_.cancel();
 }
 
 } // namespace gyre::jobs

@@ -2,25 +2,21 @@
 // The angular-velocity fit of one object's track off the UI thread (the sketch-editing paper's "Fit",
 // docs/fit.md). A request takes a copy of the track; the worker builds the fit from its sketch
 // (sketchFitProblem) and runs it, and the result comes back to the UI thread as what
-// ApplyFitResultCommand applies. The newest request wins: a request made while a fit runs makes the
-// running fit stop at its next solver iteration (JobThread's `superseded`), and only the newest
-// request is answered. A fit reports its progress while it runs, at most every
+// ApplyFitResultCommand applies. The newest request wins (a newest-wins Job): a request made while a
+// fit runs makes the running fit stop at its next solver iteration, and only the newest request is
+// answered. A fit reports its progress while it runs, at most every
 // kProgressIntervalMilliseconds and at every new round, so a fast fit does not flood the event loop.
 //
 // Every request is answered by exactly one of finished, failed or cancelled, unless a newer request
 // replaced it. All signals are emitted on the UI thread.
 
-#include "jobs/job_thread.h"
+#include "jobs/job.h"
 #include "model/commands/apply_fit_result_command.h"
 #include "model/scene.h"
 
 #include <QObject>
 #include <QString>
 
-#include <atomic>
-#include <cstdint>
-#include <functional>
-#include <memory>
 #include <optional>
 
 namespace gyre::jobs {
@@ -57,7 +53,7 @@ public:
     // Stops the newest request's fit: it is answered by cancelled. Does nothing when no fit is running.
     void cancel();
     // Whether the newest request is still unanswered.
-    bool isRunning() const { return running_.has_value(); }
+    bool isRunning() const { return !job_.isIdle(); }
 
 signals:
     void progressed(gyre::model::ObjectId object, const gyre::jobs::FitJobProgress& progress);
@@ -69,21 +65,14 @@ signals:
     void cancelled(gyre::model::ObjectId object);
 
 private:
-    // The newest request, while it is unanswered.
-    struct Running {
-        std::uint64_t generation = 0;
-        model::ObjectId object = model::kNoObject;
-        std::shared_ptr<std::atomic<bool>> cancelRequested;
+    struct Answer {
+        model::MotionTrack input;
+        model::FitResult applied;
+        FitSummary summary;
     };
 
-    // On the UI thread. Emits what answers the running request, through `emitAnswer`, if `generation`
-    // is that request's; a cancelled request is answered by cancelled whatever its fit returned.
-    void answer(std::uint64_t generation, const std::function<void(model::ObjectId)>& emitAnswer);
-    void deliverProgress(std::uint64_t generation, const FitJobProgress& progress);
-
-    std::uint64_t newestGeneration_ = 0; // read and written on the UI thread only, as is running_
-    std::optional<Running> running_;
-    JobThread thread_; // last: joined before the members above go
+    model::ObjectId object_ = model::kNoObject; // of the newest request, the one answered
+    Job<Answer, FitJobProgress> job_;            // last: waits for the fit before the members above go
 };
 
 } // namespace gyre::jobs

@@ -1,23 +1,23 @@
 #pragma once
-// Scene import and export in gyre-scene-worker (io/scene_worker.h), waited for on Qt's thread pool, so
+// Scene import and export in gyre-scene-worker (io/scene_worker.h), waited for by a job (job.h), so
 // the UI thread never waits on Assimp and a file that crashes Assimp, or exhausts the worker's memory
 // or time limit, ends in `failed` naming the file. The UI thread starts a job and receives its outcome
 // as a signal, never before the start call has returned; one job runs at a time.
 //
 // Cancelling an import stops its worker and drops what it read: the document never sees it. An export
 // is not cancellable: it writes through temporary files (QSaveFile), so stopping it half-way would
-// change nothing anyway, and it is quick (docs/scene-files.md).
+// change nothing anyway, and it is quick (docs/scene-files.md). Destroying the jobs stops a running
+// import's worker, and waits for a running export.
 
 #include "io/scene_export.h"
 #include "io/scene_import.h"
 #include "io/scene_worker.h"
+#include "jobs/job.h"
 
 #include <QObject>
 #include <QString>
 #include <QStringList>
 
-#include <atomic>
-#include <cstdint>
 #include <memory>
 
 namespace gyre::jobs {
@@ -49,14 +49,16 @@ signals:
     void cancelled(const QString& path);
 
 private:
-    // Ends the running job and reports, unless it was cancelled.
-    bool finishJob(std::uint64_t job, const QString& path);
+    // Ends the running job; the path it was for.
+    QString finishJob();
 
     bool busy_ = false;
-    std::uint64_t job_ = 0; // the running job's number; cancelling moves past it
-    // Set by cancelImport for the running import's worker to be stopped.
-    std::shared_ptr<std::atomic_bool> cancelRunning_;
+    QString path_; // of the running job
     SceneWorkerLimits limits_;
+    // Last: each stops or waits for its worker before the members above go. Queue, as a job is
+    // refused while another runs.
+    Job<std::shared_ptr<const SceneImport>> import_;
+    Job<ExportReport> export_;
 };
 
 } // namespace gyre::jobs

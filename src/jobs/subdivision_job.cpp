@@ -4,13 +4,15 @@
 
 #include <QElapsedTimer>
 
-#include <stdexcept>
 #include <utility>
 
 namespace gyre::jobs {
 
 SubdivisionJob::SubdivisionJob(QObject* parent)
     : QObject(parent)
+    , job_(JobPolicy::NewestWins,
+           {.finished = [this](Subdivided result) { emit subdivided(job_.newestRequest(), result.poses, result.nanoseconds); },
+            .failed = [this](const QString& reason) { emit failed(job_.newestRequest(), reason); }})
 {
 }
 
@@ -18,44 +20,20 @@ SubdivisionJob::~SubdivisionJob() = default;
 
 std::uint64_t SubdivisionJob::request(std::vector<Pose> controlPoses, const SubdivisionSettings& settings)
 {
-    const std::uint64_t generation = ++newestGeneration_;
-    thread_.post([this, generation, poses = std::move(controlPoses), settings](const std::atomic<bool>&) {
+    return job_.post([this, poses = std::move(controlPoses), settings](const JobRun<NoProgress>& run) {
+        run.throwIfStopped(); // cancelled before it started
         QElapsedTimer clock;
         clock.start();
-        try {
-            model::checkPoseBudget(poses.size(), InterpolationMethod::Screw, settings);
-            // The copy is the one allocation per run: the result has to leave the worker's buffers.
-            std::vector<Pose> result = subdivider_.subdivide(poses, settings);
-            const qint64 nanoseconds = clock.nsecsElapsed();
-            QMetaObject::invokeMethod(
-                this, [this, generation, result = std::move(result), nanoseconds] { deliver(generation, result, nanoseconds); },
-                Qt::QueuedConnection);
-        } catch (...) {
-            QMetaObject::invokeMethod(
-                this, [this, generation, reason = QString::fromStdString(currentExceptionText())] {
-                    deliverFailure(generation, reason);
-                }, Qt::QueuedConnection);
-        }
+        model::checkPoseBudget(poses.size(), InterpolationMethod::Screw, settings);
+        // The copy is the one allocation per run: the result has to leave the subdivider's buffers.
+        std::vector<Pose> result = subdivider_.subdivide(poses, settings);
+        return Subdivided{std::move(result), clock.nsecsElapsed()};
     });
-    return generation;
 }
 
 void SubdivisionJob::cancel()
 {
-    // A generation no request has: every result on its way is now stale.
-    ++newestGeneration_;
-}
-
-void SubdivisionJob::deliver(std::uint64_t generation, const std::vector<Pose>& poses, qint64 nanoseconds)
-{
-    if (generation == newestGeneration_)
-        emit subdivided(generation, poses, nanoseconds);
-}
-
-void SubdivisionJob::deliverFailure(std::uint64_t generation, const QString& reason)
-{
-    if (generation == newestGeneration_)
-        emit failed(generation, reason);
+    job_.cancel();
 }
 
 } // namespace gyre::jobs

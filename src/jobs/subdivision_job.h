@@ -1,13 +1,13 @@
 #pragma once
 // ScrewBender's subdivision off the UI thread, for the stroboscopic trail that follows a dragged
 // control pose. Every request gets a generation, increasing; a burst of requests while the worker is
-// busy costs one run (JobThread), and only the result of the newest request is emitted, so a result
-// never arrives after a newer one and the UI never waits. The worker keeps one PolyscrewSubdivider,
-// whose buffers grow once and are reused by every later request.
+// busy costs one run (a newest-wins Job), and only the result of the newest request is emitted, so a
+// result never arrives after a newer one and the UI never waits. The job keeps one PolyscrewSubdivider,
+// whose buffers grow once and are reused by every later request (one request runs at a time).
 
 #include "core/pose.h"
 #include "core/subdivision.h"
-#include "jobs/job_thread.h"
+#include "jobs/job.h"
 
 #include <QObject>
 #include <QString>
@@ -32,16 +32,18 @@ public:
 signals:
     // The newest request's poses, and how long the worker took to subdivide them.
     void subdivided(std::uint64_t generation, const std::vector<gyre::Pose>& poses, qint64 nanoseconds);
-    // The newest request could not be subdivided (PolyscrewSubdivider's std::invalid_argument).
+    // The newest request could not be subdivided (PolyscrewSubdivider's std::invalid_argument, or
+    // whatever else the subdivision threw).
     void failed(std::uint64_t generation, const QString& reason);
 
 private:
-    void deliver(std::uint64_t generation, const std::vector<Pose>& poses, qint64 nanoseconds);
-    void deliverFailure(std::uint64_t generation, const QString& reason);
+    struct Subdivided {
+        std::vector<Pose> poses;
+        qint64 nanoseconds = 0;
+    };
 
-    std::uint64_t newestGeneration_ = 0; // read and written on the UI thread only
-    PolyscrewSubdivider subdivider_;     // used on the worker only
-    JobThread thread_;                   // last: joined before the subdivider goes
+    PolyscrewSubdivider subdivider_; // used by the job's work only
+    Job<Subdivided> job_;            // last: waits for the work before the subdivider goes
 };
 
 } // namespace gyre::jobs

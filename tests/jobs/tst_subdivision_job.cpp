@@ -6,14 +6,8 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include <atomic>
-#include <chrono>
-#include <condition_variable>
 #include <cstdint>
-#include <mutex>
 #include <numbers>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
 using namespace gyre;
@@ -127,45 +121,6 @@ private slots:
         const QString reason = failures.front().at(1).toString();
         QVERIFY2(reason.contains("5,000 keys at 16 levels make 327,680,000 poses; the budget is 1,048,576"), qPrintable(reason));
         QCOMPARE(results.count(), 0);
-    }
-
-    // A job whose work throws something other than std::invalid_argument still ends in no crash: the
-    // thread drops it and runs the next job.
-    void theThreadOutlivesAThrowingJob()
-    {
-        jobs::JobThread thread;
-        std::mutex mutex;
-        std::condition_variable changed;
-        bool threw = false;
-        bool ranNext = false;
-        std::string reported;
-        thread.post([&](const std::atomic<bool>&) {
-            try {
-                throw std::runtime_error("the solver gave up");
-            } catch (...) {
-                reported = jobs::currentExceptionText();
-            }
-            {
-                const std::lock_guard lock(mutex);
-                threw = true;
-            }
-            changed.notify_one();
-            throw std::runtime_error("escapes the job");
-        });
-        std::unique_lock lock(mutex);
-        QVERIFY(changed.wait_for(lock, std::chrono::seconds(20), [&] { return threw; }));
-        lock.unlock();
-        // Posted once the first job has run, so it is not simply replaced while waiting.
-        thread.post([&](const std::atomic<bool>&) {
-            {
-                const std::lock_guard inner(mutex);
-                ranNext = true;
-            }
-            changed.notify_one();
-        });
-        lock.lock();
-        QVERIFY(changed.wait_for(lock, std::chrono::seconds(20), [&] { return ranNext; }));
-        QCOMPARE(reported, std::string("the solver gave up"));
     }
 };
 

@@ -2,7 +2,7 @@
 // The magnitude-time plane of the sketch-editing paper (Fig. 1, left) for the selected object: time
 // across over the scene's range, the angular speed |ω| up in rad/s (the right axis in °/s).
 //
-// - The current curve |ω(t)| of the track's motion, sampled on a job thread of the plot's own (a
+// - The current curve |ω(t)| of the track's motion, sampled by a job of the plot's own (a
 //   screw track with many subdivision levels is slow to build), at most every
 //   SelectedTrackSampler::kIntervalMilliseconds while the track changes and not while the plot is off
 //   screen. Only a curve that changed is set again, and the plot replots only then: a key moved but
@@ -178,7 +178,7 @@ private:
     // Replots for changes made on the UI thread (the sketch, the window): one per turn of the event
     // loop, none while the plot is off screen.
     ViewRefresh replot_;
-    SelectedTrackSampler<SampledCurves> sampler_; // last: joined before the members its work uses are destroyed
+    SelectedTrackSampler<SampledCurves> sampler_; // last: waits for its work before the members it uses go
 };
 
 } // namespace gyre::app

@@ -27,7 +27,7 @@
 // Escape during a stroke or an erasing drag undoes what it did so far.
 //
 // The curves follow the selection, the track and the scene's range, recomputed at most every
-// SelectedTrackSampler::kIntervalMilliseconds on a job thread of the view's own. They are not
+// SelectedTrackSampler::kIntervalMilliseconds by a job of the view's own (jobs/job.h). They are not
 // cheap: the bundled spinning top's (14 s at kSamplesPerSecond, with its fit and its patterned sketch) took 0.22 s in a Debug
 // build, the L-cycle's screw motion 0.04 s, and a screw track's motion grows with 2^levels
 // (smoothness_panel.h). A stroke being drawn asks again at every move. A hidden view (its dock closed
@@ -180,7 +180,7 @@ private:
     std::optional<std::size_t> strokeIndex_; // of the stroke being drawn, once it is in the document
     std::optional<model::Gesture> gesture_;
 
-    SelectedTrackSampler<SphereCurves> sampler_; // last: joined before the members its work uses are destroyed
+    SelectedTrackSampler<SphereCurves> sampler_; // last: waits for its work before the members it uses go
 };
 
 } // namespace gyre::app

@@ -33,6 +33,11 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
     : QObject(parent)
     , document_(document)
     , selection_(selection)
+    , motionJob_(jobs::JobPolicy::NewestWins,
+                 {.finished = [this](std::shared_ptr<const model::SceneMotion> built) { receiveMotion(std::move(built)); },
+                  .failed = [this](const QString& message) {
+                      emit failed(tr("The motion could not be rebuilt: %1").arg(message));
+                  }})
 {
     connect(&document_, &model::Document::sceneReset, this, &DrawnMotion::onSceneReset);
     connect(&document_, &model::Document::objectAdded, this, &DrawnMotion::onObjectsChanged);
@@ -52,9 +57,10 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
     connect(&selection_, &Selection::changed, this, &DrawnMotion::onSelectionChanged);
     connect(&subdivision_, &jobs::SubdivisionJob::subdivided, this,
             [this](std::uint64_t, const std::vector<Pose>& poses, qint64 nanoseconds) { receiveTrail(poses, nanoseconds); });
-    connect(&subdivision_, &jobs::SubdivisionJob::failed, this, [this] {
+    connect(&subdivision_, &jobs::SubdivisionJob::failed, this, [this](std::uint64_t, const QString& reason) {
         dropTrail();
         emit changed();
+        emit failed(tr("The trail could not be built: %1").arg(reason));
     });
     trailObject_ = selection_.object();
     motion_ = std::make_shared<model::SceneMotion>(document_.scene());
@@ -80,7 +86,7 @@ void DrawnMotion::onSceneReset()
 {
     // Opening a project may wait for its motion; only dragging must not. A preview was of the old scene.
     previewTrack_.reset();
-    ++motionGeneration_;
+    motionJob_.cancel();
     motion_ = std::make_shared<model::SceneMotion>(document_.scene());
     trajectoryStale_ = true;
     trailPoseCount_ = 0; // the old scene's
@@ -135,19 +141,14 @@ model::Scene DrawnMotion::sceneToDraw() const
 void DrawnMotion::rebuildMotionInBackground()
 {
     // The whole scene each time, so that the newest request, the one that runs, has every change.
-    const std::uint64_t generation = ++motionGeneration_;
-    motionThread_.post([this, generation, scene = sceneToDraw()](const std::atomic<bool>&) {
-        auto built = std::make_shared<const model::SceneMotion>(scene);
-        QMetaObject::invokeMethod(
-            this, [this, generation, built = std::move(built)] { receiveMotion(generation, built); },
-            Qt::QueuedConnection);
+    motionJob_.post([scene = sceneToDraw()](const jobs::JobRun<jobs::NoProgress>& run) {
+        run.throwIfStopped(); // cancelled before it started
+        return std::make_shared<const model::SceneMotion>(scene);
     });
 }
 
-void DrawnMotion::receiveMotion(std::uint64_t generation, std::shared_ptr<const model::SceneMotion> built)
+void DrawnMotion::receiveMotion(std::shared_ptr<const model::SceneMotion> built)
 {
-    if (generation != motionGeneration_)
-        return;
     motion_ = std::move(built);
     // A parent's change moves the selected object's trajectory as well as its own.
     trajectoryStale_ = true;

@@ -1,11 +1,12 @@
 #pragma once
 // The motion the viewport draws, following the document: the scene's motion rebuilt off the UI
-// thread after each change (a moment behind while a newer one is built), a live fit's preview track
+// thread after each change by a newest-wins job (a moment behind while a newer one is built), a live fit's preview track
 // in place of its object's own, the motion as opened or last saved (the ghost), the selected
 // object's trajectory, and the stroboscopic trail of its subdivided polyscrew (SubdivisionJob).
 
 #include "app/selection.h"
 #include "model/scene_motion.h"
+#include "jobs/job.h"
 #include "jobs/subdivision_job.h"
 #include "model/document.h"
 
@@ -59,6 +60,8 @@ signals:
     void changed();
     // A new scene's motion is in place: the viewport frames it.
     void sceneReset();
+    // The motion or the trail could not be built; the one drawn stays, the trail goes.
+    void failed(const QString& message);
 
 private:
     void onSceneReset();
@@ -69,7 +72,7 @@ private:
     // The document's scene with the preview track in place of its object's track.
     model::Scene sceneToDraw() const;
     void rebuildMotionInBackground();
-    void receiveMotion(std::uint64_t generation, std::shared_ptr<const model::SceneMotion> built);
+    void receiveMotion(std::shared_ptr<const model::SceneMotion> built);
     void requestTrail();
     void receiveTrail(const std::vector<Pose>& poses, qint64 nanoseconds);
     void dropTrail();
@@ -79,7 +82,6 @@ private:
     Selection& selection_;
 
     std::shared_ptr<const model::SceneMotion> motion_ = std::make_shared<model::SceneMotion>();
-    std::uint64_t motionGeneration_ = 0; // of the newest motion asked for
     model::ObjectId previewObject_ = model::kNoObject;
     std::optional<model::MotionTrack> previewTrack_;
     model::Scene originalScene_; // as opened or last saved, for the ghost
@@ -97,9 +99,9 @@ private:
     double subdivisionLatencyMilliseconds_ = 0.0;
     QElapsedTimer sinceTrailRequest_;
 
-    // Last: joined first, so no trail or motion arrives once the members above are gone.
+    // Last: done first, so no trail or motion arrives once the members above are gone.
     jobs::SubdivisionJob subdivision_;
-    jobs::JobThread motionThread_;
+    jobs::Job<std::shared_ptr<const model::SceneMotion>> motionJob_;
 };
 
 } // namespace gyre::app

@@ -62,6 +62,7 @@ Viewport::Viewport(model::Document& document, Selection& selection, QWidget* par
 
     connect(&drawn_, &DrawnMotion::changed, this, [this] { update(); });
     connect(&drawn_, &DrawnMotion::sceneReset, this, &Viewport::frameScene);
+    connect(&drawn_, &DrawnMotion::failed, this, &Viewport::drawingFailed);
     // An object gone, or given another mesh, may leave a mesh that no object holds.
     for (const auto signal : {&model::Document::objectAdded, &model::Document::objectRemoved, &model::Document::objectChanged})
         connect(&document_, signal, this, [this] { renderer_.dropUnusedMeshesNextFrame(); });

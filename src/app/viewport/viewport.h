@@ -85,6 +85,8 @@ signals:
     void frameStatsChanged(double framesPerSecond, double subdivisionMilliseconds, double subdivisionLatencyMilliseconds);
     // A drag began or ended (isDragging).
     void draggingChanged(bool dragging);
+    // The motion or the trail to draw could not be built (DrawnMotion::failed); the message says why.
+    void drawingFailed(const QString& message);
 
 protected:
     void initializeGL() override;
