@@ -5,16 +5,16 @@ namespace gyre::jobs {
 SceneFileJobs::SceneFileJobs(QObject* parent)
     : QObject(parent)
     , import_(JobPolicy::Queue,
-              {.finished = [this](std::shared_ptr<const SceneImport> scene) { emit imported(finishJob(), scene); },
+              {.finished = [this](std::shared_ptr<const io::SceneImport> scene) { emit imported(finishJob(), scene); },
                .failed = [this](const QString& message) { emit failed(finishJob(), message); },
                .cancelled = [this] { emit cancelled(finishJob()); }})
     , export_(JobPolicy::Queue,
-              {.finished = [this](const ExportReport& report) { emit exported(finishJob(), report); },
+              {.finished = [this](const io::ExportReport& report) { emit exported(finishJob(), report); },
                .failed = [this](const QString& message) { emit failed(finishJob(), message); }})
 {
 }
 
-bool SceneFileJobs::startImport(const QString& path, const ImportOptions& options)
+bool SceneFileJobs::startImport(const QString& path, const io::ImportOptions& options)
 {
     if (busy_)
         return false;
@@ -23,12 +23,12 @@ bool SceneFileJobs::startImport(const QString& path, const ImportOptions& option
     // A cancelled import's worker is killed, and the job answers cancelled whatever it then throws
     // (SceneWorkerCancelled).
     import_.post([path, options, limits = limits_](const JobRun<NoProgress>& run) {
-        return std::make_shared<const SceneImport>(importSceneInWorker(path, options, limits, &run.stopFlag()));
+        return std::make_shared<const io::SceneImport>(io::importSceneInWorker(path, options, limits, &run.stopFlag()));
     });
     return true;
 }
 
-bool SceneFileJobs::startExport(const model::Scene& scene, const QString& path, SceneFormat format, double fps)
+bool SceneFileJobs::startExport(const model::Scene& scene, const QString& path, io::SceneFormat format, double fps)
 {
     if (busy_)
         return false;
@@ -37,7 +37,7 @@ bool SceneFileJobs::startExport(const model::Scene& scene, const QString& path, 
     // The scene is copied: the document may change while the export runs. Meshes are shared, not
     // copied, and never change once made.
     export_.post([scene, path, format, fps, limits = limits_](const JobRun<NoProgress>&) {
-        return exportSceneInWorker(scene, path, format, fps, limits);
+        return io::exportSceneInWorker(scene, path, format, fps, limits);
     });
     return true;
 }
