@@ -12,6 +12,7 @@
 #include <QWidget>
 
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <utility>
 
@@ -22,10 +23,12 @@ class SelectedTrackSampler {
 public:
     static constexpr int kIntervalMilliseconds = 50;
 
-    // Called on the UI thread with the selected object and the scene; returns the sampling to run on
-    // the job thread, holding copies of what it reads. The sampling may throw std::invalid_argument
-    // for a track too large to evaluate (track_evaluation.h): the view then shows no curves.
-    using MakeSampling = std::function<std::function<Curves()>(const model::SceneObject&, const model::Scene&)>;
+    // Called on the UI thread with the selected track's shared motion (Document::motion) and the
+    // scene; returns the sampling to run on the job thread, holding copies of what it reads. The
+    // sampling may throw std::invalid_argument for a track too large to evaluate
+    // (track_evaluation.h): the view then shows no curves.
+    using Motion = std::shared_ptr<const model::SharedTrackMotion>;
+    using MakeSampling = std::function<std::function<Curves()>(const Motion&, const model::Scene&)>;
     using Show = std::function<void(const Curves&)>;
 
     // `view` owns the sampler (it is a member), so the sampler outlives every call queued on it.
@@ -47,14 +50,14 @@ public:
 private:
     void sampleNow()
     {
-        const model::SceneObject* object = selection_.selectedObject();
-        if (object == nullptr) {
+        const Motion motion = document_.motion(selection_.object());
+        if (!motion) {
             job_.cancel();
             show_(Curves{});
             return;
         }
         job_.post<Curves>(
-            [sampling = makeSampling_(*object, document_.scene())] {
+            [sampling = makeSampling_(motion, document_.scene())] {
                 try {
                     return sampling();
                 } catch (const std::invalid_argument&) {

@@ -10,22 +10,33 @@ SharedTrackMotion::SharedTrackMotion(MotionTrack track, std::shared_ptr<std::ato
 {
 }
 
-const TrackMotion& SharedTrackMotion::motion() const
+const TrackMotion& SharedTrackMotion::motion() const { return build(motion_, track_); }
+
+const TrackMotion& SharedTrackMotion::motionWithoutFit() const
+{
+    if (track_.sketch.fittedCurve.empty())
+        return motion();
+    MotionTrack keyed = track_;
+    keyed.sketch.fittedCurve.clear();
+    return build(withoutFit_, keyed);
+}
+
+const TrackMotion& SharedTrackMotion::build(Lazy& lazy, const MotionTrack& track) const
 {
     // call_once runs the build once even when threads ask together; a build that throws is kept as
     // its exception, so a refused track is not built again at every call.
-    std::call_once(built_, [this] {
+    std::call_once(lazy.built, [this, &lazy, &track] {
         if (builds_)
             ++*builds_;
         try {
-            motion_.emplace(track_);
+            lazy.motion.emplace(track);
         } catch (...) {
-            error_ = std::current_exception();
+            lazy.error = std::current_exception();
         }
     });
-    if (error_)
-        std::rethrow_exception(error_);
-    return *motion_;
+    if (lazy.error)
+        std::rethrow_exception(lazy.error);
+    return *lazy.motion;
 }
 
 std::shared_ptr<const SharedTrackMotion> MotionCache::motion(const SceneObject& object)

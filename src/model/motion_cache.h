@@ -32,13 +32,24 @@ public:
     // The track's TrackMotion, built by the first call. Throws std::invalid_argument where
     // TrackMotion does (a subdivision too large to hold), at every call, building only once.
     const TrackMotion& motion() const;
+    // The motion its keys give without the applied fit (the views' "before the fit"), built by the
+    // first call as motion() is; motion() itself for a track without a fit.
+    const TrackMotion& motionWithoutFit() const;
 
 private:
+    // A TrackMotion built once, by the first thread that asks.
+    struct Lazy {
+        std::once_flag built;
+        std::optional<TrackMotion> motion;
+        std::exception_ptr error;
+    };
+
+    const TrackMotion& build(Lazy& lazy, const MotionTrack& track) const;
+
     MotionTrack track_;
     std::shared_ptr<std::atomic<std::size_t>> builds_;
-    mutable std::once_flag built_;
-    mutable std::optional<TrackMotion> motion_;
-    mutable std::exception_ptr error_;
+    mutable Lazy motion_;
+    mutable Lazy withoutFit_;
 };
 
 // The SharedTrackMotion of each object, made on first request. Used on one thread (the document's);
