@@ -2,11 +2,6 @@
 
 namespace gyre::model {
 
-SceneMotion::SceneMotion(const Scene& scene)
-    : SceneMotion(scene, [](const SceneObject& object) { return std::make_shared<const SharedTrackMotion>(object.track); })
-{
-}
-
 SceneMotion::SceneMotion(const Scene& scene, const MotionOf& motionOf)
 {
     for (const SceneObject& object : scene.objects)

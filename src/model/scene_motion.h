@@ -22,8 +22,7 @@ public:
     using MotionOf = std::function<std::shared_ptr<const SharedTrackMotion>(const SceneObject&)>;
 
     SceneMotion() = default; // no objects
-    // Each track's motion of its own, built when first evaluated.
-    explicit SceneMotion(const Scene& scene);
+    // The scene's objects, each moving by motionOf(object), typically the document's motion().
     SceneMotion(const Scene& scene, const MotionOf& motionOf);
 
     // Builds every track's motion not built yet, so that evaluating then only evaluates. Throws
