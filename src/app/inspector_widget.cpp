@@ -64,6 +64,8 @@ InspectorWidget::InspectorWidget(model::Document& document, Selection& selection
     , ui_(std::make_unique<Ui::InspectorWidget>())
     , document_(document)
     , selection_(selection)
+    , selectedTrack_(document, selection)
+    , refresh_(*this, 0, [this] { showSelectedKey(); })
 {
     ui_->setupUi(this);
     const int iconSize = style()->pixelMetric(QStyle::PM_SmallIconSize, nullptr, this);
@@ -101,19 +103,19 @@ InspectorWidget::InspectorWidget(model::Document& document, Selection& selection
 
     connect(&selection_, &Selection::changed, this, [this] {
         clearMessage();
-        showSelectedKey();
+        refresh_.requestNow();
     });
-    connect(&document_, &model::Document::sceneReset, this, [this] {
-        typedRotation_.reset();
-        clearMessage();
-        showSelectedKey();
+    // Another selected object comes through Selection::changed as well; a shown object that is not
+    // the selected one is shown no longer once a refresh is pending.
+    connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
+        using model::Change;
+        if (changes.testFlag(Change::Scene)) {
+            typedRotation_.reset();
+            clearMessage();
+        }
+        if (changes & (Change::Scene | Change::Keyframes | Change::Object))
+            refresh_.requestNow();
     });
-    const auto showIfInspected = [this](model::ObjectId id) {
-        if (id == shownObject_ || id == selection_.object())
-            showSelectedKey();
-    };
-    connect(&document_, &model::Document::keyframesChanged, this, showIfInspected);
-    connect(&document_, &model::Document::objectChanged, this, showIfInspected);
     showSelectedKey();
 }
 

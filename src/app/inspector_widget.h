@@ -6,7 +6,9 @@
 // always agree. Near gimbal lock of the chosen convention a warning says which angles lost meaning.
 
 #include "app/number_fields.h"
+#include "app/selected_track.h"
 #include "app/selection.h"
+#include "app/view_refresh.h"
 #include "core/euler_angles.h"
 #include "model/document.h"
 
@@ -80,6 +82,9 @@ private:
     std::unique_ptr<Ui::InspectorWidget> ui_;
     model::Document& document_;
     Selection& selection_;
+    SelectedTrack selectedTrack_;
+    // The fields follow the selected track while the form is on screen, and catch up when it is back.
+    ViewRefresh refresh_;
     // The key the fields show, which edits go to.
     model::ObjectId shownObject_ = model::kNoObject;
     std::optional<std::size_t> shownKey_;

@@ -24,6 +24,7 @@ KeyframeActions::KeyframeActions(model::Document& document, Selection& selection
     : QObject(parent)
     , document_(document)
     , selection_(selection)
+    , selectedTrack_(document, selection)
     , actions_(actions)
     , statusBar_(statusBar)
 {
@@ -33,8 +34,10 @@ KeyframeActions::KeyframeActions(model::Document& document, Selection& selection
     // updateActions must not toggle the key back.
     connect(actions_.toggleConstraint, &QAction::triggered, this, &KeyframeActions::toggleConstraint);
     connect(&selection_, &Selection::changed, this, &KeyframeActions::updateActions);
-    connect(&document_, &model::Document::keyframesChanged, this, &KeyframeActions::updateActions);
-    connect(&document_, &model::Document::sceneReset, this, &KeyframeActions::updateActions);
+    connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
+        if (changes & (model::Change::Keyframes | model::Change::Scene))
+            updateActions();
+    });
     updateActions();
 }
 
@@ -45,7 +48,7 @@ void KeyframeActions::addKeyframe()
         return;
     const double time = document_.scene().currentTime;
     // The key holds the pose the object has now, so keying changes nothing but the keys.
-    const model::Keyframe key{time, model::TrackMotion(object->track).at(time), true};
+    const model::Keyframe key{time, document_.motion(object->id)->motion().at(time), true};
     const model::ObjectId id = object->id;
     try {
         document_.push(new model::AddKeyframeCommand(document_, id, key));

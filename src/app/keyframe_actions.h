@@ -3,6 +3,7 @@
 // time, delete the selected key, constrain or free it. Each is one undo step; each is enabled only
 // when it applies.
 
+#include "app/selected_track.h"
 #include "app/selection.h"
 #include "model/document.h"
 
@@ -36,6 +37,7 @@ private:
 
     model::Document& document_;
     Selection& selection_;
+    SelectedTrack selectedTrack_;
     KeyframeActionSet actions_;
     QStatusBar* statusBar_;
 };

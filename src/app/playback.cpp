@@ -19,7 +19,10 @@ Playback::Playback(model::Document& document, QObject* parent)
     timer_.setTimerType(Qt::PreciseTimer);
     timer_.setInterval(kTickMilliseconds);
     connect(&timer_, &QTimer::timeout, this, &Playback::advance);
-    connect(&document_, &model::Document::sceneReset, this, &Playback::pause);
+    connect(&document_, &model::Document::changed, this, [this](model::ObjectId, model::Changes changes) {
+        if (changes.testFlag(model::Change::Scene))
+            pause();
+    });
 }
 
 void Playback::play()

@@ -68,6 +68,8 @@ ScrewBenderPanel::ScrewBenderPanel(model::Document& document, Selection& selecti
     , ui_(std::make_unique<Ui::ScrewBenderPanel>())
     , document_(document)
     , selection_(selection)
+    , selectedTrack_(document, selection)
+    , refresh_(*this, 0, [this] { showSelectedTrack(); })
 {
     ui_->setupUi(this);
     const int iconSize = style()->pixelMetric(QStyle::PM_SmallIconSize, nullptr, this);
@@ -91,17 +93,14 @@ ScrewBenderPanel::ScrewBenderPanel(model::Document& document, Selection& selecti
 
     connect(&selection_, &Selection::changed, this, [this] {
         ui_->screwBenderMessageFrame->hide();
-        showSelectedTrack();
+        refresh_.requestNow();
     });
-    connect(&document_, &model::Document::sceneReset, this, &ScrewBenderPanel::showSelectedTrack);
-    const auto showIfSelected = [this](model::ObjectId id) {
-        if (id == selection_.object())
-            showSelectedTrack();
-    };
     // The pose count follows the number of keyframes, the title the object's name.
-    connect(&document_, &model::Document::trackSettingsChanged, this, showIfSelected);
-    connect(&document_, &model::Document::keyframesChanged, this, showIfSelected);
-    connect(&document_, &model::Document::objectChanged, this, showIfSelected);
+    connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
+        using model::Change;
+        if (changes & (Change::Scene | Change::TrackSettings | Change::Keyframes | Change::Object))
+            refresh_.requestNow();
+    });
     showSelectedTrack();
 }
 

@@ -4,7 +4,9 @@
 // decoupled alternative for comparison), with the number of poses that gives. Each change is one
 // undo command on the document.
 
+#include "app/selected_track.h"
 #include "app/selection.h"
+#include "app/view_refresh.h"
 #include "model/document.h"
 
 #include <QWidget>
@@ -39,6 +41,9 @@ private:
     std::unique_ptr<Ui::ScrewBenderPanel> ui_;
     model::Document& document_;
     Selection& selection_;
+    SelectedTrack selectedTrack_;
+    // The fields follow the selected track while the form is on screen, and catch up when it is back.
+    ViewRefresh refresh_;
 };
 
 } // namespace gyre::app

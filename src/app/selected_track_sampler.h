@@ -12,6 +12,7 @@
 #include <QWidget>
 
 #include <functional>
+#include <memory>
 #include <utility>
 
 namespace gyre::app {
@@ -21,11 +22,12 @@ class SelectedTrackSampler {
 public:
     static constexpr int kIntervalMilliseconds = 50;
 
-    // Called on the UI thread with the selected object and the scene; returns the sampling to run on
-    // the job, holding copies of what it reads. The sampling may throw std::invalid_argument for a
-    // track too large to evaluate (track_evaluation.h): the view then shows no curves, as it does for
-    // any other failure rather than the curves of an older track.
-    using MakeSampling = std::function<std::function<Curves()>(const model::SceneObject&, const model::Scene&)>;
+    // Called on the UI thread with the selected track's shared motion (Document::motion) and the
+    // scene; returns the sampling to run on the job, holding copies of what it reads. The sampling may
+    // throw std::invalid_argument for a track too large to evaluate (track_evaluation.h): the view then
+    // shows no curves, as it does for any other failure rather than the curves of an older track.
+    using Motion = std::shared_ptr<const model::SharedTrackMotion>;
+    using MakeSampling = std::function<std::function<Curves()>(const Motion&, const model::Scene&)>;
     using Show = std::function<void(const Curves&)>;
 
     // `view` owns the sampler (it is a member); while it is off screen nothing is sampled (ViewRefresh).
@@ -48,13 +50,13 @@ public:
 private:
     void sampleNow()
     {
-        const model::SceneObject* object = selection_.selectedObject();
-        if (object == nullptr) {
+        const Motion motion = document_.motion(selection_.object());
+        if (!motion) {
             job_.cancel();
             show_(Curves{});
             return;
         }
-        job_.post([sampling = makeSampling_(*object, document_.scene())](const jobs::JobRun<jobs::NoProgress>& run) {
+        job_.post([sampling = makeSampling_(motion, document_.scene())](const jobs::JobRun<jobs::NoProgress>& run) {
             run.throwIfStopped(); // cancelled before it started
             return sampling();
         });

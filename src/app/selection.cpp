@@ -6,12 +6,14 @@ Selection::Selection(model::Document& document, QObject* parent)
     : QObject(parent)
     , document_(document)
 {
-    connect(&document_, &model::Document::sceneReset, this, &Selection::selectDefault);
-    connect(&document_, &model::Document::objectRemoved, this, [this](model::ObjectId id) {
-        if (id == object_)
+    connect(&document_, &model::Document::changed, this, [this](model::ObjectId id, model::Changes changes) {
+        if (changes.testFlag(model::Change::Scene))
+            selectDefault();
+        else if (id == object_ && changes.testFlag(model::Change::Removed))
             clear();
+        else if (id == object_ && changes.testFlag(model::Change::Keyframes))
+            dropKeyPastEnd();
     });
-    connect(&document_, &model::Document::keyframesChanged, this, &Selection::dropKeyPastEnd);
     selectDefault();
 }
 
@@ -64,9 +66,9 @@ void Selection::selectDefault()
     set(objects.empty() ? model::kNoObject : objects.front().id, std::nullopt);
 }
 
-void Selection::dropKeyPastEnd(model::ObjectId object)
+void Selection::dropKeyPastEnd()
 {
-    if (object == object_ && key_ && selectedKey() == nullptr)
+    if (key_ && selectedKey() == nullptr)
         set(object_, std::nullopt);
 }
 

@@ -38,7 +38,8 @@ private:
     void set(model::ObjectId object, std::optional<std::size_t> key);
     // After a new scene: the first object that has keyframes, else the first object.
     void selectDefault();
-    void dropKeyPastEnd(model::ObjectId object);
+    // After the selected object's keys changed.
+    void dropKeyPastEnd();
 
     model::Document& document_;
     model::ObjectId object_ = model::kNoObject;

@@ -89,13 +89,14 @@ double componentOf(const Eigen::Vector3d& value, SmoothnessPanel::Component comp
 SmoothnessPanel::SmoothnessPanel(model::Document& document, Selection& selection, QWidget* parent)
     : QWidget(parent)
     , document_(document)
-    , selection_(selection)
+    , selectedTrack_(document, selection)
+    , cursorReplot_(*this, 0, [this] { plot_->layer(QString::fromLatin1(kCursorLayer))->replot(); })
     , plot_(new QCustomPlot(this))
     , sampler_(
           *this, selection, document,
-          [this](const model::SceneObject& object, const model::Scene& scene) {
-              return [track = object.track, localPoint = point(), start = scene.startTime, end = scene.endTime] {
-                  return model::samplePointTrajectory(track, localPoint, start, end, kSampleCount);
+          [this](const std::shared_ptr<const model::SharedTrackMotion>& motion, const model::Scene& scene) {
+              return [motion, localPoint = point(), start = scene.startTime, end = scene.endTime] {
+                  return model::samplePointTrajectory(motion->motion(), localPoint, start, end, kSampleCount);
               };
           },
           [this](const model::PointTrajectory& trajectory) { showTrajectory(trajectory); })
@@ -128,24 +129,12 @@ SmoothnessPanel::SmoothnessPanel(model::Document& document, Selection& selection
     plot_->setMinimumSize(kMinimumPlotWidth, kMinimumPlotHeight);
     setUpPlot();
 
-    auto recomputeFor = [this](model::ObjectId id) {
-        if (id == selection_.object())
+    // Any change of the track's motion (a fit included), of the time range, or another track.
+    connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
+        if (changes & (model::kMotionChanges | model::Change::SceneSettings))
             sampler_.schedule();
-    };
-    connect(&document_, &model::Document::keyframesChanged, this, recomputeFor);
-    connect(&document_, &model::Document::trackSettingsChanged, this, recomputeFor);
-    // A fit changes the orientation between the keys.
-    connect(&document_, &model::Document::sketchChanged, this, recomputeFor);
-    connect(&document_, &model::Document::sceneReset, this, [this] { sampler_.schedule(); });
-    connect(&document_, &model::Document::sceneSettingsChanged, this, [this] { sampler_.schedule(); });
-    connect(&document_, &model::Document::currentTimeChanged, this, &SmoothnessPanel::moveCursor);
-    // Selecting another key of the same object leaves the curves as they are.
-    connect(&selection_, &Selection::changed, this, [this, shown = selection.object()]() mutable {
-        if (selection_.object() != shown) {
-            shown = selection_.object();
-            sampler_.schedule();
-        }
     });
+    connect(&document_, &model::Document::currentTimeChanged, this, &SmoothnessPanel::moveCursor);
     sampler_.schedule();
 }
 
@@ -254,7 +243,7 @@ void SmoothnessPanel::moveCursor()
         cursor->point1->setCoords(now, 0.0);
         cursor->point2->setCoords(now, 1.0);
     }
-    plot_->layer(QString::fromLatin1(kCursorLayer))->replot();
+    cursorReplot_.request();
 }
 
 } // namespace gyre::app

@@ -15,7 +15,9 @@
 
 #include "model/point_trajectory.h"
 #include "app/selection.h"
+#include "app/selected_track.h"
 #include "app/selected_track_sampler.h"
+#include "app/view_refresh.h"
 #include "model/document.h"
 
 #include <Eigen/Core>
@@ -65,7 +67,9 @@ private:
     void moveCursor();
 
     model::Document& document_;
-    Selection& selection_;
+    SelectedTrack selectedTrack_;
+    // The cursor's layer, redrawn once per turn of the event loop at most, and not while hidden.
+    ViewRefresh cursorReplot_;
     std::array<QDoubleSpinBox*, 3> pointBoxes_{};
     QCustomPlot* plot_;
     std::array<QCPAxisRect*, kQuantityCount> axisRects_{};

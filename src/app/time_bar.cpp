@@ -75,13 +75,11 @@ TimeBar::TimeBar(model::Document& document, QWidget* parent)
     connect(endTime_, &QDoubleSpinBox::valueChanged, this,
             [this](double end) { applyTimeRange([end](model::TimeRange& range) { range.endTime = end; }); });
     connect(&document_, &model::Document::currentTimeChanged, this, &TimeBar::showCurrentTime);
-    connect(&document_, &model::Document::sceneSettingsChanged, this, [this] {
-        showTimeRange();
-        showCurrentTime();
-    });
-    connect(&document_, &model::Document::sceneReset, this, [this] {
-        showTimeRange();
-        showCurrentTime();
+    connect(&document_, &model::Document::changed, this, [this](model::ObjectId, model::Changes changes) {
+        if (changes & (model::Change::SceneSettings | model::Change::Scene)) {
+            showTimeRange();
+            showCurrentTime();
+        }
     });
     showTimeRange();
     showCurrentTime();

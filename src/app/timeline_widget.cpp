@@ -101,24 +101,22 @@ TimelineWidget::TimelineWidget(model::Document& document, Selection& selection, 
     : QWidget(parent)
     , document_(document)
     , selection_(selection)
+    , selectedTrack_(document, selection)
     , playback_(playback)
 {
     setFocusPolicy(Qt::StrongFocus);
     setAttribute(Qt::WA_OpaquePaintEvent);
     // The cursor alone moves with the current time; the rest is redrawn when what it shows changes.
     connect(&document_, &model::Document::currentTimeChanged, this, [this] { update(); });
-    auto invalidate = [this] { invalidateStaticLayer(); };
-    connect(&document_, &model::Document::sceneSettingsChanged, this, invalidate);
-    connect(&document_, &model::Document::keyframesChanged, this, [this](model::ObjectId id) {
-        if (id == selection_.object())
+    connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
+        using model::Change;
+        if (changes.testFlag(Change::Scene))
+            endKeyDrag(); // the keys a drag was moving are gone with the old scene
+        if (changes & (Change::Scene | Change::Keyframes | Change::SceneSettings))
             invalidateStaticLayer();
     });
-    connect(&document_, &model::Document::sceneReset, this, [this] {
-        // The keys a drag was moving are gone with the old scene.
-        endKeyDrag();
-        invalidateStaticLayer();
-    });
-    connect(&selection_, &Selection::changed, this, invalidate);
+    // The selected key is drawn apart.
+    connect(&selection_, &Selection::changed, this, [this] { invalidateStaticLayer(); });
 }
 
 QSize TimelineWidget::sizeHint() const

@@ -16,6 +16,7 @@
 // 4,500 key markers, took about 50 ms a frame to draw, the pixmap 0.03 ms (tst_view_drawing, README.md).
 
 #include "app/playback.h"
+#include "app/selected_track.h"
 #include "app/selection.h"
 #include "model/document.h"
 #include "model/gesture.h"
@@ -90,6 +91,7 @@ private:
 
     model::Document& document_;
     Selection& selection_;
+    SelectedTrack selectedTrack_;
     Playback& playback_;
     std::optional<KeyDrag> keyDrag_;
     std::optional<model::Gesture> dragGesture_;

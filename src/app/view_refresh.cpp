@@ -31,6 +31,16 @@ void ViewRefresh::request()
         timer_.start();
 }
 
+void ViewRefresh::requestNow()
+{
+    if (!onScreen()) {
+        stale_ = true;
+        return;
+    }
+    timer_.stop();
+    refresh_();
+}
+
 bool ViewRefresh::onScreen() const
 {
     return view_.isVisible() && !view_.visibleRegion().isEmpty();

@@ -10,6 +10,8 @@
 // again, refreshes it once. On screen, the first request starts a single-shot timer that later
 // requests do not restart, so while a key is dragged the view follows every interval instead of
 // waiting for the drag to end; an interval of zero refreshes once at the next turn of the event loop.
+// A form, whose fields should show an edit as soon as it is made, refreshes at once (requestNow)
+// while it is on screen, and like any view only once it is back when off screen.
 
 #include <QObject>
 #include <QTimer>
@@ -27,6 +29,8 @@ public:
 
     // Refreshes the view within the interval if it is on screen, else once it is shown again.
     void request();
+    // Refreshes the view now if it is on screen, else once it is shown again.
+    void requestNow();
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;

@@ -92,9 +92,8 @@ Autosave::Autosave(Document& document, const QString& directory, std::chrono::mi
 
     // A document that arrives with unsaved changes is copied at the first tick.
     changedSinceCopy_ = document_.isModified();
-    const auto noteChange = [this] { changedSinceCopy_ = true; };
-    connect(&document_.undoStack(), &QUndoStack::indexChanged, this, noteChange);
-    connect(&document_, &Document::sceneReset, this, noteChange);
+    // Every edit, undo and redo, and a new scene, says so.
+    connect(&document_, &Document::changed, this, [this] { changedSinceCopy_ = true; });
     connect(&document_, &Document::modifiedChanged, this, [this](bool modified) {
         if (!modified)
             removeCopy();

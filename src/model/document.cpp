@@ -26,6 +26,21 @@ Document::~Document()
 
 const SceneObject* Document::object(ObjectId id) const { return findObject(scene_, id); }
 
+std::shared_ptr<const SharedTrackMotion> Document::motion(ObjectId id) const
+{
+    const SceneObject* found = object(id);
+    return found != nullptr ? motions_.motion(*found) : nullptr;
+}
+
+void Document::notifyChanged(ObjectId object, Changes changes)
+{
+    if (changes.testFlag(Change::Scene))
+        motions_.clear();
+    else if (changes & kMotionChanges)
+        motions_.forget(object);
+    emit changed(object, changes);
+}
+
 void Document::push(QUndoCommand* command, GestureId gesture)
 {
     // Every step is a PerformGestureCommand: QUndoStack merges two steps only when they carry the
@@ -102,7 +117,7 @@ void Document::replaceScene(Scene scene, const QString& filePath, bool modified)
     const double oldTime = scene_.currentTime;
     scene_ = std::move(scene);
     setFilePath(filePath);
-    emit sceneReset();
+    notifyChanged(kNoObject, Change::Scene);
     if (scene_.currentTime != oldTime)
         emit currentTimeChanged(scene_.currentTime);
 }

@@ -14,17 +14,50 @@
 // two steps. A gesture whose edits bring the document back to where it began leaves no step.
 // isGestureOpen says whether the artist is still in the middle of one (a finished fit waits for
 // its end, gestureEnded); gesture.h wraps begin and end for a view that holds a gesture.
+//
+// One change signal. Every edit of the scene, undoable or a whole new scene, is announced by
+// changed(object, changes): the object it touched (kNoObject for the scene as a whole) and what of
+// it changed. A view connects once and reads what it needs from the flags, rather than following a
+// signal per kind of edit. The other signals are not edits of the scene: the current time (scrubbing
+// is looking, and arrives at every frame of playback), the modified state and the file path (the
+// document's relation to its file), and a gesture's end (the artist letting go). They stay apart so
+// that a view that redraws on edits is not woken by playback, and the reverse.
+//
+// The evaluated motion of each track (motion()) is owned here, built once per change of its track
+// and shared by every view and job (motion_cache.h).
 
+#include "model/motion_cache.h"
 #include "model/scene.h"
 
+#include <QFlags>
 #include <QObject>
 #include <QString>
 #include <QUndoStack>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace gyre::model {
+
+// What an edit changed, for Document::changed. The object flags come with the object's id; Scene
+// and SceneSettings with kNoObject.
+enum class Change {
+    Object = 1 << 0,        // name, parent (and with it the order of objects), mesh
+    Keyframes = 1 << 1,
+    TrackSettings = 1 << 2, // interpolation, subdivision
+    Sketch = 1 << 3,        // strokes, magnitude, pattern, window, fit parameters, the applied fit
+    Added = 1 << 4,         // the object is new (or back, by undo)
+    Removed = 1 << 5,       // the object is gone; document.object(id) is null
+    SceneSettings = 1 << 6, // fps, time range
+    Scene = 1 << 7,         // the whole scene was replaced (clear, load, recover): rebuild from scene()
+};
+Q_DECLARE_FLAGS(Changes, Change)
+Q_DECLARE_OPERATORS_FOR_FLAGS(Changes)
+
+// The changes after which an object's track moves differently (or is gone), so its motion is rebuilt.
+inline constexpr Changes kMotionChanges =
+    Changes(Change::Keyframes) | Change::TrackSettings | Change::Sketch | Change::Added | Change::Removed | Change::Scene;
 
 // Names one gesture; ids are never handed out twice in a session. kNoGesture: a command alone.
 using GestureId = std::uint64_t;
@@ -41,6 +74,11 @@ public:
     const Scene& scene() const { return scene_; }
     // The object with this id, or null.
     const SceneObject* object(ObjectId id) const;
+    // The evaluated motion of the object's track as it is now, shared: every caller until the track
+    // next changes gets the same one, built once. Null for an unknown object.
+    std::shared_ptr<const SharedTrackMotion> motion(ObjectId id) const;
+    // How many track motions have been built (motion_cache.h), for tests that count rebuilds.
+    std::size_t motionBuilds() const { return motions_.builds(); }
 
     QUndoStack& undoStack() { return undoStack_; }
     const QUndoStack& undoStack() const { return undoStack_; }
@@ -85,18 +123,9 @@ public:
     void recover(const QString& recoveryPath, const QString& documentPath);
 
 signals:
-    // The whole scene was replaced (clear, load, recover); views rebuild from scene().
-    void sceneReset();
-    void objectAdded(gyre::model::ObjectId id);
-    void objectRemoved(gyre::model::ObjectId id);
-    // Name, parent or mesh. A new parent may also move the object within scene().objects.
-    void objectChanged(gyre::model::ObjectId id);
-    void keyframesChanged(gyre::model::ObjectId id);
-    // Interpolation or subdivision settings.
-    void trackSettingsChanged(gyre::model::ObjectId id);
-    void sketchChanged(gyre::model::ObjectId id);
-    // Frame rate or time range.
-    void sceneSettingsChanged();
+    // The scene changed: `object` (kNoObject for Change::Scene and Change::SceneSettings) and what of
+    // it. The document's motion() already reflects the change.
+    void changed(gyre::model::ObjectId object, gyre::model::Changes changes);
     void currentTimeChanged(double seconds);
     void modifiedChanged(bool modified);
     void filePathChanged(const QString& path);
@@ -108,12 +137,15 @@ private:
 
     void replaceScene(Scene scene, const QString& filePath, bool modified);
     void setFilePath(const QString& path);
+    // Forgets the motions the change makes stale, then emits changed.
+    void notifyChanged(ObjectId object, Changes changes);
 
     Scene scene_;
     QUndoStack undoStack_;
     QString filePath_;
     std::vector<GestureId> openGestures_;
     GestureId lastGesture_ = kNoGesture;
+    mutable MotionCache motions_; // filled on demand by the const motion()
 };
 
 } // namespace gyre::model

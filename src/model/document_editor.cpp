@@ -7,16 +7,7 @@ namespace gyre::model {
 void DocumentEditor::edit(ObjectId object, Changes changes, const std::function<void(Scene&)>& change)
 {
     change(document_.scene_);
-    if (changes.testFlag(Change::Object))
-        emit document_.objectChanged(object);
-    if (changes.testFlag(Change::Keyframes))
-        emit document_.keyframesChanged(object);
-    if (changes.testFlag(Change::TrackSettings))
-        emit document_.trackSettingsChanged(object);
-    if (changes.testFlag(Change::Sketch))
-        emit document_.sketchChanged(object);
-    if (changes.testFlag(Change::SceneSettings))
-        emit document_.sceneSettingsChanged();
+    document_.notifyChanged(object, changes);
 }
 
 void DocumentEditor::insertObjects(const std::vector<PlacedObject>& objects)
@@ -25,7 +16,7 @@ void DocumentEditor::insertObjects(const std::vector<PlacedObject>& objects)
     for (const PlacedObject& placed : objects)
         sceneObjects.insert(sceneObjects.begin() + static_cast<std::ptrdiff_t>(placed.index), placed.object);
     for (const PlacedObject& placed : objects)
-        emit document_.objectAdded(placed.object.id);
+        document_.notifyChanged(placed.object.id, Change::Added);
 }
 
 std::vector<PlacedObject> DocumentEditor::removeObjects(const std::vector<ObjectId>& ids)
@@ -42,7 +33,7 @@ std::vector<PlacedObject> DocumentEditor::removeObjects(const std::vector<Object
     }
     sceneObjects = std::move(kept);
     for (auto placed = removed.rbegin(); placed != removed.rend(); ++placed)
-        emit document_.objectRemoved(placed->object.id);
+        document_.notifyChanged(placed->object.id, Change::Removed);
     return removed;
 }
 

@@ -1,28 +1,16 @@
 #pragma once
 // The one way to change a Document. Undo commands use it, and nothing else should: a change made
-// here outside a command would not be undoable. Each function makes its change and then emits the
-// signals that say what changed, so views follow without polling.
+// here outside a command would not be undoable. Each function makes its change and then emits
+// Document::changed with what changed, so views follow without polling.
 
 #include "model/document.h"
 #include "model/scene.h"
-
-#include <QFlags>
 
 #include <cstddef>
 #include <functional>
 #include <vector>
 
 namespace gyre::model {
-
-// What a change touches; each part has its signal on Document.
-enum class Change {
-    Object = 1 << 0,        // name, parent (and with it the order of objects), mesh: objectChanged
-    Keyframes = 1 << 1,     // keyframesChanged
-    TrackSettings = 1 << 2, // interpolation, subdivision: trackSettingsChanged
-    Sketch = 1 << 3,        // sketchChanged
-    SceneSettings = 1 << 4, // fps, time range: sceneSettingsChanged
-};
-Q_DECLARE_FLAGS(Changes, Change)
 
 // An object and the index in scene.objects it has or had.
 struct PlacedObject {
@@ -39,14 +27,15 @@ public:
 
     const Scene& scene() const { return document_.scene_; }
 
-    // Applies `change` to the scene, then emits the signals of `changes`; the object signals carry
-    // `object`.
+    // Applies `change` to the scene, then emits changed(object, changes); `object` is kNoObject for
+    // Change::SceneSettings.
     void edit(ObjectId object, Changes changes, const std::function<void(Scene&)>& change);
 
     // Inserts each object at its index, in the order given (so indices must increase), and emits
-    // objectAdded for each.
+    // changed(id, Change::Added) for each.
     void insertObjects(const std::vector<PlacedObject>& objects);
-    // Removes the objects with these ids and emits objectRemoved for each, children before parents.
+    // Removes the objects with these ids and emits changed(id, Change::Removed) for each, children
+    // before parents.
     // Returns them with the indices they had, increasing, ready for insertObjects.
     std::vector<PlacedObject> removeObjects(const std::vector<ObjectId>& ids);
 
@@ -59,5 +48,3 @@ private:
 };
 
 } // namespace gyre::model
-
-Q_DECLARE_OPERATORS_FOR_FLAGS(gyre::model::Changes)

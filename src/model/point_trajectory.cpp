@@ -1,17 +1,14 @@
 #include "model/point_trajectory.h"
 
-#include "model/track_evaluation.h"
-
 #include <stdexcept>
 
 namespace gyre::model {
 
-PointTrajectory samplePointTrajectory(const MotionTrack& track, const Eigen::Vector3d& localPoint,
+PointTrajectory samplePointTrajectory(const TrackMotion& motion, const Eigen::Vector3d& localPoint,
                                       double start, double end, std::size_t samples)
 {
     if (samples < 2 || !(end > start))
         throw std::invalid_argument("a point trajectory needs two samples or more over a range that ends after it starts");
-    const TrackMotion motion(track);
     const double step = (end - start) / static_cast<double>(samples - 1);
     // p[k + 1] is the point at t_k: one extra sample on each side of the range.
     std::vector<Eigen::Vector3d> p(samples + 2);

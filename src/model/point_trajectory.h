@@ -3,7 +3,7 @@
 // spaced times, the data of ScrewBender's smoothness plots (Fig. 10), here over time in seconds
 // rather than over the polyscrew's parameter, and for every interpolation a track may use.
 
-#include "model/scene.h"
+#include "model/track_evaluation.h"
 
 #include <Eigen/Core>
 
@@ -20,12 +20,11 @@ struct PointTrajectory {
 };
 
 // `samples` times t_k = start + k·Δ, Δ = (end − start)/(samples − 1), and at each the track's pose
-// (TrackMotion) applied to `localPoint`. The derivatives are central differences,
+// (`motion`) applied to `localPoint`. The derivatives are central differences,
 //   v_k = (p_{k+1} − p_{k−1}) / 2Δ,   a_k = (p_{k+1} − 2p_k + p_{k−1}) / Δ²,
 // with the motion also sampled one step before the start and one after the end, so the ends are
-// central too. Throws std::invalid_argument for fewer than 2 samples, an end not after the start, or
-// a track TrackMotion refuses.
-PointTrajectory samplePointTrajectory(const MotionTrack& track, const Eigen::Vector3d& localPoint,
+// central too. Throws std::invalid_argument for fewer than 2 samples or an end not after the start.
+PointTrajectory samplePointTrajectory(const TrackMotion& motion, const Eigen::Vector3d& localPoint,
                                       double start, double end, std::size_t samples);
 
 } // namespace gyre::model

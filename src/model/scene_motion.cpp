@@ -2,10 +2,16 @@
 
 namespace gyre::model {
 
-SceneMotion::SceneMotion(const Scene& scene)
+SceneMotion::SceneMotion(const Scene& scene, const MotionOf& motionOf)
 {
     for (const SceneObject& object : scene.objects)
-        entries_.insert_or_assign(object.id, Entry{object.parent, TrackMotion(object.track)});
+        entries_.insert_or_assign(object.id, Entry{object.parent, motionOf(object)});
+}
+
+void SceneMotion::build() const
+{
+    for (const auto& [id, entry] : entries_)
+        entry.motion->motion();
 }
 
 Pose SceneMotion::worldPose(ObjectId id, double time) const
@@ -13,7 +19,7 @@ Pose SceneMotion::worldPose(ObjectId id, double time) const
     const auto found = entries_.find(id);
     if (found == entries_.end())
         return {};
-    return parentWorldPose(id, time) * found->second.motion.at(time);
+    return parentWorldPose(id, time) * found->second.motion->motion().at(time);
 }
 
 Pose SceneMotion::parentWorldPose(ObjectId id, double time) const
@@ -25,7 +31,7 @@ Pose SceneMotion::parentWorldPose(ObjectId id, double time) const
         link = entries_.find(link->second.parent);
         if (link == entries_.end())
             break;
-        world = link->second.motion.at(time) * world;
+        world = link->second.motion->motion().at(time) * world;
     }
     return world;
 }

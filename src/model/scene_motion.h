@@ -1,22 +1,33 @@
 #pragma once
 // Where a scene's objects are at any time: each object's track evaluated (TrackMotion) and composed
-// up its parent chain, since a track gives the pose relative to the parent. Built once per change of
-// the scene, not per frame; building subdivides every screw track, so the viewport builds it off the
-// UI thread while the artist drags.
+// up its parent chain, since a track gives the pose relative to the parent. Made once per change of
+// the scene, not per frame. It holds each track's SharedTrackMotion (motion_cache.h): made from the
+// document's, it shares the motions of the tracks that did not change, and build() builds the rest,
+// which the viewport does off the UI thread while the artist drags.
 // Reparenting with the world pose kept asks it for the old and new parents' frames at each key.
 
 #include "core/pose.h"
+#include "model/motion_cache.h"
 #include "model/scene.h"
-#include "model/track_evaluation.h"
 
+#include <functional>
+#include <memory>
 #include <unordered_map>
 
 namespace gyre::model {
 
 class SceneMotion {
 public:
+    // The motion of an object's track in this scene.
+    using MotionOf = std::function<std::shared_ptr<const SharedTrackMotion>(const SceneObject&)>;
+
     SceneMotion() = default; // no objects
-    explicit SceneMotion(const Scene& scene);
+    // The scene's objects, each moving by motionOf(object), typically the document's motion().
+    SceneMotion(const Scene& scene, const MotionOf& motionOf);
+
+    // Builds every track's motion not built yet, so that evaluating then only evaluates. Throws
+    // std::invalid_argument where TrackMotion does.
+    void build() const;
 
     // The object's pose in the world at `time`; an unknown object is at the identity.
     Pose worldPose(ObjectId id, double time) const;
@@ -26,7 +37,7 @@ public:
 private:
     struct Entry {
         ObjectId parent = kNoObject;
-        TrackMotion motion;
+        std::shared_ptr<const SharedTrackMotion> motion;
     };
 
     std::unordered_map<ObjectId, Entry> entries_;

@@ -5,9 +5,13 @@
 #include "inspected_window.h"
 
 #include "gui_test_support.h"
+#include "model/commands/set_fit_parameter_command.h"
+#include "model/commands/set_subdivision_command.h"
 #include "model/value_checks.h"
 
 #include <QCheckBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QRadioButton>
 #include <QSpinBox>
@@ -105,6 +109,33 @@ private slots:
         QVERIFY(!inspected.child<QLabel>("noObjectLabel")->isHidden());
         QVERIFY(!inspected.child<QComboBox>("interpolationCombo")->isEnabled());
         QVERIFY(!inspected.child<QSpinBox>("levelsSpin")->isEnabled());
+    }
+
+    // A form off screen does nothing when the track changes, and shows the change once it is back:
+    // closed (the ScrewBender panel), or tabbed behind another dock (the fit panel behind the inspector).
+    void aFormOffScreenCatchesUpWhenShown()
+    {
+        InspectedWindow inspected(0);
+        model::Document& document = inspected.window().document();
+        QLabel* poseCount = inspected.child<QLabel>("poseCountLabel");
+        auto* screwBenderDock = inspected.child<QDockWidget>("screwBenderDock");
+        screwBenderDock->hide();
+        SubdivisionSettings settings = inspected.window().selection().selectedObject()->track.subdivision;
+        settings.levels = 6;
+        document.push(new model::SetSubdivisionCommand(document, inspected.object(), settings));
+        QCoreApplication::processEvents();
+        QCOMPARE(poseCount->text(), QStringLiteral("96 from 6 keyframes"));
+        screwBenderDock->show();
+        QTRY_COMPARE(poseCount->text(), QStringLiteral("384 from 6 keyframes"));
+
+        auto* alpha = inspected.child<QDoubleSpinBox>("alphaSpin");
+        QVERIFY(inspected.child<QDockWidget>("fitDock")->visibleRegion().isEmpty()); // behind the inspector
+        const double shownAlpha = alpha->value();
+        document.push(new model::SetFitParameterCommand(document, inspected.object(), model::FitParameter::Alpha, 0.5));
+        QCoreApplication::processEvents();
+        QCOMPARE(alpha->value(), shownAlpha);
+        inspected.child<QDockWidget>("fitDock")->raise();
+        QTRY_COMPARE(alpha->value(), 0.5);
     }
 };
 

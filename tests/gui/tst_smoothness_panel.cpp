@@ -5,6 +5,8 @@
 // (issue 18).
 
 #include "app/main_window.h"
+#include "app/sketch/magnitude_plot.h"
+#include "app/sketch/sphere_view.h"
 #include "app/smoothness_panel.h"
 #include "gui_test_support.h"
 #include "model/commands/set_keyframe_position_command.h"
@@ -62,6 +64,21 @@ private slots:
     }
 
     void cleanup() { window_.reset(); }
+
+    // One edit of the track builds its motion once: the viewport, the sphere, the speed plot and these
+    // plots all sample the document's one motion of it (Document::motion).
+    void sharesOneMotionPerChangeWithTheOtherViews()
+    {
+        model::Document& document = window_->document();
+        QSignalSpy smoothness(panel_, &app::SmoothnessPanel::curvesUpdated);
+        QSignalSpy speed(window_->findChild<app::MagnitudePlot*>(), &app::MagnitudePlot::curvesUpdated);
+        QSignalSpy sphere(window_->findChild<app::SphereView*>(), &app::SphereView::curvesUpdated);
+        const std::size_t builds = document.motionBuilds();
+        document.push(new model::SetKeyframePositionCommand(document, window_->selection().object(), 0, {0.5, 0.0, 0.0}));
+        QVERIFY(smoothness.wait(5000));
+        QTRY_VERIFY_WITH_TIMEOUT(!speed.isEmpty() && !sphere.isEmpty(), 5000);
+        QCOMPARE(document.motionBuilds(), builds + 1);
+    }
 
     void thePositionCurveIsTheTrackMotionOfTheOrigin()
     {
@@ -149,6 +166,11 @@ private slots:
         QTRY_VERIFY(panel_->visibleRegion().isEmpty());
         QVERIFY(panel_->isVisible());
         QSignalSpy updated(panel_, &app::SmoothnessPanel::curvesUpdated);
+        // Curves asked for while the panel was in front may still be on their way (a posted sampling
+        // is shown when it ends): the drag starts once none is.
+        for (int settled = 0; updated.wait(2 * kInterval); ++settled)
+            QVERIFY(settled < 5);
+        updated.clear();
         QSignalSpy replotted(panel_->plot(), &QCustomPlot::afterReplot);
         model::Document& document = window_->document();
         const model::ObjectId object = window_->selection().object();

@@ -17,14 +17,20 @@ SceneTreeModel::SceneTreeModel(model::Document& document, QObject* parent)
     : QAbstractItemModel(parent)
     , document_(document)
 {
-    connect(&document_, &model::Document::sceneReset, this, [this] {
-        beginResetModel();
-        rebuild();
-        endResetModel();
+    connect(&document_, &model::Document::changed, this, [this](model::ObjectId id, model::Changes changes) {
+        using model::Change;
+        if (changes.testFlag(Change::Scene)) {
+            beginResetModel();
+            rebuild();
+            endResetModel();
+        } else if (changes.testFlag(Change::Added)) {
+            onObjectAdded(id);
+        } else if (changes.testFlag(Change::Removed)) {
+            onObjectRemoved(id);
+        } else if (changes.testFlag(Change::Object)) {
+            onObjectChanged(id);
+        }
     });
-    connect(&document_, &model::Document::objectAdded, this, &SceneTreeModel::onObjectAdded);
-    connect(&document_, &model::Document::objectRemoved, this, &SceneTreeModel::onObjectRemoved);
-    connect(&document_, &model::Document::objectChanged, this, &SceneTreeModel::onObjectChanged);
     rebuild();
 }
 
@@ -137,7 +143,7 @@ bool SceneTreeModel::setData(const QModelIndex& index, const QVariant& value, in
     if (object == nullptr || role != Qt::EditRole || name.isEmpty() || name == object->name)
         return false;
     document_.push(new model::RenameObjectCommand(document_, object->id, name));
-    return true; // the document's objectChanged has told the views
+    return true; // the document's changed (Change::Object) has told the views
 }
 
 // --- Following the document ------------------------------------------------------------------------

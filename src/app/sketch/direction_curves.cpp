@@ -76,19 +76,18 @@ bool sameCurves(const SphereCurves& a, const SphereCurves& b)
         && sameRuns(a.targetStrokes, b.targetStrokes);
 }
 
-SphereCurves sphereCurves(const model::MotionTrack& track, double start, double end)
+SphereCurves sphereCurves(const model::SharedTrackMotion& motion, double start, double end)
 {
+    const model::MotionTrack& track = motion.track();
     const int sampleCount = std::clamp(static_cast<int>(std::ceil((end - start) * kSamplesPerSecond)) + 1, 2, kMaxSamples);
     SphereCurves curves;
-    curves.motion = sampleDirections(model::TrackMotion(track), start, end, sampleCount);
+    curves.motion = sampleDirections(motion.motion(), start, end, sampleCount);
     const std::vector<HermiteControlPoint>& fitted = track.sketch.fittedCurve;
     if (!fitted.empty()) {
         curves.fitSpan = std::pair(fitted.front().time, fitted.back().time);
-        model::MotionTrack unfitted = track;
-        unfitted.sketch.fittedCurve.clear();
         const double spanSeconds = fitted.back().time - fitted.front().time;
         const int spanSamples = std::clamp(static_cast<int>(std::ceil(spanSeconds * kSamplesPerSecond)) + 1, 2, kMaxSamples);
-        curves.beforeFit = sampleDirections(model::TrackMotion(unfitted), fitted.front().time, fitted.back().time, spanSamples);
+        curves.beforeFit = sampleDirections(motion.motionWithoutFit(), fitted.front().time, fitted.back().time, spanSamples);
     }
     curves.targetStrokes = jobs::timedStrokes(track);
     return curves;

@@ -4,6 +4,7 @@
 // drawn stroke and the erasing of a stroke's points.
 
 #include "fit/angular_velocity_target.h"
+#include "model/motion_cache.h"
 #include "model/scene.h"
 #include "model/track_evaluation.h"
 
@@ -52,8 +53,9 @@ bool sameCurves(const SphereCurves& a, const SphereCurves& b);
 inline constexpr double kSamplesPerSecond = 240.0;
 inline constexpr int kMaxSamples = 20000;
 
-// Throws std::invalid_argument where TrackMotion does (a subdivision too large to hold).
-SphereCurves sphereCurves(const model::MotionTrack& track, double start, double end);
+// The curves of the track's shared motion. Throws std::invalid_argument where TrackMotion does (a
+// subdivision too large to hold).
+SphereCurves sphereCurves(const model::SharedTrackMotion& motion, double start, double end);
 
 // The timing rule for a stroke drawn over the motion's direction curve, which it replaces there: its
 // first point takes the time of the motion sample nearest it on the sphere, its last point the time

@@ -50,6 +50,7 @@ FitController::FitController(model::Document& document, Selection& selection, QO
     : QObject(parent)
     , document_(document)
     , selection_(selection)
+    , selectedTrack_(document, selection)
 {
     connect(&fitJob_, &jobs::FitJob::progressed, this,
             [this](model::ObjectId, const jobs::FitJobProgress& progress) { emit progressed(progress); });
@@ -68,19 +69,16 @@ FitController::FitController(model::Document& document, Selection& selection, QO
         clearPreview();
     });
 
-    connect(&document_, &model::Document::keyframesChanged, this, &FitController::onInputsMayHaveChanged);
-    connect(&document_, &model::Document::sketchChanged, this, &FitController::onInputsMayHaveChanged);
-    connect(&document_, &model::Document::trackSettingsChanged, this, &FitController::onInputsMayHaveChanged);
-    connect(&document_, &model::Document::sceneReset, this, &FitController::onSelectionChanged);
+    // Another key of the same object is selected: the fit is the same (SelectedTrack).
+    connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
+        using model::Change;
+        if (changes & (SelectedTrack::kAnotherObject | Change::Scene))
+            onSelectionChanged();
+        else if (live_ && (changes & (Change::Keyframes | Change::Sketch | Change::TrackSettings)))
+            requestLiveFit(); // the fit's inputs may have changed
+    });
     connect(&document_, &model::Document::gestureEnded, this, &FitController::settleHeld);
     connect(&document_.undoStack(), &QUndoStack::indexChanged, this, &FitController::settleHeld);
-    connect(&selection_, &Selection::changed, this, [this, shown = selection.object()]() mutable {
-        // Another key of the same object is selected: the fit is the same.
-        if (selection_.object() != shown) {
-            shown = selection_.object();
-            onSelectionChanged();
-        }
-    });
 }
 
 void FitController::fitSelected()
@@ -147,12 +145,6 @@ void FitController::onLiveFinished(model::ObjectId object, const model::MotionTr
     HeldResult held{object, input, result, {}};
     showPreview(held);
     heldLiveResult_ = std::move(held);
-}
-
-void FitController::onInputsMayHaveChanged(model::ObjectId object)
-{
-    if (live_ && object == selection_.object())
-        requestLiveFit();
 }
 
 void FitController::settleHeld()

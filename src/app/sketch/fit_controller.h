@@ -13,6 +13,7 @@
 // fit; and applying a fit changes none of the inputs, so it starts no other fit. The UI thread never
 // waits: every fit runs on a FitJob.
 
+#include "app/selected_track.h"
 #include "app/selection.h"
 #include "jobs/fit_job.h"
 #include "model/document.h"
@@ -63,7 +64,6 @@ private:
     void onLiveFinished(model::ObjectId object, const model::MotionTrack& input, const model::FitResult& result);
     // The explicit fit's result, when no gesture is open: applied, or dropped for a changed track.
     void settleFit(const HeldResult& held);
-    void onInputsMayHaveChanged(model::ObjectId object);
     // After a gesture ended or the undo history moved: applies what was held, unless a gesture is open.
     void settleHeld();
     void onSelectionChanged();
@@ -76,6 +76,7 @@ private:
 
     model::Document& document_;
     Selection& selection_;
+    SelectedTrack selectedTrack_;
     bool live_ = false;
     std::optional<model::MotionTrack> newestLiveInput_;
     std::optional<HeldResult> heldFit_;

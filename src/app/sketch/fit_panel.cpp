@@ -34,6 +34,8 @@ FitPanel::FitPanel(model::Document& document, Selection& selection, FitControlle
     , ui_(std::make_unique<Ui::FitPanel>())
     , document_(document)
     , selection_(selection)
+    , selectedTrack_(document, selection)
+    , refresh_(*this, 0, [this] { showSelectedTrack(); })
     , controller_(controller)
 {
     ui_->setupUi(this);
@@ -71,17 +73,13 @@ FitPanel::FitPanel(model::Document& document, Selection& selection, FitControlle
 
     connect(&selection_, &Selection::changed, this, [this] {
         showStatus({});
-        showSelectedTrack();
+        refresh_.requestNow();
     });
-    connect(&document_, &model::Document::sceneReset, this, &FitPanel::showSelectedTrack);
-    const auto showIfSelected = [this](model::ObjectId id) {
-        if (id == selection_.object())
-            showSelectedTrack();
-    };
-    connect(&document_, &model::Document::sketchChanged, this, showIfSelected);
-    connect(&document_, &model::Document::keyframesChanged, this, showIfSelected);
-    connect(&document_, &model::Document::trackSettingsChanged, this, showIfSelected);
-    connect(&document_, &model::Document::objectChanged, this, showIfSelected);
+    connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
+        using model::Change;
+        if (changes & (Change::Scene | Change::Sketch | Change::Keyframes | Change::TrackSettings | Change::Object))
+            refresh_.requestNow();
+    });
     ui_->liveCheck->setChecked(controller_.isLive());
     showSelectedTrack();
 }

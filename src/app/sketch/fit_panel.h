@@ -6,7 +6,9 @@
 // bar's progress. A track that cannot be fitted (jobs::sketchFitProblem) says why here, and Fit is
 // disabled.
 
+#include "app/selected_track.h"
 #include "app/selection.h"
+#include "app/view_refresh.h"
 #include "app/sketch/fit_controller.h"
 #include "model/commands/object_fields.h"
 #include "model/document.h"
@@ -56,6 +58,9 @@ private:
     std::unique_ptr<Ui::FitPanel> ui_;
     model::Document& document_;
     Selection& selection_;
+    SelectedTrack selectedTrack_;
+    // The fields follow the selected track while the form is on screen, and catch up when it is back.
+    ViewRefresh refresh_;
     FitController& controller_;
     bool fittable_ = false;
 };

@@ -121,10 +121,11 @@ struct MagnitudePlot::SampledCurves {
     QVector<double> freeKeyTimes, freeKeySpeeds;
 };
 
-MagnitudePlot::SampledCurves MagnitudePlot::sampleTrack(const model::MotionTrack& track, double start, double end)
+MagnitudePlot::SampledCurves MagnitudePlot::sampleTrack(const model::SharedTrackMotion& shared, double start, double end)
 {
     SampledCurves curves;
-    const model::TrackMotion motion(track);
+    const model::MotionTrack& track = shared.track();
+    const model::TrackMotion& motion = shared.motion();
     curves.times = evenTimes(start, end, MagnitudePlot::kSampleCount);
     curves.speeds = speedsAt(motion, curves.times);
     for (const model::Keyframe& key : track.keys) {
@@ -137,9 +138,7 @@ MagnitudePlot::SampledCurves MagnitudePlot::sampleTrack(const model::MotionTrack
         return curves;
     curves.fittedTimes = evenTimes(fitted.front().time, fitted.back().time, MagnitudePlot::kFittedSampleCount);
     curves.fitted = speedsAt(motion, curves.fittedTimes);
-    model::MotionTrack unfitted = track;
-    unfitted.sketch.fittedCurve.clear();
-    curves.beforeFit = speedsAt(model::TrackMotion(unfitted), curves.fittedTimes);
+    curves.beforeFit = speedsAt(shared.motionWithoutFit(), curves.fittedTimes);
     return curves;
 }
 
@@ -147,15 +146,17 @@ MagnitudePlot::MagnitudePlot(model::Document& document, Selection& selection, QW
     : QWidget(parent)
     , document_(document)
     , selection_(selection)
+    , selectedTrack_(document, selection)
     , stack_(new QStackedLayout)
     , placeholder_(new QLabel(tr("Select an object to see and sketch the speed of its rotation."), this))
     , plot_(new QCustomPlot(this))
     , replot_(*this, 0, [this] { plot_->replot(); })
+    , cursorReplot_(*this, 0, [this] { plot_->layer(QString::fromLatin1(kCursorLayer))->replot(); })
     , sampler_(
           *this, selection, document,
-          [](const model::SceneObject& object, const model::Scene& scene) {
-              return [track = object.track, start = scene.startTime, end = scene.endTime] {
-                  return sampleTrack(track, start, end);
+          [](const std::shared_ptr<const model::SharedTrackMotion>& motion, const model::Scene& scene) {
+              return [motion, start = scene.startTime, end = scene.endTime] {
+                  return sampleTrack(*motion, start, end);
               };
           },
           [this](const SampledCurves& curves) { showCurves(curves); })
@@ -324,49 +325,33 @@ void MagnitudePlot::addWindowBand()
 
 void MagnitudePlot::followDocument()
 {
-    auto forSelected = [this](auto show) {
-        return [this, show](model::ObjectId id) {
-            if (id == selection_.object())
-                show();
-        };
-    };
-    connect(&document_, &model::Document::sketchChanged, this, forSelected([this] {
-                showSketch();
-                showWindow();
-                sampler_.schedule(); // a fit changes the motion
-            }));
-    connect(&document_, &model::Document::keyframesChanged, this, forSelected([this] {
-                showWindow();
-                sampler_.schedule();
-            }));
-    connect(&document_, &model::Document::trackSettingsChanged, this,
-            forSelected([this] { sampler_.schedule(); }));
-    connect(&document_, &model::Document::sceneSettingsChanged, this, [this] {
-        fitViewOnNextCurves_ = true;
-        sampler_.schedule();
-    });
-    connect(&document_, &model::Document::sceneReset, this, [this] {
-        endGesture();
-        fitViewOnNextCurves_ = true;
-        showSelection();
-    });
-    connect(&document_, &model::Document::currentTimeChanged, this, [this] {
-        moveCursor();
-        plot_->layer(QString::fromLatin1(kCursorLayer))->replot();
-    });
-    // Selecting another key of the same object leaves the plot as it is.
-    connect(&selection_, &Selection::changed, this, [this] {
-        if (selection_.object() != shownObject_) {
+    // Selecting another key of the same object leaves the plot as it is (SelectedTrack).
+    connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
+        using model::Change;
+        if (changes & (SelectedTrack::kAnotherObject | Change::Scene)) {
             endGesture();
             fitViewOnNextCurves_ = true;
             showSelection();
+            return;
         }
+        if (changes.testFlag(Change::SceneSettings))
+            fitViewOnNextCurves_ = true;
+        if (changes.testFlag(Change::Sketch))
+            showSketch();
+        if (changes & (Change::Sketch | Change::Keyframes))
+            showWindow();
+        if (changes & (model::kMotionChanges | Change::SceneSettings))
+            sampler_.schedule(); // a fit changes the motion too
+    });
+    // The cursor's layer is redrawn once per turn of the event loop at most, and not while hidden.
+    connect(&document_, &model::Document::currentTimeChanged, this, [this] {
+        moveCursor();
+        cursorReplot_.request();
     });
 }
 
 void MagnitudePlot::showSelection()
 {
-    shownObject_ = selection_.object();
     const bool hasObject = selection_.selectedObject() != nullptr;
     stack_->setCurrentWidget(hasObject ? static_cast<QWidget*>(plot_) : placeholder_);
     for (QAction* action : {drawAction_, panAction_, fitViewAction_})

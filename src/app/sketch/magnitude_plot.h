@@ -30,6 +30,7 @@
 // time range refits both axes.
 
 #include "app/selection.h"
+#include "app/selected_track.h"
 #include "app/selected_track_sampler.h"
 #include "app/view_refresh.h"
 #include "model/document.h"
@@ -122,7 +123,7 @@ private:
     void followDocument();
 
     // Throws std::invalid_argument for a track TrackMotion refuses.
-    static SampledCurves sampleTrack(const model::MotionTrack& track, double start, double end);
+    static SampledCurves sampleTrack(const model::SharedTrackMotion& shared, double start, double end);
     void showCurves(const SampledCurves& curves);
     void showSketch();
     void showKeys(const SampledCurves& curves);
@@ -146,6 +147,7 @@ private:
 
     model::Document& document_;
     Selection& selection_;
+    SelectedTrack selectedTrack_;
     QStackedLayout* stack_;
     QLabel* placeholder_;
     QCustomPlot* plot_;
@@ -165,8 +167,6 @@ private:
 
     std::optional<std::pair<double, double>> shownWindow_;
     bool shownWindowIsOwn_ = false;
-    // The object whose curves were last shown: another one refits the view when its curves arrive.
-    model::ObjectId shownObject_ = model::kNoObject;
     bool fitViewOnNextCurves_ = true;
     bool viewMovedByHand_ = false; // zoomed or panned since the last Fit view
 
@@ -178,6 +178,7 @@ private:
     // Replots for changes made on the UI thread (the sketch, the window): one per turn of the event
     // loop, none while the plot is off screen.
     ViewRefresh replot_;
+    ViewRefresh cursorReplot_; // the cursor's layer alone, as the current time moves
     SelectedTrackSampler<SampledCurves> sampler_; // last: waits for its work before the members it uses go
 };
 

@@ -140,6 +140,7 @@ PatternPad::PatternPad(model::Document& document, Selection& selection, QWidget*
     : QWidget(parent)
     , document_(document)
     , selection_(selection)
+    , selectedTrack_(document, selection)
     , canvas_(new PatternCanvas(this))
     , repeatBox_(new QSpinBox(this))
     , clearButton_(new QPushButton(tr("Clear Pattern"), this))
@@ -168,12 +169,11 @@ PatternPad::PatternPad(model::Document& document, Selection& selection, QWidget*
     connect(repeatBox_, &QSpinBox::valueChanged, this, &PatternPad::setRepeat);
     connect(clearButton_, &QPushButton::clicked, this, &PatternPad::clearPattern);
 
-    connect(&document_, &model::Document::sketchChanged, this, [this](model::ObjectId id) {
-        if (id == selection_.object())
+    connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
+        using model::Change;
+        if (changes & (SelectedTrack::kAnotherObject | Change::Scene | Change::Sketch))
             showSketch();
     });
-    connect(&document_, &model::Document::sceneReset, this, &PatternPad::showSketch);
-    connect(&selection_, &Selection::changed, this, &PatternPad::showSketch);
     showSketch();
 }
 

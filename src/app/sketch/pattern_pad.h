@@ -7,6 +7,7 @@
 //
 // Pad units: the canvas's height is one unit, x runs from its left edge, y from its middle, up.
 
+#include "app/selected_track.h"
 #include "app/selection.h"
 #include "model/document.h"
 #include "model/gesture.h"
@@ -86,6 +87,7 @@ private:
 
     model::Document& document_;
     Selection& selection_;
+    SelectedTrack selectedTrack_;
     PatternCanvas* canvas_;
     QSpinBox* repeatBox_;
     QPushButton* clearButton_;

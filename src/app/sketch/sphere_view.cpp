@@ -136,12 +136,13 @@ SphereView::SphereView(model::Document& document, Selection& selection, QWidget*
     : QOpenGLWidget(parent)
     , document_(document)
     , selection_(selection)
+    , selectedTrack_(document, selection)
     , toolGroup_(new QActionGroup(this))
     , sampler_(
           *this, selection, document,
-          [](const model::SceneObject& object, const model::Scene& scene) {
-              return [track = object.track, start = scene.startTime, end = scene.endTime] {
-                  return sphereCurves(track, start, end);
+          [](const std::shared_ptr<const model::SharedTrackMotion>& motion, const model::Scene& scene) {
+              return [motion, start = scene.startTime, end = scene.endTime] {
+                  return sphereCurves(*motion, start, end);
               };
           },
           [this](const SphereCurves& curves) { showCurves(curves); })
@@ -150,41 +151,24 @@ SphereView::SphereView(model::Document& document, Selection& selection, QWidget*
     setCursor(Qt::CrossCursor);
     createActions();
 
-    auto recomputeFor = [this](model::ObjectId id) {
-        if (id == selection_.object())
+    // Selecting another key of the same object leaves the view as it is (SelectedTrack).
+    connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
+        using model::Change;
+        if (changes & (SelectedTrack::kAnotherObject | Change::Scene)) {
+            endDrag();
+            forgetCurves();
             sampler_.schedule();
-    };
-    connect(&document_, &model::Document::keyframesChanged, this, recomputeFor);
-    connect(&document_, &model::Document::trackSettingsChanged, this, recomputeFor);
-    connect(&document_, &model::Document::sketchChanged, this, [this](model::ObjectId id) {
-        if (id == selection_.object()) {
-            invalidateLayers(); // the strokes as drawn, at once; the patterned ones and a new fit follow
-            sampler_.schedule();
+            return;
         }
-    });
-    connect(&document_, &model::Document::sceneSettingsChanged, this, [this] {
-        invalidateLayers(); // the time ticks, at once; the curves over the new range follow
-        sampler_.schedule();
-    });
-    connect(&document_, &model::Document::objectChanged, this, [this](model::ObjectId id) {
-        if (id == selection_.object())
-            invalidateLayers(); // the message names the object
-    });
-    connect(&document_, &model::Document::sceneReset, this, [this] {
-        endDrag();
-        forgetCurves();
-        sampler_.schedule();
+        // At once: the strokes as drawn (the patterned ones and a new fit follow with the curves),
+        // the time ticks (the curves over the new range follow), the message naming the object.
+        if (changes & (Change::Sketch | Change::SceneSettings | Change::Object))
+            invalidateLayers();
+        if (changes & (model::kMotionChanges | Change::SceneSettings))
+            sampler_.schedule();
     });
     // Only the dot moves: update() repaints the cached layers, and does nothing while the view is hidden.
     connect(&document_, &model::Document::currentTimeChanged, this, [this] { update(); });
-    connect(&selection_, &Selection::changed, this, [this, shown = selection.object()]() mutable {
-        if (selection_.object() == shown)
-            return;
-        shown = selection_.object();
-        endDrag();
-        forgetCurves();
-        sampler_.schedule();
-    });
     sampler_.schedule();
 }
 

@@ -41,6 +41,7 @@
 // multisampling, took 190 to 220 ms a frame on llvmpipe for a bone of a 31-joint capture, the cached
 // images under 4 ms (tst_view_drawing, README.md).
 
+#include "app/selected_track.h"
 #include "app/selected_track_sampler.h"
 #include "app/selection.h"
 #include "app/sketch/direction_curves.h"
@@ -157,6 +158,7 @@ private:
 
     model::Document& document_;
     Selection& selection_;
+    SelectedTrack selectedTrack_;
     SphereProjection projection_;
     Tool tool_ = Tool::Draw;
     QActionGroup* toolGroup_;

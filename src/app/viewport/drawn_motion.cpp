@@ -33,28 +33,19 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
     : QObject(parent)
     , document_(document)
     , selection_(selection)
+    , selectedTrack_(document, selection)
     , motionJob_(jobs::JobPolicy::NewestWins,
                  {.finished = [this](std::shared_ptr<const model::SceneMotion> built) { receiveMotion(std::move(built)); },
                   .failed = [this](const QString& message) {
                       emit failed(tr("The motion could not be rebuilt: %1").arg(message));
                   }})
 {
-    connect(&document_, &model::Document::sceneReset, this, &DrawnMotion::onSceneReset);
-    connect(&document_, &model::Document::objectAdded, this, &DrawnMotion::onObjectsChanged);
-    connect(&document_, &model::Document::objectRemoved, this, &DrawnMotion::onObjectsChanged);
-    connect(&document_, &model::Document::objectChanged, this, &DrawnMotion::onObjectsChanged);
-    connect(&document_, &model::Document::keyframesChanged, this, &DrawnMotion::onTrackChanged);
-    connect(&document_, &model::Document::trackSettingsChanged, this, &DrawnMotion::onTrackChanged);
-    connect(&document_, &model::Document::sketchChanged, this, &DrawnMotion::onTrackChanged);
-    connect(&document_, &model::Document::sceneSettingsChanged, this, [this] {
-        trajectoryStale_ = true;
-        emit changed();
-    });
+    connect(&document_, &model::Document::changed, this, &DrawnMotion::onDocumentChanged);
+    connect(&selectedTrack_, &SelectedTrack::changed, this, &DrawnMotion::onSelectedTrackChanged);
     connect(&document_.undoStack(), &QUndoStack::cleanChanged, this, [this](bool clean) {
         if (clean)
             snapshotOriginalMotion();
     });
-    connect(&selection_, &Selection::changed, this, &DrawnMotion::onSelectionChanged);
     connect(&subdivision_, &jobs::SubdivisionJob::subdivided, this,
             [this](std::uint64_t, const std::vector<Pose>& poses, qint64 nanoseconds) { receiveTrail(poses, nanoseconds); });
     connect(&subdivision_, &jobs::SubdivisionJob::failed, this, [this](std::uint64_t, const QString& reason) {
@@ -63,7 +54,7 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
         emit failed(tr("The trail could not be built: %1").arg(reason));
     });
     trailObject_ = selection_.object();
-    motion_ = std::make_shared<model::SceneMotion>(document_.scene());
+    motion_ = std::make_shared<model::SceneMotion>(document_.scene(), motionOf());
     snapshotOriginalMotion();
     requestTrail();
 }
@@ -78,72 +69,71 @@ std::optional<Pose> DrawnMotion::originalWorldPose(model::ObjectId id, double ti
 void DrawnMotion::setPreviewTrack(model::ObjectId object, std::optional<model::MotionTrack> track)
 {
     previewObject_ = object;
-    previewTrack_ = std::move(track);
+    previewMotion_ = track ? std::make_shared<const model::SharedTrackMotion>(std::move(*track)) : nullptr;
     rebuildMotionInBackground();
 }
 
-void DrawnMotion::onSceneReset()
+void DrawnMotion::onDocumentChanged(model::ObjectId, model::Changes changes)
 {
-    // Opening a project may wait for its motion; only dragging must not. A preview was of the old scene.
-    previewTrack_.reset();
-    motionJob_.cancel();
-    motion_ = std::make_shared<model::SceneMotion>(document_.scene());
-    trajectoryStale_ = true;
-    trailPoseCount_ = 0; // the old scene's
-    snapshotOriginalMotion();
-    requestTrail();
-    emit sceneReset();
-}
-
-void DrawnMotion::onObjectsChanged()
-{
-    rebuildMotionInBackground();
-    trajectoryStale_ = true;
-    requestTrail();
-    emit changed();
-}
-
-void DrawnMotion::onTrackChanged(model::ObjectId id)
-{
-    rebuildMotionInBackground();
-    if (id == selection_.object())
-        requestTrail();
-    emit changed();
-}
-
-void DrawnMotion::onSelectionChanged()
-{
-    if (selection_.object() != trailObject_) {
-        // The trail in hand is another object's: show none until this object's arrives.
-        trailObject_ = selection_.object();
-        trailPoseCount_ = 0;
+    using model::Change;
+    if (changes.testFlag(Change::Scene)) {
+        // Opening a project may wait for its motion; only dragging must not. A preview was of the old scene.
+        previewMotion_.reset();
+        motionJob_.cancel();
+        motion_ = std::make_shared<model::SceneMotion>(document_.scene(), motionOf());
+        trajectoryStale_ = true;
+        snapshotOriginalMotion();
+        emit sceneReset();
+        return;
     }
-    trajectoryStale_ = true;
-    requestTrail();
+    // A parent's change moves its children too: the scene's motion is made anew, sharing the
+    // document's motions of the tracks that did not change.
+    if (changes & (model::kMotionChanges | Change::Object))
+        rebuildMotionInBackground();
+    if (changes & (Change::Added | Change::Removed | Change::Object | Change::SceneSettings))
+        trajectoryStale_ = true;
+    emit changed();
+}
+
+void DrawnMotion::onSelectedTrackChanged(model::Changes changes)
+{
+    using model::Change;
+    if (changes & (SelectedTrack::kAnotherObject | Change::Scene)) {
+        // The trail in hand is another object's, or the old scene's: show none until this one's arrives.
+        trailObject_ = selectedTrack_.object();
+        trailPoseCount_ = 0;
+        trajectoryStale_ = true;
+    }
+    // The trail subdivides the keys with the track's settings.
+    if (changes & (SelectedTrack::kAnotherObject | Change::Scene | Change::Keyframes | Change::TrackSettings))
+        requestTrail();
     emit changed();
 }
 
 void DrawnMotion::snapshotOriginalMotion()
 {
     originalScene_ = document_.scene();
-    originalMotion_ = model::SceneMotion(originalScene_);
+    originalMotion_ = model::SceneMotion(originalScene_, [this](const model::SceneObject& object) {
+        return document_.motion(object.id);
+    });
 }
 
-model::Scene DrawnMotion::sceneToDraw() const
+model::SceneMotion::MotionOf DrawnMotion::motionOf() const
 {
-    model::Scene scene = document_.scene();
-    if (previewTrack_)
-        if (model::SceneObject* previewed = model::findObject(scene, previewObject_))
-            previewed->track = *previewTrack_;
-    return scene;
+    return [this](const model::SceneObject& object) {
+        return object.id == previewObject_ && previewMotion_ ? previewMotion_ : document_.motion(object.id);
+    };
 }
 
 void DrawnMotion::rebuildMotionInBackground()
 {
-    // The whole scene each time, so that the newest request, the one that runs, has every change.
-    motionJob_.post([scene = sceneToDraw()](const jobs::JobRun<jobs::NoProgress>& run) {
+    // The whole scene each time, so that the newest request, the one that runs, has every change. Made
+    // here, it costs a look-up per object; the tracks whose motion is not built yet are built there.
+    auto motion = std::make_shared<const model::SceneMotion>(document_.scene(), motionOf());
+    motionJob_.post([built = std::move(motion)](const jobs::JobRun<jobs::NoProgress>& run) {
         run.throwIfStopped(); // cancelled before it started
-        return std::make_shared<const model::SceneMotion>(scene);
+        built->build();
+        return built;
     });
 }
 

@@ -1,9 +1,11 @@
 #pragma once
-// The motion the viewport draws, following the document: the scene's motion rebuilt off the UI
-// thread after each change by a newest-wins job (a moment behind while a newer one is built), a live fit's preview track
+// The motion the viewport draws, following the document: the scene's motion made anew after each
+// change from the document's shared track motions, the changed ones built off the UI thread by a
+// newest-wins job (a moment behind while a newer one is built), a live fit's preview track
 // in place of its object's own, the motion as opened or last saved (the ghost), the selected
 // object's trajectory, and the stroboscopic trail of its subdivided polyscrew (SubdivisionJob).
 
+#include "app/selected_track.h"
 #include "app/selection.h"
 #include "model/scene_motion.h"
 #include "jobs/job.h"
@@ -64,13 +66,11 @@ signals:
     void failed(const QString& message);
 
 private:
-    void onSceneReset();
-    void onObjectsChanged();
-    void onTrackChanged(model::ObjectId id);
-    void onSelectionChanged();
+    void onDocumentChanged(model::ObjectId object, model::Changes changes);
+    void onSelectedTrackChanged(model::Changes changes);
     void snapshotOriginalMotion();
-    // The document's scene with the preview track in place of its object's track.
-    model::Scene sceneToDraw() const;
+    // Each object's motion: the document's, the preview's in place of its object's.
+    model::SceneMotion::MotionOf motionOf() const;
     void rebuildMotionInBackground();
     void receiveMotion(std::shared_ptr<const model::SceneMotion> built);
     void requestTrail();
@@ -80,10 +80,11 @@ private:
 
     model::Document& document_;
     Selection& selection_;
+    SelectedTrack selectedTrack_;
 
     std::shared_ptr<const model::SceneMotion> motion_ = std::make_shared<model::SceneMotion>();
     model::ObjectId previewObject_ = model::kNoObject;
-    std::optional<model::MotionTrack> previewTrack_;
+    std::shared_ptr<const model::SharedTrackMotion> previewMotion_;
     model::Scene originalScene_; // as opened or last saved, for the ghost
     model::SceneMotion originalMotion_;
 

@@ -64,9 +64,11 @@ Viewport::Viewport(model::Document& document, Selection& selection, QWidget* par
     connect(&drawn_, &DrawnMotion::sceneReset, this, &Viewport::frameScene);
     connect(&drawn_, &DrawnMotion::failed, this, &Viewport::drawingFailed);
     // An object gone, or given another mesh, may leave a mesh that no object holds.
-    for (const auto signal : {&model::Document::objectAdded, &model::Document::objectRemoved, &model::Document::objectChanged})
-        connect(&document_, signal, this, [this] { renderer_.dropUnusedMeshesNextFrame(); });
-    connect(&document_, &model::Document::sceneReset, this, [this] { renderer_.dropUnusedMeshesNextFrame(); });
+    connect(&document_, &model::Document::changed, this, [this](model::ObjectId, model::Changes changes) {
+        using model::Change;
+        if (changes & (Change::Added | Change::Removed | Change::Object | Change::Scene))
+            renderer_.dropUnusedMeshesNextFrame();
+    });
     connect(&document_, &model::Document::currentTimeChanged, this, [this] { update(); });
 }
 

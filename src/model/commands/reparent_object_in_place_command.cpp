@@ -11,7 +11,7 @@ namespace {
 ParentAndKeysField::Value reparentedInPlace(const Document& document, ObjectId object, ObjectId newParent)
 {
     ParentField::Value parentAndOrder = reparented(document, object, newParent); // checks both ids
-    const SceneMotion motion(document.scene());
+    const SceneMotion motion(document.scene(), [&document](const SceneObject& each) { return document.motion(each.id); });
     std::vector<Keyframe> keys = document.object(object)->track.keys.vector();
     for (Keyframe& key : keys) {
         const Pose world = motion.parentWorldPose(object, key.time) * key.pose;

@@ -1,0 +1,50 @@
+#include "model/motion_cache.h"
+
+#include <utility>
+
+namespace gyre::model {
+
+SharedTrackMotion::SharedTrackMotion(MotionTrack track, std::shared_ptr<std::atomic<std::size_t>> builds)
+    : track_(std::move(track))
+    , builds_(std::move(builds))
+{
+}
+
+const TrackMotion& SharedTrackMotion::motion() const { return build(motion_, track_); }
+
+const TrackMotion& SharedTrackMotion::motionWithoutFit() const
+{
+    if (track_.sketch.fittedCurve.empty())
+        return motion();
+    MotionTrack keyed = track_;
+    keyed.sketch.fittedCurve.clear();
+    return build(withoutFit_, keyed);
+}
+
+const TrackMotion& SharedTrackMotion::build(Lazy& lazy, const MotionTrack& track) const
+{
+    // call_once runs the build once even when threads ask together; a build that throws is kept as
+    // its exception, so a refused track is not built again at every call.
+    std::call_once(lazy.built, [this, &lazy, &track] {
+        if (builds_)
+            ++*builds_;
+        try {
+            lazy.motion.emplace(track);
+        } catch (...) {
+            lazy.error = std::current_exception();
+        }
+    });
+    if (lazy.error)
+        std::rethrow_exception(lazy.error);
+    return *lazy.motion;
+}
+
+std::shared_ptr<const SharedTrackMotion> MotionCache::motion(const SceneObject& object)
+{
+    std::shared_ptr<const SharedTrackMotion>& motion = motions_[object.id];
+    if (!motion)
+        motion = std::make_shared<const SharedTrackMotion>(object.track, builds_);
+    return motion;
+}
+
+} // namespace gyre::model

@@ -1,0 +1,171 @@
+// The document's one motion per track (motion_cache.h): built once per change of its track, shared by
+// every caller until then, rebuilt after an undo, and safe to build from several threads at once.
+
+#include "model/commands/import_objects_command.h"
+#include "model/commands/rename_object_command.h"
+#include "model/commands/set_keyframe_orientation_command.h"
+#include "model/commands/set_time_range_command.h"
+#include "model/scene_motion.h"
+#include "model/track_evaluation.h"
+
+#include <QTest>
+
+#include <Eigen/Geometry>
+
+#include <thread>
+#include <vector>
+
+using namespace gyre;
+using namespace gyre::model;
+
+namespace {
+
+Eigen::Quaterniond aboutZ(double angle) { return Eigen::Quaterniond(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ())); }
+
+SceneObject objectTurning(ObjectId id, double turn, ObjectId parent = kNoObject)
+{
+    SceneObject object;
+    object.id = id;
+    object.parent = parent;
+    for (double time : {0.0, 1.0, 2.0})
+        object.track.keys.push_back({time, {aboutZ(turn * time), {time, 0, 0}}, true});
+    return object;
+}
+
+// A document holding two objects, the second a child of the first.
+struct Fixture {
+    Fixture()
+    {
+        auto* command = new ImportObjectsCommand(document, {objectTurning(1, 0.5), objectTurning(2, 0.25, 1)});
+        ids = command->ids();
+        document.push(command);
+    }
+
+    double angleAt(ObjectId id, double time) const
+    {
+        return Eigen::AngleAxisd(document.motion(id)->motion().at(time).orientation).angle();
+    }
+
+    Document document;
+    std::vector<ObjectId> ids;
+};
+
+} // namespace
+
+class TstMotionCache : public QObject {
+    Q_OBJECT
+
+private slots:
+    void builtOnceAndShared()
+    {
+        Fixture f;
+        QCOMPARE(f.document.motionBuilds(), std::size_t(0)); // nothing asked for yet
+        const auto first = f.document.motion(f.ids[0]);
+        const auto second = f.document.motion(f.ids[0]);
+        QCOMPARE(first.get(), second.get());
+        QCOMPARE(f.document.motionBuilds(), std::size_t(0)); // handed out, built on first use
+        QCOMPARE(Eigen::AngleAxisd(first->motion().at(2.0).orientation).angle(), 1.0);
+        second->motion().at(1.0);
+        QCOMPARE(f.document.motionBuilds(), std::size_t(1));
+        QVERIFY(f.document.motion(kNoObject + 99) == nullptr);
+    }
+
+    void rebuiltOnlyForTheTrackThatChanged()
+    {
+        Fixture f;
+        const auto parent = f.document.motion(f.ids[0]);
+        const auto child = f.document.motion(f.ids[1]);
+        parent->motion();
+        child->motion();
+        QCOMPARE(f.document.motionBuilds(), std::size_t(2));
+
+        f.document.push(new SetKeyframeOrientationCommand(f.document, f.ids[1], 2, aboutZ(1.5)));
+        QCOMPARE(f.document.motion(f.ids[0]).get(), parent.get());
+        QVERIFY(f.document.motion(f.ids[1]).get() != child.get());
+        QCOMPARE(f.angleAt(f.ids[1], 2.0), 1.5);
+        QCOMPARE(f.document.motionBuilds(), std::size_t(3));
+        // What was handed out before the change stays as it was: a worker may still be reading it.
+        QCOMPARE(Eigen::AngleAxisd(child->motion().at(2.0).orientation).angle(), 0.5);
+
+        // Neither a name nor the time range moves a track.
+        f.document.push(new RenameObjectCommand(f.document, f.ids[1], QStringLiteral("renamed")));
+        f.document.push(new SetTimeRangeCommand(f.document, {24, 0, 4}));
+        f.angleAt(f.ids[1], 2.0);
+        QCOMPARE(f.document.motionBuilds(), std::size_t(3));
+    }
+
+    void rebuiltAfterUndoAndRedo()
+    {
+        Fixture f;
+        f.document.push(new SetKeyframeOrientationCommand(f.document, f.ids[0], 2, aboutZ(1.5)));
+        QCOMPARE(f.angleAt(f.ids[0], 2.0), 1.5);
+        f.document.undoStack().undo();
+        QCOMPARE(f.angleAt(f.ids[0], 2.0), 1.0);
+        f.document.undoStack().redo();
+        QCOMPARE(f.angleAt(f.ids[0], 2.0), 1.5);
+        QCOMPARE(f.document.motionBuilds(), std::size_t(3));
+
+        // Undoing the import removes both objects; redoing brings motions that are built anew.
+        f.document.undoStack().undo();
+        f.document.undoStack().undo();
+        QVERIFY(f.document.motion(f.ids[0]) == nullptr);
+        f.document.undoStack().redo();
+        QCOMPARE(f.angleAt(f.ids[0], 2.0), 1.0);
+        QCOMPARE(f.document.motionBuilds(), std::size_t(4));
+    }
+
+    void aNewSceneForgetsEveryMotion()
+    {
+        Fixture f;
+        const auto before = f.document.motion(f.ids[0]);
+        f.document.clear();
+        QVERIFY(f.document.motion(f.ids[0]) == nullptr);
+        QCOMPARE(f.document.motionBuilds(), std::size_t(0));
+    }
+
+    void theSceneMotionSharesTheDocumentsMotions()
+    {
+        Fixture f;
+        const auto fromDocument = [&f](const SceneObject& object) { return f.document.motion(object.id); };
+        const SceneMotion motion(f.document.scene(), fromDocument);
+        motion.build();
+        QCOMPARE(f.document.motionBuilds(), std::size_t(2));
+        const SceneMotion again(f.document.scene(), fromDocument);
+        again.build();
+        QCOMPARE(f.document.motionBuilds(), std::size_t(2));
+        // The child turns 0.25 rad/s on a parent turning 0.5 rad/s about the same axis.
+        QCOMPARE(Eigen::AngleAxisd(again.worldPose(f.ids[1], 2.0).orientation).angle(), 1.5);
+    }
+
+    // Threads asking together wait for one build and share it.
+    void threadsShareOneBuild()
+    {
+        Fixture f;
+        const auto motion = f.document.motion(f.ids[0]);
+        std::vector<const TrackMotion*> seen(4);
+        std::vector<std::thread> threads;
+        for (std::size_t i = 0; i < seen.size(); ++i)
+            threads.emplace_back([&seen, &motion, i] { seen[i] = &motion->motion(); });
+        for (std::thread& thread : threads)
+            thread.join();
+        QCOMPARE(f.document.motionBuilds(), std::size_t(1));
+        for (const TrackMotion* each : seen)
+            QCOMPARE(each, seen.front());
+    }
+
+    // A track TrackMotion refuses throws at every use, and is built only once.
+    void aRefusedTrackThrowsEveryTime()
+    {
+        MotionTrack track;
+        track.keys.push_back({1.0, {}, true});
+        track.keys.push_back({0.0, {}, true}); // times must increase
+        auto builds = std::make_shared<std::atomic<std::size_t>>(0);
+        const SharedTrackMotion motion(track, builds);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, motion.motion());
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, motion.motion());
+        QCOMPARE(builds->load(), std::size_t(1));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstMotionCache)
+#include "tst_motion_cache.moc"
