@@ -2331,29 +2331,29 @@
     </message>
 </context>
 <context>
-    <name>gyre::jobs::SketchFitError</name>
+    <name>gyre::model::SketchFitError</name>
     <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="89"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="89"/>
         <source>Direction stroke %1 cannot be followed: %2</source>
         <translation>Dem Richtungsstrich %1 kann nicht gefolgt werden: %2</translation>
     </message>
     <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="194"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="194"/>
         <source>The fit needs at least two keyframes on the selected object.</source>
         <translation>Die Anpassung braucht mindestens zwei Schlüsselbilder am gewählten Objekt.</translation>
     </message>
     <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="196"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="196"/>
         <source>The fit bends the Hermite spline through the keys: choose Hermite interpolation for this object first.</source>
         <translation>Die Anpassung verbiegt den Hermite-Spline durch die Schlüsselbilder: Wählen Sie für dieses Objekt zuerst die Hermite-Interpolation.</translation>
     </message>
     <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="201"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="201"/>
         <source>Nothing is sketched yet: draw the direction of the angular velocity on the sphere, or its magnitude on the plot.</source>
         <translation>Noch ist nichts skizziert: Zeichnen Sie die Richtung der Winkelgeschwindigkeit auf die Kugel oder ihren Betrag in das Diagramm.</translation>
     </message>
     <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="206"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="206"/>
         <source>The edit window has no length inside the keys&apos; span: widen it, or sketch between the first and the last key.</source>
         <translation>Das Bearbeitungsfenster hat innerhalb des Bereichs der Schlüsselbilder keine Länge: Erweitern Sie es oder skizzieren Sie zwischen dem ersten und dem letzten Schlüsselbild.</translation>
     </message>

@@ -1,7 +1,7 @@
 #include "jobs/fit_job.h"
 
 #include "fit/angular_velocity_fit.h"
-#include "jobs/sketch_fit.h"
+#include "model/sketch_fit_problem.h"
 
 #include <QElapsedTimer>
 
@@ -43,7 +43,7 @@ void FitJob::request(model::ObjectId object, model::MotionTrack track)
         clock.start();
         const auto sendToUi = [this](auto call) { QMetaObject::invokeMethod(this, std::move(call), Qt::QueuedConnection); };
         try {
-            const SketchFitProblem problem = sketchFitProblem(input);
+            const model::SketchFitProblem problem = model::sketchFitProblem(input);
             const int maxRounds = problem.settings.maxRounds;
             int reportedRound = 0;
             QElapsedTimer sinceReport;
@@ -64,7 +64,7 @@ void FitJob::request(model::ObjectId object, model::MotionTrack track)
                 return;
             }
             const FitSummary summary = summaryOf(result, static_cast<double>(clock.nsecsElapsed()) * 1e-9);
-            sendToUi([this, generation, input, applied = appliedFitResult(input, result), summary] {
+            sendToUi([this, generation, input, applied = model::appliedFitResult(input, result), summary] {
                 answer(generation, [&](model::ObjectId id) { emit finished(id, input, applied, summary); });
             });
         } catch (...) {

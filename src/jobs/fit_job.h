@@ -1,7 +1,7 @@
 #pragma once
 // The angular-velocity fit of one object's track off the UI thread (the sketch-editing paper's "Fit",
 // docs/fit.md). A request takes a copy of the track; the worker builds the fit from its sketch
-// (sketchFitProblem) and runs it, and the result comes back to the UI thread as what
+// (model::sketchFitProblem) and runs it, and the result comes back to the UI thread as what
 // ApplyFitResultCommand applies. The newest request wins: a request made while a fit runs makes the
 // running fit stop at its next solver iteration (JobThread's `superseded`), and only the newest
 // request is answered. A fit reports its progress while it runs, at most every

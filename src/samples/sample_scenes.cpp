@@ -1,7 +1,7 @@
 #include "samples/sample_scenes.h"
 
 #include "fit/angular_velocity_fit.h"
-#include "jobs/sketch_fit.h"
+#include "model/sketch_fit_problem.h"
 #include "model/commands/apply_fit_result_command.h"
 
 #include <Eigen/Geometry>
@@ -505,11 +505,11 @@ SampleScene critterCycle()
 SampleScene withFitApplied(SampleScene sample)
 {
     model::MotionTrack& track = sample.scene.objects.front().track;
-    const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
+    const model::SketchFitProblem problem = model::sketchFitProblem(track);
     const fit::FitResult result = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
     if (result.outcome != fit::FitOutcome::Converged)
         throw std::runtime_error(sample.fileName.toStdString() + ": the sketch's fit does not converge");
-    model::FitResult applied = jobs::appliedFitResult(track, result);
+    model::FitResult applied = model::appliedFitResult(track, result);
     track = model::withFitApplied(std::move(track), std::move(applied));
     return sample;
 }

@@ -10,7 +10,7 @@
 #include "app/sketch/fit_progress.h"
 #include "app/viewport/viewport.h"
 #include "gui_test_support.h"
-#include "jobs/sketch_fit.h"
+#include "model/sketch_fit_problem.h"
 #include "model/commands/add_stroke_command.h"
 #include "model/commands/edit_stroke_command.h"
 #include "model/commands/import_objects_command.h"

@@ -1,7 +1,7 @@
 // The bundled sample projects: each file is what the code makes now (regenerate with
 // `gyre-samples resources/samples`), each opens, and each is what it claims to be.
 
-#include "jobs/sketch_fit.h"
+#include "model/sketch_fit_problem.h"
 #include "model/commands/apply_fit_result_command.h"
 #include "model/commands/import_objects_command.h"
 #include "model/commands/remove_fit_command.h"
@@ -96,10 +96,10 @@ double largestKeyDifference(const std::vector<model::Keyframe>& a, const std::ve
 void fitAndApply(model::Document& document, model::ObjectId id)
 {
     const model::MotionTrack& track = document.object(id)->track;
-    const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
+    const model::SketchFitProblem problem = model::sketchFitProblem(track);
     const fit::FitResult result = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
     QVERIFY(result.outcome == fit::FitOutcome::Converged);
-    document.undoStack().push(new model::ApplyFitResultCommand(document, id, jobs::appliedFitResult(track, result)));
+    document.undoStack().push(new model::ApplyFitResultCommand(document, id, model::appliedFitResult(track, result)));
 }
 
 const model::SceneObject& onlyObject(const model::Document& document)
@@ -155,7 +155,7 @@ void TstSamples::spinningTopIsTheTableOneTop()
     QCOMPARE(track.keys.size(), std::size_t(85));
     QVERIFY(!track.sketch.directionStrokes.empty());
     QVERIFY(track.sketch.patternRepeat > 0);
-    const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
+    const model::SketchFitProblem problem = model::sketchFitProblem(track);
     QVERIFY(problem.settings.window);
     QVERIFY(problem.settings.window->end > problem.settings.window->start);
 }
@@ -187,7 +187,7 @@ void TstSamples::sketchSamplesHaveTheTableOneCounts()
     QCOMPARE(track.interpolation, InterpolationMethod::Hermite);
     QVERIFY(!track.sketch.directionStrokes.empty() || !track.sketch.magnitude.empty());
     QVERIFY(track.sketch.fittedCurve.empty());
-    QVERIFY(jobs::editWindow(track));
+    QVERIFY(model::editWindow(track));
 }
 
 // Every sketched sample's fit converges at its δ, keeps its constrained keys, and changes the motion
@@ -198,7 +198,7 @@ void TstSamples::sketchedFitsConvergeAndKeepTheConstrainedKeys()
     QCOMPARE(sketched.size(), std::size_t(5));
     for (const samples::SampleScene& sample : sketched) {
         const model::MotionTrack& track = sample.scene.objects[0].track;
-        const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
+        const model::SketchFitProblem problem = model::sketchFitProblem(track);
         const fit::FitResult result = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
         QVERIFY2(result.outcome == fit::FitOutcome::Converged,
                  qPrintable(sample.fileName + QStringLiteral(": ") +

@@ -1,7 +1,7 @@
 #include "app/sketch/fit_controller.h"
 
 #include "fit/angular_velocity_fit.h"
-#include "jobs/fit_input.h"
+#include "model/fit_input.h"
 #include "model/commands/apply_fit_result_command.h"
 
 #include <optional>
@@ -186,7 +186,7 @@ void FitController::requestLiveFit()
     // After an undo there is a step to redo, which a fit pushed now would throw away.
     if (object == nullptr || document_.undoStack().canRedo())
         return;
-    if (newestLiveInput_ && jobs::sameFitInput(*newestLiveInput_, object->track))
+    if (newestLiveInput_ && model::sameFitInput(*newestLiveInput_, object->track))
         return;
     newestLiveInput_ = object->track;
     liveJob_.request(object->id, object->track);
@@ -196,7 +196,7 @@ bool FitController::applyIfCurrent(model::ObjectId object, const model::MotionTr
                                    const model::FitResult& result)
 {
     const model::SceneObject* current = document_.object(object);
-    if (current == nullptr || !jobs::sameFitInput(input, current->track))
+    if (current == nullptr || !model::sameFitInput(input, current->track))
         return false;
     try {
         document_.push(new model::ApplyFitResultCommand(document_, object, result));

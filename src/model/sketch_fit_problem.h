@@ -25,12 +25,12 @@
 #include <stdexcept>
 #include <vector>
 
-namespace gyre::jobs {
+namespace gyre::model {
 
 // A sketch that cannot be fitted. The message says what the artist should do, as it stands.
 class SketchFitError : public std::invalid_argument {
     // The fit panel shows these messages: they are worded in the user's language.
-    Q_DECLARE_TR_FUNCTIONS(gyre::jobs::SketchFitError)
+    Q_DECLARE_TR_FUNCTIONS(gyre::SketchFitError)
 
 public:
     using std::invalid_argument::invalid_argument;
@@ -43,21 +43,21 @@ struct SketchFitProblem {
 };
 
 // The span the fit edits, or nullopt when the track has fewer than two keys or nothing is sketched.
-std::optional<fit::TimeWindow> editWindow(const model::MotionTrack& track);
+std::optional<fit::TimeWindow> editWindow(const MotionTrack& track);
 
 // Each direction stroke as timed unit directions, in the sketch's order: its own times, or spread
 // over the edit window; the sketch's pattern applied when it has one and a repeat count above zero.
 // Empty when there is no edit window. A stroke the pattern cannot follow (no length) stays plain.
-std::vector<std::vector<fit::TimedVector>> timedStrokes(const model::MotionTrack& track);
+std::vector<std::vector<fit::TimedVector>> timedStrokes(const MotionTrack& track);
 
 // Throws SketchFitError for fewer than two keys, an interpolation other than Hermite (the fit bends
 // the Hermite spline through the keys, so another interpolation would jump at the window's ends),
 // nothing sketched, or a window of no length.
-SketchFitProblem sketchFitProblem(const model::MotionTrack& track);
+SketchFitProblem sketchFitProblem(const MotionTrack& track);
 
 // What ApplyFitResultCommand applies for `result`, a fit of sketchFitProblem(track): the fitted
 // control points, and the track's keys with the freed ones turned to their fitted orientation.
 // Variable frames stay control points of the curve; they do not become keyframes.
-model::FitResult appliedFitResult(const model::MotionTrack& track, const fit::FitResult& result);
+FitResult appliedFitResult(const MotionTrack& track, const fit::FitResult& result);
 
-} // namespace gyre::jobs
+} // namespace gyre::model

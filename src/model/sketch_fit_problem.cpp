@@ -1,4 +1,4 @@
-#include "jobs/sketch_fit.h"
+#include "model/sketch_fit_problem.h"
 
 #include "model/track_evaluation.h"
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-namespace gyre::jobs {
+namespace gyre::model {
 
 namespace {
 
@@ -32,23 +32,23 @@ std::optional<Span> unite(const std::optional<Span>& span, double start, double 
 }
 
 // The span the sketch's timed parts cover; the keys' span when only untimed strokes are drawn.
-std::optional<Span> sketchedSpan(const model::MotionTrack& track)
+std::optional<Span> sketchedSpan(const MotionTrack& track)
 {
-    const model::SketchState& sketch = track.sketch;
+    const SketchState& sketch = track.sketch;
     std::optional<Span> span;
-    for (const model::DirectionStroke& stroke : sketch.directionStrokes)
+    for (const DirectionStroke& stroke : sketch.directionStrokes)
         if (!stroke.times.empty())
             span = unite(span, stroke.times.front(), stroke.times.back());
     if (!sketch.magnitude.empty())
         span = unite(span, sketch.magnitude.front().time, sketch.magnitude.back().time);
     const bool anyUntimedStroke = std::ranges::any_of(
-        sketch.directionStrokes, [](const model::DirectionStroke& stroke) { return stroke.times.empty(); });
+        sketch.directionStrokes, [](const DirectionStroke& stroke) { return stroke.times.empty(); });
     if (anyUntimedStroke)
         return Span{track.keys.front().time, track.keys.back().time};
     return span;
 }
 
-std::vector<fit::TimedVector> timedStroke(const model::DirectionStroke& stroke, const fit::TimeWindow& window)
+std::vector<fit::TimedVector> timedStroke(const DirectionStroke& stroke, const fit::TimeWindow& window)
 {
     if (stroke.times.empty())
         return fit::spreadByArcLength(stroke.points, window.start, window.end);
@@ -59,7 +59,7 @@ std::vector<fit::TimedVector> timedStroke(const model::DirectionStroke& stroke, 
     return timed;
 }
 
-std::vector<fit::TimedVector> withPattern(std::vector<fit::TimedVector> stroke, const model::SketchState& sketch)
+std::vector<fit::TimedVector> withPattern(std::vector<fit::TimedVector> stroke, const SketchState& sketch)
 {
     if (sketch.pattern.size() < 2 || sketch.patternRepeat < 1)
         return stroke;
@@ -100,15 +100,15 @@ std::vector<StrokeDirection> strokeDirections(const std::vector<std::vector<fit:
 }
 
 // The sketched magnitude at `time`, where the curve covers it.
-std::optional<double> sketchedMagnitude(const std::vector<model::MagnitudePoint>& curve, double time)
+std::optional<double> sketchedMagnitude(const std::vector<MagnitudePoint>& curve, double time)
 {
     if (curve.size() < 2 || time < curve.front().time || time > curve.back().time)
         return std::nullopt;
-    const auto after = std::ranges::upper_bound(curve, time, {}, &model::MagnitudePoint::time);
+    const auto after = std::ranges::upper_bound(curve, time, {}, &MagnitudePoint::time);
     if (after == curve.end())
         return curve.back().magnitude;
-    const model::MagnitudePoint& b = *after;
-    const model::MagnitudePoint& a = *(after - 1);
+    const MagnitudePoint& b = *after;
+    const MagnitudePoint& a = *(after - 1);
     const double u = (time - a.time) / (b.time - a.time);
     return a.magnitude + u * (b.magnitude - a.magnitude);
 }
@@ -116,7 +116,7 @@ std::optional<double> sketchedMagnitude(const std::vector<model::MagnitudePoint>
 // A grid over the window, plus every time the sketch gives inside it, so the target passes through
 // each drawn point.
 std::vector<double> targetTimes(const fit::TimeWindow& window, const std::vector<std::vector<fit::TimedVector>>& strokes,
-                                const std::vector<model::MagnitudePoint>& magnitude)
+                                const std::vector<MagnitudePoint>& magnitude)
 {
     std::vector<double> times;
     const double length = window.end - window.start;
@@ -130,7 +130,7 @@ std::vector<double> targetTimes(const fit::TimeWindow& window, const std::vector
     for (const auto& stroke : strokes)
         for (const fit::TimedVector& point : stroke)
             addInside(point.time);
-    for (const model::MagnitudePoint& point : magnitude)
+    for (const MagnitudePoint& point : magnitude)
         addInside(point.time);
     std::ranges::sort(times);
     const auto repeated = std::ranges::unique(times, [](double a, double b) { return b - a < kSameTime; });
@@ -138,11 +138,11 @@ std::vector<double> targetTimes(const fit::TimeWindow& window, const std::vector
     return times;
 }
 
-fit::AngularVelocityTarget sketchTarget(const model::MotionTrack& track, const fit::TimeWindow& window)
+fit::AngularVelocityTarget sketchTarget(const MotionTrack& track, const fit::TimeWindow& window)
 {
-    model::MotionTrack keyed = track;
+    MotionTrack keyed = track;
     keyed.sketch.fittedCurve.clear();
-    const model::TrackMotion motion(keyed);
+    const TrackMotion motion(keyed);
     const std::vector<std::vector<fit::TimedVector>> strokes = timedStrokes(track);
     const std::vector<StrokeDirection> directions = strokeDirections(strokes);
 
@@ -166,7 +166,7 @@ fit::AngularVelocityTarget sketchTarget(const model::MotionTrack& track, const f
 
 } // namespace
 
-std::optional<fit::TimeWindow> editWindow(const model::MotionTrack& track)
+std::optional<fit::TimeWindow> editWindow(const MotionTrack& track)
 {
     if (track.keys.size() < 2)
         return std::nullopt;
@@ -180,18 +180,18 @@ std::optional<fit::TimeWindow> editWindow(const model::MotionTrack& track)
     return window;
 }
 
-std::vector<std::vector<fit::TimedVector>> timedStrokes(const model::MotionTrack& track)
+std::vector<std::vector<fit::TimedVector>> timedStrokes(const MotionTrack& track)
 {
     const std::optional<fit::TimeWindow> window = editWindow(track);
     if (!window)
         return {};
     std::vector<std::vector<fit::TimedVector>> strokes;
-    for (const model::DirectionStroke& stroke : track.sketch.directionStrokes)
+    for (const DirectionStroke& stroke : track.sketch.directionStrokes)
         strokes.push_back(withPattern(timedStroke(stroke, *window), track.sketch));
     return strokes;
 }
 
-SketchFitProblem sketchFitProblem(const model::MotionTrack& track)
+SketchFitProblem sketchFitProblem(const MotionTrack& track)
 {
     if (track.keys.size() < 2)
         throw SketchFitError(
@@ -200,7 +200,7 @@ SketchFitProblem sketchFitProblem(const model::MotionTrack& track)
         throw SketchFitError(SketchFitError::tr("The fit bends the Hermite spline through the keys: choose Hermite "
                                                 "interpolation for this object first.")
                                  .toStdString());
-    const model::SketchState& sketch = track.sketch;
+    const SketchState& sketch = track.sketch;
     if (sketch.directionStrokes.empty() && sketch.magnitude.empty())
         throw SketchFitError(SketchFitError::tr("Nothing is sketched yet: draw the direction of the angular velocity "
                                                 "on the sphere, or its magnitude on the plot.")
@@ -230,7 +230,7 @@ SketchFitProblem sketchFitProblem(const model::MotionTrack& track)
 
     std::vector<fit::FitKey> keys;
     keys.reserve(track.keys.size());
-    for (const model::Keyframe& key : track.keys)
+    for (const Keyframe& key : track.keys)
         keys.push_back({key.time, key.pose.orientation, key.constrained});
     fit::FitSettings settings;
     settings.alpha = sketch.alpha;
@@ -240,16 +240,16 @@ SketchFitProblem sketchFitProblem(const model::MotionTrack& track)
     return {std::move(keys), sketchTarget(track, *window), settings};
 }
 
-model::FitResult appliedFitResult(const model::MotionTrack& track, const fit::FitResult& result)
+FitResult appliedFitResult(const MotionTrack& track, const fit::FitResult& result)
 {
     if (result.keys.size() != track.keys.size())
         throw std::invalid_argument("the fit's keys are not the track's: " + std::to_string(result.keys.size()) +
                                     " for " + std::to_string(track.keys.size()));
-    model::FitResult applied{result.controlPoints, track.keys};
+    FitResult applied{result.controlPoints, track.keys};
     for (std::size_t i = 0; i < applied.keys.size(); ++i)
         if (!applied.keys[i].constrained)
             applied.keys[i].pose.orientation = result.keys[i].rotation;
     return applied;
 }
 
-} // namespace gyre::jobs
+} // namespace gyre::model
