@@ -262,7 +262,7 @@ model::SketchFitProblem fitProblem(const VerbCommandLine& commandLine, model::Mo
     std::vector<fit::FitKey> keys;
     for (const model::Keyframe& key : track.keys)
         keys.push_back({key.time, key.pose.orientation, key.constrained});
-    return {std::move(keys), target, settings};
+    return {std::move(keys), target, settings, {}};
 }
 
 QJsonObject energyJson(const fit::EnergyTerms& terms, const FitSettings& settings)
@@ -272,15 +272,18 @@ QJsonObject energyJson(const fit::EnergyTerms& terms, const FitSettings& setting
             {QStringLiteral("total"), settings.alpha * terms.tangential + settings.beta * terms.angular}};
 }
 
-QByteArray reportJson(const FitResult& result, const FitSettings& settings)
+QByteArray reportJson(const FitResult& result, const FitSettings& settings,
+                      const std::optional<model::DrawnErrors>& drawnErrors)
 {
-    const QJsonObject report{
+    QJsonObject report{
         {QStringLiteral("outcome"), QString::fromUtf8(nameOf(fit::kFitOutcomeNames, result.outcome))},
         {QStringLiteral("converged"), result.outcome == fit::FitOutcome::Converged},
         {QStringLiteral("rounds"), result.rounds},
         {QStringLiteral("iterations"), result.iterations},
         {QStringLiteral("variableFrames"), result.variableFrames},
+        {QStringLiteral("largestRelativeError"), result.largestRelativeError},
         {QStringLiteral("largestFragmentError"), result.largestFragmentError},
+        {QStringLiteral("targetMeanSquare"), result.targetMeanSquare},
         {QStringLiteral("delta"), settings.delta},
         {QStringLiteral("largestNormDeviation"), result.largestNormDeviation},
         {QStringLiteral("window"), QJsonArray{result.window.start, result.window.end}},
@@ -288,44 +291,20 @@ QByteArray reportJson(const FitResult& result, const FitSettings& settings)
         {QStringLiteral("energyBefore"), energyJson(result.before, settings)},
         {QStringLiteral("energyAfter"), energyJson(result.after, settings)},
     };
+    if (drawnErrors) {
+        report.insert(QStringLiteral("drawnErrorBefore"), drawnErrors->before);
+        report.insert(QStringLiteral("drawnErrorAfter"), drawnErrors->after);
+    }
     return QJsonDocument(report).toJson();
 }
 
-FitResult fitted(const VerbCommandLine& commandLine, const model::SketchFitProblem& problem)
-{
-    try {
-        return fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
-    } catch (const std::invalid_argument& refusal) {
-        throw InputError(commandLine.inputPath(), std::string("cannot fit: ") + refusal.what());
-    }
-}
-
-// The frames, and the report if asked for; both files are written in full before either replaces
-// what was there.
-void writeOutputs(const VerbCommandLine& commandLine, const PoseTable& frames, const FitResult& result,
-                  const FitSettings& settings)
-{
-    if (!commandLine.isSet(kReport)) {
-        writePoseCsv(commandLine.outputPath(), frames);
-        return;
-    }
-    OutputTarget framesFile(commandLine.outputPath());
-    OutputTarget reportFile(commandLine.requiredValue(kReport));
-    framesFile.open();
-    reportFile.open();
-    writePoseCsv(framesFile, frames);
-    reportFile.write(reportJson(result, settings));
-    framesFile.commit();
-    reportFile.commit();
-}
-
 // The track with the fit applied as the app applies it, baked over `range`.
-PoseTable fittedFrames(const VerbCommandLine& commandLine, const model::MotionTrack& track, const FitResult& result,
-                       const model::BakeRange& range, bool hasPosition)
+PoseTable fittedFrames(const VerbCommandLine& commandLine, const model::MotionTrack& fitted, const model::BakeRange& range,
+                       bool hasPosition)
 {
     std::vector<model::TimedPose> samples;
     try {
-        samples = model::bakeTrack(model::withFitApplied(track, model::appliedFitResult(track, result)), range);
+        samples = model::bakeTrack(fitted, range);
     } catch (const std::invalid_argument& problem) {
         throw InputError(commandLine.inputPath(), std::string("the fitted motion cannot be written: ") + problem.what());
     }
@@ -334,6 +313,37 @@ PoseTable fittedFrames(const VerbCommandLine& commandLine, const model::MotionTr
     for (const model::TimedPose& sample : samples)
         frames.rows.push_back({sample.time, sample.pose, 0});
     return frames;
+}
+
+// Fits `problem`, made from `track`, and writes the fitted motion over `range` and the report if asked
+// for (with the errors against what was drawn when the track is sketched); both files are written in
+// full before either replaces what was there.
+void fitAndWrite(const VerbCommandLine& commandLine, const model::MotionTrack& track,
+                 const model::SketchFitProblem& problem, const model::BakeRange& range, bool hasPosition)
+{
+    FitResult result;
+    try {
+        result = model::fitSketch(problem);
+    } catch (const std::invalid_argument& refusal) {
+        throw InputError(commandLine.inputPath(), std::string("cannot fit: ") + refusal.what());
+    }
+    const model::FitResult applied = model::appliedFitResult(track, result);
+    const PoseTable frames = fittedFrames(commandLine, model::withFitApplied(track, applied), range, hasPosition);
+    if (!commandLine.isSet(kReport)) {
+        writePoseCsv(commandLine.outputPath(), frames);
+        return;
+    }
+    const bool sketched = !track.sketch.directionStrokes.empty() || !track.sketch.magnitude.empty();
+    const QByteArray report = reportJson(result, problem.settings,
+                                         sketched ? std::optional(model::drawnErrors(track, applied)) : std::nullopt);
+    OutputTarget framesFile(commandLine.outputPath());
+    OutputTarget reportFile(commandLine.requiredValue(kReport));
+    framesFile.open();
+    reportFile.open();
+    writePoseCsv(framesFile, frames);
+    reportFile.write(report);
+    framesFile.commit();
+    reportFile.commit();
 }
 
 // Every file fit reads and writes: no output may be one of the others.
@@ -362,8 +372,7 @@ void fitProjectObject(const VerbCommandLine& commandLine, double fps)
     const model::MotionTrack& track = trackedObjectNamed(scene, name, commandLine.inputPath()).track;
     const model::BakeRange range = checkedOutputRange({scene.startTime, scene.endTime, fps}, track.keys.size(), commandLine);
     const model::SketchFitProblem problem = sketchProblem(commandLine, track, "cannot fit '" + name.toStdString() + "': ");
-    const FitResult result = fitted(commandLine, problem);
-    writeOutputs(commandLine, fittedFrames(commandLine, track, result, range, true), result, problem.settings);
+    fitAndWrite(commandLine, track, problem, range, true);
 }
 
 } // namespace
@@ -393,9 +402,7 @@ void runFit(const QStringList& arguments)
     }
     const std::vector<double> times = model::keyTimes(track);
     const model::BakeRange range = checkedOutputRange({times.front(), times.back(), fps}, times.size(), commandLine);
-    const FitResult result = fitted(commandLine, problem);
-    writeOutputs(commandLine, fittedFrames(commandLine, track, result, range, keys.hasPosition), result,
-                 problem.settings);
+    fitAndWrite(commandLine, track, problem, range, keys.hasPosition);
 }
 
 } // namespace gyre::cli

@@ -1,7 +1,6 @@
 #include "jobs/fit_job.h"
 
 #include "fit/angular_velocity_fit.h"
-#include "model/sketch_fit_problem.h"
 
 #include <QElapsedTimer>
 
@@ -13,14 +12,15 @@ namespace gyre::jobs {
 
 namespace {
 
-FitSummary summaryOf(const fit::FitResult& result, double seconds)
+FitSummary summaryOf(const fit::FitResult& result, const model::DrawnErrors& drawnErrors, double seconds)
 {
     const std::string_view outcome = nameOf(fit::kFitOutcomeNames, result.outcome);
     return {QString::fromUtf8(outcome.data(), static_cast<qsizetype>(outcome.size())),
             result.outcome == fit::FitOutcome::Converged,
             result.rounds,
             result.iterations,
-            result.largestFragmentError,
+            result.largestRelativeError,
+            drawnErrors,
             seconds};
 }
 
@@ -55,16 +55,18 @@ void FitJob::request(model::ObjectId object, model::MotionTrack track)
                     return;
                 reportedRound = progress.round;
                 sinceReport.start();
-                const FitJobProgress report{progress.round, maxRounds, progress.iteration, progress.largestFragmentError};
+                const FitJobProgress report{progress.round, maxRounds, progress.iteration, progress.largestRelativeError};
                 sendToUi([this, generation, report] { deliverProgress(generation, report); });
             };
-            const fit::FitResult result = fitAngularVelocity(problem.keys, problem.target, problem.settings, hooks);
+            const fit::FitResult result = model::fitSketch(problem, hooks);
             if (result.outcome == fit::FitOutcome::Cancelled) {
                 sendToUi([this, generation] { answer(generation, [this](model::ObjectId id) { emit cancelled(id); }); });
                 return;
             }
-            const FitSummary summary = summaryOf(result, static_cast<double>(clock.nsecsElapsed()) * 1e-9);
-            sendToUi([this, generation, input, applied = model::appliedFitResult(input, result), summary] {
+            model::FitResult applied = model::appliedFitResult(input, result);
+            const model::DrawnErrors drawnErrors = model::drawnErrors(input, applied);
+            const FitSummary summary = summaryOf(result, drawnErrors, static_cast<double>(clock.nsecsElapsed()) * 1e-9);
+            sendToUi([this, generation, input, applied = std::move(applied), summary] {
                 answer(generation, [&](model::ObjectId id) { emit finished(id, input, applied, summary); });
             });
         } catch (...) {

@@ -212,7 +212,7 @@ void BM_FitSpinningTopSample(benchmark::State& state)
     gyre::fit::FitResult result;
     for (auto _ : state) {
         const gyre::model::SketchFitProblem problem = gyre::model::sketchFitProblem(track);
-        result = gyre::fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
+        result = gyre::model::fitSketch(problem);
         benchmark::DoNotOptimize(result.controlPoints.data());
     }
     state.counters["rounds"] = result.rounds;

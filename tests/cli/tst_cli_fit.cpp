@@ -108,7 +108,10 @@ void TstCliFit::omegaTargetFollowsTheTop()
     QVERIFY(report["rounds"].toInt() >= 1);
     QVERIFY(report["iterations"].toInt() >= 1);
     QVERIFY(report["variableFrames"].toInt() >= 0);
-    QVERIFY(report["largestFragmentError"].toDouble() <= 0.1);
+    QVERIFY(report["largestRelativeError"].toDouble() <= 0.1);
+    QCOMPARE(report["largestRelativeError"].toDouble(),
+             report["largestFragmentError"].toDouble() / report["targetMeanSquare"].toDouble());
+    QVERIFY(!report.contains("drawnErrorBefore"));  // ω samples are the target; nothing was drawn
     QVERIFY(report["solveSeconds"].toDouble() > 0.0);
     QVERIFY(report["largestNormDeviation"].toDouble() < 1e-3);
     const QJsonObject before = report["energyBefore"].toObject();

@@ -75,7 +75,7 @@ model::Scene sceneOf(const model::MotionTrack& track)
 std::vector<model::TimedPose> appFit(const model::MotionTrack& track)
 {
     const model::SketchFitProblem problem = model::sketchFitProblem(track);
-    const fit::FitResult result = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
+    const fit::FitResult result = model::fitSketch(problem);
     const model::MotionTrack fitted = model::withFitApplied(track, model::appliedFitResult(track, result));
     return model::bakeTrack(fitted, {track.keys.front().time, track.keys.back().time, kFps});
 }

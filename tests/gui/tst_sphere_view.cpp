@@ -420,7 +420,7 @@ private slots:
         QVERIFY(selection_->selectedObject() != nullptr);
         const model::ObjectId top = selection_->object();
         const model::SketchFitProblem problem = model::sketchFitProblem(document_->object(top)->track);
-        const fit::FitResult result = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
+        const fit::FitResult result = model::fitSketch(problem);
         document_->push(
             new model::ApplyFitResultCommand(*document_, top, model::appliedFitResult(document_->object(top)->track, result)));
         document_->setCurrentTime(6.0);

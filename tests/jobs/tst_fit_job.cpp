@@ -128,7 +128,7 @@ private slots:
         QVERIFY(model::sameFitInput(answers.finishedInputs.front(), track));
 
         const model::SketchFitProblem problem = model::sketchFitProblem(track);
-        const fit::FitResult direct = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
+        const fit::FitResult direct = model::fitSketch(problem);
         QVERIFY(!answers.results.front().curve.empty());
         QVERIFY(sameResult(answers.results.front(), model::appliedFitResult(track, direct)));
 
@@ -136,7 +136,11 @@ private slots:
         QCOMPARE(summary.outcome, QString::fromUtf8(nameOf(fit::kFitOutcomeNames, direct.outcome).data()));
         QCOMPARE(summary.rounds, direct.rounds);
         QCOMPARE(summary.iterations, direct.iterations);
-        QCOMPARE(summary.largestFragmentError, direct.largestFragmentError);
+        QCOMPARE(summary.largestRelativeError, direct.largestRelativeError);
+        const model::DrawnErrors drawn = model::drawnErrors(track, model::appliedFitResult(track, direct));
+        QCOMPARE(summary.drawnErrors.before, drawn.before);
+        QCOMPARE(summary.drawnErrors.after, drawn.after);
+        QVERIFY(drawn.after < drawn.before);
         QVERIFY(summary.seconds > 0.0);
 
         // Progress came first, round by round, within the fit's round limit.
@@ -180,11 +184,11 @@ private slots:
 
     void aTrackThatCannotBeFittedFailsWithTheMessage()
     {
-        model::MotionTrack screw = tiltedSpin();
-        screw.interpolation = InterpolationMethod::Screw;
+        model::MotionTrack unsketched = tiltedSpin();
+        unsketched.sketch = {};
         QString expected;
         try {
-            model::sketchFitProblem(screw);
+            model::sketchFitProblem(unsketched);
         } catch (const model::SketchFitError& error) {
             expected = QString::fromUtf8(error.what());
         }
@@ -192,7 +196,7 @@ private slots:
 
         jobs::FitJob job;
         Answers answers(job);
-        job.request(5, screw);
+        job.request(5, unsketched);
         QTRY_VERIFY_WITH_TIMEOUT(answers.count() == 1, kFitTimeoutMilliseconds);
         QCOMPARE(answers.failures, std::vector<QString>{expected});
     }

@@ -217,9 +217,6 @@ void TstSketchFitProblem::refusesWhatCannotBeFitted()
     MotionTrack track = steadySpin();
     QVERIFY(refusesWith([&] { sketchFitProblem(track); }, "Nothing is sketched"));
     track.sketch.magnitude = {{1.0, 2.0}, {3.0, 4.0}};
-    track.interpolation = InterpolationMethod::Screw;
-    QVERIFY(refusesWith([&] { sketchFitProblem(track); }, "Hermite"));
-    track.interpolation = InterpolationMethod::Hermite;
     track.sketch.window = std::pair(5.0, 6.0);
     QVERIFY(refusesWith([&] { sketchFitProblem(track); }, "window"));
     track.keys.resize(1);
@@ -238,7 +235,7 @@ void TstSketchFitProblem::appliedResultKeepsConstrainedKeysAndLeansTowardsTheSke
     track.sketch.directionStrokes.back().points = {tilted, Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitZ()) * tilted};
 
     const SketchFitProblem problem = sketchFitProblem(track);
-    const fit::FitResult result = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
+    const fit::FitResult result = model::fitSketch(problem);
     const FitResult applied = appliedFitResult(track, result);
 
     QCOMPARE(applied.curve.size(), result.controlPoints.size());
