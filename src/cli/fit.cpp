@@ -183,6 +183,22 @@ model::MotionTrack keyedTrack(const VerbCommandLine& commandLine, const PoseTabl
     return track;
 }
 
+// α, β and δ from --alpha, --beta and --delta, the fit's defaults (which are the sketch's) otherwise.
+FitSettings weightOptions(const VerbCommandLine& commandLine)
+{
+    FitSettings settings;
+    if (commandLine.isSet(kAlpha)) {
+        settings.alpha = commandLine.number(kAlpha);
+        if (settings.alpha < 0.0)
+            throw commandLine.error("--alpha: must be ≥ 0");
+    }
+    if (commandLine.isSet(kBeta))
+        settings.beta = commandLine.positiveNumber(kBeta);
+    if (commandLine.isSet(kDelta))
+        settings.delta = commandLine.positiveNumber(kDelta);
+    return settings;
+}
+
 // The sketch the files describe, with the weights and δ of the options (the sketch's defaults
 // otherwise), as the app would hold it.
 model::SketchState sketchOf(const VerbCommandLine& commandLine)
@@ -209,15 +225,10 @@ model::SketchState sketchOf(const VerbCommandLine& commandLine)
     }
     if (const std::optional<fit::TimeWindow> window = windowOption(commandLine))
         sketch.window = std::pair(window->start, window->end);
-    if (commandLine.isSet(kAlpha)) {
-        sketch.alpha = commandLine.number(kAlpha);
-        if (sketch.alpha < 0.0)
-            throw commandLine.error("--alpha: must be ≥ 0");
-    }
-    if (commandLine.isSet(kBeta))
-        sketch.beta = commandLine.positiveNumber(kBeta);
-    if (commandLine.isSet(kDelta))
-        sketch.delta = commandLine.positiveNumber(kDelta);
+    const FitSettings weights = weightOptions(commandLine);
+    sketch.alpha = weights.alpha;
+    sketch.beta = weights.beta;
+    sketch.delta = weights.delta;
     return sketch;
 }
 
@@ -248,16 +259,7 @@ model::SketchFitProblem fitProblem(const VerbCommandLine& commandLine, model::Mo
         return sketchProblem(commandLine, track, "cannot fit: ");
     }
     const AngularVelocityTarget target = omegaTarget(commandLine.requiredValue(kOmega));
-    FitSettings settings;
-    if (commandLine.isSet(kAlpha)) {
-        settings.alpha = commandLine.number(kAlpha);
-        if (settings.alpha < 0.0)
-            throw commandLine.error("--alpha: must be ≥ 0");
-    }
-    if (commandLine.isSet(kBeta))
-        settings.beta = commandLine.positiveNumber(kBeta);
-    if (commandLine.isSet(kDelta))
-        settings.delta = commandLine.positiveNumber(kDelta);
+    FitSettings settings = weightOptions(commandLine);
     settings.window = windowOption(commandLine).value_or(fit::TimeWindow{target.startTime(), target.endTime()});
     std::vector<fit::FitKey> keys;
     for (const model::Keyframe& key : track.keys)

@@ -107,7 +107,8 @@ app's Fit fits them, and its motion is written as bake writes it, over the scene
   --fps F        output samples per second, above 0 and at most 1000; changes only the output
   --alpha A      weight of smoothness, the tangential acceleration W_T (default 0.002, >= 0)
   --beta B       weight of the angular-velocity deviation W_A (default 1, > 0)
-  --delta D      the largest fragment error accepted, rad^2/s (default 0.1, > 0)
+  --delta D      the largest fragment error accepted, F_n over the target's mean squared speed,
+                 in seconds (default 0.1, the paper's value, > 0; docs/fit.md)
   --fragment DT  length of the fragments the error is measured on, seconds (default 0.25);
                  the window may hold at most 100,000 of them
   --free LIST    0-based indices of keys the fit may move, e.g. 1,2,5
@@ -115,7 +116,8 @@ app's Fit fits them, and its motion is written as bake writes it, over the scene
                  motion is unchanged, and it stays smooth across the window's ends
   --object NAME  the object of a project to fit; the name must single out one object with keys
   --report FILE  a JSON report: outcome, rounds, iterations, variable frames, largest fragment
-                 error, solve time, energy terms before and after
+                 error (relative, and in rad^2/s), solve time, energy terms before and after, and
+                 for a sketch the error against what was drawn before and after
 
 The Euler options say how to read Euler key columns.)";
 const char* const kInfo = R"(Usage: gyre-cli info PROJECT.gyre|SCENE
