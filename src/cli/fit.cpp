@@ -76,14 +76,14 @@ bool isProject(const QString& path)
     return path.endsWith(QStringLiteral(".gyre"), Qt::CaseInsensitive);
 }
 
-Eigen::Vector3d vectorAt(const NumberTable& table, std::size_t row, std::span<const std::string_view> columns)
+Eigen::Vector3d vectorAt(const io::NumberTable& table, std::size_t row, std::span<const std::string_view> columns)
 {
     return {table.value(row, columns[0]), table.value(row, columns[1]), table.value(row, columns[2])};
 }
 
 AngularVelocityTarget omegaTarget(const QString& path)
 {
-    const NumberTable table = readNumberCsv(path, {kOmegaColumns, {}, "time"});
+    const io::NumberTable table = io::readNumberCsv(path, {kOmegaColumns, {}, "time"});
     if (table.rowCount() < 2)
         throw table.errorAt(0, "an angular-velocity target needs at least two samples");
     std::vector<TimedVector> samples;
@@ -94,7 +94,7 @@ AngularVelocityTarget omegaTarget(const QString& path)
 
 std::vector<model::MagnitudePoint> magnitudeCurve(const QString& path)
 {
-    const NumberTable table = readNumberCsv(path, {kMagnitudeColumns, {}, "time"});
+    const io::NumberTable table = io::readNumberCsv(path, {kMagnitudeColumns, {}, "time"});
     if (table.rowCount() < 2)
         throw table.errorAt(0, "a magnitude curve needs at least two samples");
     std::vector<model::MagnitudePoint> curve;
@@ -112,7 +112,7 @@ std::vector<model::MagnitudePoint> magnitudeCurve(const QString& path)
 // over the edit window by arc length).
 model::DirectionStroke directionStroke(const QString& path)
 {
-    const NumberTable table = readNumberCsv(path, {kDirectionColumns, kTime, "time"});
+    const io::NumberTable table = io::readNumberCsv(path, {kDirectionColumns, kTime, "time"});
     model::DirectionStroke stroke;
     for (std::size_t row = 0; row < table.rowCount(); ++row) {
         const Eigen::Vector3d point = vectorAt(table, row, kDirectionColumns);
@@ -132,7 +132,7 @@ model::DirectionStroke directionStroke(const QString& path)
 
 std::vector<Eigen::Vector2d> patternCurve(const QString& path)
 {
-    const NumberTable table = readNumberCsv(path, {kPatternColumns, {}, std::nullopt});
+    const io::NumberTable table = io::readNumberCsv(path, {kPatternColumns, {}, std::nullopt});
     std::vector<Eigen::Vector2d> pattern;
     for (std::size_t row = 0; row < table.rowCount(); ++row)
         pattern.emplace_back(table.value(row, "x"), table.value(row, "y"));
@@ -173,7 +173,7 @@ std::set<std::size_t> freedKeys(const VerbCommandLine& commandLine, std::size_t 
 }
 
 // The keys file as a Hermite track, its keys constrained unless --free names them.
-model::MotionTrack keyedTrack(const VerbCommandLine& commandLine, const PoseTable& keys)
+model::MotionTrack keyedTrack(const VerbCommandLine& commandLine, const io::PoseTable& keys)
 {
     const std::set<std::size_t> freed = freedKeys(commandLine, keys.rows.size());
     model::MotionTrack track;
@@ -301,7 +301,7 @@ QByteArray reportJson(const FitResult& result, const FitSettings& settings,
 }
 
 // The track with the fit applied as the app applies it, baked over `range`.
-PoseTable fittedFrames(const VerbCommandLine& commandLine, const model::MotionTrack& fitted, const model::BakeRange& range,
+io::PoseTable fittedFrames(const VerbCommandLine& commandLine, const model::MotionTrack& fitted, const model::BakeRange& range,
                        bool hasPosition)
 {
     std::vector<model::TimedPose> samples;
@@ -310,7 +310,7 @@ PoseTable fittedFrames(const VerbCommandLine& commandLine, const model::MotionTr
     } catch (const std::invalid_argument& problem) {
         throw InputError(commandLine.inputPath(), std::string("the fitted motion cannot be written: ") + problem.what());
     }
-    PoseTable frames{RotationColumns::Quaternion, true, hasPosition, {}};
+    io::PoseTable frames{io::RotationColumns::Quaternion, true, hasPosition, {}};
     frames.rows.reserve(samples.size());
     for (const model::TimedPose& sample : samples)
         frames.rows.push_back({sample.time, sample.pose, 0});
@@ -330,9 +330,9 @@ void fitAndWrite(const VerbCommandLine& commandLine, const model::MotionTrack& t
         throw InputError(commandLine.inputPath(), std::string("cannot fit: ") + refusal.what());
     }
     const model::FitResult applied = model::appliedFitResult(track, result);
-    const PoseTable frames = fittedFrames(commandLine, model::withFitApplied(track, applied), range, hasPosition);
+    const io::PoseTable frames = fittedFrames(commandLine, model::withFitApplied(track, applied), range, hasPosition);
     if (!commandLine.isSet(kReport)) {
-        writePoseCsv(commandLine.outputPath(), frames);
+        io::writePoseCsv(commandLine.outputPath(), frames);
         return;
     }
     const bool sketched = !track.sketch.directionStrokes.empty() || !track.sketch.magnitude.empty();
@@ -342,7 +342,7 @@ void fitAndWrite(const VerbCommandLine& commandLine, const model::MotionTrack& t
     OutputTarget reportFile(commandLine.requiredValue(kReport));
     framesFile.open();
     reportFile.open();
-    writePoseCsv(framesFile, frames);
+    io::writePoseCsv(framesFile, frames);
     reportFile.write(report);
     framesFile.commit();
     reportFile.commit();
@@ -390,7 +390,7 @@ void runFit(const QStringList& arguments)
     }
     if (commandLine.isSet(kObject))
         throw commandLine.error("--object names an object of a project (a .gyre file)");
-    const PoseTable keys = readPoseCsv(commandLine.inputPath(), commandLine.eulerConvention(), TimeColumn::Required);
+    const io::PoseTable keys = io::readPoseCsv(commandLine.inputPath(), commandLine.eulerConvention(), io::TimeColumn::Required);
     if (keys.rows.size() < 2)
         throw InputError(commandLine.inputPath(), keys.rows.back().line, "fit needs at least two keys");
     model::MotionTrack track = keyedTrack(commandLine, keys);
