@@ -35,13 +35,13 @@
     </message>
     <message>
         <location filename="../ui/fit_panel.ui" line="77"/>
-        <source>&amp;δ (rad²/s)</source>
-        <translation>&amp;δ (rad²/s)</translation>
+        <source>&amp;δ</source>
+        <translation>&amp;δ</translation>
     </message>
     <message>
         <location filename="../ui/fit_panel.ui" line="83"/>
-        <source>The largest error accepted on a fragment of the window; above it the fit inserts variable frames</source>
-        <translation>Der größte zulässige Fehler auf einem Abschnitt des Fensters; darüber fügt die Anpassung variable Frames ein</translation>
+        <source>The largest error accepted on a fragment of the window, measured in the target&apos;s own mean squared speed (F_n/S̄, in seconds); above it the fit inserts variable frames</source>
+        <translation>Der größte zulässige Fehler auf einem Abschnitt des Fensters, gemessen an der mittleren quadratischen Geschwindigkeit des Ziels (F_n/S̄, in Sekunden); darüber fügt die Anpassung variable Frames ein</translation>
     </message>
     <message>
         <location filename="../ui/fit_panel.ui" line="96"/>
@@ -1401,8 +1401,8 @@
     </message>
     <message>
         <location filename="../src/app/sketch/fit_progress.cpp" line="53"/>
-        <source>Fit: round %v of %m, largest error %1 rad²/s</source>
-        <translation>Anpassung: Runde %v von %m, größter Fehler %1 rad²/s</translation>
+        <source>Fit: round %v of %m, largest relative error %1</source>
+        <translation>Anpassung: Runde %v von %m, größter relativer Fehler %1</translation>
     </message>
     <message>
         <location filename="../src/app/sketch/fit_progress.cpp" line="54"/>
@@ -2331,29 +2331,24 @@
     </message>
 </context>
 <context>
-    <name>gyre::jobs::SketchFitError</name>
+    <name>gyre::model::SketchFitError</name>
     <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="89"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="89"/>
         <source>Direction stroke %1 cannot be followed: %2</source>
         <translation>Dem Richtungsstrich %1 kann nicht gefolgt werden: %2</translation>
     </message>
     <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="194"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="194"/>
         <source>The fit needs at least two keyframes on the selected object.</source>
         <translation>Die Anpassung braucht mindestens zwei Schlüsselbilder am gewählten Objekt.</translation>
     </message>
     <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="196"/>
-        <source>The fit bends the Hermite spline through the keys: choose Hermite interpolation for this object first.</source>
-        <translation>Die Anpassung verbiegt den Hermite-Spline durch die Schlüsselbilder: Wählen Sie für dieses Objekt zuerst die Hermite-Interpolation.</translation>
-    </message>
-    <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="201"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="201"/>
         <source>Nothing is sketched yet: draw the direction of the angular velocity on the sphere, or its magnitude on the plot.</source>
         <translation>Noch ist nichts skizziert: Zeichnen Sie die Richtung der Winkelgeschwindigkeit auf die Kugel oder ihren Betrag in das Diagramm.</translation>
     </message>
     <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="206"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="206"/>
         <source>The edit window has no length inside the keys&apos; span: widen it, or sketch between the first and the last key.</source>
         <translation>Das Bearbeitungsfenster hat innerhalb des Bereichs der Schlüsselbilder keine Länge: Erweitern Sie es oder skizzieren Sie zwischen dem ersten und dem letzten Schlüsselbild.</translation>
     </message>

@@ -35,13 +35,13 @@
     </message>
     <message>
         <location filename="../ui/fit_panel.ui" line="77"/>
-        <source>&amp;δ (rad²/s)</source>
-        <translation>δ（rad²/s）(&amp;D)</translation>
+        <source>&amp;δ</source>
+        <translation>δ(&amp;D)</translation>
     </message>
     <message>
         <location filename="../ui/fit_panel.ui" line="83"/>
-        <source>The largest error accepted on a fragment of the window; above it the fit inserts variable frames</source>
-        <translation>窗口中每个片段允许的最大误差；超过它时，拟合会插入可变帧</translation>
+        <source>The largest error accepted on a fragment of the window, measured in the target&apos;s own mean squared speed (F_n/S̄, in seconds); above it the fit inserts variable frames</source>
+        <translation>窗口中每个片段允许的最大误差，以目标自身的均方速度衡量（F_n/S̄，单位为秒）；超过它时，拟合会插入可变帧</translation>
     </message>
     <message>
         <location filename="../ui/fit_panel.ui" line="96"/>
@@ -1401,8 +1401,8 @@
     </message>
     <message>
         <location filename="../src/app/sketch/fit_progress.cpp" line="53"/>
-        <source>Fit: round %v of %m, largest error %1 rad²/s</source>
-        <translation>拟合：第 %v 轮，共 %m 轮，最大误差 %1 rad²/s</translation>
+        <source>Fit: round %v of %m, largest relative error %1</source>
+        <translation>拟合：第 %v 轮，共 %m 轮，最大相对误差 %1</translation>
     </message>
     <message>
         <location filename="../src/app/sketch/fit_progress.cpp" line="54"/>
@@ -2327,29 +2327,24 @@
     </message>
 </context>
 <context>
-    <name>gyre::jobs::SketchFitError</name>
+    <name>gyre::model::SketchFitError</name>
     <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="89"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="89"/>
         <source>Direction stroke %1 cannot be followed: %2</source>
         <translation>无法沿方向笔画 %1 拟合：%2</translation>
     </message>
     <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="194"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="194"/>
         <source>The fit needs at least two keyframes on the selected object.</source>
         <translation>拟合需要所选对象至少有两个关键帧。</translation>
     </message>
     <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="196"/>
-        <source>The fit bends the Hermite spline through the keys: choose Hermite interpolation for this object first.</source>
-        <translation>拟合会弯曲经过关键帧的 Hermite 样条：请先为此对象选择 Hermite 插值。</translation>
-    </message>
-    <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="201"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="201"/>
         <source>Nothing is sketched yet: draw the direction of the angular velocity on the sphere, or its magnitude on the plot.</source>
         <translation>尚未绘制草图：请在球面上绘制角速度的方向，或在图中绘制其大小。</translation>
     </message>
     <message>
-        <location filename="../src/jobs/sketch_fit.cpp" line="206"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="206"/>
         <source>The edit window has no length inside the keys&apos; span: widen it, or sketch between the first and the last key.</source>
         <translation>编辑窗口在关键帧范围内的长度为零：请扩大它，或在第一个和最后一个关键帧之间绘制草图。</translation>
     </message>

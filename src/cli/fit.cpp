@@ -1,13 +1,19 @@
-// gyre-cli fit: the rotation through keys bent to match a target angular velocity (src/fit).
+// gyre-cli fit: the rotation through keys bent to match a target angular velocity (src/fit). A sketch,
+// from a project or from files, becomes the fit's problem by the model's rules
+// (model/sketch_fit_problem.h), the same the app's Fit button uses, and the result is applied and
+// evaluated as the app applies and plays it (ApplyFitResultCommand's withFitApplied, TrackMotion).
 
 #include "cli/command_line.h"
+#include "cli/tracked_object.h"
 #include "cli/verbs.h"
-#include "core/position_curve.h"
+#include "core/number_text.h"
 #include "fit/angular_velocity_fit.h"
 #include "io/number_csv.h"
-#include "core/number_text.h"
 #include "io/pose_csv.h"
 #include "model/output_target.h"
+#include "model/project_file.h"
+#include "model/sketch_fit_problem.h"
+#include "model/track_evaluation.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -23,10 +29,8 @@ namespace gyre::cli {
 namespace {
 
 using fit::AngularVelocityTarget;
-using fit::FitKey;
 using fit::FitResult;
 using fit::FitSettings;
-using fit::TimedScalar;
 using fit::TimedVector;
 
 const QString kOmega = QStringLiteral("omega");
@@ -42,6 +46,11 @@ const QString kFragment = QStringLiteral("fragment");
 const QString kFree = QStringLiteral("free");
 const QString kWindow = QStringLiteral("window");
 const QString kReport = QStringLiteral("report");
+const QString kObject = QStringLiteral("object");
+
+// The options that describe the target and the keys; a project holds all of these itself.
+const std::array kKeysFileOptions{kOmega, kDirection, kMagnitude, kPattern, kRepeat, kAlpha,
+                                  kBeta,  kDelta,     kFragment,  kFree,    kWindow};
 
 // How far from unit length a direction may be before it is refused as off the sphere.
 constexpr double kUnitTolerance = 0.01;
@@ -55,10 +64,16 @@ constexpr std::array<std::string_view, 2> kPatternColumns{"x", "y"};
 QList<QCommandLineOption> fitOptions()
 {
     QList<QCommandLineOption> options;
-    for (const QString& name : {kOmega, kDirection, kMagnitude, kPattern, kRepeat, kFps, kAlpha, kBeta, kDelta,
-                                kFragment, kFree, kWindow, kReport})
+    for (const QString& name : kKeysFileOptions)
+        options.append(QCommandLineOption(name, {}, QStringLiteral("value")));
+    for (const QString& name : {kFps, kReport, kObject})
         options.append(QCommandLineOption(name, {}, QStringLiteral("value")));
     return options + eulerOptions();
+}
+
+bool isProject(const QString& path)
+{
+    return path.endsWith(QStringLiteral(".gyre"), Qt::CaseInsensitive);
 }
 
 Eigen::Vector3d vectorAt(const io::NumberTable& table, std::size_t row, std::span<const std::string_view> columns)
@@ -77,12 +92,12 @@ AngularVelocityTarget omegaTarget(const QString& path)
     return AngularVelocityTarget::fromSamples(std::move(samples));
 }
 
-std::vector<TimedScalar> magnitudeCurve(const QString& path)
+std::vector<model::MagnitudePoint> magnitudeCurve(const QString& path)
 {
     const io::NumberTable table = io::readNumberCsv(path, {kMagnitudeColumns, {}, "time"});
     if (table.rowCount() < 2)
         throw table.errorAt(0, "a magnitude curve needs at least two samples");
-    std::vector<TimedScalar> curve;
+    std::vector<model::MagnitudePoint> curve;
     for (std::size_t row = 0; row < table.rowCount(); ++row) {
         const double magnitude = table.value(row, "magnitude");
         if (!(magnitude > 0.0))
@@ -93,26 +108,26 @@ std::vector<TimedScalar> magnitudeCurve(const QString& path)
     return curve;
 }
 
-// The direction curve, timed by its own column or spread over `window` by arc length.
-std::vector<TimedVector> directionCurve(const QString& path, const fit::TimeWindow& window)
+// The direction curve as one stroke, timed by its own column or untimed (then the model spreads it
+// over the edit window by arc length).
+model::DirectionStroke directionStroke(const QString& path)
 {
     const io::NumberTable table = io::readNumberCsv(path, {kDirectionColumns, kTime, "time"});
-    std::vector<Eigen::Vector3d> points;
+    model::DirectionStroke stroke;
     for (std::size_t row = 0; row < table.rowCount(); ++row) {
         const Eigen::Vector3d point = vectorAt(table, row, kDirectionColumns);
         if (std::abs(point.norm() - 1.0) > kUnitTolerance)
             throw table.errorAt(row, "x,y,z has length " + formatNumber(point.norm()) +
                                          ": a direction must lie on the unit sphere");
-        points.push_back(point.normalized());
+        stroke.points.push_back(point.normalized());
     }
     if (!table.hasColumn("time"))
-        return fit::spreadByArcLength(points, window.start, window.end);
+        return stroke;
     if (table.rowCount() < 2)
         throw table.errorAt(0, "a timed direction curve needs at least two points");
-    std::vector<TimedVector> timed;
     for (std::size_t row = 0; row < table.rowCount(); ++row)
-        timed.push_back({table.value(row, "time"), points[row]});
-    return timed;
+        stroke.times.push_back(table.value(row, "time"));
+    return stroke;
 }
 
 std::vector<Eigen::Vector2d> patternCurve(const QString& path)
@@ -141,72 +156,6 @@ std::optional<fit::TimeWindow> windowOption(const VerbCommandLine& commandLine)
     throw commandLine.error("--window: give two times ta,tb with ta < tb");
 }
 
-// The sketch's target: magnitude times direction, the pattern applied, over the window (by default the
-// magnitude curve's span).
-AngularVelocityTarget sketchTarget(const VerbCommandLine& commandLine, const std::optional<fit::TimeWindow>& window)
-{
-    if (!commandLine.isSet(kMagnitude))
-        throw commandLine.error("--direction needs --magnitude");
-    if (commandLine.isSet(kPattern) != commandLine.isSet(kRepeat))
-        throw commandLine.error("--pattern and --repeat go together");
-    const QString magnitudePath = commandLine.requiredValue(kMagnitude);
-    std::vector<TimedScalar> magnitudes = magnitudeCurve(magnitudePath);
-    const fit::TimeWindow span = window.value_or(fit::TimeWindow{magnitudes.front().time, magnitudes.back().time});
-    const QString directionPath = commandLine.requiredValue(kDirection);
-    std::vector<TimedVector> directions = directionCurve(directionPath, span);
-    if (commandLine.isSet(kPattern)) {
-        const int repeat = commandLine.nonNegativeInteger(kRepeat);
-        if (repeat < 1)
-            throw commandLine.error("--repeat: a pattern repeats at least once");
-        const QString patternPath = commandLine.requiredValue(kPattern);
-        const std::vector<Eigen::Vector2d> pattern = patternCurve(patternPath);
-        try {
-            fit::checkPatternPointCount(pattern.size(), repeat);
-        } catch (const std::invalid_argument& problem) {
-            throw commandLine.error("--repeat: " + std::string(problem.what()));
-        }
-        try {
-            directions = fit::applyPattern(directions, pattern, repeat);
-        } catch (const std::invalid_argument& problem) {
-            throw InputError(patternPath, problem.what());
-        }
-    }
-    try {
-        return AngularVelocityTarget::fromSketch(std::move(directions), std::move(magnitudes));
-    } catch (const std::invalid_argument& problem) {
-        throw InputError(directionPath, std::string(problem.what()) + " (with " + magnitudePath.toStdString() + ")");
-    }
-}
-
-AngularVelocityTarget target(const VerbCommandLine& commandLine, const std::optional<fit::TimeWindow>& window)
-{
-    const bool omega = commandLine.isSet(kOmega);
-    const bool sketch = commandLine.isSet(kDirection);
-    if (omega == sketch)
-        throw commandLine.error("give the target as either --omega or --direction with --magnitude");
-    if (omega && (commandLine.isSet(kMagnitude) || commandLine.isSet(kPattern) || commandLine.isSet(kRepeat)))
-        throw commandLine.error("--magnitude, --pattern and --repeat go with --direction, not --omega");
-    return omega ? omegaTarget(commandLine.requiredValue(kOmega)) : sketchTarget(commandLine, window);
-}
-
-FitSettings settings(const VerbCommandLine& commandLine, const std::optional<fit::TimeWindow>& window)
-{
-    FitSettings settings;
-    if (commandLine.isSet(kAlpha)) {
-        settings.alpha = commandLine.number(kAlpha);
-        if (settings.alpha < 0.0)
-            throw commandLine.error("--alpha: must be ≥ 0");
-    }
-    if (commandLine.isSet(kBeta))
-        settings.beta = commandLine.positiveNumber(kBeta);
-    if (commandLine.isSet(kDelta))
-        settings.delta = commandLine.positiveNumber(kDelta);
-    if (commandLine.isSet(kFragment))
-        settings.fragmentSeconds = commandLine.positiveNumber(kFragment);
-    settings.window = window;
-    return settings;
-}
-
 std::set<std::size_t> freedKeys(const VerbCommandLine& commandLine, std::size_t keyCount)
 {
     std::set<std::size_t> freed;
@@ -223,6 +172,101 @@ std::set<std::size_t> freedKeys(const VerbCommandLine& commandLine, std::size_t 
     return freed;
 }
 
+// The keys file as a Hermite track, its keys constrained unless --free names them.
+model::MotionTrack keyedTrack(const VerbCommandLine& commandLine, const io::PoseTable& keys)
+{
+    const std::set<std::size_t> freed = freedKeys(commandLine, keys.rows.size());
+    model::MotionTrack track;
+    track.interpolation = InterpolationMethod::Hermite;
+    for (std::size_t i = 0; i < keys.rows.size(); ++i)
+        track.keys.push_back({keys.rows[i].time, keys.rows[i].pose, !freed.contains(i)});
+    return track;
+}
+
+// α, β and δ from --alpha, --beta and --delta, the fit's defaults (which are the sketch's) otherwise.
+FitSettings weightOptions(const VerbCommandLine& commandLine)
+{
+    FitSettings settings;
+    if (commandLine.isSet(kAlpha)) {
+        settings.alpha = commandLine.number(kAlpha);
+        if (settings.alpha < 0.0)
+            throw commandLine.error("--alpha: must be ≥ 0");
+    }
+    if (commandLine.isSet(kBeta))
+        settings.beta = commandLine.positiveNumber(kBeta);
+    if (commandLine.isSet(kDelta))
+        settings.delta = commandLine.positiveNumber(kDelta);
+    return settings;
+}
+
+// The sketch the files describe, with the weights and δ of the options (the sketch's defaults
+// otherwise), as the app would hold it.
+model::SketchState sketchOf(const VerbCommandLine& commandLine)
+{
+    if (commandLine.isSet(kPattern) != commandLine.isSet(kRepeat))
+        throw commandLine.error("--pattern and --repeat go together");
+    if (commandLine.isSet(kPattern) && !commandLine.isSet(kDirection))
+        throw commandLine.error("--pattern follows the direction curve: give --direction too");
+    model::SketchState sketch;
+    if (commandLine.isSet(kDirection))
+        sketch.directionStrokes.push_back(directionStroke(commandLine.requiredValue(kDirection)));
+    if (commandLine.isSet(kMagnitude))
+        sketch.magnitude = magnitudeCurve(commandLine.requiredValue(kMagnitude));
+    if (commandLine.isSet(kPattern)) {
+        sketch.patternRepeat = commandLine.nonNegativeInteger(kRepeat);
+        if (sketch.patternRepeat < 1)
+            throw commandLine.error("--repeat: a pattern repeats at least once");
+        sketch.pattern = patternCurve(commandLine.requiredValue(kPattern));
+        try {
+            fit::checkPatternPointCount(sketch.pattern.size(), sketch.patternRepeat);
+        } catch (const std::invalid_argument& problem) {
+            throw commandLine.error("--repeat: " + std::string(problem.what()));
+        }
+    }
+    if (const std::optional<fit::TimeWindow> window = windowOption(commandLine))
+        sketch.window = std::pair(window->start, window->end);
+    const FitSettings weights = weightOptions(commandLine);
+    sketch.alpha = weights.alpha;
+    sketch.beta = weights.beta;
+    sketch.delta = weights.delta;
+    return sketch;
+}
+
+// The fit's problem from the track's sketch, as the app makes it; a sketch it refuses is an input error
+// whose message starts with `refusal`.
+model::SketchFitProblem sketchProblem(const VerbCommandLine& commandLine, const model::MotionTrack& track,
+                                      const std::string& refusal)
+{
+    try {
+        return model::sketchFitProblem(track);
+    } catch (const std::invalid_argument& problem) {
+        throw InputError(commandLine.inputPath(), refusal + problem.what());
+    }
+}
+
+// What the fit solves: the keys and the --omega samples as they are, or the sketch made into the
+// fit's problem by the model's rules.
+model::SketchFitProblem fitProblem(const VerbCommandLine& commandLine, model::MotionTrack& track)
+{
+    const bool omega = commandLine.isSet(kOmega);
+    const bool sketch = commandLine.isSet(kDirection) || commandLine.isSet(kMagnitude);
+    if (omega == sketch)
+        throw commandLine.error("give the target as either --omega or a sketch, --direction and/or --magnitude");
+    if (omega && (commandLine.isSet(kPattern) || commandLine.isSet(kRepeat)))
+        throw commandLine.error("--pattern and --repeat go with --direction, not --omega");
+    if (sketch) {
+        track.sketch = sketchOf(commandLine);
+        return sketchProblem(commandLine, track, "cannot fit: ");
+    }
+    const AngularVelocityTarget target = omegaTarget(commandLine.requiredValue(kOmega));
+    FitSettings settings = weightOptions(commandLine);
+    settings.window = windowOption(commandLine).value_or(fit::TimeWindow{target.startTime(), target.endTime()});
+    std::vector<fit::FitKey> keys;
+    for (const model::Keyframe& key : track.keys)
+        keys.push_back({key.time, key.pose.orientation, key.constrained});
+    return {std::move(keys), target, settings, {}};
+}
+
 QJsonObject energyJson(const fit::EnergyTerms& terms, const FitSettings& settings)
 {
     return {{QStringLiteral("tangential"), terms.tangential},
@@ -230,15 +274,18 @@ QJsonObject energyJson(const fit::EnergyTerms& terms, const FitSettings& setting
             {QStringLiteral("total"), settings.alpha * terms.tangential + settings.beta * terms.angular}};
 }
 
-QByteArray reportJson(const FitResult& result, const FitSettings& settings)
+QByteArray reportJson(const FitResult& result, const FitSettings& settings,
+                      const std::optional<model::DrawnErrors>& drawnErrors)
 {
-    const QJsonObject report{
+    QJsonObject report{
         {QStringLiteral("outcome"), QString::fromUtf8(nameOf(fit::kFitOutcomeNames, result.outcome))},
         {QStringLiteral("converged"), result.outcome == fit::FitOutcome::Converged},
         {QStringLiteral("rounds"), result.rounds},
         {QStringLiteral("iterations"), result.iterations},
         {QStringLiteral("variableFrames"), result.variableFrames},
+        {QStringLiteral("largestRelativeError"), result.largestRelativeError},
         {QStringLiteral("largestFragmentError"), result.largestFragmentError},
+        {QStringLiteral("targetMeanSquare"), result.targetMeanSquare},
         {QStringLiteral("delta"), settings.delta},
         {QStringLiteral("largestNormDeviation"), result.largestNormDeviation},
         {QStringLiteral("window"), QJsonArray{result.window.start, result.window.end}},
@@ -246,22 +293,59 @@ QByteArray reportJson(const FitResult& result, const FitSettings& settings)
         {QStringLiteral("energyBefore"), energyJson(result.before, settings)},
         {QStringLiteral("energyAfter"), energyJson(result.after, settings)},
     };
+    if (drawnErrors) {
+        report.insert(QStringLiteral("drawnErrorBefore"), drawnErrors->before);
+        report.insert(QStringLiteral("drawnErrorAfter"), drawnErrors->after);
+    }
     return QJsonDocument(report).toJson();
 }
 
-io::PoseTable fittedFrames(const io::PoseTable& keys, const std::vector<FitKey>& fitKeys, const FitResult& result,
-                       const std::vector<double>& times)
+// The track with the fit applied as the app applies it, baked over `range`.
+io::PoseTable fittedFrames(const VerbCommandLine& commandLine, const model::MotionTrack& fitted, const model::BakeRange& range,
+                       bool hasPosition)
 {
-    std::vector<PositionKey> positions;
-    for (const io::PoseRow& row : keys.rows)
-        positions.push_back({row.time, row.pose.position});
-    const PositionCurve positionCurve(std::move(positions), PositionCurve::Shape::Cubic);
-    const fit::FittedMotion motion(fitKeys, result);
-    io::PoseTable frames{io::RotationColumns::Quaternion, true, keys.hasPosition, {}};
-    frames.rows.reserve(times.size());
-    for (const double time : times)
-        frames.rows.push_back({time, {motion.sample(time).value, positionCurve.at(time)}, 0});
+    std::vector<model::TimedPose> samples;
+    try {
+        samples = model::bakeTrack(fitted, range);
+    } catch (const std::invalid_argument& problem) {
+        throw InputError(commandLine.inputPath(), std::string("the fitted motion cannot be written: ") + problem.what());
+    }
+    io::PoseTable frames{io::RotationColumns::Quaternion, true, hasPosition, {}};
+    frames.rows.reserve(samples.size());
+    for (const model::TimedPose& sample : samples)
+        frames.rows.push_back({sample.time, sample.pose, 0});
     return frames;
+}
+
+// Fits `problem`, made from `track`, and writes the fitted motion over `range` and the report if asked
+// for (with the errors against what was drawn when the track is sketched); both files are written in
+// full before either replaces what was there.
+void fitAndWrite(const VerbCommandLine& commandLine, const model::MotionTrack& track,
+                 const model::SketchFitProblem& problem, const model::BakeRange& range, bool hasPosition)
+{
+    FitResult result;
+    try {
+        result = model::fitSketch(problem);
+    } catch (const std::invalid_argument& refusal) {
+        throw InputError(commandLine.inputPath(), std::string("cannot fit: ") + refusal.what());
+    }
+    const model::FitResult applied = model::appliedFitResult(track, result);
+    const io::PoseTable frames = fittedFrames(commandLine, model::withFitApplied(track, applied), range, hasPosition);
+    if (!commandLine.isSet(kReport)) {
+        io::writePoseCsv(commandLine.outputPath(), frames);
+        return;
+    }
+    const bool sketched = !track.sketch.directionStrokes.empty() || !track.sketch.magnitude.empty();
+    const QByteArray report = reportJson(result, problem.settings,
+                                         sketched ? std::optional(model::drawnErrors(track, applied)) : std::nullopt);
+    OutputTarget framesFile(commandLine.outputPath());
+    OutputTarget reportFile(commandLine.requiredValue(kReport));
+    framesFile.open();
+    reportFile.open();
+    io::writePoseCsv(framesFile, frames);
+    reportFile.write(report);
+    framesFile.commit();
+    reportFile.commit();
 }
 
 // Every file fit reads and writes: no output may be one of the others.
@@ -277,6 +361,22 @@ void refuseSharedFiles(const VerbCommandLine& commandLine)
     commandLine.refuseSharedFiles(inputs, outputs);
 }
 
+// gyre-cli fit PROJECT.gyre --object NAME: the object's sketch fitted as the app's Fit fits it, and
+// its motion written as bake writes it, over the scene's range.
+void fitProjectObject(const VerbCommandLine& commandLine, double fps)
+{
+    for (const QString& option : kKeysFileOptions)
+        if (commandLine.isSet(option))
+            throw commandLine.error("--" + option.toStdString() + " goes with a keys file; a project holds its "
+                                    "object's sketch and fit settings");
+    const QString name = commandLine.requiredValue(kObject);
+    const model::Scene scene = model::readProject(commandLine.inputPath());
+    const model::MotionTrack& track = trackedObjectNamed(scene, name, commandLine.inputPath()).track;
+    const model::BakeRange range = checkedOutputRange({scene.startTime, scene.endTime, fps}, track.keys.size(), commandLine);
+    const model::SketchFitProblem problem = sketchProblem(commandLine, track, "cannot fit '" + name.toStdString() + "': ");
+    fitAndWrite(commandLine, track, problem, range, true);
+}
+
 } // namespace
 
 void runFit(const QStringList& arguments)
@@ -284,49 +384,27 @@ void runFit(const QStringList& arguments)
     const VerbCommandLine commandLine(QStringLiteral("fit"), arguments, fitOptions());
     refuseSharedFiles(commandLine);
     const double fps = commandLine.frameRate(kFps);
-    const std::optional<fit::TimeWindow> window = windowOption(commandLine);
-    const FitSettings fitSettings = settings(commandLine, window);
+    if (isProject(commandLine.inputPath())) {
+        fitProjectObject(commandLine, fps);
+        return;
+    }
+    if (commandLine.isSet(kObject))
+        throw commandLine.error("--object names an object of a project (a .gyre file)");
     const io::PoseTable keys = io::readPoseCsv(commandLine.inputPath(), commandLine.eulerConvention(), io::TimeColumn::Required);
     if (keys.rows.size() < 2)
         throw InputError(commandLine.inputPath(), keys.rows.back().line, "fit needs at least two keys");
-    const std::set<std::size_t> freed = freedKeys(commandLine, keys.rows.size());
-    const AngularVelocityTarget angularVelocity = target(commandLine, window);
+    model::MotionTrack track = keyedTrack(commandLine, keys);
+    model::SketchFitProblem problem = fitProblem(commandLine, track);
+    if (commandLine.isSet(kFragment))
+        problem.settings.fragmentSeconds = commandLine.positiveNumber(kFragment);
     try {
-        fit::checkFragmentCount(window.value_or(fit::TimeWindow{angularVelocity.startTime(), angularVelocity.endTime()}),
-                                fitSettings.fragmentSeconds);
-    } catch (const std::invalid_argument& problem) {
-        throw commandLine.error("--fragment: " + std::string(problem.what()));
+        fit::checkFragmentCount(*problem.settings.window, problem.settings.fragmentSeconds);
+    } catch (const std::invalid_argument& refusal) {
+        throw commandLine.error("--fragment: " + std::string(refusal.what()));
     }
-
-    std::vector<FitKey> fitKeys;
-    std::vector<double> keyTimes;
-    for (std::size_t i = 0; i < keys.rows.size(); ++i) {
-        fitKeys.push_back({keys.rows[i].time, keys.rows[i].pose.orientation, !freed.contains(i)});
-        keyTimes.push_back(keys.rows[i].time);
-    }
-    const model::BakeRange range{keyTimes.front(), keyTimes.back(), fps};
-    const std::vector<double> times = model::bakeTimes(keyTimes, checkedOutputRange(range, keyTimes.size(), commandLine));
-    FitResult result;
-    try {
-        result = fit::fitAngularVelocity(fitKeys, angularVelocity, fitSettings);
-    } catch (const std::invalid_argument& problem) {
-        throw InputError(commandLine.inputPath(), std::string("cannot fit: ") + problem.what());
-    }
-
-    const io::PoseTable frames = fittedFrames(keys, fitKeys, result, times);
-    if (!commandLine.isSet(kReport)) {
-        io::writePoseCsv(commandLine.outputPath(), frames);
-        return;
-    }
-    // Both files are written in full before either replaces what was there.
-    OutputTarget framesFile(commandLine.outputPath());
-    OutputTarget reportFile(commandLine.requiredValue(kReport));
-    framesFile.open();
-    reportFile.open();
-    io::writePoseCsv(framesFile, frames);
-    reportFile.write(reportJson(result, fitSettings));
-    framesFile.commit();
-    reportFile.commit();
+    const std::vector<double> times = model::keyTimes(track);
+    const model::BakeRange range = checkedOutputRange({times.front(), times.back(), fps}, times.size(), commandLine);
+    fitAndWrite(commandLine, track, problem, range, keys.hasPosition);
 }
 
 } // namespace gyre::cli

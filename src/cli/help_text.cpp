@@ -77,9 +77,10 @@ cycle lasts the mean of the others. Writes time (if the input has it),qw,qx,qy,q
 
 The Euler options say how to read Euler input.)";
 
-const char* const kFit = R"(Usage: gyre-cli fit KEYS.csv (--omega W.csv | --direction D.csv --magnitude M.csv [--pattern P.csv --repeat N])
+const char* const kFit = R"(Usage: gyre-cli fit KEYS.csv (--omega W.csv | [--direction D.csv] [--magnitude M.csv] [--pattern P.csv --repeat N])
                -o FRAMES.csv --fps F [--alpha A] [--beta B] [--delta D] [--fragment DT]
                [--free i,j,...] [--window ta,tb] [--report R.json] [--order AXES] [--intrinsic|--extrinsic]
+       gyre-cli fit PROJECT.gyre --object NAME -o FRAMES.csv --fps F [--report R.json]
 
 Fits the rotation through the keys (a time column is required, at least two keys) to a target
 angular velocity, world frame, rad/s (the sketch-editing method, docs/fit.md). Keys keep their
@@ -88,25 +89,35 @@ when the keys have positions) at t0 + k/F up to the last key, plus a sample at e
 
 The target, either
   --omega W.csv       samples time,wx,wy,wz, linear between them
-or the artist's sketch
+or the artist's sketch, one or both of
   --direction D.csv   the direction of the angular velocity: unit vectors x,y,z on the sphere, with
                       an optional time column; without times spread over the window by arc length
   --magnitude M.csv   its size: time,magnitude (rad/s, > 0), linear between samples
+and, along the direction,
   --pattern P.csv     a small x,y curve (any unit; x along the direction curve, y across) repeated
   --repeat N          N times along the direction curve, each repetition 1/N of its length;
                       N times the pattern's points at most 1,048,576
+A sketch is made into the target as the app makes it: where no direction is drawn the motion keeps
+its own, where no speed is drawn its own speed; the window is by default the span the timed
+direction and the speed cover (all the keys if the direction is untimed).
+
+With a project (PROJECT.gyre), the object NAME's own sketch, keys and fit settings are fitted as the
+app's Fit fits them, and its motion is written as bake writes it, over the scene's time range.
 
   --fps F        output samples per second, above 0 and at most 1000; changes only the output
   --alpha A      weight of smoothness, the tangential acceleration W_T (default 0.002, >= 0)
   --beta B       weight of the angular-velocity deviation W_A (default 1, > 0)
-  --delta D      the largest fragment error accepted, rad^2/s (default 0.1, > 0)
+  --delta D      the largest fragment error accepted, F_n over the target's mean squared speed,
+                 in seconds (default 0.1, the paper's value, > 0; docs/fit.md)
   --fragment DT  length of the fragments the error is measured on, seconds (default 0.25);
                  the window may hold at most 100,000 of them
   --free LIST    0-based indices of keys the fit may move, e.g. 1,2,5
   --window ta,tb refit only this span of the keys (default: the target's span); outside it the
                  motion is unchanged, and it stays smooth across the window's ends
+  --object NAME  the object of a project to fit; the name must single out one object with keys
   --report FILE  a JSON report: outcome, rounds, iterations, variable frames, largest fragment
-                 error, solve time, energy terms before and after
+                 error (relative, and in rad^2/s), solve time, energy terms before and after, and
+                 for a sketch the error against what was drawn before and after
 
 The Euler options say how to read Euler key columns.)";
 const char* const kInfo = R"(Usage: gyre-cli info PROJECT.gyre|SCENE

@@ -119,6 +119,23 @@ void checkFragmentCount(const TimeWindow& window, double fragmentSeconds)
                                     " fragments; the budget is " + formatNumber(kMaxFragments));
 }
 
+double relativeFragmentError(double fragmentError, double targetMeanSquare)
+{
+    return fragmentError / std::max(targetMeanSquare, kSlowestTargetSpeed * kSlowestTargetSpeed);
+}
+
+double targetMeanSquare(const AngularVelocityTarget& target, const TimeWindow& window, double fragmentSeconds)
+{
+    const QuadratureRule quadrature = gaussLegendre(kMeasureNodes);
+    double sum = 0.0;
+    for (double start = window.start; start < window.end; start += fragmentSeconds) {
+        const double length = std::min(start + fragmentSeconds, window.end) - start;
+        for (std::size_t j = 0; j < quadrature.nodes.size(); ++j)
+            sum += quadrature.weights[j] * length * target.at(start + quadrature.nodes[j] * length).squaredNorm();
+    }
+    return sum / (window.end - window.start);
+}
+
 namespace {
 
 // The window to refit, checked against the keys and the target.
@@ -150,11 +167,12 @@ class ProgressCallback;
 class FitRun {
 public:
     FitRun(const std::vector<FitKey>& keys, const AngularVelocityTarget& target, const FitSettings& settings,
-           const FitHooks& hooks)
+           const FitHooks& hooks, const InitialMotion& initialMotion)
         : keys_(keys)
         , target_(target)
         , settings_(settings)
         , hooks_(hooks)
+        , initialMotion_(initialMotion)
         , window_(checkedWindow(keys, target, settings))
         , base_(HermiteQuaternionSpline::throughKeys(orientationKeys(keys)))
         , penalty_(kInitialPenalty * settings.beta)
@@ -166,6 +184,8 @@ public:
 private:
     friend class ProgressCallback;
 
+    OrientationSample initialAt(double time) const { return initialMotion_ ? initialMotion_(time) : base_.sample(time); }
+    ControlPoint keyPoint(std::size_t key) const;
     void placeControlPoints();
     bool solveUnitNorm();
     bool solve();
@@ -176,14 +196,23 @@ private:
     template <class Integrand>
     double integrate(double from, double to, const Integrand& integrand) const;
     EnergyTerms energyTerms(const HermiteQuaternionSpline& curve) const;
-    std::vector<double> fragmentErrors(const HermiteQuaternionSpline& curve) const;
+    struct FragmentErrors {
+        std::vector<double> relative;  // F_n/(ΔTₙ·S̄) of each fragment
+        double largest = 0.0;          // the largest F_n
+    };
+    FragmentErrors fragmentErrors(const HermiteQuaternionSpline& curve) const;
     int insertVariableFrames(const HermiteQuaternionSpline& curve, const std::vector<double>& errors);
     FitResult result(FitOutcome outcome, const HermiteQuaternionSpline& curve) const;
+    std::optional<double> largestRelativeError() const
+    {
+        return errors_ ? std::optional(*std::ranges::max_element(errors_->relative)) : std::nullopt;
+    }
 
     const std::vector<FitKey>& keys_;
     const AngularVelocityTarget& target_;
     const FitSettings& settings_;
     const FitHooks& hooks_;
+    const InitialMotion& initialMotion_;
     TimeWindow window_;
     HermiteQuaternionSpline base_;
     std::vector<ControlPoint> points_;
@@ -192,7 +221,8 @@ private:
     int round_ = 0;
     int iterations_ = 0;
     int variableFrames_ = 0;
-    std::optional<double> largestFragmentError_;
+    double targetMeanSquare_ = 0.0;
+    std::optional<FragmentErrors> errors_;  // of the last finished round
     EnergyTerms before_;
 };
 
@@ -209,7 +239,7 @@ public:
             return ceres::SOLVER_ABORT;
         if (run_.hooks_.onProgress)
             run_.hooks_.onProgress({run_.round_, run_.iterations_ + summary.iteration, 2.0 * summary.cost,
-                                    run_.largestFragmentError_});
+                                    run_.largestRelativeError()});
         return ceres::SOLVER_CONTINUE;
     }
 
@@ -217,14 +247,30 @@ private:
     const FitRun& run_;
 };
 
+// Key `key` as a control point: its rotation, and the initial motion's derivative there (the spline's
+// own control point when the initial motion is the spline through the keys).
+ControlPoint FitRun::keyPoint(std::size_t key) const
+{
+    const FitKey& fitKey = keys_[key];
+    const Role role = fitKey.constrained ? Role::ConstrainedKey : Role::Free;
+    if (!initialMotion_) {
+        const HermiteControlPoint& initial = base_.controlPoints()[key];
+        return {fitKey.time, role, key, wxyz(initial.value), wxyz(initial.derivative)};
+    }
+    const OrientationSample initial = initialAt(fitKey.time);
+    const Eigen::Quaterniond value = fitKey.rotation.normalized();
+    // q and −q are one rotation; the derivative goes with the sign of the value it belongs to.
+    const double sign = value.coeffs().dot(initial.value.coeffs()) < 0.0 ? -1.0 : 1.0;
+    return {fitKey.time, role, key, wxyz(value), wxyz(Eigen::Quaterniond(sign * initial.derivative.coeffs()))};
+}
+
 void FitRun::placeControlPoints()
 {
-    const std::vector<HermiteControlPoint>& initial = base_.controlPoints();
     // A held end takes the outside motion's normalised value and derivative: unit, so that the norm
     // condition can hold there, and tangent, so that the fitted curve, once normalised, leaves the end
     // with the outside motion's value and derivative.
     const auto held = [this](double time) {
-        const OrientationSample outside = base_.sample(time);
+        const OrientationSample outside = initialAt(time);
         return ControlPoint{time, Role::Held, std::nullopt, wxyz(outside.value), wxyz(outside.derivative)};
     };
     // A window end strictly inside the animation holds the outside curve there; at the animation's
@@ -238,11 +284,21 @@ void FitRun::placeControlPoints()
                             (isEnd && time >= window_.start && time <= window_.end);
         if (!inside)
             continue;
-        points_.push_back({time, keys_[i].constrained ? Role::ConstrainedKey : Role::Free, i,
-                           wxyz(initial[i].value), wxyz(initial[i].derivative)});
+        points_.push_back(keyPoint(i));
     }
     if (window_.end < keys_.back().time)
         points_.push_back(held(window_.end));
+    // Each point on the hemisphere of the one before, so that the cubic in R⁴ between them takes the
+    // short way (the spline through the keys is aligned already).
+    for (std::size_t k = 1; k < points_.size(); ++k) {
+        ControlPoint& point = points_[k];
+        if (quaternion(point.value).coeffs().dot(quaternion(points_[k - 1].value).coeffs()) >= 0.0)
+            continue;
+        for (std::size_t c = 0; c < 4; ++c) {
+            point.value[c] = -point.value[c];
+            point.derivative[c] = -point.derivative[c];
+        }
+    }
 }
 
 const QuadratureRule& FitRun::rule(int nodes) const
@@ -372,15 +428,18 @@ EnergyTerms FitRun::energyTerms(const HermiteQuaternionSpline& curve) const
     return terms;
 }
 
-// F_n of the paper's Eq. 2 on fragments of length ΔT from the window's start; the last may be shorter.
-std::vector<double> FitRun::fragmentErrors(const HermiteQuaternionSpline& curve) const
+// F_n of the paper's Eq. 2 on fragments of length ΔT from the window's start (the last may be
+// shorter), each relative to the target's size.
+FitRun::FragmentErrors FitRun::fragmentErrors(const HermiteQuaternionSpline& curve) const
 {
-    std::vector<double> errors;
+    FragmentErrors errors;
     for (double start = window_.start; start < window_.end; start += settings_.fragmentSeconds) {
         const double end = std::min(start + settings_.fragmentSeconds, window_.end);
-        errors.push_back(integrate(start, end, [&](double t) {
+        const double error = integrate(start, end, [&](double t) {
             return (curve.sample(t).angularVelocity - target_.at(t)).squaredNorm();
-        }));
+        });
+        errors.relative.push_back(relativeFragmentError(error, targetMeanSquare_));
+        errors.largest = std::max(errors.largest, error);
     }
     return errors;
 }
@@ -433,7 +492,9 @@ FitResult FitRun::result(FitOutcome outcome, const HermiteQuaternionSpline& curv
         FitKey& key = result.keys[*point.key];
         key.rotation = alignedWith(quaternion(point.value).normalized(), key.rotation);
     }
-    result.largestFragmentError = largestFragmentError_.value_or(0.0);
+    result.largestRelativeError = largestRelativeError().value_or(0.0);
+    result.largestFragmentError = errors_ ? errors_->largest : 0.0;
+    result.targetMeanSquare = targetMeanSquare_;
     result.largestNormDeviation = largestNormDeviation(curve);
     result.after = energyTerms(curve);
     return result;
@@ -442,19 +503,19 @@ FitResult FitRun::result(FitOutcome outcome, const HermiteQuaternionSpline& curv
 FitResult FitRun::run()
 {
     placeControlPoints();
+    targetMeanSquare_ = targetMeanSquare(target_, window_, settings_.fragmentSeconds);
     before_ = energyTerms(spline());
     while (true) {
         ++round_;
         if (!solveUnitNorm())
             return result(FitOutcome::Cancelled, spline());
         const HermiteQuaternionSpline curve = spline();
-        const std::vector<double> errors = fragmentErrors(curve);
-        largestFragmentError_ = *std::ranges::max_element(errors);
-        if (*largestFragmentError_ <= settings_.delta)
+        errors_ = fragmentErrors(curve);
+        if (*largestRelativeError() <= settings_.delta)
             return result(FitOutcome::Converged, curve);
         if (round_ == settings_.maxRounds)
             return result(FitOutcome::RoundLimit, curve);
-        if (insertVariableFrames(curve, errors) == 0)
+        if (insertVariableFrames(curve, errors_->relative) == 0)
             return result(variableFrames_ == settings_.maxVariableFrames ? FitOutcome::VariableFrameLimit
                                                                          : FitOutcome::NoPlaceForFrame,
                           curve);
@@ -464,29 +525,15 @@ FitResult FitRun::run()
 } // namespace
 
 FitResult fitAngularVelocity(const std::vector<FitKey>& keys, const AngularVelocityTarget& target,
-                             const FitSettings& settings, const FitHooks& hooks)
+                             const FitSettings& settings, const FitHooks& hooks, const InitialMotion& initialMotion)
 {
     checkKeys(keys);
     checkSettings(settings);
     const auto started = std::chrono::steady_clock::now();
-    FitRun run(keys, target, settings, hooks);
+    FitRun run(keys, target, settings, hooks, initialMotion);
     FitResult result = run.run();
     result.solveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return result;
-}
-
-FittedMotion::FittedMotion(const std::vector<FitKey>& originalKeys, const FitResult& result)
-    : outside_(HermiteQuaternionSpline::throughKeys(orientationKeys(originalKeys)))
-{
-    if (!result.controlPoints.empty())
-        inside_.emplace(result.controlPoints);
-}
-
-OrientationSample FittedMotion::sample(double time) const
-{
-    if (inside_ && time >= inside_->startTime() && time <= inside_->endTime())
-        return inside_->sample(time);
-    return outside_.sample(time);
 }
 
 } // namespace gyre::fit

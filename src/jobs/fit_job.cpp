@@ -1,7 +1,6 @@
 #include "jobs/fit_job.h"
 
 #include "fit/angular_velocity_fit.h"
-#include "jobs/sketch_fit.h"
 
 #include <QElapsedTimer>
 
@@ -12,14 +11,15 @@ namespace gyre::jobs {
 
 namespace {
 
-FitSummary summaryOf(const fit::FitResult& result, double seconds)
+FitSummary summaryOf(const fit::FitResult& result, const model::DrawnErrors& drawnErrors, double seconds)
 {
     const std::string_view outcome = nameOf(fit::kFitOutcomeNames, result.outcome);
     return {QString::fromUtf8(outcome.data(), static_cast<qsizetype>(outcome.size())),
             result.outcome == fit::FitOutcome::Converged,
             result.rounds,
             result.iterations,
-            result.largestFragmentError,
+            result.largestRelativeError,
+            drawnErrors,
             seconds};
 }
 
@@ -45,7 +45,7 @@ void FitJob::request(model::ObjectId object, model::MotionTrack track)
     job_.post([input = std::move(track)](const JobRun<FitJobProgress>& run) {
         QElapsedTimer clock;
         clock.start();
-        const SketchFitProblem problem = sketchFitProblem(input);
+        const model::SketchFitProblem problem = model::sketchFitProblem(input);
         const int maxRounds = problem.settings.maxRounds;
         int reportedRound = 0;
         QElapsedTimer sinceReport;
@@ -57,13 +57,15 @@ void FitJob::request(model::ObjectId object, model::MotionTrack track)
                 return;
             reportedRound = progress.round;
             sinceReport.start();
-            run.progress({progress.round, maxRounds, progress.iteration, progress.largestFragmentError});
+            run.progress({progress.round, maxRounds, progress.iteration, progress.largestRelativeError});
         };
-        const fit::FitResult result = fitAngularVelocity(problem.keys, problem.target, problem.settings, hooks);
+        const fit::FitResult result = model::fitSketch(problem, hooks);
         // A fit stopped early answers nothing: its request is cancelled or superseded.
         run.throwIfStopped();
-        const FitSummary summary = summaryOf(result, static_cast<double>(clock.nsecsElapsed()) * 1e-9);
-        return Answer{input, appliedFitResult(input, result), summary};
+        model::FitResult applied = model::appliedFitResult(input, result);
+        const model::DrawnErrors drawnErrors = model::drawnErrors(input, applied);
+        const FitSummary summary = summaryOf(result, drawnErrors, static_cast<double>(clock.nsecsElapsed()) * 1e-9);
+        return Answer{input, std::move(applied), summary};
     });
 }
 

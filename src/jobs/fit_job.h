@@ -1,7 +1,7 @@
 #pragma once
 // The angular-velocity fit of one object's track off the UI thread (the sketch-editing paper's "Fit",
 // docs/fit.md). A request takes a copy of the track; the worker builds the fit from its sketch
-// (sketchFitProblem) and runs it, and the result comes back to the UI thread as what
+// (model::sketchFitProblem) and runs it, and the result comes back to the UI thread as what
 // ApplyFitResultCommand applies. The newest request wins (a newest-wins Job): a request made while a
 // fit runs makes the running fit stop at its next solver iteration, and only the newest request is
 // answered. A fit reports its progress while it runs, at most every
@@ -13,6 +13,7 @@
 #include "jobs/job.h"
 #include "model/commands/apply_fit_result_command.h"
 #include "model/scene.h"
+#include "model/sketch_fit_problem.h"
 
 #include <QObject>
 #include <QString>
@@ -26,7 +27,7 @@ struct FitJobProgress {
     int round = 0;      // 1-based
     int maxRounds = 0;  // the fit stops after this many rounds
     int iteration = 0;  // solver iterations so far, over all rounds
-    std::optional<double> largestFragmentError;  // rad²/s, after the last finished round
+    std::optional<double> largestRelativeError;  // F_n/S̄ to compare with δ, after the last finished round
 };
 
 // How a fit ended.
@@ -35,7 +36,8 @@ struct FitSummary {
     bool converged = false;
     int rounds = 0;
     int iterations = 0;
-    double largestFragmentError = 0.0;  // rad²/s
+    double largestRelativeError = 0.0;  // F_n/S̄, what converged holds within δ
+    model::DrawnErrors drawnErrors;     // against what was drawn, rad²/s, before and after the fit
     double seconds = 0.0;               // on the worker, from the request's start to its result
 };
 

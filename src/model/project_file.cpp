@@ -3,6 +3,7 @@
 #include "model/input_error.h"
 #include "model/json_field.h"
 #include "model/output_target.h"
+#include "model/sketch_fit_problem.h"
 #include "model/value_checks.h"
 
 #include <QFile>
@@ -113,7 +114,7 @@ QJsonObject sketchJson(const SketchState& sketch)
         {"window", windowJson(sketch.window)},
         {"alpha", sketch.alpha},
         {"beta", sketch.beta},
-        {"delta", sketch.delta},
+        {"relativeDelta", sketch.delta},
         {"fittedCurve", arrayJson(sketch.fittedCurve,
                                   [](const HermiteControlPoint& point) {
                                       return QJsonObject{{"time", point.time},
@@ -314,7 +315,8 @@ SketchState sketchIn(const JsonField& field)
     sketch.window = windowIn(field.member("window"));
     sketch.alpha = numberIn(field.member("alpha"), nonNegativeNumber);
     sketch.beta = numberIn(field.member("beta"), nonNegativeNumber);
-    sketch.delta = numberIn(field.member("delta"), positiveNumber);
+    // Files written before δ became relative hold `delta` in rad²/s; sceneObjectIn converts it.
+    sketch.delta = numberIn(field.member(field.has("relativeDelta") ? "relativeDelta" : "delta"), positiveNumber);
     sketch.fittedCurve = timedItems<HermiteControlPoint>(field.member("fittedCurve"), "time", controlPointIn,
                                                          [](const HermiteControlPoint& point) { return point.time; });
     // Files written before Gyre kept the keys a fit moved have no keysBeforeFit: nothing to restore.
@@ -353,6 +355,9 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
     // Version 1 has no sketch-editing state: it reads as the empty sketch.
     if (version >= 2)
         object.track.sketch = sketchIn(field.member("sketch"));
+    // An absolute δ becomes the relative δ that keeps the fit's threshold for this track where it was.
+    if (version >= 2 && !field.member("sketch").has("relativeDelta"))
+        object.track.sketch.delta = relativeDelta(object.track, object.track.sketch.delta);
     return object;
 }
 

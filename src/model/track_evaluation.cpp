@@ -119,11 +119,19 @@ std::optional<HermiteQuaternionSpline> fittedSpline(const SketchState& sketch)
     return HermiteQuaternionSpline(sketch.fittedCurve);
 }
 
+std::optional<std::pair<double, double>> cycleOf(const MotionTrack& track)
+{
+    if (track.interpolation != InterpolationMethod::Screw || !track.subdivision.cyclic || track.keys.size() < 2)
+        return std::nullopt;
+    return std::pair(track.keys.front().time, KeyTimeMap(keyTimes(track), true).period());
+}
+
 } // namespace
 
 TrackMotion::TrackMotion(const MotionTrack& track, const EulerConvention& eulerConvention)
     : keyed_(keyedMotion(track, eulerConvention))
     , fitted_(fittedSpline(track.sketch))
+    , cycle_(cycleOf(track))
 {
 }
 
@@ -134,8 +142,17 @@ TrackMotion& TrackMotion::operator=(TrackMotion&&) noexcept = default;
 Pose TrackMotion::at(double time) const
 {
     Pose pose = keyed_ ? keyed_->at(time) : Pose{};
-    if (fitted_ && time >= fitted_->startTime() && time <= fitted_->endTime())
-        pose.orientation = fitted_->sample(time).value;
+    if (!fitted_)
+        return pose;
+    double played = time;
+    if (cycle_ && (time < cycle_->first || time >= cycle_->first + cycle_->second)) {
+        const auto [start, period] = *cycle_;
+        played = start + std::fmod(time - start, period);
+        if (played < start)
+            played += period;
+    }
+    if (played >= fitted_->startTime() && played <= fitted_->endTime())
+        pose.orientation = fitted_->sample(played).value;
     return pose;
 }
 

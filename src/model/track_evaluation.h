@@ -12,7 +12,7 @@
 //   n keys.
 // - A fit (track.sketch.fittedCurve non-empty) gives the orientation inside the span of its control
 //   points, by the normalised HermiteQuaternionSpline through them; outside, and for positions, the
-//   interpolation above.
+//   interpolation above. On a cyclic screw track the fit repeats with the cycle, as the motion does.
 // A track without keys stays at the identity pose.
 
 #include "core/euler_angles.h"
@@ -50,6 +50,8 @@ public:
 private:
     std::unique_ptr<const detail::KeyedMotion> keyed_; // null for a track without keys
     std::optional<HermiteQuaternionSpline> fitted_;
+    // A cyclic screw track's first key time t₀ and period T: time t plays as t₀ + ((t − t₀) mod T).
+    std::optional<std::pair<double, double>> cycle_;
 };
 
 // The step of TrackMotion::angularVelocity's central difference, seconds: small against any key

@@ -1,7 +1,7 @@
 #include "samples/sample_scenes.h"
 
 #include "fit/angular_velocity_fit.h"
-#include "jobs/sketch_fit.h"
+#include "model/sketch_fit_problem.h"
 #include "model/commands/apply_fit_result_command.h"
 
 #include <Eigen/Geometry>
@@ -382,8 +382,8 @@ SampleScene letterM()
                        [](double u) { return 0.6 * std::sin(2.0 * std::numbers::pi * u) * std::sin(std::numbers::pi * u); }));
     track.sketch.magnitude = scaledMagnitude(tumble, kStart, kEnd, [](double u) { return 1.0 + 0.6 * bump(u); });
     track.sketch.window = std::pair(kStart, kEnd);
-    // The bent stroke leaves a fragment error of 0.114 rad²/s where the bend turns fastest.
-    track.sketch.delta = 0.15;
+    // The bent stroke leaves a fragment error of 0.114 rad²/s where the bend turns fastest, 0.046 s of
+    // the target's mean squared speed: within the paper's δ = 0.1.
     return oneObjectScene(QStringLiteral("letter-m.gyre"), QStringLiteral("Letter M"), letterMMesh(), std::move(track),
                           kSchedule.frames);
 }
@@ -404,7 +404,6 @@ SampleScene hat()
     track.sketch.directionStrokes.push_back(
         bentAxisStroke(flip, kStart, kEnd, Eigen::Vector3d::UnitY(), [](double u) { return 0.5 * bump(u); }));
     track.sketch.window = std::pair(kStart, kEnd);
-    track.sketch.delta = 0.1;
     return oneObjectScene(QStringLiteral("hat.gyre"), QStringLiteral("Hat"), hatMesh(), std::move(track),
                           kSchedule.frames);
 }
@@ -428,7 +427,6 @@ SampleScene fallingLeaf()
                        [](double u) { return 0.5 * std::sin(4.0 * std::numbers::pi * u); }));
     track.sketch.magnitude = scaledMagnitude(tumble, kStart, kEnd, [](double u) { return 1.0 + bump(u); });
     track.sketch.window = std::pair(kStart, kEnd);
-    track.sketch.delta = 0.1;
     return oneObjectScene(QStringLiteral("falling-leaf.gyre"), QStringLiteral("Leaf"), leafMesh(), std::move(track),
                           kSchedule.frames);
 }
@@ -448,8 +446,7 @@ SampleScene pen()
     track.sketch.magnitude = scaledMagnitude(spun, kStart, kEnd, [](double u) { return 1.0 + 0.5 * bump(u); });
     track.sketch.window = std::pair(kStart, kEnd);
     // Fragment errors grow with |ω|², and the pen whirls at up to 22 rad/s: the fit ends at 0.7 rad²/s,
-    // an angular-velocity error of a few per cent.
-    track.sketch.delta = 1.0;
+    // 0.014 s of the target's mean squared speed, an angular-velocity error of a few per cent.
     return oneObjectScene(QStringLiteral("pen.gyre"), QStringLiteral("Pen"), penMesh(), std::move(track),
                           kSchedule.frames);
 }
@@ -505,11 +502,11 @@ SampleScene critterCycle()
 SampleScene withFitApplied(SampleScene sample)
 {
     model::MotionTrack& track = sample.scene.objects.front().track;
-    const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
-    const fit::FitResult result = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
+    const model::SketchFitProblem problem = model::sketchFitProblem(track);
+    const fit::FitResult result = model::fitSketch(problem);
     if (result.outcome != fit::FitOutcome::Converged)
         throw std::runtime_error(sample.fileName.toStdString() + ": the sketch's fit does not converge");
-    model::FitResult applied = jobs::appliedFitResult(track, result);
+    model::FitResult applied = model::appliedFitResult(track, result);
     track = model::withFitApplied(std::move(track), std::move(applied));
     return sample;
 }

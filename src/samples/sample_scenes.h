@@ -42,7 +42,7 @@ SampleScene critterCycle();
 std::vector<SampleScene> sketchedSamples();
 
 // The sample with its sketch's fit applied as the Fit button applies it (ApplyFitResultCommand with
-// jobs::appliedFitResult): the bundled file opens on the paper's edited motion, its keyed motion
+// model::appliedFitResult): the bundled file opens on the paper's edited motion, its keyed motion
 // drawn as "before fit", and Remove fit returns to it. Throws std::runtime_error naming the sample if
 // the fit does not converge.
 SampleScene withFitApplied(SampleScene sample);

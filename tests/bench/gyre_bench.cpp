@@ -9,7 +9,7 @@
 #include "core/screw.h"
 #include "core/subdivision.h"
 #include "fit/angular_velocity_fit.h"
-#include "jobs/sketch_fit.h"
+#include "model/sketch_fit_problem.h"
 #include "samples/sample_scenes.h"
 #include "fit_test_support.h"
 
@@ -211,8 +211,8 @@ void BM_FitSpinningTopSample(benchmark::State& state)
     const gyre::model::MotionTrack track = gyre::samples::spinningTop().scene.objects.front().track;
     gyre::fit::FitResult result;
     for (auto _ : state) {
-        const gyre::jobs::SketchFitProblem problem = gyre::jobs::sketchFitProblem(track);
-        result = gyre::fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
+        const gyre::model::SketchFitProblem problem = gyre::model::sketchFitProblem(track);
+        result = gyre::model::fitSketch(problem);
         benchmark::DoNotOptimize(result.controlPoints.data());
     }
     state.counters["rounds"] = result.rounds;

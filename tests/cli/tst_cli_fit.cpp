@@ -108,7 +108,10 @@ void TstCliFit::omegaTargetFollowsTheTop()
     QVERIFY(report["rounds"].toInt() >= 1);
     QVERIFY(report["iterations"].toInt() >= 1);
     QVERIFY(report["variableFrames"].toInt() >= 0);
-    QVERIFY(report["largestFragmentError"].toDouble() <= 0.1);
+    QVERIFY(report["largestRelativeError"].toDouble() <= 0.1);
+    QCOMPARE(report["largestRelativeError"].toDouble(),
+             report["largestFragmentError"].toDouble() / report["targetMeanSquare"].toDouble());
+    QVERIFY(!report.contains("drawnErrorBefore"));  // ω samples are the target; nothing was drawn
     QVERIFY(report["solveSeconds"].toDouble() > 0.0);
     QVERIFY(report["largestNormDeviation"].toDouble() < 1e-3);
     const QJsonObject before = report["energyBefore"].toObject();
@@ -250,14 +253,17 @@ void TstCliFit::badInput_data()
     QTest::newRow("free out of range") << omega + QStringList{"--free", "1,99"} << QByteArray() << 2
                                        << "fit: --free: '99' is not a key index from 0 to 14";
     QTest::newRow("two targets") << omega + QStringList{"--direction", "DIRECTION"} << QByteArray() << 2
-                                 << "fit: give the target as either --omega or --direction with --magnitude";
+                                 << "fit: give the target as either --omega or a sketch, --direction and/or --magnitude";
     QTest::newRow("no target") << fit << QByteArray() << 2
-                               << "fit: give the target as either --omega or --direction with --magnitude";
+                               << "fit: give the target as either --omega or a sketch, --direction and/or --magnitude";
     QTest::newRow("pattern without repeat") << sketch + QStringList{"--pattern", "PATTERN"}
                                             << QByteArray("x,y,z\n0,0,1\n") << 2
                                             << "fit: --pattern and --repeat go together";
-    QTest::newRow("flat pattern") << sketch + QStringList{"--pattern", "PATTERN", "--repeat", "2"}
-                                  << QByteArray("x,y,z\n0,0,1\n") << 1 << "a pattern needs a direction curve of some length";
+    QTest::newRow("pattern without direction")
+        << fit + QStringList{"--magnitude", "MAGNITUDE", "--pattern", "PATTERN", "--repeat", "2"} << QByteArray() << 2
+        << "fit: --pattern follows the direction curve: give --direction too";
+    QTest::newRow("object of a keys file") << omega + QStringList{"--object", "top"} << QByteArray() << 2
+                                           << "fit: --object names an object of a project (a .gyre file)";
     QTest::newRow("negative alpha") << omega + QStringList{"--alpha", "-1"} << QByteArray() << 2 << "fit: --alpha: must be ≥ 0";
     QTest::newRow("zero delta") << omega + QStringList{"--delta", "0"} << QByteArray() << 2
                                 << "fit: --delta: '0' is not positive";

@@ -15,6 +15,7 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace gyre::test {
@@ -65,6 +66,37 @@ struct NutatingTop {
         }
         return fit::AngularVelocityTarget::fromSamples(std::move(samples));
     }
+};
+
+// The motion after a fit whose initial motion is the spline through the keys: the fitted spline inside
+// the window, the spline through the original keys outside it.
+class FittedMotion {
+public:
+    FittedMotion(const std::vector<fit::FitKey>& originalKeys, const fit::FitResult& result)
+        : outside_(HermiteQuaternionSpline::throughKeys(orientationKeys(originalKeys)))
+    {
+        if (!result.controlPoints.empty())
+            inside_.emplace(result.controlPoints);
+    }
+
+    OrientationSample sample(double time) const
+    {
+        if (inside_ && time >= inside_->startTime() && time <= inside_->endTime())
+            return inside_->sample(time);
+        return outside_.sample(time);
+    }
+
+private:
+    static std::vector<OrientationKey> orientationKeys(const std::vector<fit::FitKey>& keys)
+    {
+        std::vector<OrientationKey> orientations;
+        for (const fit::FitKey& key : keys)
+            orientations.push_back({key.time, key.rotation});
+        return orientations;
+    }
+
+    HermiteQuaternionSpline outside_;
+    std::optional<HermiteQuaternionSpline> inside_;
 };
 
 } // namespace gyre::test

@@ -14,7 +14,7 @@
 #include "app/sketch/sphere_view.h"
 #include "fit/angular_velocity_target.h"
 #include "gui_test_support.h"
-#include "jobs/sketch_fit.h"
+#include "model/sketch_fit_problem.h"
 #include "model/commands/add_keyframe_command.h"
 #include "model/commands/add_stroke_command.h"
 #include "model/commands/set_keyframe_position_command.h"
@@ -419,10 +419,10 @@ private slots:
         document_->loadAsUntitled(QStringLiteral(":/samples/spinning-top.gyre"));
         QVERIFY(selection_->selectedObject() != nullptr);
         const model::ObjectId top = selection_->object();
-        const jobs::SketchFitProblem problem = jobs::sketchFitProblem(document_->object(top)->track);
-        const fit::FitResult result = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
+        const model::SketchFitProblem problem = model::sketchFitProblem(document_->object(top)->track);
+        const fit::FitResult result = model::fitSketch(problem);
         document_->push(
-            new model::ApplyFitResultCommand(*document_, top, jobs::appliedFitResult(document_->object(top)->track, result)));
+            new model::ApplyFitResultCommand(*document_, top, model::appliedFitResult(document_->object(top)->track, result)));
         document_->setCurrentTime(6.0);
         QVERIFY(updated.wait(5000));
         while (updated.wait(300)) {

@@ -3,9 +3,9 @@
 // the bridge's message.
 
 #include "fit/angular_velocity_fit.h"
-#include "jobs/fit_input.h"
+#include "model/fit_input.h"
 #include "jobs/fit_job.h"
-#include "jobs/sketch_fit.h"
+#include "model/sketch_fit_problem.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -125,18 +125,22 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(answers.count() == 1, kFitTimeoutMilliseconds);
         QVERIFY(!job.isRunning());
         QCOMPARE(answers.results.size(), std::size_t{1});
-        QVERIFY(jobs::sameFitInput(answers.finishedInputs.front(), track));
+        QVERIFY(model::sameFitInput(answers.finishedInputs.front(), track));
 
-        const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
-        const fit::FitResult direct = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
+        const model::SketchFitProblem problem = model::sketchFitProblem(track);
+        const fit::FitResult direct = model::fitSketch(problem);
         QVERIFY(!answers.results.front().curve.empty());
-        QVERIFY(sameResult(answers.results.front(), jobs::appliedFitResult(track, direct)));
+        QVERIFY(sameResult(answers.results.front(), model::appliedFitResult(track, direct)));
 
         const jobs::FitSummary& summary = answers.summaries.front();
         QCOMPARE(summary.outcome, QString::fromUtf8(nameOf(fit::kFitOutcomeNames, direct.outcome).data()));
         QCOMPARE(summary.rounds, direct.rounds);
         QCOMPARE(summary.iterations, direct.iterations);
-        QCOMPARE(summary.largestFragmentError, direct.largestFragmentError);
+        QCOMPARE(summary.largestRelativeError, direct.largestRelativeError);
+        const model::DrawnErrors drawn = model::drawnErrors(track, model::appliedFitResult(track, direct));
+        QCOMPARE(summary.drawnErrors.before, drawn.before);
+        QCOMPARE(summary.drawnErrors.after, drawn.after);
+        QVERIFY(drawn.after < drawn.before);
         QVERIFY(summary.seconds > 0.0);
 
         // Progress came first, round by round, within the fit's round limit.
@@ -174,25 +178,25 @@ private slots:
         QTest::qWait(200);
         QCOMPARE(answers.count(), std::size_t{1});
         QCOMPARE(answers.finishedInputs.size(), std::size_t{1});
-        QVERIFY(jobs::sameFitInput(answers.finishedInputs.front(), newer));
+        QVERIFY(model::sameFitInput(answers.finishedInputs.front(), newer));
         QCOMPARE(answers.finishedInputs.front().sketch.alpha, 0.004);
     }
 
     void aTrackThatCannotBeFittedFailsWithTheMessage()
     {
-        model::MotionTrack screw = tiltedSpin();
-        screw.interpolation = InterpolationMethod::Screw;
+        model::MotionTrack unsketched = tiltedSpin();
+        unsketched.sketch = {};
         QString expected;
         try {
-            jobs::sketchFitProblem(screw);
-        } catch (const jobs::SketchFitError& error) {
+            model::sketchFitProblem(unsketched);
+        } catch (const model::SketchFitError& error) {
             expected = QString::fromUtf8(error.what());
         }
         QVERIFY(!expected.isEmpty());
 
         jobs::FitJob job;
         Answers answers(job);
-        job.request(5, screw);
+        job.request(5, unsketched);
         QTRY_VERIFY_WITH_TIMEOUT(answers.count() == 1, kFitTimeoutMilliseconds);
         QCOMPARE(answers.failures, std::vector<QString>{expected});
     }

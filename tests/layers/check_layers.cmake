@@ -14,7 +14,7 @@ endif()
 # gyre (app), gyre-cli (cli) and gyre-scene-worker (worker), which runs Assimp out of process.
 set(allowed_core core)
 set(allowed_fit core fit)
-set(allowed_model core model)
+set(allowed_model core fit model)
 set(allowed_io core model io)
 set(allowed_jobs core fit model io jobs)
 set(allowed_samples core fit model io jobs samples)

@@ -135,6 +135,7 @@ private slots:
     void readsTheDocumentedExamples();
     void driftedQuaternionsAreNormalised();
     void migratesVersionOne();
+    void anAbsoluteDeltaKeepsItsThreshold();
     void refusesMalformedFiles_data();
     void refusesMalformedFiles();
     void refusesUnusableFiles();
@@ -260,6 +261,25 @@ void TstProjectFile::readsTheDocumentedExamples()
     const Scene migrated = parseProject(examples[1].toUtf8(), QStringLiteral("example 2"));
     QCOMPARE(migrated.objects.front().track.keys.size(), std::size_t{2});
     QVERIFY(migrated.objects.front().track.sketch.fittedCurve.empty());
+}
+
+// A file from before δ became relative holds `delta` in rad²/s: it reads as δ_abs/S̄ for the object's
+// target, here 2 rad/s about z (S̄ = 4 rad²/s²), so that a fit stops where it stopped before. Saved, the
+// file holds the relative δ as `relativeDelta`, which reads back as it is.
+void TstProjectFile::anAbsoluteDeltaKeepsItsThreshold()
+{
+    QJsonArray root{validProject()};
+    const QJsonObject stroke{{"points", QJsonArray{array({0, 0, 1}), array({0, 0, 1})}}, {"times", array({0.25, 1.25})}};
+    setAt(root[0], {"objects", 0, "sketch", "directionStrokes"}, QJsonArray{stroke});
+    setAt(root[0], {"objects", 0, "sketch", "magnitude"},
+          QJsonArray{QJsonObject{{"time", 0.25}, {"magnitude", 2}}, QJsonObject{{"time", 1.25}, {"magnitude", 2}}});
+    const Scene old = parseProject(bytes(root[0].toObject()), QStringLiteral("old.gyre"));
+    QVERIFY2(std::abs(old.objects[0].track.sketch.delta - 0.025) < 1e-12, qPrintable(QString::number(old.objects[0].track.sketch.delta)));
+    QCOMPARE(old.objects[1].track.sketch.delta, 0.1);  // nothing sketched: no threshold to keep
+
+    const QByteArray saved = projectJson(old);
+    QVERIFY(saved.contains("\"relativeDelta\"") && !saved.contains("\"delta\""));
+    QCOMPARE(parseProject(saved, QStringLiteral("new.gyre")).objects[0].track.sketch.delta, old.objects[0].track.sketch.delta);
 }
 
 void TstProjectFile::driftedQuaternionsAreNormalised()

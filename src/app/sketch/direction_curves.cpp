@@ -1,6 +1,6 @@
 #include "app/sketch/direction_curves.h"
 
-#include "jobs/sketch_fit.h"
+#include "model/sketch_fit_problem.h"
 
 #include <algorithm>
 #include <cmath>
@@ -89,7 +89,7 @@ SphereCurves sphereCurves(const model::SharedTrackMotion& motion, double start, 
         const int spanSamples = std::clamp(static_cast<int>(std::ceil(spanSeconds * kSamplesPerSecond)) + 1, 2, kMaxSamples);
         curves.beforeFit = sampleDirections(motion.motionWithoutFit(), fitted.front().time, fitted.back().time, spanSamples);
     }
-    curves.targetStrokes = jobs::timedStrokes(track);
+    curves.targetStrokes = model::timedStrokes(track);
     return curves;
 }
 

@@ -41,7 +41,7 @@ struct SphereCurves {
     std::vector<DirectionRun> motion;     // the track's motion, its fit included
     std::optional<std::pair<double, double>> fitSpan; // the span of the applied fit, if any
     std::vector<DirectionRun> beforeFit;  // the motion without its fit, over fitSpan only
-    // The strokes as the fit reads them: timed, the pattern applied (jobs::timedStrokes).
+    // The strokes as the fit reads them: timed, the pattern applied (model::timedStrokes).
     std::vector<std::vector<fit::TimedVector>> targetStrokes;
 };
 

@@ -1,7 +1,7 @@
 #include "app/sketch/fit_controller.h"
 
 #include "fit/angular_velocity_fit.h"
-#include "jobs/fit_input.h"
+#include "model/fit_input.h"
 #include "model/commands/apply_fit_result_command.h"
 
 #include <optional>
@@ -12,36 +12,44 @@ namespace gyre::app {
 
 namespace {
 
-// What an explicit fit did, in words, once its result is applied to `input`.
+// What an explicit fit did, in words, once its result is applied to `input`: how it ended, against
+// δ, and how far the motion is from what was drawn before and after.
 QString appliedFitMessage(const jobs::FitSummary& summary, const model::MotionTrack& input)
 {
     const QString delta = QString::number(input.sketch.delta, 'g', 3);
-    const QString largest = QString::number(summary.largestFragmentError, 'g', 3);
+    const QString largest = QString::number(summary.largestRelativeError, 'g', 3);
+    const QString drawn = FitController::tr("Against what was drawn: %1 rad²/s before, %2 after.")
+                              .arg(QString::number(summary.drawnErrors.before, 'g', 3),
+                                   QString::number(summary.drawnErrors.after, 'g', 3));
     const std::optional<fit::FitOutcome> outcome = valueNamed(fit::kFitOutcomeNames, summary.outcome.toStdString());
     switch (outcome.value_or(fit::FitOutcome::RoundLimit)) {
     case fit::FitOutcome::Converged:
-        return FitController::tr("Fit applied: the motion now follows the sketch within δ = %1 rad²/s "
-                                 "(largest error %2, %3 rounds, %4 s).")
-            .arg(delta, largest)
-            .arg(summary.rounds)
-            .arg(summary.seconds, 0, 'g', 2);
+        return FitController::tr("Fit applied: the motion now follows the sketch within δ = %1 "
+                                 "(largest relative error %2, %3 rounds, %4 s).")
+                   .arg(delta, largest)
+                   .arg(summary.rounds)
+                   .arg(summary.seconds, 0, 'g', 2)
+               + QLatin1Char(' ') + drawn;
     case fit::FitOutcome::VariableFrameLimit:
-        return FitController::tr("Fit stopped at its limit of added control points, still off the sketch by up "
-                                 "to %1 rad²/s (δ = %2); its last result was applied.")
-            .arg(largest, delta);
+        return FitController::tr("Fit stopped at its limit of added control points, still off the sketch by a "
+                                 "relative error of up to %1 (δ = %2); its last result was applied.")
+                   .arg(largest, delta)
+               + QLatin1Char(' ') + drawn;
     case fit::FitOutcome::NoPlaceForFrame:
-        return FitController::tr("Fit could not meet δ = %1 rad²/s: where it is furthest off (%2 rad²/s) it has no "
+        return FitController::tr("Fit could not meet δ = %1: where it is furthest off (relative error %2) it has no "
                                  "room for another control point, often because constrained keys there disagree "
                                  "with the sketch; its result was applied.")
-            .arg(delta, largest);
+                   .arg(delta, largest)
+               + QLatin1Char(' ') + drawn;
     case fit::FitOutcome::RoundLimit:
     case fit::FitOutcome::Cancelled: // answered by FitJob::cancelled, never as a result
         break;
     }
-    return FitController::tr("Fit stopped after %1 rounds, still off the sketch by up to %2 rad²/s (δ = %3); "
-                             "its last result was applied.")
-        .arg(summary.rounds)
-        .arg(largest, delta);
+    return FitController::tr("Fit stopped after %1 rounds, still off the sketch by a relative error of up to %2 "
+                             "(δ = %3); its last result was applied.")
+               .arg(summary.rounds)
+               .arg(largest, delta)
+           + QLatin1Char(' ') + drawn;
 }
 
 } // namespace
@@ -178,7 +186,7 @@ void FitController::requestLiveFit()
     // After an undo there is a step to redo, which a fit pushed now would throw away.
     if (object == nullptr || document_.undoStack().canRedo())
         return;
-    if (newestLiveInput_ && jobs::sameFitInput(*newestLiveInput_, object->track))
+    if (newestLiveInput_ && model::sameFitInput(*newestLiveInput_, object->track))
         return;
     newestLiveInput_ = object->track;
     liveJob_.request(object->id, object->track);
@@ -188,7 +196,7 @@ bool FitController::applyIfCurrent(model::ObjectId object, const model::MotionTr
                                    const model::FitResult& result)
 {
     const model::SceneObject* current = document_.object(object);
-    if (current == nullptr || !jobs::sameFitInput(input, current->track))
+    if (current == nullptr || !model::sameFitInput(input, current->track))
         return false;
     try {
         document_.push(new model::ApplyFitResultCommand(document_, object, result));

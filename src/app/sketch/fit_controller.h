@@ -4,7 +4,7 @@
 // selected object's fit inputs change.
 //
 // A result is applied as one undo step (ApplyFitResultCommand) only if its input still matches the
-// document (jobs::sameFitInput); an explicit fit whose track changed while it ran is dropped, and
+// document (model::sameFitInput); an explicit fit whose track changed while it ran is dropped, and
 // says so. While a gesture is open (Document::isGestureOpen: a stroke being drawn pushes its commands
 // at every mouse move), nothing is applied: a live result is shown as a preview of the motion
 // (previewChanged, for the viewport), and the newest result is applied when the gesture ends

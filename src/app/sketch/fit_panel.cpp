@@ -1,6 +1,6 @@
 #include "app/sketch/fit_panel.h"
 
-#include "jobs/sketch_fit.h"
+#include "model/sketch_fit_problem.h"
 #include "model/commands/remove_fit_command.h"
 #include "model/commands/set_fit_parameter_command.h"
 #include "model/commands/set_fit_window_command.h"
@@ -120,7 +120,7 @@ void FitPanel::showWindow(const model::MotionTrack& track)
     // The sketch's own window, or the span the fit would edit without one.
     std::optional<std::pair<double, double>> shown = track.sketch.window;
     if (!shown)
-        if (const std::optional<fit::TimeWindow> edited = jobs::editWindow(track))
+        if (const std::optional<fit::TimeWindow> edited = model::editWindow(track))
             shown = std::pair(edited->start, edited->end);
     const std::pair<double, double> ends = shown.value_or(span);
     const QSignalBlocker startBlocker(ui_->windowStartSpin);
@@ -155,10 +155,10 @@ void FitPanel::showKeys(const model::MotionTrack& track)
 void FitPanel::showFitProblem(const model::MotionTrack& track)
 {
     try {
-        jobs::sketchFitProblem(track);
+        model::sketchFitProblem(track);
         fittable_ = true;
         ui_->fitProblemFrame->hide();
-    } catch (const jobs::SketchFitError& error) {
+    } catch (const model::SketchFitError& error) {
         fittable_ = false;
         ui_->fitProblemLabel->setText(QString::fromUtf8(error.what()));
         ui_->fitProblemFrame->show();

@@ -3,7 +3,7 @@
 // the energy's weights α and β and the error bound δ, the edited window or the whole sketch, which
 // keyframes the fit keeps exactly, and Fit, Cancel, Remove fit and Live. Every edit is one undo
 // command on the document; the fit itself runs through the FitController it shares with the status
-// bar's progress. A track that cannot be fitted (jobs::sketchFitProblem) says why here, and Fit is
+// bar's progress. A track that cannot be fitted (model::sketchFitProblem) says why here, and Fit is
 // disabled.
 
 #include "app/selected_track.h"

@@ -49,8 +49,8 @@ void FitProgress::showProgress(const jobs::FitJobProgress& progress)
 {
     bar_->setRange(0, progress.maxRounds);
     bar_->setValue(progress.round);
-    bar_->setFormat(progress.largestFragmentError
-                        ? tr("Fit: round %v of %m, largest error %1 rad²/s").arg(*progress.largestFragmentError, 0, 'g', 3)
+    bar_->setFormat(progress.largestRelativeError
+                        ? tr("Fit: round %v of %m, largest relative error %1").arg(*progress.largestRelativeError, 0, 'g', 3)
                         : tr("Fit: round %v of %m"));
 }
 

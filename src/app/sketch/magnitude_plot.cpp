@@ -1,6 +1,6 @@
 #include "app/sketch/magnitude_plot.h"
 
-#include "jobs/sketch_fit.h"
+#include "model/sketch_fit_problem.h"
 #include "model/commands/set_fit_window_command.h"
 #include "model/commands/set_magnitude_curve_command.h"
 #include "model/track_evaluation.h"
@@ -72,7 +72,7 @@ std::optional<std::pair<double, double>> keySpan(const model::MotionTrack& track
 // so that the artist can set a window first.
 std::optional<std::pair<double, double>> impliedWindow(const model::MotionTrack& track)
 {
-    if (const std::optional<fit::TimeWindow> window = jobs::editWindow(track))
+    if (const std::optional<fit::TimeWindow> window = model::editWindow(track))
         return std::pair(window->start, window->end);
     return keySpan(track);
 }

@@ -11,7 +11,7 @@
 //   move them, as the timeline draws them.
 // - The current time as a vertical line.
 // - The edit window as a shaded band: the sketch's own window solid; the one the fit would take
-//   without it (jobs::editWindow, else the keys' span) dashed and lighter. Dragging an edge resizes
+//   without it (model::editWindow, else the keys' span) dashed and lighter. Dragging an edge resizes
 //   it, dragging the grip strip along its top moves it at the same length; each drag is one undo
 //   step, clamped to the keys' span and at least a frame long.
 // - The sketched magnitude in blue. In the Draw tool a left drag draws it: time only goes forward,

@@ -8,7 +8,7 @@
 // (labelled sparsely) and every quarter second, with the current time as a dot; where a fit is
 // applied, the curve inside the fit's span is what the fit achieved, in red, and the motion before
 // the fit is drawn in grey beside it. The strokes, thin blue as drawn, and thick blue as the fit will
-// read them: timed, with the pattern applied (jobs::timedStrokes).
+// read them: timed, with the pattern applied (model::timedStrokes).
 //
 // Tools (the QActions, each with a shortcut):
 // - Draw: left-drag on the sphere draws a stroke on its front hemisphere (a pointer off the disc draws

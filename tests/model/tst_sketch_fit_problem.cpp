@@ -2,7 +2,7 @@
 // them, the target (strokes over the motion's own direction, the sketched magnitude over its own
 // speed), the refusals, and the result as the document applies it.
 
-#include "jobs/sketch_fit.h"
+#include "model/sketch_fit_problem.h"
 #include "model/track_evaluation.h"
 
 #include <QObject>
@@ -39,7 +39,7 @@ double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 }
 
 // ∫ |ω − ωˢ|² dt over the problem's window, by the midpoint rule at 100 samples per second.
-double deviationFromTarget(const TrackMotion& motion, const jobs::SketchFitProblem& problem)
+double deviationFromTarget(const TrackMotion& motion, const SketchFitProblem& problem)
 {
     const fit::TimeWindow window = *problem.settings.window;
     const int count = static_cast<int>(std::ceil((window.end - window.start) * 100.0));
@@ -57,7 +57,7 @@ bool refusesWith(Call call, const char* words)
 {
     try {
         call();
-    } catch (const jobs::SketchFitError& error) {
+    } catch (const SketchFitError& error) {
         return QString::fromUtf8(error.what()).contains(QLatin1String(words));
     }
     return false;
@@ -65,7 +65,7 @@ bool refusesWith(Call call, const char* words)
 
 } // namespace
 
-class TstSketchFit : public QObject {
+class TstSketchFitProblem : public QObject {
     Q_OBJECT
 
 private slots:
@@ -80,42 +80,42 @@ private slots:
     void appliedResultKeepsConstrainedKeysAndLeansTowardsTheSketch();
 };
 
-void TstSketchFit::editWindowIsTheSketchedSpanWithinTheKeys()
+void TstSketchFitProblem::editWindowIsTheSketchedSpanWithinTheKeys()
 {
     MotionTrack track = steadySpin();
-    QVERIFY(!jobs::editWindow(track));
+    QVERIFY(!editWindow(track));
 
     track.sketch.directionStrokes.push_back(timedStroke(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 1.0, 2.0));
     track.sketch.magnitude = {{1.5, 1.0}, {3.0, 2.0}};
-    auto window = jobs::editWindow(track);
+    auto window = editWindow(track);
     QVERIFY(window);
     QCOMPARE(window->start, 1.0);
     QCOMPARE(window->end, 3.0);
 
     track.sketch.window = std::pair(-1.0, 2.5);
-    window = jobs::editWindow(track);
+    window = editWindow(track);
     QVERIFY(window);
     QCOMPARE(window->start, 0.0);
     QCOMPARE(window->end, 2.5);
 
     track.sketch.window = std::pair(5.0, 6.0);
-    QVERIFY(!jobs::editWindow(track));
+    QVERIFY(!editWindow(track));
 
     track.keys.resize(1);
     track.sketch.window.reset();
-    QVERIFY(!jobs::editWindow(track));
+    QVERIFY(!editWindow(track));
 }
 
-void TstSketchFit::untimedStrokesSpreadOverTheWindow()
+void TstSketchFitProblem::untimedStrokesSpreadOverTheWindow()
 {
     MotionTrack track = steadySpin();
     track.sketch.directionStrokes.push_back({{Eigen::Vector3d::UnitX(), Eigen::Vector3d(1, 1, 0).normalized(), Eigen::Vector3d::UnitY()}, {}});
-    const auto window = jobs::editWindow(track);
+    const auto window = editWindow(track);
     QVERIFY(window);
     QCOMPARE(window->start, 0.0);
     QCOMPARE(window->end, 4.0);
 
-    const auto strokes = jobs::timedStrokes(track);
+    const auto strokes = timedStrokes(track);
     QCOMPARE(strokes.size(), std::size_t(1));
     QCOMPARE(strokes[0].size(), std::size_t(3));
     QCOMPARE(strokes[0].front().time, 0.0);
@@ -124,14 +124,14 @@ void TstSketchFit::untimedStrokesSpreadOverTheWindow()
     QVERIFY(std::abs(strokes[0][1].time - 2.0) < kTolerance);
 }
 
-void TstSketchFit::patternFollowsTheStroke()
+void TstSketchFitProblem::patternFollowsTheStroke()
 {
     MotionTrack track = steadySpin();
     track.sketch.directionStrokes.push_back(timedStroke(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 1.0, 3.0));
     track.sketch.pattern = {{0.0, 0.0}, {0.5, 0.3}, {1.0, 0.0}};
     track.sketch.patternRepeat = 4;
 
-    const auto strokes = jobs::timedStrokes(track);
+    const auto strokes = timedStrokes(track);
     QCOMPARE(strokes.size(), std::size_t(1));
     QVERIFY(strokes[0].size() > 2);
     QVERIFY(std::abs(strokes[0].front().time - 1.0) < kTolerance);
@@ -144,15 +144,15 @@ void TstSketchFit::patternFollowsTheStroke()
     QVERIFY(furthest > 0.05);
 
     track.sketch.patternRepeat = 0;
-    QCOMPARE(jobs::timedStrokes(track)[0].size(), std::size_t(2));
+    QCOMPARE(timedStrokes(track)[0].size(), std::size_t(2));
 }
 
-void TstSketchFit::targetFollowsStrokesAndKeepsTheMotionElsewhere()
+void TstSketchFitProblem::targetFollowsStrokesAndKeepsTheMotionElsewhere()
 {
     MotionTrack track = steadySpin();
     track.sketch.window = std::pair(0.5, 3.5);
     track.sketch.directionStrokes.push_back(timedStroke(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 1.0, 3.0));
-    const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
+    const SketchFitProblem problem = sketchFitProblem(track);
 
     // Half way along the great arc from x to y.
     const Eigen::Vector3d middle = problem.target.at(2.0);
@@ -167,23 +167,23 @@ void TstSketchFit::targetFollowsStrokesAndKeepsTheMotionElsewhere()
     }
 }
 
-void TstSketchFit::laterStrokeWinsWhereStrokesOverlap()
+void TstSketchFitProblem::laterStrokeWinsWhereStrokesOverlap()
 {
     MotionTrack track = steadySpin();
     track.sketch.directionStrokes.push_back(timedStroke(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 1.0, 3.0));
     track.sketch.directionStrokes.push_back(timedStroke(Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(), 1.5, 2.5));
-    const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
+    const SketchFitProblem problem = sketchFitProblem(track);
     QVERIFY(angleBetween(problem.target.at(2.0), Eigen::Vector3d(1, 0, 1)) < 1e-6);
     // Before the later stroke starts, the earlier one: at 1.25 s an eighth of the way from x to y.
     const double turned = (1.25 - 1.0) / (3.0 - 1.0) * std::numbers::pi / 2.0;
     QVERIFY(angleBetween(problem.target.at(1.25), Eigen::Vector3d(std::cos(turned), std::sin(turned), 0)) < 1e-6);
 }
 
-void TstSketchFit::sketchedMagnitudeSetsTheSpeed()
+void TstSketchFitProblem::sketchedMagnitudeSetsTheSpeed()
 {
     MotionTrack track = steadySpin();
     track.sketch.magnitude = {{1.0, 2.0}, {3.0, 4.0}};
-    const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
+    const SketchFitProblem problem = sketchFitProblem(track);
     const Eigen::Vector3d omega = problem.target.at(2.0);
     QVERIFY(std::abs(omega.norm() - 3.0) < 1e-9);
     QVERIFY(angleBetween(omega, Eigen::Vector3d::UnitZ()) < 1e-6);
@@ -191,7 +191,7 @@ void TstSketchFit::sketchedMagnitudeSetsTheSpeed()
     QCOMPARE(problem.target.endTime(), 3.0);
 }
 
-void TstSketchFit::settingsComeFromTheSketch()
+void TstSketchFitProblem::settingsComeFromTheSketch()
 {
     MotionTrack track = steadySpin();
     track.keys[2].constrained = false;
@@ -200,7 +200,7 @@ void TstSketchFit::settingsComeFromTheSketch()
     track.sketch.beta = 2.0;
     track.sketch.delta = 0.3;
     track.sketch.window = std::pair(0.5, 3.5);
-    const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
+    const SketchFitProblem problem = sketchFitProblem(track);
     QCOMPARE(problem.settings.alpha, 0.004);
     QCOMPARE(problem.settings.beta, 2.0);
     QCOMPARE(problem.settings.delta, 0.3);
@@ -212,21 +212,18 @@ void TstSketchFit::settingsComeFromTheSketch()
     QVERIFY(problem.keys[3].rotation.isApprox(track.keys[3].pose.orientation, 0.0));
 }
 
-void TstSketchFit::refusesWhatCannotBeFitted()
+void TstSketchFitProblem::refusesWhatCannotBeFitted()
 {
     MotionTrack track = steadySpin();
-    QVERIFY(refusesWith([&] { jobs::sketchFitProblem(track); }, "Nothing is sketched"));
+    QVERIFY(refusesWith([&] { sketchFitProblem(track); }, "Nothing is sketched"));
     track.sketch.magnitude = {{1.0, 2.0}, {3.0, 4.0}};
-    track.interpolation = InterpolationMethod::Screw;
-    QVERIFY(refusesWith([&] { jobs::sketchFitProblem(track); }, "Hermite"));
-    track.interpolation = InterpolationMethod::Hermite;
     track.sketch.window = std::pair(5.0, 6.0);
-    QVERIFY(refusesWith([&] { jobs::sketchFitProblem(track); }, "window"));
+    QVERIFY(refusesWith([&] { sketchFitProblem(track); }, "window"));
     track.keys.resize(1);
-    QVERIFY(refusesWith([&] { jobs::sketchFitProblem(track); }, "two keyframes"));
+    QVERIFY(refusesWith([&] { sketchFitProblem(track); }, "two keyframes"));
 }
 
-void TstSketchFit::appliedResultKeepsConstrainedKeysAndLeansTowardsTheSketch()
+void TstSketchFitProblem::appliedResultKeepsConstrainedKeysAndLeansTowardsTheSketch()
 {
     // Free every key after the window's start, so the motion can follow the sketch to the end.
     MotionTrack track = steadySpin();
@@ -237,9 +234,9 @@ void TstSketchFit::appliedResultKeepsConstrainedKeysAndLeansTowardsTheSketch()
     track.sketch.directionStrokes.push_back(timedStroke(tilted, tilted, 1.0, 3.0));
     track.sketch.directionStrokes.back().points = {tilted, Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitZ()) * tilted};
 
-    const jobs::SketchFitProblem problem = jobs::sketchFitProblem(track);
-    const fit::FitResult result = fit::fitAngularVelocity(problem.keys, problem.target, problem.settings);
-    const FitResult applied = jobs::appliedFitResult(track, result);
+    const SketchFitProblem problem = sketchFitProblem(track);
+    const fit::FitResult result = model::fitSketch(problem);
+    const FitResult applied = appliedFitResult(track, result);
 
     QCOMPARE(applied.curve.size(), result.controlPoints.size());
     QCOMPARE(applied.keys.size(), track.keys.size());
@@ -258,5 +255,5 @@ void TstSketchFit::appliedResultKeepsConstrainedKeysAndLeansTowardsTheSketch()
     QVERIFY2(after < 0.5 * before, qPrintable(QStringLiteral("%1 rad²/s before, %2 after").arg(before).arg(after)));
 }
 
-QTEST_GUILESS_MAIN(TstSketchFit)
-#include "tst_sketch_fit.moc"
+QTEST_GUILESS_MAIN(TstSketchFitProblem)
+#include "tst_sketch_fit_problem.moc"

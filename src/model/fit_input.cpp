@@ -1,8 +1,8 @@
-#include "jobs/fit_input.h"
+#include "model/fit_input.h"
 
 #include <algorithm>
 
-namespace gyre::jobs {
+namespace gyre::model {
 
 namespace {
 
@@ -11,24 +11,24 @@ bool sameQuaternion(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b)
     return a.coeffs() == b.coeffs();
 }
 
-bool sameKeyInput(const model::Keyframe& a, const model::Keyframe& b)
+bool sameKeyInput(const Keyframe& a, const Keyframe& b)
 {
     return a.time == b.time && a.constrained == b.constrained && a.pose.position == b.pose.position
            && (!a.constrained || sameQuaternion(a.pose.orientation, b.pose.orientation));
 }
 
-bool sameStroke(const model::DirectionStroke& a, const model::DirectionStroke& b)
+bool sameStroke(const DirectionStroke& a, const DirectionStroke& b)
 {
     return a.points == b.points && a.times == b.times;
 }
 
-bool sameMagnitudePoint(const model::MagnitudePoint& a, const model::MagnitudePoint& b)
+bool sameMagnitudePoint(const MagnitudePoint& a, const MagnitudePoint& b)
 {
     return a.time == b.time && a.magnitude == b.magnitude;
 }
 
 // Everything of the sketch but fittedCurve.
-bool sameSketchInput(const model::SketchState& a, const model::SketchState& b)
+bool sameSketchInput(const SketchState& a, const SketchState& b)
 {
     return std::ranges::equal(a.directionStrokes, b.directionStrokes, sameStroke)
            && std::ranges::equal(a.magnitude, b.magnitude, sameMagnitudePoint) && a.pattern == b.pattern
@@ -38,11 +38,11 @@ bool sameSketchInput(const model::SketchState& a, const model::SketchState& b)
 
 } // namespace
 
-bool sameFitInput(const model::MotionTrack& fitted, const model::MotionTrack& current)
+bool sameFitInput(const MotionTrack& fitted, const MotionTrack& current)
 {
     return fitted.interpolation == current.interpolation
            && std::ranges::equal(fitted.keys, current.keys, sameKeyInput)
            && sameSketchInput(fitted.sketch, current.sketch);
 }
 
-} // namespace gyre::jobs
+} // namespace gyre::model

@@ -1,12 +1,13 @@
-#include "jobs/sketch_fit.h"
+#include "model/sketch_fit_problem.h"
 
 #include "model/track_evaluation.h"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 
-namespace gyre::jobs {
+namespace gyre::model {
 
 namespace {
 
@@ -32,23 +33,23 @@ std::optional<Span> unite(const std::optional<Span>& span, double start, double 
 }
 
 // The span the sketch's timed parts cover; the keys' span when only untimed strokes are drawn.
-std::optional<Span> sketchedSpan(const model::MotionTrack& track)
+std::optional<Span> sketchedSpan(const MotionTrack& track)
 {
-    const model::SketchState& sketch = track.sketch;
+    const SketchState& sketch = track.sketch;
     std::optional<Span> span;
-    for (const model::DirectionStroke& stroke : sketch.directionStrokes)
+    for (const DirectionStroke& stroke : sketch.directionStrokes)
         if (!stroke.times.empty())
             span = unite(span, stroke.times.front(), stroke.times.back());
     if (!sketch.magnitude.empty())
         span = unite(span, sketch.magnitude.front().time, sketch.magnitude.back().time);
     const bool anyUntimedStroke = std::ranges::any_of(
-        sketch.directionStrokes, [](const model::DirectionStroke& stroke) { return stroke.times.empty(); });
+        sketch.directionStrokes, [](const DirectionStroke& stroke) { return stroke.times.empty(); });
     if (anyUntimedStroke)
         return Span{track.keys.front().time, track.keys.back().time};
     return span;
 }
 
-std::vector<fit::TimedVector> timedStroke(const model::DirectionStroke& stroke, const fit::TimeWindow& window)
+std::vector<fit::TimedVector> timedStroke(const DirectionStroke& stroke, const fit::TimeWindow& window)
 {
     if (stroke.times.empty())
         return fit::spreadByArcLength(stroke.points, window.start, window.end);
@@ -59,7 +60,7 @@ std::vector<fit::TimedVector> timedStroke(const model::DirectionStroke& stroke, 
     return timed;
 }
 
-std::vector<fit::TimedVector> withPattern(std::vector<fit::TimedVector> stroke, const model::SketchState& sketch)
+std::vector<fit::TimedVector> withPattern(std::vector<fit::TimedVector> stroke, const SketchState& sketch)
 {
     if (sketch.pattern.size() < 2 || sketch.patternRepeat < 1)
         return stroke;
@@ -100,15 +101,15 @@ std::vector<StrokeDirection> strokeDirections(const std::vector<std::vector<fit:
 }
 
 // The sketched magnitude at `time`, where the curve covers it.
-std::optional<double> sketchedMagnitude(const std::vector<model::MagnitudePoint>& curve, double time)
+std::optional<double> sketchedMagnitude(const std::vector<MagnitudePoint>& curve, double time)
 {
     if (curve.size() < 2 || time < curve.front().time || time > curve.back().time)
         return std::nullopt;
-    const auto after = std::ranges::upper_bound(curve, time, {}, &model::MagnitudePoint::time);
+    const auto after = std::ranges::upper_bound(curve, time, {}, &MagnitudePoint::time);
     if (after == curve.end())
         return curve.back().magnitude;
-    const model::MagnitudePoint& b = *after;
-    const model::MagnitudePoint& a = *(after - 1);
+    const MagnitudePoint& b = *after;
+    const MagnitudePoint& a = *(after - 1);
     const double u = (time - a.time) / (b.time - a.time);
     return a.magnitude + u * (b.magnitude - a.magnitude);
 }
@@ -116,7 +117,7 @@ std::optional<double> sketchedMagnitude(const std::vector<model::MagnitudePoint>
 // A grid over the window, plus every time the sketch gives inside it, so the target passes through
 // each drawn point.
 std::vector<double> targetTimes(const fit::TimeWindow& window, const std::vector<std::vector<fit::TimedVector>>& strokes,
-                                const std::vector<model::MagnitudePoint>& magnitude)
+                                const std::vector<MagnitudePoint>& magnitude)
 {
     std::vector<double> times;
     const double length = window.end - window.start;
@@ -130,7 +131,7 @@ std::vector<double> targetTimes(const fit::TimeWindow& window, const std::vector
     for (const auto& stroke : strokes)
         for (const fit::TimedVector& point : stroke)
             addInside(point.time);
-    for (const model::MagnitudePoint& point : magnitude)
+    for (const MagnitudePoint& point : magnitude)
         addInside(point.time);
     std::ranges::sort(times);
     const auto repeated = std::ranges::unique(times, [](double a, double b) { return b - a < kSameTime; });
@@ -138,35 +139,84 @@ std::vector<double> targetTimes(const fit::TimeWindow& window, const std::vector
     return times;
 }
 
-fit::AngularVelocityTarget sketchTarget(const model::MotionTrack& track, const fit::TimeWindow& window)
-{
-    model::MotionTrack keyed = track;
-    keyed.sketch.fittedCurve.clear();
-    const model::TrackMotion motion(keyed);
-    const std::vector<std::vector<fit::TimedVector>> strokes = timedStrokes(track);
-    const std::vector<StrokeDirection> directions = strokeDirections(strokes);
+// What was drawn over the window, read at any time together with a motion's own angular velocity there.
+class DrawnSketch {
+public:
+    explicit DrawnSketch(const MotionTrack& track)
+        : strokes_(timedStrokes(track))
+        , directions_(strokeDirections(strokes_))
+        , magnitude_(track.sketch.magnitude)
+    {
+    }
 
-    std::vector<fit::TimedVector> samples;
-    for (const double time : targetTimes(window, strokes, track.sketch.magnitude)) {
-        const Eigen::Vector3d omega = motion.angularVelocity(time);
-        const double speed = sketchedMagnitude(track.sketch.magnitude, time).value_or(omega.norm());
-        // The latest stroke covering this time wins.
-        const auto stroke = std::find_if(directions.rbegin(), directions.rend(), [time](const StrokeDirection& s) {
+    // The drawn ω at `time`, completed by `omega`, some motion's angular velocity there: the drawn speed
+    // or |omega|, along the latest stroke covering `time` or the axis of `omega`.
+    Eigen::Vector3d completedAt(double time, const Eigen::Vector3d& omega) const
+    {
+        const double speed = sketchedMagnitude(magnitude_, time).value_or(omega.norm());
+        if (const std::optional<Eigen::Vector3d> direction = drawnDirection(time))
+            return speed * *direction;
+        return omega.norm() > kStill ? Eigen::Vector3d(speed * omega.normalized()) : Eigen::Vector3d::Zero();
+    }
+
+    // |omega − completedAt(time, omega)|²; a motion standing still has no axis to carry a drawn speed,
+    // which then counts in full.
+    double squaredErrorAt(double time, const Eigen::Vector3d& omega) const
+    {
+        if (omega.norm() <= kStill && !drawnDirection(time))
+            return std::pow(sketchedMagnitude(magnitude_, time).value_or(0.0), 2);
+        return (omega - completedAt(time, omega)).squaredNorm();
+    }
+
+    std::vector<double> sampleTimes(const fit::TimeWindow& window) const { return targetTimes(window, strokes_, magnitude_); }
+
+private:
+    // The latest stroke covering `time`, where one does.
+    std::optional<Eigen::Vector3d> drawnDirection(double time) const
+    {
+        const auto stroke = std::find_if(directions_.rbegin(), directions_.rend(), [time](const StrokeDirection& s) {
             return time >= s.start && time <= s.end;
         });
-        Eigen::Vector3d direction = Eigen::Vector3d::Zero();
-        if (stroke != directions.rend())
-            direction = stroke->direction.at(time);
-        else if (omega.norm() > kStill)
-            direction = omega.normalized();
-        samples.push_back({time, speed * direction});
+        if (stroke == directions_.rend())
+            return std::nullopt;
+        return stroke->direction.at(time);
     }
+
+    std::vector<std::vector<fit::TimedVector>> strokes_;
+    std::vector<StrokeDirection> directions_;
+    std::vector<MagnitudePoint> magnitude_;
+};
+
+MotionTrack withoutFit(MotionTrack track)
+{
+    track.sketch.fittedCurve.clear();
+    return track;
+}
+
+// The drawn ω completed by the motion through the keys, at the target's sample times.
+fit::AngularVelocityTarget sketchTarget(const MotionTrack& track, const TrackMotion& keyed, const fit::TimeWindow& window)
+{
+    const DrawnSketch drawn(track);
+    std::vector<fit::TimedVector> samples;
+    for (const double time : drawn.sampleTimes(window))
+        samples.push_back({time, drawn.completedAt(time, keyed.angularVelocity(time))});
     return fit::AngularVelocityTarget::fromSamples(std::move(samples));
+}
+
+// The motion through the keys as the fit reads it: orientation, and q′ = ½ω·q from its angular velocity.
+fit::InitialMotion initialMotionOf(std::shared_ptr<const TrackMotion> keyed)
+{
+    return [keyed = std::move(keyed)](double time) {
+        const Eigen::Quaterniond value = keyed->at(time).orientation;
+        const Eigen::Vector3d omega = keyed->angularVelocity(time);
+        const Eigen::Quaterniond halfOmega(0.0, 0.5 * omega.x(), 0.5 * omega.y(), 0.5 * omega.z());
+        return OrientationSample{value, halfOmega * value, omega};
+    };
 }
 
 } // namespace
 
-std::optional<fit::TimeWindow> editWindow(const model::MotionTrack& track)
+std::optional<fit::TimeWindow> editWindow(const MotionTrack& track)
 {
     if (track.keys.size() < 2)
         return std::nullopt;
@@ -180,27 +230,23 @@ std::optional<fit::TimeWindow> editWindow(const model::MotionTrack& track)
     return window;
 }
 
-std::vector<std::vector<fit::TimedVector>> timedStrokes(const model::MotionTrack& track)
+std::vector<std::vector<fit::TimedVector>> timedStrokes(const MotionTrack& track)
 {
     const std::optional<fit::TimeWindow> window = editWindow(track);
     if (!window)
         return {};
     std::vector<std::vector<fit::TimedVector>> strokes;
-    for (const model::DirectionStroke& stroke : track.sketch.directionStrokes)
+    for (const DirectionStroke& stroke : track.sketch.directionStrokes)
         strokes.push_back(withPattern(timedStroke(stroke, *window), track.sketch));
     return strokes;
 }
 
-SketchFitProblem sketchFitProblem(const model::MotionTrack& track)
+SketchFitProblem sketchFitProblem(const MotionTrack& track)
 {
     if (track.keys.size() < 2)
         throw SketchFitError(
             SketchFitError::tr("The fit needs at least two keyframes on the selected object.").toStdString());
-    if (track.interpolation != InterpolationMethod::Hermite)
-        throw SketchFitError(SketchFitError::tr("The fit bends the Hermite spline through the keys: choose Hermite "
-                                                "interpolation for this object first.")
-                                 .toStdString());
-    const model::SketchState& sketch = track.sketch;
+    const SketchState& sketch = track.sketch;
     if (sketch.directionStrokes.empty() && sketch.magnitude.empty())
         throw SketchFitError(SketchFitError::tr("Nothing is sketched yet: draw the direction of the angular velocity "
                                                 "on the sphere, or its magnitude on the plot.")
@@ -228,28 +274,73 @@ SketchFitProblem sketchFitProblem(const model::MotionTrack& track)
         }
     }
 
+    const auto keyed = std::make_shared<const TrackMotion>(withoutFit(track));
+    const bool screw = track.interpolation == InterpolationMethod::Screw;
     std::vector<fit::FitKey> keys;
     keys.reserve(track.keys.size());
-    for (const model::Keyframe& key : track.keys)
-        keys.push_back({key.time, key.pose.orientation, key.constrained});
+    for (const Keyframe& key : track.keys)
+        keys.push_back({key.time, screw ? keyed->at(key.time).orientation : key.pose.orientation, key.constrained});
     fit::FitSettings settings;
     settings.alpha = sketch.alpha;
     settings.beta = sketch.beta;
     settings.delta = sketch.delta;
     settings.window = window;
-    return {std::move(keys), sketchTarget(track, *window), settings};
+    fit::AngularVelocityTarget target = sketchTarget(track, *keyed, *window);
+    const bool hermite = track.interpolation == InterpolationMethod::Hermite;
+    return {std::move(keys), std::move(target), settings, hermite ? fit::InitialMotion{} : initialMotionOf(keyed)};
 }
 
-model::FitResult appliedFitResult(const model::MotionTrack& track, const fit::FitResult& result)
+fit::FitResult fitSketch(const SketchFitProblem& problem, const fit::FitHooks& hooks)
+{
+    return fit::fitAngularVelocity(problem.keys, problem.target, problem.settings, hooks, problem.initialMotion);
+}
+
+FitResult appliedFitResult(const MotionTrack& track, const fit::FitResult& result)
 {
     if (result.keys.size() != track.keys.size())
         throw std::invalid_argument("the fit's keys are not the track's: " + std::to_string(result.keys.size()) +
                                     " for " + std::to_string(track.keys.size()));
-    model::FitResult applied{result.controlPoints, track.keys};
+    FitResult applied{result.controlPoints, track.keys};
+    if (track.interpolation == InterpolationMethod::Screw)
+        return applied;
     for (std::size_t i = 0; i < applied.keys.size(); ++i)
         if (!applied.keys[i].constrained)
             applied.keys[i].pose.orientation = result.keys[i].rotation;
     return applied;
 }
 
-} // namespace gyre::jobs
+double drawnError(const MotionTrack& track, const TrackMotion& motion)
+{
+    const std::optional<fit::TimeWindow> window = editWindow(track);
+    if (!window)
+        return 0.0;
+    const DrawnSketch drawn(track);
+    const std::vector<double> times = drawn.sampleTimes(*window);
+    const auto squaredError = [&](double time) { return drawn.squaredErrorAt(time, motion.angularVelocity(time)); };
+    double sum = 0.0;
+    double previous = squaredError(times.front());
+    for (std::size_t k = 1; k < times.size(); ++k) {
+        const double current = squaredError(times[k]);
+        sum += 0.5 * (previous + current) * (times[k] - times[k - 1]);
+        previous = current;
+    }
+    return sum;
+}
+
+DrawnErrors drawnErrors(const MotionTrack& track, const FitResult& applied)
+{
+    return {drawnError(track, TrackMotion(withoutFit(track))), drawnError(track, TrackMotion(withFitApplied(track, applied)))};
+}
+
+double relativeDelta(const MotionTrack& track, double absoluteDelta)
+{
+    try {
+        const SketchFitProblem problem = sketchFitProblem(track);
+        return fit::relativeFragmentError(absoluteDelta, fit::targetMeanSquare(problem.target, *problem.settings.window,
+                                                                               problem.settings.fragmentSeconds));
+    } catch (const std::invalid_argument&) {
+        return absoluteDelta; // nothing to fit: no threshold to keep
+    }
+}
+
+} // namespace gyre::model
