@@ -300,24 +300,24 @@ std::vector<Eigen::Vector3f> vectorsIn(const JsonField& field)
 
 // What reading a version 3 file keeps between its parts: where its blocks come from, the time lists
 // read so far, and how many keys and times the budget has left. Versions 1 and 2 have no blocks.
+// A check before saving keeps no keys: each track's are dropped once they passed.
 struct BlockReading {
-    explicit BlockReading(BlockSource& source) : blocks(source) {}
+    BlockReading(BlockSource& source, bool keep) : blocks(source), keepsKeys(keep) {}
 
     BlockSource& blocks;
+    bool keepsKeys;
     std::vector<std::vector<double>> timeLists;
     std::size_t keysLeft = kMaxProjectKeys;
     std::size_t timesLeft = kMaxProjectKeys;
 };
 
-// A count of `what` that the budget, of which `left` remain, holds; taken from it.
-std::size_t budgetedCount(const JsonField& field, std::size_t& left, const QString& what)
+// A count that the budget, of which `left` remain, holds; taken from it. `pastBudget` says what is
+// wrong with a larger one, given the count (%1) and the budget (%2).
+std::size_t budgetedCount(const JsonField& field, std::size_t& left, const QString& pastBudget)
 {
     const qint64 count = field.integer(0, kMaxId);
     if (static_cast<std::size_t>(count) > left)
-        field.fail(FileError::tr("%1 %2 here pass the budget of %3 %2 a project may hold")
-                       .arg(count)
-                       .arg(what)
-                       .arg(kMaxProjectKeys));
+        field.fail(pastBudget.arg(count).arg(kMaxProjectKeys));
     left -= static_cast<std::size_t>(count);
     return static_cast<std::size_t>(count);
 }
@@ -356,7 +356,8 @@ std::vector<Keyframe> keysIn(const JsonField& field, BlockReading* binary)
     if (!binary)
         return timedItems<Keyframe>(field, "time", keyframeIn, [](const Keyframe& key) { return key.time; });
     KeyLayout layout;
-    layout.count = budgetedCount(field.member("count"), binary->keysLeft, FileError::tr("keys"));
+    layout.count = budgetedCount(field.member("count"), binary->keysLeft,
+                                 FileError::tr("%1 keys here pass the budget of %2 keys a project may hold"));
     const JsonField times = field.member("times");
     if (binary->timeLists.empty())
         times.fail(FileError::tr("the file has no time lists"));
@@ -481,6 +482,10 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
     // Version 1 has no sketch-editing state: it reads as the empty sketch.
     if (version >= 2)
         object.track.sketch = sketchIn(field.member("sketch"), binary);
+    if (binary && !binary->keepsKeys) {
+        object.track.keys.clear();
+        object.track.sketch.keysBeforeFit.clear();
+    }
     return object;
 }
 
@@ -564,7 +569,8 @@ Scene sceneIn(const JsonField& root, int version, BlockReading* binary)
         meshes.push_back(meshIn(mesh, binary));
     if (binary)
         for (const JsonField& list : root.member("times").elements()) {
-            const std::size_t count = budgetedCount(list, binary->timesLeft, FileError::tr("times"));
+            const std::size_t count = budgetedCount(list, binary->timesLeft,
+                                                   FileError::tr("%1 times here pass the budget of %2 times a project may hold"));
             binary->timeLists.push_back(
                 timesFromBlock(binary->blocks.next(static_cast<qint64>(count * sizeof(double)), list), list));
         }
@@ -639,7 +645,7 @@ Scene binaryProjectIn(QIODevice& device, qint64 bytesLeft)
         QJsonDocument::fromJson(blocks.next(static_cast<qint64>(headerBytes), header), &error);
     if (error.error != QJsonParseError::NoError)
         header.fail(notValidJson(error));
-    BlockReading reading{blocks};
+    BlockReading reading(blocks, true);
     Scene scene = sceneIn(JsonField(document.isObject() ? QJsonValue(document.object()) : QJsonValue(document.array()),
                                     QString()),
                           static_cast<int>(number), &reading);
@@ -698,7 +704,7 @@ void writeProject(const QString& path, const Scene& scene)
     // Read back from the very blocks that would be written, one at a time, before any is.
     try {
         WrittenBlocks blocks(layout.blocks);
-        BlockReading reading{blocks};
+        BlockReading reading(blocks, false);
         sceneIn(JsonField(layout.header, QString()), kProjectVersion, &reading);
     } catch (const FieldError& problem) {
         throw OutputError(path, FileError::tr("not saved, because the file would not read back: %1")

@@ -39,8 +39,8 @@ Scene readProject(const QString& path);
 // Writes the project file, version 3, through an OutputTarget (model/output_target.h): on any error
 // (OutputError) a regular file already at `path` keeps its contents and none is created; a FIFO or
 // a device is written in place, and "-" is standard output. A scene that would not read back, such as one holding a
-// number that is not finite, is refused rather than written: its blocks are read back one at a time
-// before any is written, which costs a copy of its keys for as long as the check lasts.
+// number that is not finite, is refused rather than written: its blocks are read back and checked,
+// one at a time, before any is written.
 void writeProject(const QString& path, const Scene& scene);
 
 } // namespace gyre::model
