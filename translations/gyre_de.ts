@@ -812,13 +812,13 @@
     <name>gyre::FileError</name>
     <message>
         <location filename="../src/model/project_file.cpp"/>
-        <source>%1 keys here pass the budget of %2 keys a project may hold</source>
-        <translation>%1 Schlüssel überschreiten hier das Budget von %2 Schlüsseln, das ein Projekt haben darf</translation>
+        <source>these %1 keys bring the file past the %2 keys a project may hold</source>
+        <translation>mit diesen %1 Schlüsseln hat die Datei mehr als die %2 Schlüssel, die ein Projekt haben darf</translation>
     </message>
     <message>
         <location filename="../src/model/project_file.cpp"/>
-        <source>%1 times here pass the budget of %2 times a project may hold</source>
-        <translation>%1 Zeiten überschreiten hier das Budget von %2 Zeiten, das ein Projekt haben darf</translation>
+        <source>these %1 times bring the file past the %2 times a project may hold</source>
+        <translation>mit diesen %1 Zeiten hat die Datei mehr als die %2 Zeiten, die ein Projekt haben darf</translation>
     </message>
     <message>
         <location filename="../src/model/project_file.cpp"/>

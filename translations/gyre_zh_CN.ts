@@ -812,13 +812,13 @@
     <name>gyre::FileError</name>
     <message>
         <location filename="../src/model/project_file.cpp"/>
-        <source>%1 keys here pass the budget of %2 keys a project may hold</source>
-        <translation>此处 %1 个关键帧超出项目可容纳的 %2 个关键帧的预算</translation>
+        <source>these %1 keys bring the file past the %2 keys a project may hold</source>
+        <translation>加上这 %1 个关键帧，文件超出项目可容纳的 %2 个关键帧</translation>
     </message>
     <message>
         <location filename="../src/model/project_file.cpp"/>
-        <source>%1 times here pass the budget of %2 times a project may hold</source>
-        <translation>此处 %1 个时间超出项目可容纳的 %2 个时间的预算</translation>
+        <source>these %1 times bring the file past the %2 times a project may hold</source>
+        <translation>加上这 %1 个时间，文件超出项目可容纳的 %2 个时间</translation>
     </message>
     <message>
         <location filename="../src/model/project_file.cpp"/>

@@ -312,7 +312,7 @@ struct BlockReading {
 };
 
 // A count that the budget, of which `left` remain, holds; taken from it. `pastBudget` says what is
-// wrong with a larger one, given the count (%1) and the budget (%2).
+// wrong with a larger one, given the count (%1) and the whole budget (%2).
 std::size_t budgetedCount(const JsonField& field, std::size_t& left, const QString& pastBudget)
 {
     const qint64 count = field.integer(0, kMaxId);
@@ -357,7 +357,7 @@ std::vector<Keyframe> keysIn(const JsonField& field, BlockReading* binary)
         return timedItems<Keyframe>(field, "time", keyframeIn, [](const Keyframe& key) { return key.time; });
     KeyLayout layout;
     layout.count = budgetedCount(field.member("count"), binary->keysLeft,
-                                 FileError::tr("%1 keys here pass the budget of %2 keys a project may hold"));
+                                 FileError::tr("these %1 keys bring the file past the %2 keys a project may hold"));
     const JsonField times = field.member("times");
     if (binary->timeLists.empty())
         times.fail(FileError::tr("the file has no time lists"));
@@ -570,7 +570,7 @@ Scene sceneIn(const JsonField& root, int version, BlockReading* binary)
     if (binary)
         for (const JsonField& list : root.member("times").elements()) {
             const std::size_t count = budgetedCount(list, binary->timesLeft,
-                                                   FileError::tr("%1 times here pass the budget of %2 times a project may hold"));
+                                                   FileError::tr("these %1 times bring the file past the %2 times a project may hold"));
             binary->timeLists.push_back(
                 timesFromBlock(binary->blocks.next(static_cast<qint64>(count * sizeof(double)), list), list));
         }

@@ -222,14 +222,14 @@ void damagedBlockRows()
     row("no such time list", binaryProject(binaryHeader(keyLayout(3, 2)), valid),
         "objects[0].keyframes.times: 2 is outside 0 to 1");
     row("keys past the budget", binaryProject(binaryHeader(keyLayout(8388609, 0)), valid),
-        "objects[0].keyframes.count: 8388609 keys here pass the budget of 8388608 keys a project may hold");
+        "objects[0].keyframes.count: these 8388609 keys bring the file past the 8388608 keys a project may hold");
     QJsonObject manyTimes = binaryHeader(keyLayout(8000000, 0));
     manyTimes["times"] = QJsonArray{8000000, 0};
     row("count the file does not hold", binaryProject(manyTimes, valid),
         "times[0]: its block needs 64000000 bytes; the file has 195 left");
     manyTimes["times"] = QJsonArray{8388609, 0};
     row("times past the budget", binaryProject(manyTimes, valid),
-        "times[0]: 8388609 times here pass the budget of 8388608 times a project may hold");
+        "times[0]: these 8388609 times bring the file past the 8388608 times a project may hold");
     const QByteArray header = QJsonDocument(binaryHeader()).toJson();
     QByteArray longHeader = binaryProject(header, valid);
     longHeader.replace(16, 8, little<quint64>({1'000'000}));
