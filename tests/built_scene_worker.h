@@ -12,8 +12,8 @@ namespace gyre::test {
 
 inline void useBuiltSceneWorker()
 {
-    if (!qEnvironmentVariableIsSet(kSceneWorkerVariable))
-        qputenv(kSceneWorkerVariable, GYRE_SCENE_WORKER_PATH);
+    if (!qEnvironmentVariableIsSet(io::kSceneWorkerVariable))
+        qputenv(io::kSceneWorkerVariable, GYRE_SCENE_WORKER_PATH);
 }
 
 } // namespace gyre::test

@@ -21,22 +21,22 @@ namespace gyre::app {
 namespace {
 
 // What the dialog says about the automatic choice of takes.
-QString takeChoiceText(const SceneImport& read)
+QString takeChoiceText(const io::SceneImport& read)
 {
     switch (read.takeRule) {
-    case TakeRule::NoAnimation:
+    case io::TakeRule::NoAnimation:
         return ImportDialog::tr("The file has no animation.");
-    case TakeRule::Single:
+    case io::TakeRule::Single:
         return ImportDialog::tr("The file has one animation.");
-    case TakeRule::Disjoint:
+    case io::TakeRule::Disjoint:
         return ImportDialog::tr("Each animation moves nodes no other moves, so all are imported together.");
-    case TakeRule::BlenderActions:
+    case io::TakeRule::BlenderActions:
         return ImportDialog::tr("These are Blender's takes, one for every object and action: each object gets its "
                                 "own action.");
-    case TakeRule::ChoiceNeeded:
+    case io::TakeRule::ChoiceNeeded:
         return ImportDialog::tr("These animations move the same nodes: choose which to import. Checked ones are "
                                 "merged; a node that several move takes the keys of the last one in the list.");
-    case TakeRule::Chosen:
+    case io::TakeRule::Chosen:
         break;
     }
     return {};
@@ -52,7 +52,7 @@ bool isChanged(const QDoubleSpinBox* box, double value)
 
 } // namespace
 
-ImportDialog::ImportDialog(const QString& path, const SceneImport& firstRead, QWidget* parent)
+ImportDialog::ImportDialog(const QString& path, const io::SceneImport& firstRead, QWidget* parent)
     : QDialog(parent)
     , defaultTakes_(firstRead.takes)
     , fileSettings_(firstRead.file.values)
@@ -73,7 +73,7 @@ ImportDialog::ImportDialog(const QString& path, const SceneImport& firstRead, QW
     layout->addWidget(choice);
     takes_->setHorizontalHeaderLabels({tr("Animation"), tr("Length"), tr("Moves")});
     for (std::size_t i = 0; i < firstRead.animations.size(); ++i) {
-        const AnimationSummary& animation = firstRead.animations[i];
+        const io::AnimationSummary& animation = firstRead.animations[i];
         auto* name = new QStandardItem(animation.name.isEmpty() ? tr("(unnamed %1)").arg(i) : animation.name);
         name->setCheckable(true);
         name->setEditable(false);
@@ -95,7 +95,7 @@ ImportDialog::ImportDialog(const QString& path, const SceneImport& firstRead, QW
     layout->addWidget(takesView_, 1);
 
     auto* form = new QFormLayout;
-    const FileSettings& file = firstRead.file;
+    const io::FileSettings& file = firstRead.file;
     fps_->setObjectName(QStringLiteral("importFps"));
     fps_->setRange(0.001, model::kMaxFps);
     fps_->setDecimals(3);
@@ -111,14 +111,14 @@ ImportDialog::ImportDialog(const QString& path, const SceneImport& firstRead, QW
     unit_->setToolTip(file.unitSource);
     form->addRow(tr("One unit of the file:"), unit_);
     up_->setObjectName(QStringLiteral("importUp"));
-    up_->addItem(tr("Y up (turned to Z up)"), static_cast<int>(UpAxis::Y));
-    up_->addItem(tr("Z up"), static_cast<int>(UpAxis::Z));
+    up_->addItem(tr("Y up (turned to Z up)"), static_cast<int>(io::UpAxis::Y));
+    up_->addItem(tr("Z up"), static_cast<int>(io::UpAxis::Z));
     up_->setCurrentIndex(up_->findData(static_cast<int>(file.values.up)));
     up_->setToolTip(file.upSource);
     form->addRow(tr("Up axis:"), up_);
     origin_->setObjectName(QStringLiteral("importTimeOrigin"));
-    origin_->addItem(tr("First key at 0 s"), static_cast<int>(TimeOrigin::FirstKey));
-    origin_->addItem(tr("As in the file"), static_cast<int>(TimeOrigin::File));
+    origin_->addItem(tr("First key at 0 s"), static_cast<int>(io::TimeOrigin::FirstKey));
+    origin_->addItem(tr("As in the file"), static_cast<int>(io::TimeOrigin::File));
     form->addRow(tr("Time:"), origin_);
     layout->addLayout(form);
     auto* sources = new QLabel(tr("From the file: %1; %2; %3.").arg(file.fpsSource, file.unitSource, file.upSource), this);
@@ -142,11 +142,11 @@ std::vector<std::size_t> ImportDialog::checkedTakes() const
     return checked;
 }
 
-ImportOptions ImportDialog::options() const
+io::ImportOptions ImportDialog::options() const
 {
-    ImportOptions options;
+    io::ImportOptions options;
     if (takes_->rowCount() > 0) {
-        options.takeSelection = TakeSelection::Listed;
+        options.takeSelection = io::TakeSelection::Listed;
         options.takes = checkedTakes();
     }
     // Unchanged, the file's own values, unrounded.
@@ -154,8 +154,8 @@ ImportOptions ImportDialog::options() const
         options.fps = fps_->value();
     if (isChanged(unit_, fileSettings_.metresPerUnit))
         options.metresPerUnit = unit_->value();
-    options.up = static_cast<UpAxis>(up_->currentData().toInt());
-    options.timeOrigin = static_cast<TimeOrigin>(origin_->currentData().toInt());
+    options.up = static_cast<io::UpAxis>(up_->currentData().toInt());
+    options.timeOrigin = static_cast<io::TimeOrigin>(origin_->currentData().toInt());
     return options;
 }
 
@@ -165,8 +165,8 @@ bool ImportDialog::keepsTheDefaults() const
     std::sort(defaults.begin(), defaults.end());
     return checkedTakes() == defaults && !isChanged(fps_, fileSettings_.fps) &&
            !isChanged(unit_, fileSettings_.metresPerUnit) &&
-           static_cast<UpAxis>(up_->currentData().toInt()) == fileSettings_.up &&
-           static_cast<TimeOrigin>(origin_->currentData().toInt()) == TimeOrigin::FirstKey;
+           static_cast<io::UpAxis>(up_->currentData().toInt()) == fileSettings_.up &&
+           static_cast<io::TimeOrigin>(origin_->currentData().toInt()) == io::TimeOrigin::FirstKey;
 }
 
 void ImportDialog::updateAcceptable()

@@ -27,10 +27,10 @@ public:
 
     // `firstRead` is the file read with the default options: its takes, what the file says, and the
     // automatic choice.
-    ImportDialog(const QString& path, const SceneImport& firstRead, QWidget* parent = nullptr);
+    ImportDialog(const QString& path, const io::SceneImport& firstRead, QWidget* parent = nullptr);
 
     // The options as the dialog now says them: the checked takes in the file's order, the settings.
-    ImportOptions options() const;
+    io::ImportOptions options() const;
     // Whether those are the defaults the first read used, so that its scene can be kept as it is.
     bool keepsTheDefaults() const;
 
@@ -45,7 +45,7 @@ private:
     void updateAcceptable();
 
     std::vector<std::size_t> defaultTakes_;
-    ImportSettings fileSettings_;
+    io::ImportSettings fileSettings_;
     QStandardItemModel* takes_;
     QTreeView* takesView_;
     QDoubleSpinBox* fps_;

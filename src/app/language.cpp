@@ -64,7 +64,7 @@ Translations::Translations(const QString& code)
 
 Translations::~Translations()
 {
-    setSceneWorkerLocale(QLocale::c());
+    io::setSceneWorkerLocale(QLocale::c());
     for (const std::unique_ptr<QTranslator>& translator : translators_)
         QCoreApplication::removeTranslator(translator.get());
 }
@@ -83,7 +83,7 @@ void Translations::install(const QLocale& locale)
     load(QStringLiteral("qtbase"), QLibraryInfo::path(QLibraryInfo::TranslationsPath));
     load(QStringLiteral("gyre"), QStringLiteral(":/i18n"));
     // The scene worker's messages in the same language.
-    setSceneWorkerLocale(locale);
+    io::setSceneWorkerLocale(locale);
 }
 
 } // namespace gyre::app

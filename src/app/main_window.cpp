@@ -501,7 +501,7 @@ void MainWindow::showAbout()
             .arg(EIGEN_WORLD_VERSION)
             .arg(EIGEN_MAJOR_VERSION)
             .arg(EIGEN_MINOR_VERSION)
-            .arg(QString::fromLatin1(CERES_VERSION_STRING), assimpVersion(),
+            .arg(QString::fromLatin1(CERES_VERSION_STRING), io::assimpVersion(),
                  QString::fromLatin1(QCUSTOMPLOT_VERSION_STR)));
 }
 

@@ -109,7 +109,7 @@ void SceneFileActions::importScene(const QString& path, bool askForOptions)
     startImport(path, {});
 }
 
-void SceneFileActions::startImport(const QString& path, const ImportOptions& options)
+void SceneFileActions::startImport(const QString& path, const io::ImportOptions& options)
 {
     if (!jobs_.startImport(path, options)) {
         statusBar_->showMessage(tr("Wait for the scene file being read or written first"), kMessageMilliseconds);
@@ -118,17 +118,17 @@ void SceneFileActions::startImport(const QString& path, const ImportOptions& opt
     showBusy(tr("Importing %1…").arg(QFileInfo(path).fileName()), true);
 }
 
-void SceneFileActions::receiveImport(const QString& path, const std::shared_ptr<const SceneImport>& imported)
+void SceneFileActions::receiveImport(const QString& path, const std::shared_ptr<const io::SceneImport>& imported)
 {
     hideBusy();
     const bool wasFirstRead = std::exchange(firstRead_, false);
-    if (wasFirstRead && (askForOptions_ || imported->takeRule == TakeRule::ChoiceNeeded))
+    if (wasFirstRead && (askForOptions_ || imported->takeRule == io::TakeRule::ChoiceNeeded))
         askForOptions(path, imported);
     else
         addImportedObjects(path, imported);
 }
 
-void SceneFileActions::askForOptions(const QString& path, const std::shared_ptr<const SceneImport>& firstRead)
+void SceneFileActions::askForOptions(const QString& path, const std::shared_ptr<const io::SceneImport>& firstRead)
 {
     auto* dialog = new ImportDialog(path, *firstRead, window_);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
@@ -147,7 +147,7 @@ void SceneFileActions::askForOptions(const QString& path, const std::shared_ptr<
 
 void SceneFileActions::exportScene(const QString& path)
 {
-    const std::optional<SceneFormat> format = sceneFormatOfPath(path);
+    const std::optional<io::SceneFormat> format = io::sceneFormatOfPath(path);
     if (!format) {
         QMessageBox::warning(window_, tr("Cannot export"),
                              tr("%1: Gyre writes .gltf, .glb, .dae, .fbx and .obj scenes; the file name's "
@@ -163,7 +163,7 @@ void SceneFileActions::exportScene(const QString& path)
     showBusy(tr("Exporting %1…").arg(QFileInfo(path).fileName()), false);
 }
 
-void SceneFileActions::addImportedObjects(const QString& path, const std::shared_ptr<const SceneImport>& imported)
+void SceneFileActions::addImportedObjects(const QString& path, const std::shared_ptr<const io::SceneImport>& imported)
 {
     const QString name = QFileInfo(path).fileName();
     if (imported->scene.objects.empty()) {
@@ -190,7 +190,7 @@ void SceneFileActions::addImportedObjects(const QString& path, const std::shared
     showWarnings(tr("Imported %1").arg(name), imported->warnings);
 }
 
-void SceneFileActions::reportExport(const QString& path, const ExportReport& report)
+void SceneFileActions::reportExport(const QString& path, const io::ExportReport& report)
 {
     hideBusy();
     statusBar_->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), kMessageMilliseconds);

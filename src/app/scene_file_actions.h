@@ -44,11 +44,11 @@ signals:
     void importDialogOpened(QDialog* dialog);
 
 private:
-    void startImport(const QString& path, const ImportOptions& options);
-    void receiveImport(const QString& path, const std::shared_ptr<const SceneImport>& imported);
-    void askForOptions(const QString& path, const std::shared_ptr<const SceneImport>& firstRead);
-    void addImportedObjects(const QString& path, const std::shared_ptr<const SceneImport>& imported);
-    void reportExport(const QString& path, const ExportReport& report);
+    void startImport(const QString& path, const io::ImportOptions& options);
+    void receiveImport(const QString& path, const std::shared_ptr<const io::SceneImport>& imported);
+    void askForOptions(const QString& path, const std::shared_ptr<const io::SceneImport>& firstRead);
+    void addImportedObjects(const QString& path, const std::shared_ptr<const io::SceneImport>& imported);
+    void reportExport(const QString& path, const io::ExportReport& report);
     // `message` names the file and says what was wrong.
     void reportFailure(const QString& message);
     void showWarnings(const QString& title, const QStringList& warnings);

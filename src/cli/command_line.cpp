@@ -182,9 +182,9 @@ UsageError VerbCommandLine::error(std::string_view message) const
 model::BakeRange checkedOutputRange(const model::BakeRange& range, std::size_t keyCount,
                                     const VerbCommandLine& commandLine)
 {
-    if (!(model::bakeSampleBound(range, keyCount) <= static_cast<double>(kMaxPoseRows)))
+    if (!(model::bakeSampleBound(range, keyCount) <= static_cast<double>(io::kMaxPoseRows)))
         throw commandLine.error("--fps " + formatNumber(range.fps) + " over " + formatNumber(range.end - range.start) +
-                                " s gives more than " + std::to_string(kMaxPoseRows) + " samples");
+                                " s gives more than " + std::to_string(io::kMaxPoseRows) + " samples");
     return range;
 }
 

@@ -31,10 +31,10 @@ std::string roundedDegrees(double degrees)
 }
 
 // Gimbal lock is shown, not hidden: each row near it is named on standard error.
-void warnNearGimbalLock(const QString& inputPath, const PoseTable& table, const EulerConvention& convention)
+void warnNearGimbalLock(const QString& inputPath, const io::PoseTable& table, const EulerConvention& convention)
 {
     int nearRows = 0;
-    for (const PoseRow& row : table.rows) {
+    for (const io::PoseRow& row : table.rows) {
         const double degrees =
             eulerAnglesFromQuaternion(row.pose.orientation, convention).gimbalLockDistance * 180.0 / std::numbers::pi;
         if (!(degrees < kGimbalWarningDegrees))
@@ -56,13 +56,13 @@ void runConvert(const QStringList& arguments)
     // The same poses in another column set: the file may be converted in place.
     const VerbCommandLine commandLine(QStringLiteral("convert"), arguments, convertOptions(),
                                       OutputFile::MayReplaceInput);
-    const RotationColumns target = commandLine.choice(QStringLiteral("to"), kRotationColumnsNames);
+    const io::RotationColumns target = commandLine.choice(QStringLiteral("to"), io::kRotationColumnsNames);
     const EulerConvention convention = commandLine.eulerConvention();
-    PoseTable table = readPoseCsv(commandLine.inputPath(), convention);
+    io::PoseTable table = io::readPoseCsv(commandLine.inputPath(), convention);
     table.rotationColumns = target;
-    if (target == RotationColumns::Euler)
+    if (target == io::RotationColumns::Euler)
         warnNearGimbalLock(commandLine.inputPath(), table, convention);
-    writePoseCsv(commandLine.outputPath(), table, convention);
+    io::writePoseCsv(commandLine.outputPath(), table, convention);
 }
 
 } // namespace gyre::cli

@@ -61,14 +61,14 @@ QList<QCommandLineOption> fitOptions()
     return options + eulerOptions();
 }
 
-Eigen::Vector3d vectorAt(const NumberTable& table, std::size_t row, std::span<const std::string_view> columns)
+Eigen::Vector3d vectorAt(const io::NumberTable& table, std::size_t row, std::span<const std::string_view> columns)
 {
     return {table.value(row, columns[0]), table.value(row, columns[1]), table.value(row, columns[2])};
 }
 
 AngularVelocityTarget omegaTarget(const QString& path)
 {
-    const NumberTable table = readNumberCsv(path, {kOmegaColumns, {}, "time"});
+    const io::NumberTable table = io::readNumberCsv(path, {kOmegaColumns, {}, "time"});
     if (table.rowCount() < 2)
         throw table.errorAt(0, "an angular-velocity target needs at least two samples");
     std::vector<TimedVector> samples;
@@ -79,7 +79,7 @@ AngularVelocityTarget omegaTarget(const QString& path)
 
 std::vector<TimedScalar> magnitudeCurve(const QString& path)
 {
-    const NumberTable table = readNumberCsv(path, {kMagnitudeColumns, {}, "time"});
+    const io::NumberTable table = io::readNumberCsv(path, {kMagnitudeColumns, {}, "time"});
     if (table.rowCount() < 2)
         throw table.errorAt(0, "a magnitude curve needs at least two samples");
     std::vector<TimedScalar> curve;
@@ -96,7 +96,7 @@ std::vector<TimedScalar> magnitudeCurve(const QString& path)
 // The direction curve, timed by its own column or spread over `window` by arc length.
 std::vector<TimedVector> directionCurve(const QString& path, const fit::TimeWindow& window)
 {
-    const NumberTable table = readNumberCsv(path, {kDirectionColumns, kTime, "time"});
+    const io::NumberTable table = io::readNumberCsv(path, {kDirectionColumns, kTime, "time"});
     std::vector<Eigen::Vector3d> points;
     for (std::size_t row = 0; row < table.rowCount(); ++row) {
         const Eigen::Vector3d point = vectorAt(table, row, kDirectionColumns);
@@ -117,7 +117,7 @@ std::vector<TimedVector> directionCurve(const QString& path, const fit::TimeWind
 
 std::vector<Eigen::Vector2d> patternCurve(const QString& path)
 {
-    const NumberTable table = readNumberCsv(path, {kPatternColumns, {}, std::nullopt});
+    const io::NumberTable table = io::readNumberCsv(path, {kPatternColumns, {}, std::nullopt});
     std::vector<Eigen::Vector2d> pattern;
     for (std::size_t row = 0; row < table.rowCount(); ++row)
         pattern.emplace_back(table.value(row, "x"), table.value(row, "y"));
@@ -249,15 +249,15 @@ QByteArray reportJson(const FitResult& result, const FitSettings& settings)
     return QJsonDocument(report).toJson();
 }
 
-PoseTable fittedFrames(const PoseTable& keys, const std::vector<FitKey>& fitKeys, const FitResult& result,
+io::PoseTable fittedFrames(const io::PoseTable& keys, const std::vector<FitKey>& fitKeys, const FitResult& result,
                        const std::vector<double>& times)
 {
     std::vector<PositionKey> positions;
-    for (const PoseRow& row : keys.rows)
+    for (const io::PoseRow& row : keys.rows)
         positions.push_back({row.time, row.pose.position});
     const PositionCurve positionCurve(std::move(positions), PositionCurve::Shape::Cubic);
     const fit::FittedMotion motion(fitKeys, result);
-    PoseTable frames{RotationColumns::Quaternion, true, keys.hasPosition, {}};
+    io::PoseTable frames{io::RotationColumns::Quaternion, true, keys.hasPosition, {}};
     frames.rows.reserve(times.size());
     for (const double time : times)
         frames.rows.push_back({time, {motion.sample(time).value, positionCurve.at(time)}, 0});
@@ -286,7 +286,7 @@ void runFit(const QStringList& arguments)
     const double fps = commandLine.frameRate(kFps);
     const std::optional<fit::TimeWindow> window = windowOption(commandLine);
     const FitSettings fitSettings = settings(commandLine, window);
-    const PoseTable keys = readPoseCsv(commandLine.inputPath(), commandLine.eulerConvention(), TimeColumn::Required);
+    const io::PoseTable keys = io::readPoseCsv(commandLine.inputPath(), commandLine.eulerConvention(), io::TimeColumn::Required);
     if (keys.rows.size() < 2)
         throw InputError(commandLine.inputPath(), keys.rows.back().line, "fit needs at least two keys");
     const std::set<std::size_t> freed = freedKeys(commandLine, keys.rows.size());
@@ -313,9 +313,9 @@ void runFit(const QStringList& arguments)
         throw InputError(commandLine.inputPath(), std::string("cannot fit: ") + problem.what());
     }
 
-    const PoseTable frames = fittedFrames(keys, fitKeys, result, times);
+    const io::PoseTable frames = fittedFrames(keys, fitKeys, result, times);
     if (!commandLine.isSet(kReport)) {
-        writePoseCsv(commandLine.outputPath(), frames);
+        io::writePoseCsv(commandLine.outputPath(), frames);
         return;
     }
     // Both files are written in full before either replaces what was there.
@@ -323,7 +323,7 @@ void runFit(const QStringList& arguments)
     OutputTarget reportFile(commandLine.requiredValue(kReport));
     framesFile.open();
     reportFile.open();
-    writePoseCsv(framesFile, frames);
+    io::writePoseCsv(framesFile, frames);
     reportFile.write(reportJson(result, fitSettings));
     framesFile.commit();
     reportFile.commit();

@@ -40,7 +40,7 @@ std::string objectLine(const model::Scene& scene, const SceneObject& object)
 bool isProject(const QString& path) { return path.endsWith(QStringLiteral(".gyre"), Qt::CaseInsensitive); }
 
 // The file's animations, which the import takes, and the settings it applies.
-std::string sceneLines(const SceneImport& imported)
+std::string sceneLines(const io::SceneImport& imported)
 {
     std::string text = plural(imported.animations.size(), "animation") + (imported.animations.empty() ? "\n" : ":\n");
     text += animationList(imported);
@@ -61,7 +61,7 @@ void runInfo(const QStringList& arguments)
         scene = model::readProject(path);
         text = path.toStdString() + ": Gyre project\n";
     } else {
-        SceneImport imported = importSceneInWorker(path);
+        io::SceneImport imported = io::importSceneInWorker(path);
         scene = std::move(imported.scene);
         text = path.toStdString() + ": scene\n" + sceneLines(imported);
     }

@@ -22,14 +22,14 @@ QList<QCommandLineOption> interpolateOptions()
 }
 
 // The keys as a track; screw is the plain polyscrew through them (no subdivision, open).
-model::MotionTrack trackOf(const PoseTable& keys, InterpolationMethod method)
+model::MotionTrack trackOf(const io::PoseTable& keys, InterpolationMethod method)
 {
     model::MotionTrack track;
     track.interpolation = method;
     track.subdivision.levels = 0;
     track.subdivision.cyclic = false;
     track.keys.reserve(keys.rows.size());
-    for (const PoseRow& row : keys.rows)
+    for (const io::PoseRow& row : keys.rows)
         track.keys.push_back({row.time, row.pose, true});
     return track;
 }
@@ -42,16 +42,16 @@ void runInterpolate(const QStringList& arguments)
     const InterpolationMethod method = commandLine.choice(QStringLiteral("method"), kInterpolationMethodNames);
     const double fps = commandLine.frameRate(QStringLiteral("fps"));
     const EulerConvention convention = commandLine.eulerConvention();
-    const PoseTable keys = readPoseCsv(commandLine.inputPath(), convention, TimeColumn::Required);
+    const io::PoseTable keys = io::readPoseCsv(commandLine.inputPath(), convention, io::TimeColumn::Required);
     if (keys.rows.size() < 2)
         throw InputError(commandLine.inputPath(), keys.rows.back().line, "interpolate needs at least two keys");
     const model::MotionTrack track = trackOf(keys, method);
     const model::BakeRange range = checkedOutputRange({track.keys.front().time, track.keys.back().time, fps},
                                                       track.keys.size(), commandLine);
-    PoseTable frames{RotationColumns::Quaternion, true, true, {}};
+    io::PoseTable frames{io::RotationColumns::Quaternion, true, true, {}};
     for (const model::TimedPose& sample : model::bakeTrack(track, range, convention))
         frames.rows.push_back({sample.time, sample.pose, 0});
-    writePoseCsv(commandLine.outputPath(), frames);
+    io::writePoseCsv(commandLine.outputPath(), frames);
 }
 
 } // namespace gyre::cli

@@ -21,13 +21,13 @@ void runKeys(const QStringList& arguments)
     const QString name = commandLine.requiredValue(kObjectOption);
     const model::Scene scene = model::readProject(commandLine.inputPath());
     const model::SceneObject& object = trackedObjectNamed(scene, name, commandLine.inputPath());
-    PoseTable table;
-    table.rotationColumns = RotationColumns::Quaternion;
+    io::PoseTable table;
+    table.rotationColumns = io::RotationColumns::Quaternion;
     table.hasTime = true;
     table.hasPosition = true;
     for (const model::Keyframe& key : object.track.keys)
         table.rows.push_back({key.time, key.pose, 0});
-    writePoseCsv(commandLine.outputPath(), table);
+    io::writePoseCsv(commandLine.outputPath(), table);
 }
 
 } // namespace gyre::cli

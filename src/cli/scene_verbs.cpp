@@ -36,14 +36,14 @@ void warnAll(const QStringList& warnings)
 }
 
 // --animation all, N or N,M,...
-void readTakes(const VerbCommandLine& commandLine, ImportOptions& options)
+void readTakes(const VerbCommandLine& commandLine, io::ImportOptions& options)
 {
     const QString value = commandLine.requiredValue(kAnimationOption);
     if (value == QLatin1String("all")) {
-        options.takeSelection = TakeSelection::All;
+        options.takeSelection = io::TakeSelection::All;
         return;
     }
-    options.takeSelection = TakeSelection::Listed;
+    options.takeSelection = io::TakeSelection::Listed;
     for (const QString& item : value.split(QLatin1Char(','))) {
         bool ok = false;
         const qulonglong index = item.trimmed().toULongLong(&ok);
@@ -54,9 +54,9 @@ void readTakes(const VerbCommandLine& commandLine, ImportOptions& options)
     }
 }
 
-ImportOptions importOptions(const VerbCommandLine& commandLine)
+io::ImportOptions importOptions(const VerbCommandLine& commandLine)
 {
-    ImportOptions options;
+    io::ImportOptions options;
     if (commandLine.isSet(kAnimationOption))
         readTakes(commandLine, options);
     if (commandLine.isSet(kFpsOption))
@@ -64,16 +64,16 @@ ImportOptions importOptions(const VerbCommandLine& commandLine)
     if (commandLine.isSet(kUnitOption))
         options.metresPerUnit = commandLine.positiveNumber(kUnitOption);
     if (commandLine.isSet(kUpOption))
-        options.up = commandLine.choice(kUpOption, kUpAxisNames);
+        options.up = commandLine.choice(kUpOption, io::kUpAxisNames);
     if (commandLine.isSet(kTimeOriginOption))
-        options.timeOrigin = commandLine.choice(kTimeOriginOption, kTimeOriginNames);
+        options.timeOrigin = commandLine.choice(kTimeOriginOption, io::kTimeOriginNames);
     return options;
 }
 
 std::vector<std::string_view> sceneFormatNames()
 {
     std::vector<std::string_view> names;
-    for (const auto& entry : kSceneFormatNames)
+    for (const auto& entry : io::kSceneFormatNames)
         names.push_back(entry.second);
     return names;
 }
@@ -88,9 +88,9 @@ void runImport(const QStringList& arguments)
                                        QCommandLineOption(kUnitOption, {}, QStringLiteral("metres")),
                                        QCommandLineOption(kUpOption, {}, QStringLiteral("axis")),
                                        QCommandLineOption(kTimeOriginOption, {}, QStringLiteral("origin"))});
-    const ImportOptions options = importOptions(commandLine);
-    const SceneImport imported = importSceneInWorker(commandLine.inputPath(), options);
-    if (imported.takeRule == TakeRule::ChoiceNeeded)
+    const io::ImportOptions options = importOptions(commandLine);
+    const io::SceneImport imported = io::importSceneInWorker(commandLine.inputPath(), options);
+    if (imported.takeRule == io::TakeRule::ChoiceNeeded)
         throw commandLine.error(commandLine.inputPath().toStdString() + " has " +
                                 std::to_string(imported.animations.size()) +
                                 " animations that move the same nodes; choose with --animation N (one), N,M,... "
@@ -109,14 +109,14 @@ void runExport(const QStringList& arguments)
     if (commandLine.outputPath() == OutputTarget::kStandardOutput)
         throw commandLine.error("-o -: a scene is written to a file whose extension names its format, not to "
                                 "standard output");
-    const std::optional<SceneFormat> format = sceneFormatOfPath(commandLine.outputPath());
+    const std::optional<io::SceneFormat> format = io::sceneFormatOfPath(commandLine.outputPath());
     if (!format)
         throw commandLine.error("-o: the file's extension must name a scene format: " +
                                 alternatives(sceneFormatNames()));
     const std::optional<double> fps =
         commandLine.isSet(kFpsOption) ? std::optional(commandLine.frameRate(kFpsOption)) : std::nullopt;
     const model::Scene scene = model::readProject(commandLine.inputPath());
-    warnAll(exportSceneInWorker(scene, commandLine.outputPath(), *format, fps.value_or(scene.fps)).warnings);
+    warnAll(io::exportSceneInWorker(scene, commandLine.outputPath(), *format, fps.value_or(scene.fps)).warnings);
 }
 
 void runBake(const QStringList& arguments)
@@ -137,10 +137,10 @@ void runBake(const QStringList& arguments)
         throw InputError(commandLine.inputPath(), "the motion of '" + name.toStdString() + "' cannot be baked: " +
                                                       problem.what());
     }
-    PoseTable frames{RotationColumns::Quaternion, true, true, {}};
+    io::PoseTable frames{io::RotationColumns::Quaternion, true, true, {}};
     for (const model::TimedPose& sample : samples)
         frames.rows.push_back({sample.time, sample.pose, 0});
-    writePoseCsv(commandLine.outputPath(), frames);
+    io::writePoseCsv(commandLine.outputPath(), frames);
 }
 
 } // namespace gyre::cli

@@ -32,17 +32,17 @@ SubdivisionSettings settings(const VerbCommandLine& commandLine)
 void checkOutputSize(std::size_t poses, const SubdivisionSettings& settings, const VerbCommandLine& commandLine)
 {
     const auto count = subdividedPoseCount(poses, settings.levels, settings.cyclic);
-    if (!count || *count > kMaxPoseRows)
+    if (!count || *count > io::kMaxPoseRows)
         throw commandLine.error("--levels " + std::to_string(settings.levels) + " would turn " +
-                                std::to_string(poses) + " poses into more than " + std::to_string(kMaxPoseRows));
+                                std::to_string(poses) + " poses into more than " + std::to_string(io::kMaxPoseRows));
 }
 
 // Output pose i·2^L + j is at parameter i + j/2^L of the polyscrew, played at the time the track's
 // time map gives it (KeyTimeMap): the times at which the app plays these poses.
-std::vector<double> subdividedTimes(const PoseTable& table, const SubdivisionSettings& settings)
+std::vector<double> subdividedTimes(const io::PoseTable& table, const SubdivisionSettings& settings)
 {
     std::vector<double> keyTimes;
-    for (const PoseRow& row : table.rows)
+    for (const io::PoseRow& row : table.rows)
         keyTimes.push_back(row.time);
     const KeyTimeMap timeMap(keyTimes, settings.cyclic);
     const double perSpan = std::ldexp(1.0, settings.levels);
@@ -61,21 +61,21 @@ void runSubdivide(const QStringList& arguments)
 {
     const VerbCommandLine commandLine(QStringLiteral("subdivide"), arguments, subdivideOptions());
     const SubdivisionSettings chosen = settings(commandLine);
-    const PoseTable input = readPoseCsv(commandLine.inputPath(), commandLine.eulerConvention());
+    const io::PoseTable input = io::readPoseCsv(commandLine.inputPath(), commandLine.eulerConvention());
     if (input.rows.size() < 2)
         throw InputError(commandLine.inputPath(), input.rows.back().line, "subdivide needs at least two poses");
     checkOutputSize(input.rows.size(), chosen, commandLine);
     std::vector<Pose> controlPoses;
-    for (const PoseRow& row : input.rows)
+    for (const io::PoseRow& row : input.rows)
         controlPoses.push_back(row.pose);
     const std::vector<Pose> poses = subdividePolyscrew(controlPoses, chosen);
     const std::vector<double> times =
         input.hasTime ? subdividedTimes(input, chosen) : std::vector<double>(poses.size());
-    PoseTable output{RotationColumns::Quaternion, input.hasTime, true, {}};
+    io::PoseTable output{io::RotationColumns::Quaternion, input.hasTime, true, {}};
     output.rows.reserve(poses.size());
     for (std::size_t k = 0; k < poses.size(); ++k)
         output.rows.push_back({times[k], poses[k], 0});
-    writePoseCsv(commandLine.outputPath(), output);
+    io::writePoseCsv(commandLine.outputPath(), output);
 }
 
 } // namespace gyre::cli

@@ -10,7 +10,7 @@
 
 #include <Eigen/Geometry>
 
-namespace gyre::assimp_math {
+namespace gyre::io::assimp_math {
 
 inline Eigen::Vector3d toEigen(const aiVector3D& v) { return {v.x, v.y, v.z}; }
 
@@ -33,4 +33,4 @@ inline aiMatrix4x4 toAssimpMatrix(const Pose& pose)
     return aiMatrix4x4(aiVector3D(1, 1, 1), toAssimp(pose.orientation.normalized()), toAssimp(pose.position));
 }
 
-} // namespace gyre::assimp_math
+} // namespace gyre::io::assimp_math

@@ -6,7 +6,7 @@
 #include <iterator>
 #include <ranges>
 
-namespace gyre {
+namespace gyre::io {
 
 namespace {
 
@@ -74,4 +74,4 @@ QStringList prepareGltfTimes(BakedScene& baked, const model::Scene& scene)
     return warnings;
 }
 
-} // namespace gyre
+} // namespace gyre::io

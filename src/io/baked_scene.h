@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace gyre {
+namespace gyre::io {
 
 struct BakedObject {
     std::string name;                      // UTF-8, unique within the file, not empty
@@ -42,4 +42,4 @@ struct BakedScene {
 // Returns a warning for each of these that changed something.
 QStringList prepareGltfTimes(BakedScene& baked, const model::Scene& scene);
 
-} // namespace gyre
+} // namespace gyre::io

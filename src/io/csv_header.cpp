@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-namespace gyre {
+namespace gyre::io {
 
 std::string joinedNames(std::span<const std::string_view> names)
 {
@@ -90,4 +90,4 @@ void IncreasingColumn::check(const CsvLineReader& reader, double value)
     previousLine_ = reader.lineNumber();
 }
 
-} // namespace gyre
+} // namespace gyre::io

@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-namespace gyre {
+namespace gyre::io {
 
 // "a,b,c"
 std::string joinedNames(std::span<const std::string_view> names);
@@ -61,4 +61,4 @@ private:
     std::int64_t previousLine_ = 0;
 };
 
-} // namespace gyre
+} // namespace gyre::io

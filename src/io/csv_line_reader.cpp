@@ -6,7 +6,7 @@
 
 #include <cstdio>
 
-namespace gyre {
+namespace gyre::io {
 
 namespace {
 
@@ -124,4 +124,4 @@ void CsvLineReader::split()
     }
 }
 
-} // namespace gyre
+} // namespace gyre::io

@@ -16,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-namespace gyre {
+namespace gyre::io {
 
 class CsvLineReader {
 public:
@@ -64,4 +64,4 @@ private:
     std::int64_t lineNumber_ = 0;
 };
 
-} // namespace gyre
+} // namespace gyre::io

@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace gyre::fbx {
+namespace gyre::io::fbx {
 
 static_assert(std::endian::native == std::endian::little, "binary FBX is little-endian; values are copied as they are");
 
@@ -157,4 +157,4 @@ std::string encodeFile(const Node& root)
 
 FileIdentity fileIdentity() { return {kFileId, kCreationTime}; }
 
-} // namespace gyre::fbx
+} // namespace gyre::io::fbx

@@ -28,7 +28,7 @@
 #include <string_view>
 #include <vector>
 
-namespace gyre::fbx {
+namespace gyre::io::fbx {
 
 inline constexpr std::uint32_t kVersion = 7400;
 
@@ -82,4 +82,4 @@ struct FileIdentity {
 };
 FileIdentity fileIdentity();
 
-} // namespace gyre::fbx
+} // namespace gyre::io::fbx

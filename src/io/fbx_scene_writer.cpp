@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-namespace gyre {
+namespace gyre::io {
 
 namespace {
 
@@ -402,4 +402,4 @@ std::string fbxSceneFile(const BakedScene& scene)
     return FbxSceneBuilder(scene).file();
 }
 
-} // namespace gyre
+} // namespace gyre::io

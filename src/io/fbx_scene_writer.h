@@ -27,7 +27,7 @@
 #include <cstdint>
 #include <string>
 
-namespace gyre {
+namespace gyre::io {
 
 inline constexpr std::int64_t kFbxTicksPerSecond = 46'186'158'000;
 
@@ -40,4 +40,4 @@ int fbxTimeMode(double fps);
 // The whole file. Throws std::length_error when the file would pass 4 GiB.
 std::string fbxSceneFile(const BakedScene& scene);
 
-} // namespace gyre
+} // namespace gyre::io

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace gyre {
+namespace gyre::io {
 
 bool NumberTable::hasColumn(std::string_view name) const { return std::ranges::count(columns_, name) > 0; }
 
@@ -81,4 +81,4 @@ NumberTable readNumberCsv(const QString& path, const NumberCsvColumns& columns)
     return table;
 }
 
-} // namespace gyre
+} // namespace gyre::io

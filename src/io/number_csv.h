@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-namespace gyre {
+namespace gyre::io {
 
 struct NumberCsvColumns {
     std::span<const std::string_view> required;
@@ -52,4 +52,4 @@ private:
 // no rows or more than CsvLineReader::kRowBudget rows.
 NumberTable readNumberCsv(const QString& path, const NumberCsvColumns& columns);
 
-} // namespace gyre
+} // namespace gyre::io

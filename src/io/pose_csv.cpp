@@ -15,7 +15,7 @@
 #include <string>
 #include <string_view>
 
-namespace gyre {
+namespace gyre::io {
 
 namespace {
 
@@ -242,4 +242,4 @@ void writePoseCsv(const QString& path, const PoseTable& table, const EulerConven
     file.commit();
 }
 
-} // namespace gyre
+} // namespace gyre::io

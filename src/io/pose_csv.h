@@ -21,8 +21,10 @@
 #include <vector>
 
 namespace gyre {
-
 class OutputTarget;
+}
+
+namespace gyre::io {
 
 struct PoseRow {
     double time = 0.0;     // seconds; 0 when the table has no time column
@@ -61,4 +63,4 @@ void writePoseCsv(const QString& path, const PoseTable& table, const EulerConven
 // commits them together.
 void writePoseCsv(OutputTarget& file, const PoseTable& table, const EulerConvention& convention = {});
 
-} // namespace gyre
+} // namespace gyre::io

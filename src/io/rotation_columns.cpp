@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace gyre {
+namespace gyre::io {
 
 namespace {
 
@@ -145,4 +145,4 @@ Eigen::MatrixXd rotationColumnValues(RotationColumns columns, const std::vector<
     return values;
 }
 
-} // namespace gyre
+} // namespace gyre::io

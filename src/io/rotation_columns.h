@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-namespace gyre {
+namespace gyre::io {
 
 enum class RotationColumns {
     Quaternion,     // qw,qx,qy,qz
@@ -64,4 +64,4 @@ Eigen::MatrixXd rotationColumnValues(RotationColumns columns, const std::vector<
                                      const EulerConvention& convention,
                                      std::optional<Eigen::Vector3d>* eulerCarry = nullptr);
 
-} // namespace gyre
+} // namespace gyre::io

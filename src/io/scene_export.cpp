@@ -26,7 +26,7 @@
 #include <utility>
 #include <vector>
 
-namespace gyre {
+namespace gyre::io {
 
 namespace {
 
@@ -395,4 +395,4 @@ ExportReport exportScene(const model::Scene& scene, const QString& path, SceneFo
     return writeWithAssimp(*assimpScene(baked), path, format, std::move(report));
 }
 
-} // namespace gyre
+} // namespace gyre::io

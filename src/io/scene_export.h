@@ -23,7 +23,7 @@
 #include <cstddef>
 #include <optional>
 
-namespace gyre {
+namespace gyre::io {
 
 enum class SceneFormat { Gltf, Glb, Collada, Fbx, Obj };
 
@@ -58,4 +58,4 @@ struct ExportReport {
 // be written.
 ExportReport exportScene(const model::Scene& scene, const QString& path, SceneFormat format, double fps);
 
-} // namespace gyre
+} // namespace gyre::io

@@ -27,7 +27,7 @@
 #include <unordered_map>
 #include <utility>
 
-namespace gyre {
+namespace gyre::io {
 
 namespace {
 
@@ -631,4 +631,4 @@ QString assimpVersion()
     return QStringLiteral("%1.%2.%3").arg(aiGetVersionMajor()).arg(aiGetVersionMinor()).arg(aiGetVersionPatch());
 }
 
-} // namespace gyre
+} // namespace gyre::io

@@ -35,7 +35,7 @@
 #include <optional>
 #include <vector>
 
-namespace gyre {
+namespace gyre::io {
 
 // The ticks per second assumed when a file gives none: what Assimp's own viewer assumes.
 inline constexpr double kDefaultTicksPerSecond = 25.0;
@@ -131,4 +131,4 @@ unsigned readWithAssimpOnly(const QString& path);
 // The version of the Assimp library Gyre reads and writes scenes with, "5.2.5" for example.
 QString assimpVersion();
 
-} // namespace gyre
+} // namespace gyre::io

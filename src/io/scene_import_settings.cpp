@@ -16,7 +16,7 @@
 #include <cstring>
 #include <string>
 
-namespace gyre {
+namespace gyre::io {
 
 namespace {
 
@@ -283,4 +283,4 @@ FileSettings fileSettingsOf(const QString& path, SceneSource source, const aiSce
 
 std::optional<double> colladaMetresPerUnit(const QString& path) { return colladaAsset(path).metresPerUnit; }
 
-} // namespace gyre
+} // namespace gyre::io

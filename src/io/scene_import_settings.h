@@ -28,7 +28,7 @@
 struct aiAnimation;
 struct aiScene;
 
-namespace gyre {
+namespace gyre::io {
 
 // Which of Assimp's readers read the file, as far as the settings care.
 enum class SceneSource { Fbx, Collada, Gltf, Bvh, Other };
@@ -44,4 +44,4 @@ FileSettings fileSettingsOf(const QString& path, SceneSource source, const aiSce
 // nothing when the file does not say, or is not readable as XML up to its <asset>.
 std::optional<double> colladaMetresPerUnit(const QString& path);
 
-} // namespace gyre
+} // namespace gyre::io

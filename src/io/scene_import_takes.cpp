@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <map>
 
-namespace gyre {
+namespace gyre::io {
 
 namespace {
 
@@ -115,4 +115,4 @@ TakePlan planTakes(const std::vector<AnimationSummary>& animations)
     return {{0}, TakeRule::ChoiceNeeded, {}};
 }
 
-} // namespace gyre
+} // namespace gyre::io

@@ -12,7 +12,7 @@
 #include <type_traits>
 #include <vector>
 
-namespace gyre::wire {
+namespace gyre::io::wire {
 
 namespace {
 
@@ -687,4 +687,4 @@ Reply decodeReply(const QByteArray& bytes)
     return reply;
 }
 
-} // namespace gyre::wire
+} // namespace gyre::io::wire

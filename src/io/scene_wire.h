@@ -19,7 +19,7 @@
 #include <stdexcept>
 #include <variant>
 
-namespace gyre::wire {
+namespace gyre::io::wire {
 
 inline constexpr quint32 kMagic = 0x57535947; // "GYSW" read as little-endian bytes
 // 2: import options (takes, frame rate, unit, up axis, time origin); the takes, settings and time shift
@@ -67,4 +67,4 @@ Request decodeRequest(const QByteArray& bytes);
 QByteArray encodeReply(const Reply& reply);
 Reply decodeReply(const QByteArray& bytes);
 
-} // namespace gyre::wire
+} // namespace gyre::io::wire

@@ -14,7 +14,7 @@
 #include <mutex>
 #include <system_error>
 
-namespace gyre {
+namespace gyre::io {
 
 namespace {
 
@@ -257,4 +257,4 @@ ExportReport exportSceneInWorker(const model::Scene& scene, const QString& path,
     return resultOf<ExportReport, OutputError>(path, runWorker<ExportReport, OutputError>(path, request, limits, nullptr));
 }
 
-} // namespace gyre
+} // namespace gyre::io

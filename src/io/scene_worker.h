@@ -25,7 +25,7 @@
 #include <atomic>
 #include <chrono>
 
-namespace gyre {
+namespace gyre::io {
 
 inline constexpr char kSceneWorkerName[] = "gyre-scene-worker";
 // Names the worker program to run instead of the one found beside the running program.
@@ -66,4 +66,4 @@ public:
     const char* what() const noexcept override { return "cancelled"; }
 };
 
-} // namespace gyre
+} // namespace gyre::io

@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-namespace gyre {
+namespace gyre::io {
 
 // The axis a file calls up. Gyre's world is Z-up, as Blender's (the viewport's ground is the xy plane):
 // a Y-up file is turned by +90° about X (Y becomes Z, Z becomes -Y) on its top-level objects, as
@@ -20,4 +20,4 @@ inline constexpr NameTable<UpAxis, 2> kUpAxisNames{{{UpAxis::Y, "y"}, {UpAxis::Z
 // top-level objects; export applies its inverse for the Y-up formats (glTF, Collada, OBJ).
 inline Eigen::Quaterniond yUpToZUp() { return Eigen::Quaterniond(std::sqrt(0.5), std::sqrt(0.5), 0.0, 0.0); }
 
-} // namespace gyre
+} // namespace gyre::io

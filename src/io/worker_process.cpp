@@ -17,7 +17,7 @@
 #include <system_error>
 #include <vector>
 
-namespace gyre {
+namespace gyre::io {
 
 namespace {
 
@@ -303,4 +303,4 @@ WorkerProcess::Outcome WorkerProcess::exchange(const QByteArray& request, QByteA
     return Outcome::Ended;
 }
 
-} // namespace gyre
+} // namespace gyre::io

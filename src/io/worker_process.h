@@ -15,7 +15,7 @@
 
 #include <atomic>
 
-namespace gyre {
+namespace gyre::io {
 
 class WorkerProcess {
 public:
@@ -76,4 +76,4 @@ private:
     QByteArray errors_;
 };
 
-} // namespace gyre
+} // namespace gyre::io

@@ -22,7 +22,7 @@ auto runCatching(Work work) -> Outcome<decltype(work())>
 {
     try {
         return {std::make_shared<const decltype(work())>(work()), QString()};
-    } catch (const SceneWorkerCancelled&) {
+    } catch (const io::SceneWorkerCancelled&) {
         return {}; // the job has already been counted as cancelled
     } catch (const std::exception& error) {
         return {nullptr, QString::fromUtf8(error.what())};
@@ -45,7 +45,7 @@ SceneFileJobs::SceneFileJobs(QObject* parent)
 {
 }
 
-bool SceneFileJobs::startImport(const QString& path, const ImportOptions& options)
+bool SceneFileJobs::startImport(const QString& path, const io::ImportOptions& options)
 {
     if (busy_)
         return false;
@@ -53,8 +53,8 @@ bool SceneFileJobs::startImport(const QString& path, const ImportOptions& option
     const std::uint64_t job = ++job_;
     cancelRunning_ = std::make_shared<std::atomic_bool>(false);
     QtConcurrent::run([path, options, limits = limits_, cancel = cancelRunning_] {
-        return runCatching([&] { return importSceneInWorker(path, options, limits, cancel.get()); });
-    }).then(this, [this, job, path](const Outcome<SceneImport>& outcome) {
+        return runCatching([&] { return io::importSceneInWorker(path, options, limits, cancel.get()); });
+    }).then(this, [this, job, path](const Outcome<io::SceneImport>& outcome) {
         later(this, [this, job, path, outcome] {
             if (!finishJob(job, path))
                 return;
@@ -67,7 +67,7 @@ bool SceneFileJobs::startImport(const QString& path, const ImportOptions& option
     return true;
 }
 
-bool SceneFileJobs::startExport(const model::Scene& scene, const QString& path, SceneFormat format, double fps)
+bool SceneFileJobs::startExport(const model::Scene& scene, const QString& path, io::SceneFormat format, double fps)
 {
     if (busy_)
         return false;
@@ -76,8 +76,8 @@ bool SceneFileJobs::startExport(const model::Scene& scene, const QString& path, 
     // The scene is copied: the document may change while the export runs. Meshes are shared, not
     // copied, and never change once made.
     QtConcurrent::run([scene, path, format, fps, limits = limits_] {
-        return runCatching([&] { return exportSceneInWorker(scene, path, format, fps, limits); });
-    }).then(this, [this, job, path](const Outcome<ExportReport>& outcome) {
+        return runCatching([&] { return io::exportSceneInWorker(scene, path, format, fps, limits); });
+    }).then(this, [this, job, path](const Outcome<io::ExportReport>& outcome) {
         later(this, [this, job, path, outcome] {
             if (!finishJob(job, path))
                 return;

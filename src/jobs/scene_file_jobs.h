@@ -31,19 +31,19 @@ public:
     bool isBusy() const { return busy_; }
 
     // Reads the scene at `path`. Refused (false) while another job runs.
-    bool startImport(const QString& path, const ImportOptions& options = {});
+    bool startImport(const QString& path, const io::ImportOptions& options = {});
     // Writes a copy of `scene` to `path` in `format`, its motion baked at `fps`. Refused (false)
     // while another job runs.
-    bool startExport(const model::Scene& scene, const QString& path, SceneFormat format, double fps);
+    bool startExport(const model::Scene& scene, const QString& path, io::SceneFormat format, double fps);
     // Stops the running import and drops its result; it ends with `cancelled`.
     void cancelImport();
 
     // The worker's limits for the jobs started from now on.
-    void setWorkerLimits(const SceneWorkerLimits& limits) { limits_ = limits; }
+    void setWorkerLimits(const io::SceneWorkerLimits& limits) { limits_ = limits; }
 
 signals:
-    void imported(const QString& path, std::shared_ptr<const gyre::SceneImport> scene);
-    void exported(const QString& path, const gyre::ExportReport& report);
+    void imported(const QString& path, std::shared_ptr<const gyre::io::SceneImport> scene);
+    void exported(const QString& path, const gyre::io::ExportReport& report);
     // The message names the file and says what was wrong with it.
     void failed(const QString& path, const QString& message);
     void cancelled(const QString& path);
@@ -56,7 +56,7 @@ private:
     std::uint64_t job_ = 0; // the running job's number; cancelling moves past it
     // Set by cancelImport for the running import's worker to be stopped.
     std::shared_ptr<std::atomic_bool> cancelRunning_;
-    SceneWorkerLimits limits_;
+    io::SceneWorkerLimits limits_;
 };
 
 } // namespace gyre::jobs

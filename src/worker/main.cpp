@@ -31,6 +31,7 @@
 namespace {
 
 using namespace gyre;
+using namespace gyre::io;
 
 // Any allocation that fails, in Gyre or in Assimp (whose readers catch std::bad_alloc and report it
 // as a read error), ends the worker at once with the status that tells the parent why.

@@ -244,7 +244,7 @@ const QString& largeBvh()
 void BM_ImportBvh(benchmark::State& state)
 {
     for (auto _ : state)
-        benchmark::DoNotOptimize(gyre::importScene(largeBvh()));
+        benchmark::DoNotOptimize(gyre::io::importScene(largeBvh()));
 }
 BENCHMARK(BM_ImportBvh)->Unit(benchmark::kMillisecond);
 
@@ -262,7 +262,7 @@ void BM_ImportBvhInWorker(benchmark::State& state)
 {
     gyre::test::useBuiltSceneWorker();
     for (auto _ : state)
-        benchmark::DoNotOptimize(gyre::importSceneInWorker(largeBvh()));
+        benchmark::DoNotOptimize(gyre::io::importSceneInWorker(largeBvh()));
 }
 BENCHMARK(BM_ImportBvhInWorker)->Unit(benchmark::kMillisecond);
 
@@ -270,29 +270,29 @@ BENCHMARK(BM_ImportBvhInWorker)->Unit(benchmark::kMillisecond);
 // capture as its reply, and the parent reading it back with every value checked.
 void BM_EncodeImportReply(benchmark::State& state)
 {
-    const gyre::wire::Reply reply = gyre::importScene(largeBvh());
+    const gyre::io::wire::Reply reply = gyre::io::importScene(largeBvh());
     for (auto _ : state)
-        benchmark::DoNotOptimize(gyre::wire::encodeReply(reply));
+        benchmark::DoNotOptimize(gyre::io::wire::encodeReply(reply));
 }
 BENCHMARK(BM_EncodeImportReply)->Unit(benchmark::kMillisecond);
 
 void BM_DecodeImportReply(benchmark::State& state)
 {
-    const QByteArray bytes = gyre::wire::encodeReply(gyre::importScene(largeBvh()));
+    const QByteArray bytes = gyre::io::wire::encodeReply(gyre::io::importScene(largeBvh()));
     state.counters["bytes"] = static_cast<double>(bytes.size());
     for (auto _ : state)
-        benchmark::DoNotOptimize(gyre::wire::decodeReply(bytes));
+        benchmark::DoNotOptimize(gyre::io::wire::decodeReply(bytes));
 }
 BENCHMARK(BM_DecodeImportReply)->Unit(benchmark::kMillisecond);
 
 // The imported motion baked at 120 fps (every key a frame) and written as glb.
 void BM_ExportGlb(benchmark::State& state)
 {
-    const gyre::model::Scene scene = gyre::importScene(largeBvh()).scene;
+    const gyre::model::Scene scene = gyre::io::importScene(largeBvh()).scene;
     QTemporaryDir folder;
     const QString path = folder.filePath(QStringLiteral("large.glb"));
     for (auto _ : state)
-        benchmark::DoNotOptimize(gyre::exportScene(scene, path, gyre::SceneFormat::Glb, 120.0));
+        benchmark::DoNotOptimize(gyre::io::exportScene(scene, path, gyre::io::SceneFormat::Glb, 120.0));
 }
 BENCHMARK(BM_ExportGlb)->Unit(benchmark::kMillisecond);
 
@@ -359,11 +359,11 @@ BENCHMARK(BM_OpenProject)->Arg(6000)->Unit(benchmark::kMillisecond);
 void BM_ExportGlbInWorker(benchmark::State& state)
 {
     gyre::test::useBuiltSceneWorker();
-    const gyre::model::Scene scene = gyre::importScene(largeBvh()).scene;
+    const gyre::model::Scene scene = gyre::io::importScene(largeBvh()).scene;
     QTemporaryDir folder;
     const QString path = folder.filePath(QStringLiteral("large.glb"));
     for (auto _ : state)
-        benchmark::DoNotOptimize(gyre::exportSceneInWorker(scene, path, gyre::SceneFormat::Glb, 120.0));
+        benchmark::DoNotOptimize(gyre::io::exportSceneInWorker(scene, path, gyre::io::SceneFormat::Glb, 120.0));
 }
 BENCHMARK(BM_ExportGlbInWorker)->Unit(benchmark::kMillisecond);
 
@@ -371,11 +371,11 @@ BENCHMARK(BM_ExportGlbInWorker)->Unit(benchmark::kMillisecond);
 void BM_ExportFbxInWorker(benchmark::State& state)
 {
     gyre::test::useBuiltSceneWorker();
-    const gyre::model::Scene scene = gyre::importScene(largeBvh()).scene;
+    const gyre::model::Scene scene = gyre::io::importScene(largeBvh()).scene;
     QTemporaryDir folder;
     const QString path = folder.filePath(QStringLiteral("large.fbx"));
     for (auto _ : state)
-        benchmark::DoNotOptimize(gyre::exportSceneInWorker(scene, path, gyre::SceneFormat::Fbx, 120.0));
+        benchmark::DoNotOptimize(gyre::io::exportSceneInWorker(scene, path, gyre::io::SceneFormat::Fbx, 120.0));
     state.counters["bytes"] = static_cast<double>(QFileInfo(path).size());
 }
 BENCHMARK(BM_ExportFbxInWorker)->Unit(benchmark::kMillisecond);

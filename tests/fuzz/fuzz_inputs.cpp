@@ -24,6 +24,8 @@ namespace gyre::fuzz {
 
 namespace {
 
+using namespace gyre::io;
+
 using model::Keyframe;
 using model::Scene;
 using model::SceneObject;

@@ -18,10 +18,10 @@
 namespace gyre::fuzz {
 
 enum class Reader {
-    PoseCsv,   // readPoseCsv, Euler angles in the default convention
-    NumberCsv, // readNumberCsv with the columns of an angular-velocity file: time,wx,wy,wz
+    PoseCsv,   // io::readPoseCsv, Euler angles in the default convention
+    NumberCsv, // io::readNumberCsv with the columns of an angular-velocity file: time,wx,wy,wz
     Project,   // readProject, then every track evaluated
-    Scene,     // importSceneInWorker (Assimp in gyre-scene-worker), then every track evaluated
+    Scene,     // io::importSceneInWorker (Assimp in gyre-scene-worker), then every track evaluated
 };
 
 struct Seed {

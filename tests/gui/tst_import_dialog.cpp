@@ -70,7 +70,7 @@ private slots:
         QCOMPARE(dialog->takes()->item(2, app::ImportDialog::NodesColumn)->text(), QStringLiteral("Quat"));
         QCOMPARE(dialog->fps()->value(), 30.0);
         QCOMPARE(dialog->unit()->value(), 0.01);
-        QCOMPARE(dialog->upAxis()->currentData().toInt(), static_cast<int>(UpAxis::Y));
+        QCOMPARE(dialog->upAxis()->currentData().toInt(), static_cast<int>(io::UpAxis::Y));
         QVERIFY(dialog->keepsTheDefaults());
         dialog->accept();
         QCOMPARE(read.count(), 1);

@@ -32,6 +32,7 @@
 #include <QUrl>
 
 using namespace gyre;
+using namespace gyre::io;
 
 namespace {
 

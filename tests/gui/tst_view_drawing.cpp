@@ -27,6 +27,7 @@
 #include <vector>
 
 using namespace gyre;
+using namespace gyre::io;
 
 namespace {
 

@@ -8,6 +8,7 @@
 #include <set>
 
 using namespace gyre;
+using namespace gyre::io;
 
 namespace {
 

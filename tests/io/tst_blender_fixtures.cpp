@@ -23,6 +23,8 @@ namespace gyre {
 
 namespace {
 
+using namespace gyre::io;
+
 using test::kPi;
 
 // The committed files, or a folder the script just wrote (tests/interop: Blender run live).

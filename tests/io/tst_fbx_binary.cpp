@@ -12,9 +12,11 @@
 #include <stdexcept>
 #include <string>
 
-using gyre::fbx::Node;
+using gyre::io::fbx::Node;
 
 namespace {
+
+using namespace gyre::io;
 
 // Little-endian bytes of a value, written out independently of the encoder.
 std::string le32(std::uint32_t v)
@@ -65,7 +67,7 @@ void TstFbxBinary::oneNodeFile()
     Node root("");
     root.addChild("N").addInt32(1);
     const std::string expected = kHeader + le32(46) + le32(1) + le32(5) + "\x01N" + "I" + le32(1) + zeros(13) + footer(1);
-    const std::string file = gyre::fbx::encodeFile(root);
+    const std::string file = gyre::io::fbx::encodeFile(root);
     QCOMPARE(bytes(file), bytes(expected));
     QCOMPARE(file.size(), std::size_t{220});
 }
@@ -84,7 +86,7 @@ void TstFbxBinary::nestedAndEmptyNodes()
     expected += le32(91) + le32(1) + le32(9) + "\x01R" + "L" + le64(5); // R: 68 to 91
     expected += zeros(13);                                              // P's null record, to 104
     expected += zeros(13) + footer(7);                           // the top level's
-    QCOMPARE(bytes(gyre::fbx::encodeFile(root)), bytes(expected));
+    QCOMPARE(bytes(gyre::io::fbx::encodeFile(root)), bytes(expected));
     QCOMPARE(p.children().size(), std::size_t{2});
     QCOMPARE(p.children()[0].name(), std::string("Q"));
 }
@@ -96,7 +98,7 @@ void TstFbxBinary::footerPadsAWholeBlockWhenAligned()
     root.addChild("ABCDEFGHIJ"); // 27 to 63 with its null record; the top level's ends at 76, 76 + 20 = 96
     const std::string expected = kHeader + le32(63) + le32(0) + le32(0) + "\x0a" "ABCDEFGHIJ" + zeros(13) + zeros(13) +
                                  footer(16);
-    QCOMPARE(bytes(gyre::fbx::encodeFile(root)), bytes(expected));
+    QCOMPARE(bytes(gyre::io::fbx::encodeFile(root)), bytes(expected));
 }
 
 void TstFbxBinary::scalarProperties()

@@ -28,6 +28,7 @@
 #include <vector>
 
 using namespace gyre;
+using namespace gyre::io;
 using namespace gyre::test;
 
 namespace {

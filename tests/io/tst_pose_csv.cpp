@@ -19,6 +19,7 @@
 #include <stdexcept>
 
 using namespace gyre;
+using namespace gyre::io;
 
 namespace {
 

@@ -17,6 +17,7 @@
 #include <random>
 
 using namespace gyre;
+using namespace gyre::io;
 using namespace gyre::test;
 
 namespace {

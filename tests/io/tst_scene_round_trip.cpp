@@ -16,6 +16,7 @@
 #include <map>
 
 using namespace gyre;
+using namespace gyre::io;
 using namespace gyre::test;
 
 namespace {

@@ -11,7 +11,8 @@
 #include <cmath>
 
 using namespace gyre;
-using namespace gyre::wire;
+using namespace gyre::io;
+using namespace gyre::io::wire;
 
 namespace {
 

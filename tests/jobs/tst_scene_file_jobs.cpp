@@ -17,6 +17,7 @@
 #include <QTest>
 
 using namespace gyre;
+using namespace gyre::io;
 using gyre::jobs::SceneFileJobs;
 
 namespace {
