@@ -252,7 +252,7 @@ BENCHMARK(BM_ImportBvh)->Unit(benchmark::kMillisecond);
 void BM_AssimpReadBvh(benchmark::State& state)
 {
     for (auto _ : state)
-        benchmark::DoNotOptimize(gyre::readWithAssimpOnly(largeBvh()));
+        benchmark::DoNotOptimize(gyre::io::readWithAssimpOnly(largeBvh()));
 }
 BENCHMARK(BM_AssimpReadBvh)->Unit(benchmark::kMillisecond);
 
