@@ -811,6 +811,76 @@
 <context>
     <name>gyre::FileError</name>
     <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>these %1 keys bring the file past the %2 keys a project may hold</source>
+        <translation>mit diesen %1 Schlüsseln hat die Datei mehr als die %2 Schlüssel, die ein Projekt haben darf</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>these %1 times bring the file past the %2 times a project may hold</source>
+        <translation>mit diesen %1 Zeiten hat die Datei mehr als die %2 Zeiten, die ein Projekt haben darf</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>the file has no time lists</source>
+        <translation>die Datei hat keine Zeitlisten</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>time list %1 holds %2 times for %3 keys</source>
+        <translation>Zeitliste %1 enthält %2 Zeiten für %3 Schlüssel</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>a version %1 file starts with &quot;%2&quot; and its version in binary, not with JSON text</source>
+        <translation>eine Datei der Version %1 beginnt mit „%2“ und ihrer Version in Binärform, nicht mit JSON-Text</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>the file ends inside its first %1 bytes</source>
+        <translation>die Datei endet innerhalb ihrer ersten %1 Bytes</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>a version %1 file is JSON text, not binary</source>
+        <translation>eine Datei der Version %1 ist JSON-Text, nicht binär</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>%1 bytes; a header may hold at most %2</source>
+        <translation>%1 Bytes; ein Kopf darf höchstens %2 haben</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp"/>
+        <source>%1 is neither 0 nor 1</source>
+        <translation>%1 ist weder 0 noch 1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp"/>
+        <source>its block needs %1 bytes; the file has %2 left</source>
+        <translation>sein Block braucht %1 Bytes; die Datei hat noch %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp"/>
+        <source>the file ends %1 bytes into its block of %2</source>
+        <translation>die Datei endet nach %1 Bytes seines Blocks von %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp"/>
+        <source>the file goes on after its last block</source>
+        <translation>die Datei geht nach ihrem letzten Block weiter</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp"/>
+        <source>the writer has no block for it</source>
+        <translation>der Schreiber hat keinen Block dafür</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp"/>
+        <source>its block holds %1 bytes, not %2</source>
+        <translation>sein Block hat %1 Bytes, nicht %2</translation>
+    </message>
+    <message>
         <location filename="../src/model/autosave.cpp" line="36"/>
         <location filename="../src/model/project_file.cpp" line="483"/>
         <location filename="../src/model/project_file.cpp" line="485"/>

@@ -811,6 +811,76 @@
 <context>
     <name>gyre::FileError</name>
     <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>these %1 keys bring the file past the %2 keys a project may hold</source>
+        <translation>加上这 %1 个关键帧，文件超出项目可容纳的 %2 个关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>these %1 times bring the file past the %2 times a project may hold</source>
+        <translation>加上这 %1 个时间，文件超出项目可容纳的 %2 个时间</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>the file has no time lists</source>
+        <translation>文件没有时间列表</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>time list %1 holds %2 times for %3 keys</source>
+        <translation>时间列表 %1 有 %2 个时间，却对应 %3 个关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>a version %1 file starts with &quot;%2&quot; and its version in binary, not with JSON text</source>
+        <translation>版本 %1 的文件以“%2”及二进制的版本号开头，而不是 JSON 文本</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>the file ends inside its first %1 bytes</source>
+        <translation>文件在其前 %1 个字节内就结束了</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>a version %1 file is JSON text, not binary</source>
+        <translation>版本 %1 的文件是 JSON 文本，不是二进制</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp"/>
+        <source>%1 bytes; a header may hold at most %2</source>
+        <translation>%1 字节；文件头最多 %2 字节</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp"/>
+        <source>%1 is neither 0 nor 1</source>
+        <translation>%1 既不是 0 也不是 1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp"/>
+        <source>its block needs %1 bytes; the file has %2 left</source>
+        <translation>其数据块需要 %1 字节；文件只剩 %2 字节</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp"/>
+        <source>the file ends %1 bytes into its block of %2</source>
+        <translation>文件在其 %2 字节的数据块中第 %1 字节处结束</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp"/>
+        <source>the file goes on after its last block</source>
+        <translation>文件在最后一个数据块之后仍有内容</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp"/>
+        <source>the writer has no block for it</source>
+        <translation>写入程序没有它的数据块</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp"/>
+        <source>its block holds %1 bytes, not %2</source>
+        <translation>其数据块有 %1 字节，而不是 %2</translation>
+    </message>
+    <message>
         <location filename="../src/model/autosave.cpp" line="36"/>
         <location filename="../src/model/project_file.cpp" line="483"/>
         <location filename="../src/model/project_file.cpp" line="485"/>

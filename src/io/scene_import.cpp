@@ -619,6 +619,13 @@ SceneImport importScene(const QString& path, const ImportOptions& options)
     return result;
 }
 
+unsigned readWithAssimpOnly(const QString& path)
+{
+    requireReadableFile(path);
+    Assimp::Importer importer;
+    return readWithAssimp(importer, path).mNumAnimations;
+}
+
 QString assimpVersion()
 {
     return QStringLiteral("%1.%2.%3").arg(aiGetVersionMajor()).arg(aiGetVersionMinor()).arg(aiGetVersionPatch());

@@ -123,6 +123,11 @@ TakePlan planTakes(const std::vector<AnimationSummary>& animations);
 // silently as one (gyre-cli, the app) ask which takes to use.
 SceneImport importScene(const QString& path, const ImportOptions& options = {});
 
+// Assimp's own read of `path` with the settings importScene gives it, and none of Gyre's work after:
+// the floor an import is measured against (gyre-bench's BM_AssimpReadBvh, docs/file-format.md).
+// Returns the number of animations read; throws InputError as importScene does.
+unsigned readWithAssimpOnly(const QString& path);
+
 // The version of the Assimp library Gyre reads and writes scenes with, "5.2.5" for example.
 QString assimpVersion();
 

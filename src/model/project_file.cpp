@@ -3,10 +3,12 @@
 #include "model/input_error.h"
 #include "model/json_field.h"
 #include "model/output_target.h"
+#include "model/project_blocks.h"
 #include "model/sketch_fit_problem.h"
 #include "model/value_checks.h"
 
 #include <QFile>
+#include <QBuffer>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -15,10 +17,13 @@
 #include <QtEndian>
 
 #include <algorithm>
+#include <cstring>
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
 #include <string>
+#include <unordered_map>
 
 namespace gyre::model {
 
@@ -28,6 +33,12 @@ namespace {
 constexpr qint64 kMaxId = qint64{1} << 53;
 // Files are read in pieces of this size, so that a device with no known size cannot run away.
 constexpr qint64 kReadChunkBytes = qint64{1} << 20;
+// A version 3 file starts with the format's name, its version (uint32) and the length of its JSON
+// header (uint64), little-endian.
+constexpr qint64 kMagicBytes = sizeof kProjectFormat - 1;
+constexpr qint64 kPreambleBytes = kMagicBytes + 4 + 8;
+// The largest JSON header a version 3 file may have: names and sketches, never keys or meshes.
+constexpr qint64 kMaxHeaderBytes = qint64{16} << 20;
 
 // ---- writing --------------------------------------------------------------------------------------
 
@@ -52,34 +63,12 @@ QJsonArray arrayJson(const std::vector<Item>& items, ToJson toJson)
     return array;
 }
 
-// Little-endian float32 or uint32 values, base64-encoded.
-template <class Value>
-QString base64Json(const Value* values, std::size_t count)
+QJsonObject keyLayoutJson(const KeyLayout& layout)
 {
-    QByteArray bytes(static_cast<qsizetype>(count * sizeof(Value)), Qt::Uninitialized);
-    if (count > 0) // Qt copies with memcpy, which must not see the null pointer of an empty array
-        qToLittleEndian<Value>(values, static_cast<qsizetype>(count), bytes.data());
-    return QString::fromLatin1(bytes.toBase64());
-}
-
-QString base64Json(const std::vector<Eigen::Vector3f>& vectors)
-{
-    return base64Json(vectors.empty() ? nullptr : vectors.front().data(), vectors.size() * 3);
-}
-
-QJsonObject meshJson(const Mesh& mesh)
-{
-    return {{"positions", base64Json(mesh.positions)},
-            {"normals", base64Json(mesh.normals)},
-            {"indices", base64Json(mesh.indices.data(), mesh.indices.size())}};
-}
-
-QJsonObject keyframeJson(const Keyframe& key)
-{
-    return {{"time", key.time},
-            {"orientation", json(key.pose.orientation)},
-            {"position", json(key.pose.position)},
-            {"constrained", key.constrained}};
+    return {{"count", static_cast<qint64>(layout.count)},
+            {"times", static_cast<qint64>(layout.times)},
+            {"position", layout.position ? QJsonValue(json(*layout.position)) : QJsonValue()},
+            {"constrained", layout.constrained ? QJsonValue(*layout.constrained) : QJsonValue()}};
 }
 
 QJsonObject subdivisionJson(const SubdivisionSettings& settings)
@@ -101,7 +90,7 @@ QJsonValue windowJson(const std::optional<std::pair<double, double>>& window)
     return window ? QJsonValue(numbersJson({window->first, window->second})) : QJsonValue(QJsonValue::Null);
 }
 
-QJsonObject sketchJson(const SketchState& sketch)
+QJsonObject sketchJson(const SketchState& sketch, const QJsonObject& keysBeforeFit)
 {
     return {
         {"directionStrokes", arrayJson(sketch.directionStrokes, strokeJson)},
@@ -121,45 +110,132 @@ QJsonObject sketchJson(const SketchState& sketch)
                                                          {"value", json(point.value)},
                                                          {"derivative", json(point.derivative)}};
                                   })},
-        {"keysBeforeFit", arrayJson(sketch.keysBeforeFit, keyframeJson)},
+        {"keysBeforeFit", keysBeforeFit},
     };
 }
 
 QJsonValue idJson(ObjectId id) { return id == kNoObject ? QJsonValue() : QJsonValue(static_cast<qint64>(id)); }
 
-QJsonObject objectJson(const SceneObject& object, const std::map<const Mesh*, qsizetype>& meshIndex)
+// Whether two lists of keys have the same times, to the bit.
+bool sameTimes(const std::vector<Keyframe>& a, const std::vector<Keyframe>& b)
 {
-    return {{"id", idJson(object.id)},
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const Keyframe& x, const Keyframe& y) {
+        return std::memcmp(&x.time, &y.time, sizeof x.time) == 0;
+    });
+}
+
+// FNV-1a over the bits of the times.
+std::uint64_t timesHash(const std::vector<Keyframe>& keys)
+{
+    std::uint64_t hash = 14695981039346656037ULL ^ keys.size();
+    for (const Keyframe& key : keys) {
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &key.time, sizeof bits);
+        hash = (hash ^ bits) * 1099511628211ULL;
+    }
+    return hash;
+}
+
+// A version 3 file of a scene, which must outlive it: the JSON header, and the blocks that follow
+// it, made one at a time when written. The blocks are the meshes, each once however many objects
+// share it; the distinct lists of key times, each once however many tracks share it (the joints of a
+// capture all do); then each object's keyframes and keys before its fit.
+class ProjectLayout {
+public:
+    explicit ProjectLayout(const Scene& scene);
+
+    QJsonObject header;
+    std::vector<std::function<QByteArray()>> blocks;
+
+private:
+    // The layout of `keys`, their block queued.
+    QJsonObject keysJson(const std::vector<Keyframe>& keys);
+    // The index of the time list `keys` use, added if it is new.
+    std::size_t timeListOf(const std::vector<Keyframe>& keys);
+
+    std::vector<const std::vector<Keyframe>*> timeLists_;
+    std::unordered_multimap<std::uint64_t, std::size_t> timeListsByHash_;
+    std::vector<std::function<QByteArray()>> keyBlocks_;
+};
+
+ProjectLayout::ProjectLayout(const Scene& scene)
+{
+    std::map<const Mesh*, qsizetype> meshIndex;
+    QJsonArray meshes;
+    for (const SceneObject& object : scene.objects)
+        if (object.mesh && meshIndex.emplace(object.mesh.get(), meshes.size()).second) {
+            const Mesh& mesh = *object.mesh;
+            meshes.append(QJsonObject{{"positions", static_cast<qint64>(mesh.positions.size())},
+                                      {"normals", static_cast<qint64>(mesh.normals.size())},
+                                      {"indices", static_cast<qint64>(mesh.indices.size())}});
+            blocks.push_back([&mesh] { return meshBlock(mesh); });
+        }
+    QJsonArray objects;
+    for (const SceneObject& object : scene.objects) {
+        const QJsonObject keyframes = keysJson(object.track.keys);
+        const QJsonObject keysBeforeFit = keysJson(object.track.sketch.keysBeforeFit);
+        objects.append(QJsonObject{
+            {"id", idJson(object.id)},
             {"name", object.name},
             {"parent", idJson(object.parent)},
             {"mesh", object.mesh ? QJsonValue(meshIndex.at(object.mesh.get())) : QJsonValue()},
             {"interpolation", QString::fromLatin1(interpolationMethodName(object.track.interpolation))},
             {"subdivision", subdivisionJson(object.track.subdivision)},
-            {"keyframes", arrayJson(object.track.keys.vector(), keyframeJson)},
-            {"sketch", sketchJson(object.track.sketch)}};
+            {"keyframes", keyframes},
+            {"sketch", sketchJson(object.track.sketch, keysBeforeFit)}});
+    }
+    QJsonArray times;
+    for (const std::vector<Keyframe>* keys : timeLists_) {
+        times.append(static_cast<qint64>(keys->size()));
+        blocks.push_back([keys] { return timeBlock(*keys); });
+    }
+    blocks.insert(blocks.end(), keyBlocks_.begin(), keyBlocks_.end());
+    header = {{"fps", scene.fps},
+              {"startTime", scene.startTime},
+              {"endTime", scene.endTime},
+              {"currentTime", scene.currentTime},
+              {"meshes", meshes},
+              {"times", times},
+              {"objects", objects}};
 }
 
-QJsonObject projectObject(const Scene& scene)
+QJsonObject ProjectLayout::keysJson(const std::vector<Keyframe>& keys)
 {
-    // Each mesh once, in the order objects first use it.
-    std::map<const Mesh*, qsizetype> meshIndex;
-    QJsonArray meshes;
-    for (const SceneObject& object : scene.objects)
-        if (object.mesh && meshIndex.emplace(object.mesh.get(), meshes.size()).second)
-            meshes.append(meshJson(*object.mesh));
-    return {{"format", QString::fromLatin1(kProjectFormat)},
-            {"version", kProjectVersion},
-            {"fps", scene.fps},
-            {"startTime", scene.startTime},
-            {"endTime", scene.endTime},
-            {"currentTime", scene.currentTime},
-            {"meshes", meshes},
-            {"objects", arrayJson(scene.objects, [&meshIndex](const SceneObject& object) {
-                 return objectJson(object, meshIndex);
-             })}};
+    const KeyLayout layout = keyLayoutOf(keys, timeListOf(keys));
+    keyBlocks_.push_back([&keys, layout] { return keyBlock(keys, layout); });
+    return keyLayoutJson(layout);
+}
+
+std::size_t ProjectLayout::timeListOf(const std::vector<Keyframe>& keys)
+{
+    const std::uint64_t hash = timesHash(keys);
+    const auto [first, last] = timeListsByHash_.equal_range(hash);
+    for (auto entry = first; entry != last; ++entry)
+        if (sameTimes(*timeLists_[entry->second], keys))
+            return entry->second;
+    timeLists_.push_back(&keys);
+    timeListsByHash_.emplace(hash, timeLists_.size() - 1);
+    return timeLists_.size() - 1;
+}
+
+// The bytes before the blocks: the preamble, then the header.
+QByteArray headerBytes(const QJsonObject& header)
+{
+    const QByteArray json = QJsonDocument(header).toJson();
+    QByteArray bytes(kProjectFormat, kMagicBytes);
+    char numbers[12];
+    qToLittleEndian<quint32>(kProjectVersion, numbers);
+    qToLittleEndian<quint64>(static_cast<quint64>(json.size()), numbers + 4);
+    bytes.append(numbers, sizeof numbers);
+    return bytes + json;
 }
 
 // ---- reading --------------------------------------------------------------------------------------
+
+std::string tooLargeMessage()
+{
+    return FileError::tr("is larger than 1 GiB, the most a project file may hold").toStdString();
+}
 
 template <class Enum, std::size_t N>
 Enum named(const JsonField& field, const NameTable<Enum, N>& names)
@@ -209,7 +285,7 @@ std::vector<Value> littleEndianValues(const JsonField& field, std::size_t values
     if (bytes.size() % itemBytes != 0)
         field.fail(FileError::tr("%1 bytes are not a whole number of %2-byte items").arg(bytes.size()).arg(itemBytes));
     std::vector<Value> values(static_cast<std::size_t>(bytes.size()) / sizeof(Value));
-    if (!values.empty()) // as in base64Json
+    if (!values.empty()) // Qt copies with memcpy, which must not see the null pointer of an empty array
         qFromLittleEndian<Value>(bytes.constData(), static_cast<qsizetype>(values.size()), values.data());
     return values;
 }
@@ -223,8 +299,39 @@ std::vector<Eigen::Vector3f> vectorsIn(const JsonField& field)
     return vectors;
 }
 
-std::shared_ptr<const Mesh> meshIn(const JsonField& field)
+// What reading a version 3 file keeps between its parts: where its blocks come from, the time lists
+// read so far, and how many keys and times the budget has left. Versions 1 and 2 have no blocks.
+// A check before saving keeps no keys: each track's are dropped once they passed.
+struct BlockReading {
+    BlockReading(BlockSource& source, bool keep) : blocks(source), keepsKeys(keep) {}
+
+    BlockSource& blocks;
+    bool keepsKeys;
+    std::vector<std::vector<double>> timeLists;
+    std::size_t keysLeft = kMaxProjectKeys;
+    std::size_t timesLeft = kMaxProjectKeys;
+};
+
+// A count that the budget, of which `left` remain, holds; taken from it. `pastBudget` says what is
+// wrong with a larger one, given the count (%1) and the whole budget (%2).
+std::size_t budgetedCount(const JsonField& field, std::size_t& left, const QString& pastBudget)
 {
+    const qint64 count = field.integer(0, kMaxId);
+    if (static_cast<std::size_t>(count) > left)
+        field.fail(pastBudget.arg(count).arg(kMaxProjectKeys));
+    left -= static_cast<std::size_t>(count);
+    return static_cast<std::size_t>(count);
+}
+
+std::shared_ptr<const Mesh> meshIn(const JsonField& field, BlockReading* binary)
+{
+    if (binary) {
+        const auto count = [&](const char* key) {
+            return static_cast<std::size_t>(field.member(key).integer(0, kMaxProjectBytes));
+        };
+        const MeshCounts counts{count("positions"), count("normals"), count("indices")};
+        return meshFromBlock(binary->blocks.next(counts.blockBytes(), field), counts, field);
+    }
     auto mesh = std::make_shared<Mesh>();
     mesh->positions = vectorsIn(field.member("positions"));
     mesh->normals = vectorsIn(field.member("normals"));
@@ -242,6 +349,28 @@ Keyframe keyframeIn(const JsonField& field)
     key.pose.position = position.checked([&] { return positionValue(position.vector3()); });
     key.constrained = field.member("constrained").boolean();
     return key;
+}
+
+// A list of keys: in versions 1 and 2 an array of keyframes, in version 3 the layout of its block.
+std::vector<Keyframe> keysIn(const JsonField& field, BlockReading* binary)
+{
+    if (!binary)
+        return timedItems<Keyframe>(field, "time", keyframeIn, [](const Keyframe& key) { return key.time; });
+    KeyLayout layout;
+    layout.count = budgetedCount(field.member("count"), binary->keysLeft,
+                                 FileError::tr("these %1 keys bring the file past the %2 keys a project may hold"));
+    const JsonField times = field.member("times");
+    if (binary->timeLists.empty())
+        times.fail(FileError::tr("the file has no time lists"));
+    layout.times = static_cast<std::size_t>(times.integer(0, static_cast<qint64>(binary->timeLists.size()) - 1));
+    const std::vector<double>& timeList = binary->timeLists[layout.times];
+    if (timeList.size() != layout.count)
+        times.fail(FileError::tr("time list %1 holds %2 times for %3 keys").arg(layout.times).arg(timeList.size()).arg(layout.count));
+    if (const JsonField position = field.member("position"); !position.isNull())
+        layout.position = position.checked([&] { return positionValue(position.vector3()); });
+    if (const JsonField constrained = field.member("constrained"); !constrained.isNull())
+        layout.constrained = constrained.boolean();
+    return keysFromBlock(binary->blocks.next(layout.blockBytes(), field), layout, timeList, field);
 }
 
 SubdivisionSettings subdivisionIn(const JsonField& field)
@@ -302,7 +431,7 @@ double numberIn(const JsonField& field, double (*check)(double))
     return field.checked([&] { return check(value); });
 }
 
-SketchState sketchIn(const JsonField& field)
+SketchState sketchIn(const JsonField& field, BlockReading* binary)
 {
     SketchState sketch;
     for (const JsonField& stroke : field.member("directionStrokes").elements())
@@ -320,9 +449,9 @@ SketchState sketchIn(const JsonField& field)
     sketch.fittedCurve = timedItems<HermiteControlPoint>(field.member("fittedCurve"), "time", controlPointIn,
                                                          [](const HermiteControlPoint& point) { return point.time; });
     // Files written before Gyre kept the keys a fit moved have no keysBeforeFit: nothing to restore.
-    if (field.has("keysBeforeFit")) {
+    if (binary || field.has("keysBeforeFit")) {
         const JsonField before = field.member("keysBeforeFit");
-        sketch.keysBeforeFit = timedItems<Keyframe>(before, "time", keyframeIn, [](const Keyframe& key) { return key.time; });
+        sketch.keysBeforeFit = keysIn(before, binary);
         if (sketch.fittedCurve.empty() && !sketch.keysBeforeFit.empty())
             before.fail(FileError::tr("keys to restore without an applied fit"));
     }
@@ -334,7 +463,8 @@ ObjectId optionalId(const JsonField& field)
     return field.isNull() ? kNoObject : static_cast<ObjectId>(field.integer(1, kMaxId));
 }
 
-SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_ptr<const Mesh>>& meshes, int version)
+SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_ptr<const Mesh>>& meshes, int version,
+                          BlockReading* binary)
 {
     SceneObject object;
     object.id = static_cast<ObjectId>(field.member("id").integer(1, kMaxId));
@@ -347,17 +477,20 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
     }
     object.track.interpolation = named(field.member("interpolation"), kInterpolationMethodNames);
     object.track.subdivision = subdivisionIn(field.member("subdivision"));
-    object.track.keys = timedItems<Keyframe>(field.member("keyframes"), "time", keyframeIn,
-                                             [](const Keyframe& key) { return key.time; });
+    object.track.keys = keysIn(field.member("keyframes"), binary);
     field.member("subdivision").member("levels").checked([&] {
         checkPoseBudget(object.track.keys.size(), object.track.interpolation, object.track.subdivision);
     });
     // Version 1 has no sketch-editing state: it reads as the empty sketch.
     if (version >= 2)
-        object.track.sketch = sketchIn(field.member("sketch"));
+        object.track.sketch = sketchIn(field.member("sketch"), binary);
     // An absolute δ becomes the relative δ that keeps the fit's threshold for this track where it was.
     if (version >= 2 && !field.member("sketch").has("relativeDelta"))
         object.track.sketch.delta = relativeDelta(object.track, object.track.sketch.delta);
+    if (binary && !binary->keepsKeys) {
+        object.track.keys.clear();
+        object.track.sketch.keysBeforeFit.clear();
+    }
     return object;
 }
 
@@ -396,6 +529,19 @@ void checkHierarchy(const std::vector<JsonField>& fields, const std::vector<Scen
                     .arg(objects[i].parent));
 }
 
+// The first version written in binary.
+constexpr int kFirstBinaryVersion = 3;
+
+// Refuses a version newer than this build reads.
+void checkVersion(const JsonField& version, qint64 number)
+{
+    if (number > kProjectVersion)
+        version.fail(FileError::tr("the file has version %1, newer than this build of Gyre reads (%2 and older); "
+                                   "open it with a newer Gyre")
+                         .arg(number)
+                         .arg(kProjectVersion));
+}
+
 int versionIn(const JsonField& root)
 {
     const JsonField format = root.member("format");
@@ -404,17 +550,18 @@ int versionIn(const JsonField& root)
                         .arg(QLatin1String(kProjectFormat), format.string()));
     const JsonField version = root.member("version");
     const qint64 number = version.integer(1, std::numeric_limits<int>::max());
-    if (number > kProjectVersion)
-        version.fail(FileError::tr("the file has version %1, newer than this build of Gyre reads (%2 and older); "
-                                   "open it with a newer Gyre")
+    checkVersion(version, number);
+    if (number >= kFirstBinaryVersion)
+        version.fail(FileError::tr("a version %1 file starts with \"%2\" and its version in binary, not with JSON text")
                          .arg(number)
-                         .arg(kProjectVersion));
+                         .arg(QLatin1String(kProjectFormat)));
     return static_cast<int>(number);
 }
 
-Scene sceneIn(const JsonField& root)
+// The scene of a project's JSON: the whole file in versions 1 and 2; in version 3 its header, with
+// `binary` giving the blocks that follow it.
+Scene sceneIn(const JsonField& root, int version, BlockReading* binary)
 {
-    const int version = versionIn(root);
     Scene scene;
     scene.fps = root.member("fps").number();
     scene.startTime = root.member("startTime").number();
@@ -424,46 +571,47 @@ Scene sceneIn(const JsonField& root)
     scene.currentTime = numberIn(root.member("currentTime"), timeValue);
     std::vector<std::shared_ptr<const Mesh>> meshes;
     for (const JsonField& mesh : root.member("meshes").elements())
-        meshes.push_back(meshIn(mesh));
+        meshes.push_back(meshIn(mesh, binary));
+    if (binary)
+        for (const JsonField& list : root.member("times").elements()) {
+            const std::size_t count = budgetedCount(list, binary->timesLeft,
+                                                   FileError::tr("these %1 times bring the file past the %2 times a project may hold"));
+            binary->timeLists.push_back(
+                timesFromBlock(binary->blocks.next(static_cast<qint64>(count * sizeof(double)), list), list));
+        }
     const std::vector<JsonField> objects = root.member("objects").elements();
     for (const JsonField& object : objects)
-        scene.objects.push_back(sceneObjectIn(object, meshes, version));
+        scene.objects.push_back(sceneObjectIn(object, meshes, version, binary));
     checkHierarchy(objects, scene.objects);
     for (const SceneObject& object : scene.objects)
         scene.nextObjectId = std::max(scene.nextObjectId, object.id + 1);
     return scene;
 }
 
-QByteArray contentsOf(const QString& path)
+// The rest of a version 1 or 2 project, JSON text, refused past kMaxProjectBytes.
+QByteArray restOf(QIODevice& device, const QString& path)
 {
-    if (QFileInfo(path).isDir())
-        throw InputError(path, FileError::tr("is a directory, not a file").toStdString());
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        throw InputError(path, FileError::tr("cannot open: %1").arg(file.errorString()).toStdString());
-    const InputError tooLarge(path,
-                              FileError::tr("is larger than 1 GiB, the most a project file may hold").toStdString());
-    if (file.size() > kMaxProjectBytes)
-        throw tooLarge;
     QByteArray contents;
     while (true) {
-        const QByteArray chunk = file.read(kReadChunkBytes);
+        const QByteArray chunk = device.read(kReadChunkBytes);
         if (chunk.isEmpty())
             break;
         contents += chunk;
         if (contents.size() > kMaxProjectBytes) // a device whose size was not known beforehand
-            throw tooLarge;
+            throw InputError(path, tooLargeMessage());
     }
-    if (file.error() != QFileDevice::NoError)
-        throw InputError(path, FileError::tr("cannot read: %1").arg(file.errorString()).toStdString());
+    if (const auto* file = qobject_cast<const QFileDevice*>(&device); file && file->error() != QFileDevice::NoError)
+        throw InputError(path, FileError::tr("cannot read: %1").arg(file->errorString()).toStdString());
     return contents;
 }
 
-} // namespace
+QString notValidJson(const QJsonParseError& error)
+{
+    return FileError::tr("not valid JSON: %1 at byte %2").arg(error.errorString()).arg(error.offset);
+}
 
-QByteArray projectJson(const Scene& scene) { return QJsonDocument(projectObject(scene)).toJson(); }
-
-Scene parseProject(const QByteArray& json, const QString& path)
+// A version 1 or 2 project.
+Scene jsonProjectIn(const QByteArray& json, const QString& path)
 {
     if (json.trimmed().isEmpty())
         throw InputError(path, FileError::tr("is empty; a project file holds a JSON object").toStdString());
@@ -471,31 +619,109 @@ Scene parseProject(const QByteArray& json, const QString& path)
     // Qt refuses nesting deeper than 1024 (DeepNesting) rather than recursing further.
     const QJsonDocument document = QJsonDocument::fromJson(json, &error);
     if (error.error != QJsonParseError::NoError)
-        throw InputError(path, FileError::tr("not valid JSON: %1 at byte %2")
-                                   .arg(error.errorString())
-                                   .arg(error.offset)
-                                   .toStdString());
+        throw InputError(path, notValidJson(error).toStdString());
     try {
-        return sceneIn(JsonField(document.isObject() ? QJsonValue(document.object()) : QJsonValue(document.array()),
-                                 QString()));
+        const JsonField root(document.isObject() ? QJsonValue(document.object()) : QJsonValue(document.array()),
+                             QString());
+        return sceneIn(root, versionIn(root), nullptr);
     } catch (const FieldError& problem) {
         throw InputError(path, problem.what());
     }
 }
 
-Scene readProject(const QString& path) { return parseProject(contentsOf(path), path); }
+// A version 3 project from its first byte, of which `bytesLeft` are left; throws FieldError.
+Scene binaryProjectIn(QIODevice& device, qint64 bytesLeft)
+{
+    const QByteArray preamble = device.read(kPreambleBytes);
+    if (preamble.size() < kPreambleBytes)
+        JsonField(QJsonValue(), QString()).fail(FileError::tr("the file ends inside its first %1 bytes").arg(kPreambleBytes));
+    const JsonField version(QJsonValue(), QStringLiteral("version"));
+    const auto number = qFromLittleEndian<quint32>(preamble.constData() + kMagicBytes);
+    checkVersion(version, number);
+    if (number < kFirstBinaryVersion)
+        version.fail(FileError::tr("a version %1 file is JSON text, not binary").arg(number));
+    const JsonField header(QJsonValue(), QStringLiteral("header"));
+    const auto headerBytes = qFromLittleEndian<quint64>(preamble.constData() + kMagicBytes + 4);
+    if (headerBytes > static_cast<quint64>(kMaxHeaderBytes))
+        header.fail(FileError::tr("%1 bytes; a header may hold at most %2").arg(headerBytes).arg(kMaxHeaderBytes));
+    DeviceBlocks blocks(device, bytesLeft - kPreambleBytes);
+    QJsonParseError error;
+    const QJsonDocument document =
+        QJsonDocument::fromJson(blocks.next(static_cast<qint64>(headerBytes), header), &error);
+    if (error.error != QJsonParseError::NoError)
+        header.fail(notValidJson(error));
+    BlockReading reading(blocks, true);
+    Scene scene = sceneIn(JsonField(document.isObject() ? QJsonValue(document.object()) : QJsonValue(document.array()),
+                                    QString()),
+                          static_cast<int>(number), &reading);
+    blocks.requireEnd();
+    return scene;
+}
+
+// The project `device` holds from its position on: version 3 if it starts with the format's name,
+// else JSON text.
+Scene projectIn(QIODevice& device, const QString& path)
+{
+    if (device.peek(kMagicBytes) == QByteArray(kProjectFormat, kMagicBytes)) {
+        try {
+            return binaryProjectIn(device, device.isSequential() ? kMaxProjectBytes : device.size() - device.pos());
+        } catch (const FieldError& problem) {
+            throw InputError(path, problem.what());
+        }
+    }
+    return jsonProjectIn(restOf(device, path), path);
+}
+
+} // namespace
+
+QByteArray projectBytes(const Scene& scene)
+{
+    const ProjectLayout layout(scene);
+    QByteArray bytes = headerBytes(layout.header);
+    for (const std::function<QByteArray()>& block : layout.blocks)
+        bytes += block();
+    return bytes;
+}
+
+Scene parseProject(const QByteArray& bytes, const QString& path)
+{
+    QBuffer buffer;
+    buffer.setData(bytes);
+    buffer.open(QIODevice::ReadOnly);
+    return projectIn(buffer, path);
+}
+
+Scene readProject(const QString& path)
+{
+    if (QFileInfo(path).isDir())
+        throw InputError(path, FileError::tr("is a directory, not a file").toStdString());
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw InputError(path, FileError::tr("cannot open: %1").arg(file.errorString()).toStdString());
+    if (file.size() > kMaxProjectBytes)
+        throw InputError(path, tooLargeMessage());
+    return projectIn(file, path);
+}
 
 void writeProject(const QString& path, const Scene& scene)
 {
-    const QJsonObject project = projectObject(scene);
+    const ProjectLayout layout(scene);
+    // Read back from the very blocks that would be written, one at a time, before any is.
     try {
-        sceneIn(JsonField(project, QString()));
+        WrittenBlocks blocks(layout.blocks);
+        BlockReading reading(blocks, false);
+        sceneIn(JsonField(layout.header, QString()), kProjectVersion, &reading);
     } catch (const FieldError& problem) {
         throw OutputError(path, FileError::tr("not saved, because the file would not read back: %1")
                                     .arg(QString::fromUtf8(problem.what()))
                                     .toStdString());
     }
-    saveFileContents(path, QJsonDocument(project).toJson());
+    OutputTarget target(path);
+    target.open();
+    target.write(headerBytes(layout.header));
+    for (const std::function<QByteArray()>& block : layout.blocks)
+        target.write(block());
+    target.commit();
 }
 
 } // namespace gyre::model

@@ -1,7 +1,10 @@
 #pragma once
-// The project file, `.gyre` (docs/file-format.md): the scene as JSON, with a `format` and a `version`.
-// Meshes are stored in the file, each once however many objects share it. Numbers are written so
-// that they read back as the same doubles.
+// The project file, `.gyre` (docs/file-format.md). Version 3, which Gyre writes, starts with the
+// format's name and version, then a JSON header (the scene's settings, its objects, their sketches)
+// and binary blocks after it: each track's keys, each mesh once however many objects share it, each
+// distinct list of key times once however many tracks share it. Versions 1 and 2 are JSON text.
+// Numbers read back as the same doubles. Reading and writing go block by block: no JSON of the keys
+// is ever built.
 //
 // Reading checks everything (types, ranges, finite numbers, unit quaternions, increasing times,
 // references between objects) and builds a fresh Scene, so a bad file changes nothing; its message
@@ -16,25 +19,28 @@ namespace gyre::model {
 
 inline constexpr char kProjectFormat[] = "gyre-project";
 // The version this build writes. It reads it and every older one: version 1 has no sketch-editing
-// state, which reads as empty.
-inline constexpr int kProjectVersion = 2;
-// Larger files are refused before they are read.
+// state, which reads as empty; version 2 is JSON text.
+inline constexpr int kProjectVersion = 3;
+// Larger files are refused before they are read. At 32 to 65 bytes a key, a version 3 file this
+// size would hold more keys than a project may (kMaxProjectKeys, model/project_blocks.h).
 inline constexpr qint64 kMaxProjectBytes = qint64{1} << 30;
 
-// The project as JSON text: the same bytes for the same scene, since members are written in sorted
-// order. Saving writes these bytes; tests compare them.
-QByteArray projectJson(const Scene& scene);
+// The project file's bytes: the same bytes for the same scene, since the header's members are
+// written in sorted order. Saving writes these bytes; tests compare them.
+QByteArray projectBytes(const Scene& scene);
 
-// The scene that project text holds. Throws InputError naming `path` and the field.
-Scene parseProject(const QByteArray& json, const QString& path);
+// The scene that a project file's bytes hold, in any version. Throws InputError naming `path` and
+// the field.
+Scene parseProject(const QByteArray& bytes, const QString& path);
 
 // Reads the project file at `path`. Throws InputError naming the file and the field.
 Scene readProject(const QString& path);
 
-// Writes the project file through an OutputTarget (model/output_target.h): on any error
+// Writes the project file, version 3, through an OutputTarget (model/output_target.h): on any error
 // (OutputError) a regular file already at `path` keeps its contents and none is created; a FIFO or
 // a device is written in place, and "-" is standard output. A scene that would not read back, such as one holding a
-// number that is not finite, is refused rather than written.
+// number that is not finite, is refused rather than written: its blocks are read back and checked,
+// one at a time, before any is written.
 void writeProject(const QString& path, const Scene& scene);
 
 } // namespace gyre::model

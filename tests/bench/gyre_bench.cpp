@@ -16,6 +16,7 @@
 #include "io/bvh_fixture.h"
 #include "io/scene_export.h"
 #include "io/scene_import.h"
+#include "model/project_file.h"
 #include "model/scene.h"
 #include "io/scene_wire.h"
 #include "io/scene_worker.h"
@@ -223,11 +224,14 @@ void BM_FitSpinningTopSample(benchmark::State& state)
 BENCHMARK(BM_FitSpinningTopSample)->Unit(benchmark::kMillisecond);
 
 // A motion-capture file the size of CMU's 01_03.bvh: 31 joints, 4500 frames at 120 Hz, 139,500
-// rotation keys. Written once, into a folder removed at exit.
+// rotation keys. Written once, into a folder removed at exit. GYRE_BENCH_BVH names another file to
+// use instead, such as one scripts/mocap-bvh.py writes.
 const QString& largeBvh()
 {
     static QTemporaryDir folder;
     static const QString path = [] {
+        if (qEnvironmentVariableIsSet("GYRE_BENCH_BVH"))
+            return qEnvironmentVariable("GYRE_BENCH_BVH");
         const QString file = folder.filePath(QStringLiteral("large.bvh"));
         QFile out(file);
         if (!out.open(QIODevice::WriteOnly) || out.write(gyre::test::bvhChain(31, 4500, 1.0 / 120.0)) < 0)
@@ -243,6 +247,14 @@ void BM_ImportBvh(benchmark::State& state)
         benchmark::DoNotOptimize(gyre::io::importScene(largeBvh()));
 }
 BENCHMARK(BM_ImportBvh)->Unit(benchmark::kMillisecond);
+
+// Assimp's own read of the same file with Gyre's settings: the floor of the import.
+void BM_AssimpReadBvh(benchmark::State& state)
+{
+    for (auto _ : state)
+        benchmark::DoNotOptimize(gyre::io::readWithAssimpOnly(largeBvh()));
+}
+BENCHMARK(BM_AssimpReadBvh)->Unit(benchmark::kMillisecond);
 
 // The same import as the app and gyre-cli run it: in gyre-scene-worker, the scene sent back over a
 // pipe and checked on arrival.
@@ -284,23 +296,28 @@ void BM_ExportGlb(benchmark::State& state)
 }
 BENCHMARK(BM_ExportGlb)->Unit(benchmark::kMillisecond);
 
-// A capture made in code: 31 joints keyed at 120 Hz for `frames` frames (4500 is CMU's 01_03.bvh,
-// 72,000 a ten-minute take: 2.2 million keys).
-gyre::model::Scene capture(std::int64_t frames)
+// A capture made in code, as an imported BVH is: a chain of `joints` keyed at 120 Hz for `frames`
+// frames, the root moving, each other joint at a fixed offset from its parent (31 joints for 4500
+// frames is CMU's 01_03.bvh, for 72,000 a ten-minute take: 2.2 million keys).
+gyre::model::Scene capture(std::int64_t joints, std::int64_t frames)
 {
     std::mt19937_64 rng(20261125);
     gyre::model::Scene scene;
-    for (gyre::model::ObjectId joint = 1; joint <= 31; ++joint) {
+    for (gyre::model::ObjectId joint = 1; joint <= static_cast<gyre::model::ObjectId>(joints); ++joint) {
         gyre::model::SceneObject object;
         object.id = joint;
         object.parent = joint - 1;
         std::vector<gyre::model::Keyframe> keys(static_cast<std::size_t>(frames));
-        for (std::size_t frame = 0; frame < keys.size(); ++frame)
-            keys[frame] = {static_cast<double>(frame) / 120.0, randomPose(rng), true};
+        for (std::size_t frame = 0; frame < keys.size(); ++frame) {
+            const double time = static_cast<double>(frame) / 120.0;
+            const Eigen::Vector3d offset = joint == 1 ? Eigen::Vector3d(0.25 * time, 0.0, 0.0) : Eigen::Vector3d(0, 2, 0);
+            keys[frame] = {time, {randomRotation(rng), offset}, true};
+        }
         object.track.keys = std::move(keys);
         scene.objects.push_back(std::move(object));
     }
-    scene.nextObjectId = 32;
+    scene.nextObjectId = static_cast<gyre::model::ObjectId>(joints) + 1;
+    scene.endTime = static_cast<double>(frames) / 120.0;
     return scene;
 }
 
@@ -308,13 +325,36 @@ gyre::model::Scene capture(std::int64_t frames)
 // its worker, which writes the project there.
 void BM_AutosaveSnapshot(benchmark::State& state)
 {
-    const gyre::model::Scene scene = capture(state.range(0));
+    const gyre::model::Scene scene = capture(31, state.range(0));
     for (auto _ : state) {
         gyre::model::Scene snapshot = scene;
         benchmark::DoNotOptimize(snapshot);
     }
 }
 BENCHMARK(BM_AutosaveSnapshot)->Arg(4500)->Arg(72000)->Unit(benchmark::kMicrosecond);
+
+// A project at scale saved, as Save and the autosave's worker do (every block checked, then
+// written), and opened: 100 joints for `frames` frames, the capture of docs/file-format.md's cost.
+void BM_SaveProject(benchmark::State& state)
+{
+    const gyre::model::Scene scene = capture(100, state.range(0));
+    QTemporaryDir folder;
+    const QString path = folder.filePath(QStringLiteral("capture.gyre"));
+    for (auto _ : state)
+        gyre::model::writeProject(path, scene);
+    state.counters["bytes"] = static_cast<double>(QFileInfo(path).size());
+}
+BENCHMARK(BM_SaveProject)->Arg(6000)->Unit(benchmark::kMillisecond);
+
+void BM_OpenProject(benchmark::State& state)
+{
+    QTemporaryDir folder;
+    const QString path = folder.filePath(QStringLiteral("capture.gyre"));
+    gyre::model::writeProject(path, capture(100, state.range(0)));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(gyre::model::readProject(path));
+}
+BENCHMARK(BM_OpenProject)->Arg(6000)->Unit(benchmark::kMillisecond);
 
 void BM_ExportGlbInWorker(benchmark::State& state)
 {

@@ -11,9 +11,6 @@
 
 #include <QDir>
 #include <QFile>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QRegularExpression>
 
 #include <algorithm>
@@ -176,19 +173,22 @@ Scene sketchScene()
     return scene;
 }
 
-// The keyed scene as version 1 wrote it: no sketch state.
-QByteArray versionOneProject()
+// The JSON examples of docs/file-format.md: a version 2 project and a version 1 one, the text
+// formats Gyre still reads.
+std::vector<QByteArray> documentedTextProjects()
 {
-    QJsonObject project = QJsonDocument::fromJson(model::projectJson(keyedScene())).object();
-    project[QStringLiteral("version")] = 1;
-    QJsonArray objects = project[QStringLiteral("objects")].toArray();
-    for (QJsonValueRef each : objects) {
-        QJsonObject withoutSketch = each.toObject();
-        withoutSketch.remove(QStringLiteral("sketch"));
-        each = withoutSketch;
+    QFile document(QStringLiteral(GYRE_SOURCE_DIR "/docs/file-format.md"));
+    if (!document.open(QIODevice::ReadOnly))
+        throw std::runtime_error("cannot read docs/file-format.md");
+    const QByteArray text = document.readAll();
+    std::vector<QByteArray> examples;
+    for (qsizetype start = text.indexOf("```json\n"); start >= 0; start = text.indexOf("```json\n", start)) {
+        start += 8;
+        examples.push_back(text.mid(start, text.indexOf("```", start) - start));
     }
-    project[QStringLiteral("objects")] = objects;
-    return QJsonDocument(project).toJson();
+    if (examples.size() != 2)
+        throw std::runtime_error("docs/file-format.md no longer holds the two JSON examples");
+    return examples;
 }
 
 // The mesh scene with its screw track the child of its squad track: a hierarchy for the scene formats.
@@ -201,10 +201,11 @@ Scene exchangeScene()
 
 std::vector<Seed> projectSeeds()
 {
-    return {{QStringLiteral("keyed.gyre"), Reader::Project, model::projectJson(keyedScene())},
-            {QStringLiteral("mesh.gyre"), Reader::Project, model::projectJson(meshScene())},
-            {QStringLiteral("sketch.gyre"), Reader::Project, model::projectJson(sketchScene())},
-            {QStringLiteral("version-1.gyre"), Reader::Project, versionOneProject()}};
+    return {{QStringLiteral("keyed.gyre"), Reader::Project, model::projectBytes(keyedScene())},
+            {QStringLiteral("mesh.gyre"), Reader::Project, model::projectBytes(meshScene())},
+            {QStringLiteral("sketch.gyre"), Reader::Project, model::projectBytes(sketchScene())},
+            {QStringLiteral("version-2.gyre"), Reader::Project, documentedTextProjects()[0]},
+            {QStringLiteral("version-1.gyre"), Reader::Project, documentedTextProjects()[1]}};
 }
 
 void writeFile(const QString& path, const QByteArray& bytes)

@@ -6,6 +6,8 @@
 #include <QRegularExpression>
 
 #include <array>
+#include <cstring>
+#include <limits>
 #include <functional>
 #include <optional>
 
@@ -34,6 +36,17 @@ bool isSmall(const QJsonValue& value)
     }
     return !value.isString() || value.toString().size() <= 16;
 }
+
+// A version 3 project starts with this, its version (uint32) and its header's length (uint64).
+const QByteArray kBinaryProject = QByteArrayLiteral("gyre-project");
+constexpr qsizetype kPreambleBytes = 24;
+
+// Values a block may be given in place of a float64: not finite, beyond every bound, denormal,
+// negative zero; and, read as a uint64 count or a flag byte, huge or neither 0 nor 1.
+constexpr std::array<double, 9> kExtremeDoubles{std::numeric_limits<double>::quiet_NaN(),
+                                                std::numeric_limits<double>::infinity(),
+                                                -std::numeric_limits<double>::infinity(),
+                                                1e308, 4.9e-324, -0.0, 2.0, 1.0000001e6, 1e-3};
 
 enum class JsonEdit { Remove, Replace, HugeArray, DuplicateElement, HugeBase64 };
 constexpr int kJsonEdits = 5;
@@ -92,6 +105,10 @@ QByteArray Mutator::mutate(const QByteArray& bytes, bool json)
     QByteArray mutant = bytes;
     const std::size_t edits = 1 + below(3);
     for (std::size_t i = 0; i < edits; ++i) {
+        if (json && mutant.startsWith(kBinaryProject) && below(2) == 0) {
+            editBinaryProject(mutant);
+            continue;
+        }
         switch (below(json ? 8 : 6)) {
         case 0: flipBytes(mutant); break;
         case 1: insertBytes(mutant); break;
@@ -212,6 +229,43 @@ void Mutator::editJson(QByteArray& bytes)
     // for its size alone, which tells nothing.
     if (edited.size() <= kMaxEditedBytes)
         bytes = edited;
+}
+
+void Mutator::editBinaryProject(QByteArray& bytes)
+{
+    if (bytes.size() < kPreambleBytes)
+        return;
+    quint64 headerBytes = 0;
+    std::memcpy(&headerBytes, bytes.constData() + 16, sizeof headerBytes); // little-endian, as is the machine
+    if (headerBytes > static_cast<quint64>(bytes.size() - kPreambleBytes))
+        return;
+    QByteArray header = bytes.mid(kPreambleBytes, static_cast<qsizetype>(headerBytes));
+    QByteArray blocks = bytes.mid(kPreambleBytes + static_cast<qsizetype>(headerBytes));
+    switch (below(5)) {
+    case 0: // the header's counts and indices, its length kept right so that the blocks are reached
+        replaceNumber(header);
+        break;
+    case 1:
+        editJson(header);
+        break;
+    case 2: // a float64 of a block: a time, a quaternion's or a position's coordinate
+        if (blocks.size() >= 8) {
+            const double value = kExtremeDoubles[below(kExtremeDoubles.size())];
+            std::memcpy(blocks.data() + 8 * below(static_cast<std::size_t>(blocks.size()) / 8), &value, sizeof value);
+        }
+        break;
+    case 3: // a byte of a block, such as a flag, neither 0 nor 1
+        if (!blocks.isEmpty())
+            blocks[static_cast<qsizetype>(below(static_cast<std::size_t>(blocks.size())))] = below(2) == 0 ? '\x02' : '\xFF';
+        break;
+    default: // a header length the file does not hold
+        headerBytes = below(2) == 0 ? headerBytes + 1 + below(64) : std::numeric_limits<quint64>::max() - below(64);
+        std::memcpy(bytes.data() + 16, &headerBytes, sizeof headerBytes);
+        return;
+    }
+    headerBytes = static_cast<quint64>(header.size());
+    std::memcpy(bytes.data() + 16, &headerBytes, sizeof headerBytes);
+    bytes = bytes.left(kPreambleBytes) + header + blocks;
 }
 
 } // namespace gyre::fuzz

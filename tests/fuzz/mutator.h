@@ -12,7 +12,8 @@ class Mutator {
 public:
     explicit Mutator(unsigned seed) : engine_(seed) {}
 
-    // A mutant of `bytes`. `json` adds edits of the JSON structure (when the bytes still parse).
+    // A mutant of `bytes`. `json` adds edits of the JSON structure (when the bytes still parse), and
+    // of a version 3 project's header and blocks.
     QByteArray mutate(const QByteArray& bytes, bool json);
 
 private:
@@ -24,6 +25,7 @@ private:
     void truncate(QByteArray& bytes);
     void replaceNumber(QByteArray& bytes);
     void editJson(QByteArray& bytes);
+    void editBinaryProject(QByteArray& bytes);
 
     std::mt19937 engine_;
 };

@@ -17,13 +17,11 @@
 #include "built_scene_worker.h"
 #include "fuzz_inputs.h"
 #include "mutator.h"
+#include "model/project_file.h"
 
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -215,19 +213,13 @@ void TestFuzzReaders::checkMutants(const Seed& seed, int index, int iterations, 
 void TestFuzzReaders::hugeKeyPositionsEvaluateFinite()
 {
     const QString path = dir_.filePath(QStringLiteral("huge-position.gyre"));
-    for (const char* method : {"squad", "screw"}) {
-        QJsonObject project = QJsonDocument::fromJson(seedNamed(QStringLiteral("mesh.gyre")).bytes).object();
-        QJsonArray objects = project[QStringLiteral("objects")].toArray();
-        QJsonObject object = objects[0].toObject();
-        object[QStringLiteral("interpolation")] = QString::fromLatin1(method);
-        QJsonArray keys = object[QStringLiteral("keyframes")].toArray();
-        QJsonObject key = keys[1].toObject();
-        key[QStringLiteral("position")] = QJsonArray{1.0, 0.0, -1e308};
-        keys[1] = key;
-        object[QStringLiteral("keyframes")] = keys;
-        objects[0] = object;
-        project[QStringLiteral("objects")] = objects;
-        const Outcome outcome = readInput(Reader::Project, QJsonDocument(project).toJson(), path);
+    for (const gyre::InterpolationMethod method : {gyre::InterpolationMethod::Squad, gyre::InterpolationMethod::Screw}) {
+        gyre::model::Scene scene = gyre::model::parseProject(seedNamed(QStringLiteral("mesh.gyre")).bytes, path);
+        gyre::model::MotionTrack& track = scene.objects[0].track;
+        track.interpolation = method;
+        track.keys[1].pose.position = {1.0, 0.0, -1e308};
+        // projectBytes writes what it is given, unchecked, as a damaged or hostile file would hold it.
+        const Outcome outcome = readInput(Reader::Project, gyre::model::projectBytes(scene), path);
         QVERIFY(!outcome.accepted);
         QVERIFY2(!refusalProblem(Reader::Project, outcome.refusal, path), outcome.refusal.c_str());
         QVERIFY2(outcome.refusal.find("keyframes[1].position") != std::string::npos, outcome.refusal.c_str());

@@ -90,7 +90,7 @@ private slots:
         QUndoStack& stack = document.undoStack();
         const int stepsBefore = stack.count();
         const bool cleanBefore = stack.isClean();
-        const QByteArray before = model::projectJson(document.scene());
+        const QByteArray before = model::projectBytes(document.scene());
 
         const QPoint from = marker();
         QTest::mousePress(timeline_, Qt::LeftButton, {}, from);
@@ -105,7 +105,7 @@ private slots:
         QCOMPARE(stack.count(), stepsBefore);
         QCOMPARE(stack.isClean(), cleanBefore);
         QCOMPARE(document.isModified(), !cleanBefore);
-        QCOMPARE(model::projectJson(document.scene()), before);
+        QCOMPARE(model::projectBytes(document.scene()), before);
     }
 
     void aDragBackToWhereItBeganAfterASaveLeavesTheDocumentSaved()

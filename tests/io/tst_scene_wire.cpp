@@ -134,7 +134,7 @@ private slots:
         const Reply reply = decodeReply(encodeReply(sent));
         const auto* received = std::get_if<SceneImport>(&reply);
         QVERIFY(received);
-        QCOMPARE(model::projectJson(received->scene), model::projectJson(sent.scene));
+        QCOMPARE(model::projectBytes(received->scene), model::projectBytes(sent.scene));
         QCOMPARE(received->scene.nextObjectId, sent.scene.nextObjectId);
         QCOMPARE(received->scene.objects[0].mesh, received->scene.objects[1].mesh);
         QVERIFY(received->scene.objects[0].mesh != received->scene.objects[2].mesh);
@@ -170,7 +170,7 @@ private slots:
         QCOMPARE(received->locale, sent.locale);
         QCOMPARE(received->format, sent.format);
         QCOMPARE(received->fps, sent.fps);
-        QCOMPARE(model::projectJson(received->scene), model::projectJson(sent.scene));
+        QCOMPARE(model::projectBytes(received->scene), model::projectBytes(sent.scene));
     }
 
     void importRequestAndOtherRepliesComeThrough()

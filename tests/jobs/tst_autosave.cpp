@@ -75,7 +75,7 @@ void TstAutosave::copiesOnlyUnsavedWork()
     importOne(document, QStringLiteral("first"));
     QVERIFY(autosaved.wait());
     QCOMPARE(autosaved.front().front().toString(), autosave.recoveryPath());
-    QCOMPARE(projectJson(readProject(autosave.recoveryPath())), projectJson(document.scene()));
+    QCOMPARE(projectBytes(readProject(autosave.recoveryPath())), projectBytes(document.scene()));
     // Nothing new, nothing written.
     QTest::qWait(10 * kInterval.count());
     QCOMPARE(autosaved.count(), 1);
@@ -145,7 +145,7 @@ void TstAutosave::offersACrashedSessionForRecovery()
     QVERIFY(!QFileInfo::exists(files.front().recoveryPath));
     const QString session = QFileInfo(autosave.recoveryPath()).completeBaseName();
     QCOMPARE(filesIn(directory.path()), (QStringList{session + ".gyre", session + ".json", session + ".lock"}));
-    QCOMPARE(projectJson(readProject(autosave.recoveryPath())), projectJson(document.scene()));
+    QCOMPARE(projectBytes(readProject(autosave.recoveryPath())), projectBytes(document.scene()));
     QSignalSpy autosaved(&autosave, &Autosave::autosaved);
     QVERIFY(autosaved.wait());
     // Saving the recovered work ends the need for its copy.
@@ -173,14 +173,14 @@ void TstAutosave::aRecoveredCopyOutlivesASecondCrash()
     QTemporaryDir documents;
     const QString documentPath = documents.filePath("twice.gyre");
     QCOMPARE(crashSession({directory.path(), documentPath}), 0);
-    const QByteArray firstCopy = projectJson(readProject(Autosave::recoverableFiles(directory.path()).front().recoveryPath));
+    const QByteArray firstCopy = projectBytes(readProject(Autosave::recoverableFiles(directory.path()).front().recoveryPath));
 
     QCOMPARE(crashSession({QStringLiteral("--recover"), directory.path()}), 0);
 
     const std::vector<RecoveryFile> files = Autosave::recoverableFiles(directory.path());
     QCOMPARE(files.size(), std::size_t{1});
     QCOMPARE(files.front().documentPath, documentPath);
-    QCOMPARE(projectJson(readProject(files.front().recoveryPath)), firstCopy);
+    QCOMPARE(projectBytes(readProject(files.front().recoveryPath)), firstCopy);
 }
 
 void TstAutosave::leftoversOfEndedSessionsAreRemoved()

@@ -130,7 +130,7 @@ private slots:
         const std::shared_ptr<const SceneImport> imported = importGood();
         QVERIFY(imported);
         const SceneImport here = importScene(goodFile_);
-        QCOMPARE(model::projectJson(imported->scene), model::projectJson(here.scene));
+        QCOMPARE(model::projectBytes(imported->scene), model::projectBytes(here.scene));
         QVERIFY(imported->scene.objects.size() >= 3);
         QCOMPARE(imported->animations.size(), here.animations.size());
         QCOMPARE(imported->animations.front().nodes, here.animations.front().nodes);

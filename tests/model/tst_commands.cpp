@@ -518,7 +518,7 @@ void TstCommands::reparentInPlaceKeepsTheWorldPoseAtEveryKey()
     SceneObject grandchild = objectWithKeys(4, {0.7, 1.2}, 3);
     Document document;
     import(document, {mover, turner, child, grandchild});
-    const QByteArray before = projectJson(document.scene());
+    const QByteArray before = projectBytes(document.scene());
     const auto worldPoses = [&document](ObjectId id, ObjectId keysOf) {
         std::vector<Pose> poses;
         for (const Keyframe& key : document.object(keysOf)->track.keys)
@@ -547,7 +547,7 @@ void TstCommands::reparentInPlaceKeepsTheWorldPoseAtEveryKey()
     document.undoStack().undo();
     document.undoStack().undo();
     document.undoStack().undo();
-    QCOMPARE(projectJson(document.scene()), before);
+    QCOMPARE(projectBytes(document.scene()), before);
     QVERIFY(refuses([&] { ReparentObjectInPlaceCommand(document, 1, 4); }, "cannot be the parent of object 1"));
     QVERIFY(refuses([&] { ReparentObjectInPlaceCommand(document, 9, 1); }, "no object 9"));
 }
@@ -557,11 +557,11 @@ void TstCommands::deleteRemovesTheSubtree()
     Document document;
     import(document, {objectWithKeys(1, {0}), objectWithKeys(2, {0}, 1), objectWithKeys(3, {0}),
                       objectWithKeys(4, {0}, 2), objectWithKeys(5, {0}, 3)});
-    const QByteArray before = projectJson(document.scene());
+    const QByteArray before = projectBytes(document.scene());
     document.undoStack().push(new DeleteObjectCommand(document, 1));
     QCOMPARE(objectOrder(document.scene()), (std::vector<ObjectId>{3, 5}));
     document.undoStack().undo();
-    QCOMPARE(projectJson(document.scene()), before);
+    QCOMPARE(projectBytes(document.scene()), before);
 }
 
 void TstCommands::timeRange()
@@ -690,9 +690,9 @@ void TstCommands::modifiedFollowsTheSavedState()
 
     // A file that cannot be loaded leaves the document as it was.
     document.undoStack().push(new RenameObjectCommand(document, 1, QStringLiteral("edited")));
-    const QByteArray before = projectJson(document.scene());
+    const QByteArray before = projectBytes(document.scene());
     QVERIFY_THROWS_EXCEPTION(gyre::InputError, document.load(directory.filePath("missing.gyre")));
-    QCOMPARE(projectJson(document.scene()), before);
+    QCOMPARE(projectBytes(document.scene()), before);
     QVERIFY(document.isModified());
     QCOMPARE(document.undoStack().count(), 2);
 

@@ -47,7 +47,7 @@ struct Fixture {
     }
 
     double keyTime(std::size_t key) const { return document.object(id)->track.keys[key].time; }
-    QByteArray json() const { return projectJson(document.scene()); }
+    QByteArray json() const { return projectBytes(document.scene()); }
     QUndoStack& stack() { return document.undoStack(); }
 
     Document document;

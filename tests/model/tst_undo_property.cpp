@@ -89,7 +89,7 @@ void TstUndoProperty::randomSequences()
     QUndoStack& stack = document.undoStack();
     RandomEdits edits(seed);
     // states[i]: the serialised document after the first i commands on the stack.
-    std::vector<QByteArray> states{projectJson(document.scene())};
+    std::vector<QByteArray> states{projectBytes(document.scene())};
     std::array<int, kEditKinds> pushed{};
     int merges = 0;
     int refusals = 0;
@@ -106,7 +106,7 @@ void TstUndoProperty::randomSequences()
             command = edits.command(document, kind);
         } catch (const std::invalid_argument&) {
             ++refusals;
-            QCOMPARE(projectJson(document.scene()), states.back());
+            QCOMPARE(projectBytes(document.scene()), states.back());
             continue;
         }
         if (!command)
@@ -133,14 +133,14 @@ void TstUndoProperty::randomSequences()
             // gesture and changed nothing.
             if (joinsStep)
                 ++merges;
-            states.back() = projectJson(document.scene());
+            states.back() = projectBytes(document.scene());
         } else if (stack.count() == countBefore + 1) {
-            states.push_back(projectJson(document.scene()));
+            states.push_back(projectBytes(document.scene()));
         } else {
             // The gesture came back to where its step began, and the step went.
             QCOMPARE(stack.count(), countBefore - 1);
             states.pop_back();
-            QCOMPARE(projectJson(document.scene()), states.back());
+            QCOMPARE(projectBytes(document.scene()), states.back());
         }
         QVERIFY(parentsComeFirst(document.scene()));
         QCOMPARE(states.size(), static_cast<std::size_t>(stack.count()) + 1);
@@ -148,9 +148,9 @@ void TstUndoProperty::randomSequences()
             continue;
 
         stack.undo();
-        QCOMPARE(projectJson(document.scene()), states[states.size() - 2]);
+        QCOMPARE(projectBytes(document.scene()), states[states.size() - 2]);
         stack.redo();
-        QCOMPARE(projectJson(document.scene()), states.back());
+        QCOMPARE(projectBytes(document.scene()), states.back());
     }
 
     for (int kind = 0; kind < kEditKinds; ++kind)
@@ -163,10 +163,10 @@ void TstUndoProperty::randomSequences()
     QVERIFY(!document.isGestureOpen());
 
     stack.setIndex(0);
-    QCOMPARE(projectJson(document.scene()), states.front());
+    QCOMPARE(projectBytes(document.scene()), states.front());
     QVERIFY(document.scene().objects.empty());
     stack.setIndex(stack.count());
-    QCOMPARE(projectJson(document.scene()), states.back());
+    QCOMPARE(projectBytes(document.scene()), states.back());
 }
 
 QTEST_GUILESS_MAIN(TstUndoProperty)

@@ -124,7 +124,7 @@ void TstSamples::bundledFilesAreWhatTheCodeMakes()
         }
         QFile file(path);
         QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(path));
-        QVERIFY2(file.readAll() == model::projectJson(sample.scene), qPrintable(regenerate));
+        QVERIFY2(file.readAll() == model::projectBytes(sample.scene), qPrintable(regenerate));
     }
 }
 
