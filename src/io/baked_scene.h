@@ -23,12 +23,21 @@ struct BakedObject {
     Pose startPose;                        // relative to the parent, at the scene's start time
     const model::Mesh* mesh = nullptr;     // null when the object has no triangles; indices checked
     std::vector<model::TimedPose> samples; // the baked motion; empty when the object does not move
+    // The orientation as the Hermite spline the track plays (rotationSplineOf), for glTF's CUBICSPLINE;
+    // empty when the track plays no such spline. Its times lie within the samples' times.
+    std::vector<HermiteControlPoint> rotationSpline;
 };
 
 struct BakedScene {
     std::vector<BakedObject> objects;
     model::BakeRange range; // the scene's start and end time and the frame rate of the bake
 };
+
+// The Hermite spline whose normalised curve is the track's orientation at every time, when there is one:
+// a hermite track with two keys or more, without a fit (HermiteQuaternionSpline::throughKeys of its
+// keys) or with a fit that spans exactly its keys (the fit's control points), every control value a
+// unit quaternion within 1e-6 (glTF asks unit rotations of a sampler). Else empty.
+std::vector<HermiteControlPoint> rotationSplineOf(const model::MotionTrack& track);
 
 // Makes `baked`, the bake of `scene` (its objects in the scene's order), hold the times glTF asks of an
 // animation sampler's input: float32 seconds, the first not below 0, strictly increasing.
@@ -39,6 +48,8 @@ struct BakedScene {
 //   run of an object's samples that read back as the same milliseconds, one is kept: the last at one of
 //   the object's key times (the artist's pose), else the last of the run. Rounding is monotonic, so the
 //   kept times strictly increase as float32 seconds and as Assimp's milliseconds.
+// - The rotation spline's times move with the samples; a spline two of whose times read back as the
+//   same milliseconds is dropped, and the object's rotation is written from its samples.
 // Returns a warning for each of these that changed something.
 QStringList prepareGltfTimes(BakedScene& baked, const model::Scene& scene);
 
