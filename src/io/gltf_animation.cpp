@@ -264,6 +264,15 @@ bool hasNoCorners(const GltfSampler& sampler)
     return true;
 }
 
+// Whether every value and tangent is the first value: then every interpolation plays it exactly.
+bool isConstant(const GltfSampler& sampler)
+{
+    const auto same = [&sampler](const Eigen::Vector4d& v) { return v == sampler.values.front(); };
+    const auto zero = [](const Eigen::Vector4d& v) { return v.isZero(); };
+    return std::ranges::all_of(sampler.values, same) && std::ranges::all_of(sampler.inTangents, zero) &&
+           std::ranges::all_of(sampler.outTangents, zero);
+}
+
 class KeyTimes {
 public:
     KeyTimes(double fps, const QString& path, const QString& node)
@@ -350,8 +359,8 @@ model::MotionTrack gltfTrack(const GltfNodeMotion& motion, const Pose& nodePose,
             times.add(time);
         if (translation->interpolation == GltfInterpolation::Step && track.interpolation == InterpolationMethod::Slerp)
             times.addHolds(*translation);
-        else if (translation->interpolation == GltfInterpolation::CubicSpline ||
-                 track.interpolation == InterpolationMethod::Hermite)
+        else if (!isConstant(*translation) && (translation->interpolation == GltfInterpolation::CubicSpline ||
+                                               track.interpolation == InterpolationMethod::Hermite))
             times.addFrames(*translation);
     }
     const std::optional<HermiteQuaternionSpline> spline =

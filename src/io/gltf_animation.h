@@ -18,8 +18,8 @@
 //   HermiteQuaternionSpline is the same cubic, normalised, so it plays exactly;
 // - a CUBICSPLINE rotation with a corner (aₖ ≠ bₖ): baked, a slerp key at every frame of its span;
 // - a translation is exact at every key; between keys it is exact when it is LINEAR or STEP on a slerp
-//   track; otherwise (CUBICSPLINE, or under a hermite track, whose positions are cubic) it gets a key
-//   at every frame of its span, exact at the frames.
+//   track, or when it never changes; otherwise (CUBICSPLINE, or under a hermite track, whose positions
+//   are cubic) it gets a key at every frame of its span, exact at the frames.
 // Frames are k/fps in the file's time.
 
 #include "core/pose.h"
