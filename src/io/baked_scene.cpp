@@ -3,7 +3,6 @@
 #include "model/input_error.h"
 
 #include <algorithm>
-#include <cmath>
 #include <iterator>
 #include <ranges>
 
@@ -51,7 +50,7 @@ bool hasDistinctReadTimes(const std::vector<HermiteControlPoint>& points)
 
 } // namespace
 
-std::vector<HermiteControlPoint> rotationSplineOf(const model::MotionTrack& track)
+std::vector<HermiteControlPoint> rotationSplineOf(const model::MotionTrack& track, const std::vector<double>& times)
 {
     if (track.interpolation != InterpolationMethod::Hermite || track.keys.size() < 2)
         return {};
@@ -64,10 +63,14 @@ std::vector<HermiteControlPoint> rotationSplineOf(const model::MotionTrack& trac
     } else if (points.front().time != track.keys.front().time || points.back().time != track.keys.back().time) {
         return {};
     }
-    const bool unit = std::ranges::all_of(points, [](const HermiteControlPoint& point) {
-        return std::abs(point.value.norm() - 1.0) <= 1e-6;
-    });
-    return unit ? points : std::vector<HermiteControlPoint>{};
+    const HermiteQuaternionSpline spline(points);
+    std::vector<HermiteControlPoint> cut;
+    for (const double time : times)
+        if (time >= points.front().time && time <= points.back().time) {
+            const HermiteQuaternionSpline::RawSample raw = spline.raw(time);
+            cut.push_back({time, raw.value, raw.derivative});
+        }
+    return cut;
 }
 
 QStringList prepareGltfTimes(BakedScene& baked, const model::Scene& scene)

@@ -113,7 +113,10 @@ public:
                 baked.mesh = &checkedMesh(*object.mesh, object.name);
             if (withMotion && isAnimated(object.track)) {
                 baked.samples = bakeTrack(object);
-                baked.rotationSpline = rotationSplineOf(object.track);
+                std::vector<double> times;
+                for (const model::TimedPose& sample : baked.samples)
+                    times.push_back(sample.time);
+                baked.rotationSpline = rotationSplineOf(object.track, times);
             }
             indexOfId.emplace(object.id, result_.objects.size());
             result_.objects.push_back(std::move(baked));

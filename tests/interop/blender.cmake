@@ -8,6 +8,8 @@
 #   importer, and every object's pose at every baked time must match gyre-cli bake (0.01°, 1e-4 m),
 #   its mesh standing where Gyre puts it, each action the clip's full length; FBX also with the
 #   project's frame rate (glTF and Gyre's Collada store none: Blender keys them at 24 fps).
+#   blender_imports_gyre_glb-spline_<sample>, for the samples with hermite tracks: the same without
+#   their fits, so that the rotations go out as CUBICSPLINE samplers.
 # scripts/install-deps.sh installs Blender with the other packages; without it these tests fail and
 # say so, rather than pass unseen.
 find_program(GYRE_BLENDER blender)
@@ -35,4 +37,13 @@ foreach(sample IN LISTS bundled_samples)
                          -- ${format} $<TARGET_FILE:gyre-cli> ${sample})
         set_tests_properties(blender_imports_gyre_${format}_${name} PROPERTIES LABELS interop)
     endforeach()
+    # glb-spline: the samples with hermite tracks, their fits removed, written as CUBICSPLINE samplers.
+    file(READ ${sample} sample_text)
+    string(FIND "${sample_text}" "\"interpolation\": \"hermite\"" hermite_at)
+    if(hermite_at GREATER_EQUAL 0)
+        add_test(NAME blender_imports_gyre_glb-spline_${name}
+                 COMMAND ${blender_command} ${CMAKE_CURRENT_SOURCE_DIR}/blender_import_gyre.py
+                         -- glb-spline $<TARGET_FILE:gyre-cli> ${sample})
+        set_tests_properties(blender_imports_gyre_glb-spline_${name} PROPERTIES LABELS interop)
+    endif()
 endforeach()

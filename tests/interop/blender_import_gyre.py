@@ -33,10 +33,16 @@
 # Collada stores no frame rate either: the importer keys time t at frame t × 24 (time 0 at frame 0),
 # linearly, each baked matrix as location, rotation_quaternion and scale keys.
 #
+# glb-spline: glb again, from a copy of the project whose fits are removed, so that every hermite
+# track is Gyre's spline through its keys, which Gyre writes as a CUBICSPLINE rotation sampler
+# (src/io/gltf_scene_writer.h); the file must hold one per moving hermite object. Blender 3.4 makes
+# each CUBICSPLINE key a Bézier key with handles a third of the span along the tangents, the same
+# cubic, and normalises the quaternion: the baked times between the spline's keys check that.
+#
 # Run it with Blender 3.4 (Debian's `blender`), from the top of the source tree:
 #   blender -b --factory-startup --python tests/interop/blender_import_gyre.py -- \
 #       fbx build/src/cli/gyre-cli resources/samples/*.gyre
-# (glb or dae in place of fbx for those). It prints one line per project and exits with status 1 if any
+# (glb, glb-spline or dae in place of fbx for those). It prints one line per project and exits with status 1 if any
 # check fails. Objects whose name another object shares, or that bears the glTF root's name, are
 # skipped (gyre-cli bake selects objects by name, and the export renames them).
 #
@@ -67,8 +73,9 @@ GLTF_ROOT_NAME = "GyreScene"  # kRootName in src/io/scene_export.cpp
 
 def arguments():
     args = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    if len(args) < 3 or args[0] not in ("fbx", "glb", "dae"):
-        sys.exit("usage: blender -b --factory-startup --python blender_import_gyre.py -- fbx|glb|dae GYRE_CLI PROJECT.gyre...")
+    if len(args) < 3 or args[0] not in ("fbx", "glb", "glb-spline", "dae"):
+        sys.exit("usage: blender -b --factory-startup --python blender_import_gyre.py -- fbx|glb|glb-spline|dae "
+                 "GYRE_CLI PROJECT.gyre...")
     return args[0], args[1], args[2:]
 
 
@@ -125,6 +132,22 @@ class Glb:
     def check_scene(scene, fps, problems):
         # glTF stores no frame rate: the importer keeps the scene's (24) and keys at time × that.
         return "keys at %d fps (glTF stores no frame rate)" % scene.render.fps
+
+
+class GlbSpline(Glb):
+    """glb from the project without its fits: hermite tracks as CUBICSPLINE samplers."""
+    name = "glb-spline"
+    without_fits = True
+
+
+def cubic_spline_samplers(path):
+    """How many samplers of a .glb's animations are CUBICSPLINE."""
+    with open(path, "rb") as f:
+        data = f.read()
+    length, = struct.unpack_from("<I", data, 12)  # the JSON chunk's length, after the 12-byte header
+    gltf = json.loads(data[20:20 + length])
+    return sum(sampler.get("interpolation") == "CUBICSPLINE"
+               for animation in gltf.get("animations", []) for sampler in animation["samplers"])
 
 
 class Dae:
@@ -185,24 +208,36 @@ def geometry_error(obj, world_turn, positions, orientation_in_world, position_in
 
 
 def check_project(kind, gyre_cli, project, folder):
+    source = project
     with open(project, encoding="utf-8") as f:
         document = json.load(f)
     fps = float(document["fps"])
     end = float(document["endTime"])
     # A glTF file starts at 0 s: Gyre moves a scene that starts earlier (prepareGltfTimes).
-    shift = max(0.0, -float(document.get("startTime", 0.0))) if kind is Glb else 0.0
+    shift = max(0.0, -float(document.get("startTime", 0.0))) if issubclass(kind, Glb) else 0.0
     names = [o["name"] for o in document["objects"]]
     parent_of = {o["id"]: o.get("parent") for o in document["objects"]}
     name_of = {o["id"]: o["name"] for o in document["objects"]}
     mesh_of = {o["id"]: o.get("mesh") for o in document["objects"]}
     meshes = document.get("meshes", [])
 
-    path = os.path.join(folder, "scene." + kind.name)
+    problems = []
+    if getattr(kind, "without_fits", False):
+        for o in document["objects"]:
+            o["sketch"]["fittedCurve"] = []
+            o["sketch"]["keysBeforeFit"] = []
+        project = os.path.join(folder, "without-fits.gyre")
+        with open(project, "w", encoding="utf-8") as f:
+            json.dump(document, f)
+    path = os.path.join(folder, "scene." + kind.name.split("-")[0])
     subprocess.run([gyre_cli, "export", project, "-o", path], check=True)
+    if getattr(kind, "without_fits", False):
+        splines = sum(o["interpolation"] == "hermite" and len(o["keyframes"]) > 1 for o in document["objects"])
+        if splines == 0 or cubic_spline_samplers(path) != splines:
+            problems.append("%d CUBICSPLINE samplers for %d hermite tracks" % (cubic_spline_samplers(path), splines))
     bpy.ops.wm.read_factory_settings(use_empty=True)
     kind.load(path)
     scene = bpy.context.scene
-    problems = []
     rate = kind.check_scene(scene, fps, problems)
     key_fps = scene.render.fps
 
@@ -271,14 +306,14 @@ def check_project(kind, gyre_cli, project, folder):
     if worst_vertex > POSITION_TOLERANCE:
         problems.append("vertices off by %g" % worst_vertex)
     print("%s %s: %d objects, %s, %g s; worst angle %.2e°, position %.1e, scale %.1e, vertex %.1e%s"
-          % (kind.name, os.path.basename(project), len(names), rate, end, worst_angle, worst_position,
+          % (kind.name, os.path.basename(source), len(names), rate, end, worst_angle, worst_position,
              worst_scale, worst_vertex, "" if not problems else " -- FAILED: " + "; ".join(problems)))
     return not problems
 
 
 def main():
     format_name, gyre_cli, projects = arguments()
-    kind = {"fbx": Fbx, "glb": Glb, "dae": Dae}[format_name]
+    kind = {"fbx": Fbx, "glb": Glb, "glb-spline": GlbSpline, "dae": Dae}[format_name]
     passed = True
     with tempfile.TemporaryDirectory() as folder:
         for project in projects:
