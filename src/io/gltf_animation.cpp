@@ -160,7 +160,7 @@ std::map<int, std::string> uniqueNodeNames(const tinygltf::Model& model)
     std::map<std::string, int> uses;
     std::map<int, std::string> names;
     for (std::size_t i = 0; i < model.nodes.size(); ++i) {
-        const std::string name = model.nodes[i].name.empty() ? "nodes_" + std::to_string(i) : model.nodes[i].name;
+        const std::string name = model.nodes[i].name.empty() ? "nodes[" + std::to_string(i) + "]" : model.nodes[i].name;
         names.emplace(static_cast<int>(i), name);
         ++uses[name];
     }

@@ -61,7 +61,7 @@ struct GltfNodeMotion {
 };
 
 // The node motion of each of the file's animations, in the file's order, found by the node's name as
-// Assimp names it (its "name", or "nodes_<index>" for a node without one). A node whose name is not
+// Assimp names it (its "name", or "nodes[<index>]" for a node without one). A node whose name is not
 // unique, and a channel whose accessors are sparse or not float, are left out: Assimp's keys stand.
 using GltfAnimations = std::vector<std::unordered_map<std::string, GltfNodeMotion>>;
 

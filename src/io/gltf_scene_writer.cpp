@@ -114,20 +114,17 @@ private:
     tinygltf::Model model_;
 };
 
-int addSampler(tinygltf::Animation& animation, int input, int output, const char* interpolation)
+// A sampler of `input` times and `output` values, and the channel that drives the node's `path` with it.
+void addChannel(tinygltf::Animation& animation, int input, int output, const char* interpolation, int node,
+                const char* path)
 {
     tinygltf::AnimationSampler sampler;
     sampler.input = input;
     sampler.output = output;
     sampler.interpolation = interpolation;
     animation.samplers.push_back(std::move(sampler));
-    return static_cast<int>(animation.samplers.size()) - 1;
-}
-
-void addChannel(tinygltf::Animation& animation, int sampler, int node, const char* path)
-{
     tinygltf::AnimationChannel channel;
-    channel.sampler = sampler;
+    channel.sampler = static_cast<int>(animation.samplers.size()) - 1;
     channel.target_node = node;
     channel.target_path = path;
     animation.channels.push_back(std::move(channel));
@@ -153,10 +150,10 @@ void addMotion(GltfModelBuilder& builder, tinygltf::Animation& animation, const 
     }
     const int input = builder.floatAccessor(times, 1, TINYGLTF_TYPE_SCALAR, true);
     const int translation = builder.floatAccessor(positions, 3, TINYGLTF_TYPE_VEC3, false);
-    addChannel(animation, addSampler(animation, input, translation, "LINEAR"), node, "translation");
+    addChannel(animation, input, translation, "LINEAR", node, "translation");
     if (object.rotationSpline.empty()) {
         const int rotation = builder.floatAccessor(rotations, 4, TINYGLTF_TYPE_VEC4, false);
-        addChannel(animation, addSampler(animation, input, rotation, "LINEAR"), node, "rotation");
+        addChannel(animation, input, rotation, "LINEAR", node, "rotation");
         return;
     }
     std::vector<float> splineTimes;
@@ -169,7 +166,7 @@ void addMotion(GltfModelBuilder& builder, tinygltf::Animation& animation, const 
     }
     const int splineInput = builder.floatAccessor(splineTimes, 1, TINYGLTF_TYPE_SCALAR, true);
     const int spline = builder.floatAccessor(splineValues, 4, TINYGLTF_TYPE_VEC4, false);
-    addChannel(animation, addSampler(animation, splineInput, spline, "CUBICSPLINE"), node, "rotation");
+    addChannel(animation, splineInput, spline, "CUBICSPLINE", node, "rotation");
 }
 
 tinygltf::Model modelOf(const BakedScene& baked)

@@ -33,8 +33,9 @@ struct SamplerSpec {
     std::vector<float> output; // 4 (rotation) or 3 (translation) floats per element
 };
 
-// A .gltf of one node "spinner" without a mesh, moved by one animation of `samplers`, its buffer a data URI.
-QByteArray gltfOf(const std::vector<SamplerSpec>& samplers)
+// A .gltf of one node without a mesh, "spinner" or unnamed, moved by one animation of `samplers`, its
+// buffer a data URI.
+QByteArray gltfOf(const std::vector<SamplerSpec>& samplers, bool named = true)
 {
     QByteArray buffer;
     QJsonArray views;
@@ -70,7 +71,7 @@ QByteArray gltfOf(const std::vector<SamplerSpec>& samplers)
         {"asset", QJsonObject{{"version", "2.0"}}},
         {"scene", 0},
         {"scenes", QJsonArray{QJsonObject{{"nodes", QJsonArray{0}}}}},
-        {"nodes", QJsonArray{QJsonObject{{"name", "spinner"}}}},
+        {"nodes", QJsonArray{named ? QJsonObject{{"name", "spinner"}} : QJsonObject{}}},
         {"buffers", QJsonArray{QJsonObject{{"byteLength", static_cast<int>(buffer.size())},
                                            {"uri", QString::fromLatin1("data:application/octet-stream;base64," +
                                                                        buffer.toBase64())}}}},
@@ -113,6 +114,7 @@ class TstGltfSamplers : public QObject {
     Q_OBJECT
 
 private slots:
+    void stepStaysAStep_data();
     void stepStaysAStep();
     void cubicSplineKeepsItsTangents();
     void cubicSplineWithACornerIsBakedAtTheFrames();
@@ -122,10 +124,10 @@ private slots:
 private:
     QString path(const QString& name) const { return directory_.filePath(name); }
 
-    SceneImport importGltf(const std::vector<SamplerSpec>& samplers, const QString& name) const
+    SceneImport importGltf(const std::vector<SamplerSpec>& samplers, const QString& name, bool named = true) const
     {
         QFile file(path(name));
-        if (!file.open(QIODevice::WriteOnly) || file.write(gltfOf(samplers)) < 0)
+        if (!file.open(QIODevice::WriteOnly) || file.write(gltfOf(samplers, named)) < 0)
             qFatal("cannot write %s", qPrintable(file.fileName()));
         file.close();
         ImportOptions options;
@@ -139,15 +141,24 @@ private:
 };
 
 // Rotation keys 0°, 90°, 180° about z at 0, 1, 2 s and positions at 0, 1.5 s, both STEP: at every frame
-// the value is the last key's, up to the frame before the next key.
+// the value is the last key's, up to the frame before the next key; for a node without a name too,
+// which Assimp calls "nodes[0]".
+void TstGltfSamplers::stepStaysAStep_data()
+{
+    QTest::addColumn<bool>("named");
+    QTest::newRow("named") << true;
+    QTest::newRow("unnamed") << false;
+}
+
 void TstGltfSamplers::stepStaysAStep()
 {
+    QFETCH(bool, named);
     std::vector<float> rotations;
     for (const double angle : {0.0, kPi / 2, kPi})
         appendQuaternion(rotations, aboutZ(angle));
     const SceneImport imported = importGltf(
         {{"STEP", "rotation", {0.0f, 1.0f, 2.0f}, rotations}, {"STEP", "translation", {0.0f, 1.5f}, {0, 0, 0, 1, 2, 3}}},
-        "step.gltf");
+        "step.gltf", named);
     QCOMPARE(imported.scene.objects.size(), std::size_t{1});
     const model::TrackMotion motion(imported.scene.objects[0].track);
     for (int frame = 0; frame <= 60; ++frame) {
