@@ -1,6 +1,6 @@
 #pragma once
-// The shape drawn for an object without a mesh: a block with a nose along +x and a fin on top (+z),
-// so that every rotation of it, even a half turn about any axis, looks different.
+// The shape drawn for an object without a mesh: the block primitive (model/primitive_meshes.h), with
+// a nose and a fin so that every rotation of it looks different.
 
 #include "model/scene.h"
 
