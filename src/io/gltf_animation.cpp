@@ -125,7 +125,8 @@ public:
         for (std::size_t k = 0; k < count; ++k) {
             const double time = (*times)[k];
             if (!std::isfinite(time) || (k > 0 && !(time > result.times.back())))
-                fail(field + QStringLiteral(".input"), FileError::tr("time %1 is not finite or not after the one before it").arg(k));
+                fail(field + QStringLiteral(".input"),
+                     FileError::tr("time %1 is not finite or not after the one before it").arg(k));
             result.times.push_back(time);
         }
         const auto element = [&](std::size_t i) {

@@ -235,8 +235,9 @@ GltfFiles gltfSceneFiles(const BakedScene& baked, bool binary, const QString& bi
     if (binary || model.buffers.empty())
         return files;
     QJsonObject json = QJsonDocument::fromJson(files.main).object();
-    json[QStringLiteral("buffers")] = QJsonArray{QJsonObject{{QStringLiteral("byteLength"), static_cast<qint64>(bin.size())},
-                                                             {QStringLiteral("uri"), QString::fromLatin1(QUrl::toPercentEncoding(binName))}}};
+    const QJsonObject buffer{{QStringLiteral("byteLength"), static_cast<qint64>(bin.size())},
+                             {QStringLiteral("uri"), QString::fromLatin1(QUrl::toPercentEncoding(binName))}};
+    json[QStringLiteral("buffers")] = QJsonArray{buffer};
     files.main = QJsonDocument(json).toJson(QJsonDocument::Indented);
     files.bin = QByteArray(reinterpret_cast<const char*>(bin.data()), static_cast<qsizetype>(bin.size()));
     return files;

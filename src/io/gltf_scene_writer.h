@@ -5,9 +5,10 @@
 //   the start time (translation, rotation); one mesh per distinct Mesh (POSITION with its bounds,
 //   NORMAL when every vertex has one, UNSIGNED_INT indices, triangles) and one grey material.
 // - One animation "Gyre": for every moving object a translation sampler (LINEAR, at the baked
-//   samples) and a rotation sampler: CUBICSPLINE through BakedObject::rotationSpline when it has one
-//   (in- and out-tangent both the spline's derivative, which glTF, like HermiteQuaternionSpline,
-//   multiplies by the span's duration, and both normalise the cubic), else LINEAR at the baked
+//   samples) and a rotation sampler: CUBICSPLINE through BakedObject::rotationSpline (the track's
+//   spline cut at the baked times) when it has one (in- and out-tangent both the raw cubic's time
+//   derivative, which glTF, like HermiteQuaternionSpline, multiplies by the span's duration, and both
+//   normalise the cubic), else LINEAR at the baked
 //   samples, each quaternion on the side of the one before so that slerp takes the short arc.
 // - Values, times and tangents are float32, which is what the glTF format stores.
 //

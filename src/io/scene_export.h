@@ -51,13 +51,13 @@ struct ExportReport {
     QStringList warnings; // what the file could not keep
 };
 
-// Writes the scene to `path` in `format`, its motion baked at `fps` over [startTime, endTime]. Assimp
-// and the FBX writer write into memory; each file is then written whole through an OutputTarget: a
+// Writes the scene to `path` in `format`, its motion baked at `fps` over [startTime, endTime]. Assimp,
+// TinyGLTF and the FBX writer write into memory; each file is then written whole through an OutputTarget: a
 // regular file through a temporary file in its folder, renamed (QSaveFile), so on an error a file
 // already at that path keeps its contents; a FIFO or a device in place. Throws OutputError, naming the
 // file, when fps is not finite and positive, the range is empty or gives more than kMaxExportSamples
-// samples, a track cannot be evaluated, Assimp or TinyGLTF fails, an FBX file would pass 4 GiB, or a file cannot
-// be written.
+// samples, a track cannot be evaluated, Assimp or TinyGLTF fails, an FBX file would pass 4 GiB, or a
+// file cannot be written.
 ExportReport exportScene(const model::Scene& scene, const QString& path, SceneFormat format, double fps);
 
 } // namespace gyre::io

@@ -98,11 +98,15 @@ Eigen::Quaterniond specCubicSpline(const std::vector<float>& inputs, const std::
     std::size_t k = 0;
     while (k + 2 < times.size() && t >= times[k + 1])
         ++k;
-    const auto element = [&](std::size_t key, int part) { return vec4(&output[(3 * key + static_cast<std::size_t>(part)) * 4]); };
+    const auto element = [&](std::size_t key, int part) {
+        return vec4(&output[(3 * key + static_cast<std::size_t>(part)) * 4]);
+    };
     const double td = times[k + 1] - times[k];
     const double s = std::clamp((t - times[k]) / td, 0.0, 1.0);
-    const Eigen::Vector4d p = (2 * s * s * s - 3 * s * s + 1) * element(k, 1) + td * (s * s * s - 2 * s * s + s) * element(k, 2) +
-                              (-2 * s * s * s + 3 * s * s) * element(k + 1, 1) + td * (s * s * s - s * s) * element(k + 1, 0);
+    const double s2 = s * s;
+    const double s3 = s2 * s;
+    const Eigen::Vector4d p = (2 * s3 - 3 * s2 + 1) * element(k, 1) + td * (s3 - 2 * s2 + s) * element(k, 2) +
+                              (-2 * s3 + 3 * s2) * element(k + 1, 1) + td * (s3 - s2) * element(k + 1, 0);
     return Eigen::Quaterniond(p[3], p[0], p[1], p[2]).normalized();
 }
 
@@ -167,7 +171,9 @@ void TstGltfSamplers::stepStaysAStep()
         const Eigen::Vector3d expectedPosition = t < 1.5 ? Eigen::Vector3d::Zero() : Eigen::Vector3d(1, 2, 3);
         const Pose pose = motion.at(t);
         GYRE_CHECK(distanceUpToSign(pose.orientation, aboutZ(expectedAngle)) < 1e-6,
-                   QStringLiteral("frame %1: %2, not the step's %3").arg(frame).arg(str(pose.orientation), str(expectedAngle)));
+                   QStringLiteral("frame %1: %2, not the step's %3")
+                       .arg(frame)
+                       .arg(str(pose.orientation), str(expectedAngle)));
         GYRE_CHECK((pose.position - expectedPosition).norm() < 1e-6,
                    QStringLiteral("frame %1: position %2").arg(frame).arg(str(pose.position)));
     }
@@ -237,8 +243,9 @@ void TstGltfSamplers::hermiteTrackIsWrittenAsCubicSpline()
     object.id = scene.nextObjectId++;
     object.name = QStringLiteral("top");
     object.track.interpolation = InterpolationMethod::Hermite;
+    const Eigen::Quaterniond tilted(Eigen::AngleAxisd(2.6, Eigen::Vector3d(1, 2, 3).normalized()));
     object.track.keys = {{0.0, {aboutZ(0.0), {0, 0, 0}}, true},
-                         {0.7, {Eigen::Quaterniond(Eigen::AngleAxisd(2.6, Eigen::Vector3d(1, 2, 3).normalized())), {1, 0, 0}}, true},
+                         {0.7, {tilted, {1, 0, 0}}, true},
                          {1.5, {Eigen::Quaterniond(Eigen::AngleAxisd(-1.2, Eigen::Vector3d::UnitY())), {1, 1, 0}}, true},
                          {3.0, {aboutZ(3.0), {0, 1, 2}}, true}};
     scene.objects.push_back(object);
@@ -252,7 +259,8 @@ void TstGltfSamplers::hermiteTrackIsWrittenAsCubicSpline()
     scene.objects.push_back(object);
 
     for (const auto format : {SceneFormat::Gltf, SceneFormat::Glb}) {
-        const QString file = path(QStringLiteral("hermite.") + QString::fromStdString(std::string(nameOf(kSceneFormatNames, format))));
+        const std::string extension(nameOf(kSceneFormatNames, format));
+        const QString file = path(QStringLiteral("hermite.") + QString::fromStdString(extension));
         exportScene(scene, file, format, 24.0);
         QFile written(file);
         QVERIFY(written.open(QIODevice::ReadOnly));
@@ -266,8 +274,10 @@ void TstGltfSamplers::hermiteTrackIsWrittenAsCubicSpline()
             const model::TrackMotion after(imported.scene.objects[i].track);
             QCOMPARE(imported.scene.objects[i].track.interpolation, InterpolationMethod::Hermite);
             double worst = 0.0;
-            for (int step = 0; step <= 3000; ++step)
-                worst = std::max(worst, angleBetween(before.at(step / 1000.0).orientation, after.at(step / 1000.0).orientation));
+            for (int step = 0; step <= 3000; ++step) {
+                const double t = step / 1000.0;
+                worst = std::max(worst, angleBetween(before.at(t).orientation, after.at(t).orientation));
+            }
             qInfo("%s, %s: worst %.3g rad (%.3g°)", qPrintable(file), qPrintable(scene.objects[i].name), worst,
                   worst * 180.0 / kPi);
             GYRE_CHECK(worst < 1e-5, QStringLiteral("%1 is off by %2 rad").arg(scene.objects[i].name, str(worst)));
@@ -277,7 +287,8 @@ void TstGltfSamplers::hermiteTrackIsWrittenAsCubicSpline()
 
 void TstGltfSamplers::accessorPastItsBufferIsRefusedNamingTheField()
 {
-    QJsonObject gltf = QJsonDocument::fromJson(gltfOf({{"LINEAR", "rotation", {0.0f, 1.0f}, {0, 0, 0, 1, 0, 0, 1, 0}}})).object();
+    const QByteArray valid = gltfOf({{"LINEAR", "rotation", {0.0f, 1.0f}, {0, 0, 0, 1, 0, 0, 1, 0}}});
+    QJsonObject gltf = QJsonDocument::fromJson(valid).object();
     QJsonArray accessors = gltf["accessors"].toArray();
     QJsonObject output = accessors[1].toObject();
     output["count"] = 9;
