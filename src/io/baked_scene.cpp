@@ -41,7 +41,37 @@ std::vector<model::TimedPose> mergedSamples(const std::vector<model::TimedPose>&
     return result;
 }
 
+bool hasDistinctReadTimes(const std::vector<HermiteControlPoint>& points)
+{
+    return std::ranges::adjacent_find(points, [](const HermiteControlPoint& a, const HermiteControlPoint& b) {
+               return readTime({a.time, {}}) == readTime({b.time, {}});
+           }) == points.end();
+}
+
 } // namespace
+
+std::vector<HermiteControlPoint> rotationSplineOf(const model::MotionTrack& track, const std::vector<double>& times)
+{
+    if (track.interpolation != InterpolationMethod::Hermite || track.keys.size() < 2)
+        return {};
+    std::vector<HermiteControlPoint> points = track.sketch.fittedCurve;
+    if (points.empty()) {
+        std::vector<OrientationKey> keys;
+        for (const model::Keyframe& key : track.keys)
+            keys.push_back({key.time, key.pose.orientation});
+        points = HermiteQuaternionSpline::throughKeys(std::move(keys)).controlPoints();
+    } else if (points.front().time != track.keys.front().time || points.back().time != track.keys.back().time) {
+        return {};
+    }
+    const HermiteQuaternionSpline spline(points);
+    std::vector<HermiteControlPoint> cut;
+    for (const double time : times)
+        if (time >= points.front().time && time <= points.back().time) {
+            const HermiteQuaternionSpline::RawSample raw = spline.raw(time);
+            cut.push_back({time, raw.value, raw.derivative});
+        }
+    return cut;
+}
 
 QStringList prepareGltfTimes(BakedScene& baked, const model::Scene& scene)
 {
@@ -63,6 +93,14 @@ QStringList prepareGltfTimes(BakedScene& baked, const model::Scene& scene)
             time += shift;
         for (model::TimedPose& sample : object.samples)
             sample.time += shift;
+        for (HermiteControlPoint& point : object.rotationSpline)
+            point.time += shift;
+        if (!hasDistinctReadTimes(object.rotationSpline)) {
+            object.rotationSpline.clear();
+            warnings << FileError::tr("'%1': two of its keys are within a float32 step; its rotation is written "
+                                      "as baked samples, not as its spline")
+                            .arg(QString::fromStdString(object.name));
+        }
         const std::size_t before = object.samples.size();
         object.samples = mergedSamples(object.samples, keyTimes);
         if (object.samples.size() < before)

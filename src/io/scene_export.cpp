@@ -3,6 +3,7 @@
 #include "io/assimp_math.h"
 #include "io/baked_scene.h"
 #include "io/fbx_scene_writer.h"
+#include "io/gltf_scene_writer.h"
 #include "io/up_axis.h"
 #include "core/number_text.h"
 #include "model/output_target.h"
@@ -14,6 +15,7 @@
 #include <assimp/scene.h>
 
 #include <QFile>
+#include <QDir>
 #include <QFileInfo>
 
 #include <algorithm>
@@ -35,22 +37,20 @@ using assimp_math::toAssimp;
 const char* assimpFormatId(SceneFormat format)
 {
     switch (format) {
-    case SceneFormat::Gltf:
-        return "gltf2";
-    case SceneFormat::Glb:
-        return "glb2";
     case SceneFormat::Collada:
         return "collada";
     case SceneFormat::Obj:
         return "obj";
-    case SceneFormat::Fbx: // written by Gyre itself: see scene_export.h
+    case SceneFormat::Gltf: // written by TinyGLTF, and FBX by Gyre itself: see scene_export.h
+    case SceneFormat::Glb:
+    case SceneFormat::Fbx:
         break;
     }
     return "";
 }
 
-// Assimp's Collada writer of 5.2 writes key times as seconds whatever mTicksPerSecond says, and its
-// glTF writer divides them by it: with one tick per second both write the same times.
+// Assimp's Collada writer of 5.2 writes key times as seconds whatever mTicksPerSecond says: one tick
+// per second says the same.
 constexpr double kTicksPerSecond = 1.0;
 
 const char* const kRootName = "GyreScene";
@@ -111,8 +111,13 @@ public:
             baked.startPose = startPose(object);
             if (hasTriangles(object))
                 baked.mesh = &checkedMesh(*object.mesh, object.name);
-            if (withMotion && isAnimated(object.track))
+            if (withMotion && isAnimated(object.track)) {
                 baked.samples = bakeTrack(object);
+                std::vector<double> times;
+                for (const model::TimedPose& sample : baked.samples)
+                    times.push_back(sample.time);
+                baked.rotationSpline = rotationSplineOf(object.track, times);
+            }
             indexOfId.emplace(object.id, result_.objects.size());
             result_.objects.push_back(std::move(baked));
         }
@@ -260,6 +265,9 @@ void turnZUpToYUp(BakedScene& baked)
         object.startPose = turned(object.startPose);
         for (model::TimedPose& sample : object.samples)
             sample.pose = turned(sample.pose);
+        // The spline is linear in its control points, so turning them turns the curve.
+        for (HermiteControlPoint& point : object.rotationSpline)
+            point = {point.time, turn * point.value, turn * point.derivative};
     }
 }
 
@@ -354,6 +362,26 @@ ExportReport writeWithAssimp(const aiScene& scene, const QString& path, SceneFor
     return report;
 }
 
+ExportReport writeGltf(const BakedScene& baked, const QString& path, bool binary, ExportReport report)
+{
+    const QFileInfo info(path);
+    const QString binName = info.completeBaseName() + QStringLiteral(".bin");
+    GltfFiles files;
+    try {
+        files = gltfSceneFiles(baked, binary, binName);
+    } catch (const std::runtime_error& error) {
+        throw OutputError(path, FileError::tr("cannot be written as glTF: %1").arg(QString::fromUtf8(error.what())).toStdString());
+    }
+    if (!files.bin.isEmpty()) {
+        const QString binPath = info.dir().filePath(binName);
+        saveFileContents(binPath, files.bin);
+        report.files << binPath;
+    }
+    saveFileContents(path, files.main);
+    report.files << path;
+    return report;
+}
+
 } // namespace
 
 std::optional<SceneFormat> sceneFormatOfPath(const QString& path)
@@ -377,8 +405,10 @@ ExportReport exportScene(const model::Scene& scene, const QString& path, SceneFo
     BakedScene baked = SceneBaker(scene, path, fps, report).bake(keepsMotion(format));
     if (format != SceneFormat::Fbx)
         turnZUpToYUp(baked);
-    if (format == SceneFormat::Gltf || format == SceneFormat::Glb)
+    if (format == SceneFormat::Gltf || format == SceneFormat::Glb) {
         report.warnings << prepareGltfTimes(baked, scene); // float32, not negative, increasing
+        return writeGltf(baked, path, format == SceneFormat::Glb, std::move(report));
+    }
     if (format == SceneFormat::Fbx) {
         std::string bytes;
         try {

@@ -1,6 +1,7 @@
 #include "io/scene_import.h"
 
 #include "io/assimp_math.h"
+#include "io/gltf_animation.h"
 #include "io/scene_import_settings.h"
 #include "model/value_checks.h"
 
@@ -301,14 +302,17 @@ bool isUniform(const Eigen::Vector3d& scale)
 class SceneBuilder {
 public:
     // `animations` are merged in their order: a node that several move takes the last one's channel.
+    // `gltf`, for a glTF file, holds its samplers as the file means them (gltf_animation.h), indexed as
+    // the file's animations; `indices` are the chosen animations' indices in the file.
     SceneBuilder(const QString& path, const aiScene& scene, const std::vector<const aiAnimation*>& animations,
-                 SceneImport& result)
+                 const std::vector<std::size_t>& indices, const GltfAnimations* gltf, SceneImport& result)
         : path_(path)
         , meshes_(scene)
+        , gltf_(gltf)
         , result_(result)
     {
-        for (const aiAnimation* animation : animations)
-            indexChannels(*animation);
+        for (std::size_t i = 0; i < animations.size(); ++i)
+            indexChannels(*animations[i], indices[i]);
     }
 
     // The objects built, `metresPerUnit` scaling every position and mesh.
@@ -344,9 +348,10 @@ private:
     struct Channel {
         const aiNodeAnim* keys;
         const aiAnimation* animation;
+        std::size_t fileIndex; // of the animation
     };
 
-    void indexChannels(const aiAnimation& animation)
+    void indexChannels(const aiAnimation& animation, std::size_t fileIndex)
     {
         std::set<std::string_view> inThisAnimation;
         for (unsigned i = 0; i < animation.mNumChannels; ++i) {
@@ -357,7 +362,7 @@ private:
                                         .arg(nameOf(channel.mNodeName), nameOf(animation.mName));
                 continue;
             }
-            const auto [entry, isNew] = channels_.insert_or_assign(node, Channel{&channel, &animation});
+            const auto [entry, isNew] = channels_.insert_or_assign(node, Channel{&channel, &animation, fileIndex});
             if (!isNew)
                 result_.warnings << FileError::tr("node '%1' is moved by more than one of the chosen animations; "
                                                   "the later one, '%2', is used")
@@ -389,14 +394,14 @@ private:
         if (channel) {
             used_.insert(viewOf(node.mName));
             animated_.insert(object.id);
-            object.track.keys = animatedKeys(node, *channel, transform.pose, inheritedScale);
+            object.track = animatedTrack(node, *channel, transform.pose, inheritedScale);
             scale = animatedScale(node, *channel->keys, scale);
         } else {
             Pose pose = transform.pose;
             pose.position *= inheritedScale;
             object.track.keys = {{0.0, pose, true}};
+            object.track.interpolation = InterpolationMethod::Slerp;
         }
-        object.track.interpolation = InterpolationMethod::Slerp;
         object.mesh = meshes_.meshOf(node, inheritedScale * scale, result_.warnings);
         // The rule every document's mesh keeps (value_checks.h), said of the node here: the parent
         // applies it again to the reply, where a breach could only read as a malformed reply.
@@ -415,9 +420,15 @@ private:
         return {result_.scene.objects.back().id, childScale};
     }
 
-    std::vector<model::Keyframe> animatedKeys(const aiNode& node, const Channel& animated, const Pose& nodePose,
-                                              double positionScale) const
+    // A glTF node's track from its samplers; any other's keys from Assimp's channel, played by slerp.
+    model::MotionTrack animatedTrack(const aiNode& node, const Channel& animated, const Pose& nodePose,
+                                     double positionScale) const
     {
+        if (gltf_) {
+            const auto& nodes = gltf_->at(animated.fileIndex);
+            if (const auto found = nodes.find(std::string(viewOf(node.mName))); found != nodes.end())
+                return gltfTrack(found->second, nodePose, positionScale, result_.applied.fps, path_, nameOf(node.mName));
+        }
         const aiNodeAnim& channel = *animated.keys;
         QString problem =
             keyProblem(channel.mRotationKeys, channel.mNumRotationKeys, QT_TRANSLATE_NOOP("gyre::FileError", "rotation"));
@@ -426,7 +437,10 @@ private:
                                  QT_TRANSLATE_NOOP("gyre::FileError", "position"));
         if (!problem.isEmpty())
             throw nodeError(path_, node, problem);
-        return keyframesOf(channel, ticksPerSecond(*animated.animation), nodePose, positionScale);
+        model::MotionTrack track;
+        track.keys = keyframesOf(channel, ticksPerSecond(*animated.animation), nodePose, positionScale);
+        track.interpolation = InterpolationMethod::Slerp;
+        return track;
     }
 
     // The first scaling key, or the node's own scale when the channel has none.
@@ -459,6 +473,7 @@ private:
 
     const QString& path_;
     MeshConverter meshes_;
+    const GltfAnimations* gltf_;
     SceneImport& result_;
     std::unordered_map<std::string_view, Channel> channels_;
     std::set<std::string_view> used_;
@@ -535,13 +550,16 @@ void undoColladaUnit(const QString& path, const aiScene& scene)
     root.mTransformation = inverse * root.mTransformation;
 }
 
-// Moves the animated objects' keys by `shift` seconds.
+// Moves the animated objects' keys, and the control points of a glTF spline, by `shift` seconds.
 void shiftTimes(model::Scene& scene, const std::set<model::ObjectId>& animated, double shift)
 {
     for (model::SceneObject& object : scene.objects)
-        if (animated.contains(object.id))
+        if (animated.contains(object.id)) {
             for (model::Keyframe& key : object.track.keys)
                 key.time += shift;
+            for (HermiteControlPoint& point : object.track.sketch.fittedCurve)
+                point.time += shift;
+        }
 }
 
 // A Y-up scene turned Z-up, Gyre's world: yUpToZUp() before each top-level pose.
@@ -549,9 +567,13 @@ void turnYUpToZUp(model::Scene& scene)
 {
     const Eigen::Quaterniond turn = yUpToZUp();
     for (model::SceneObject& object : scene.objects)
-        if (object.parent == model::kNoObject)
+        if (object.parent == model::kNoObject) {
             for (model::Keyframe& key : object.track.keys)
                 key.pose = {(turn * key.pose.orientation).normalized(), turn * key.pose.position};
+            // The spline is linear in its control points, so turning them turns the curve.
+            for (HermiteControlPoint& point : object.track.sketch.fittedCurve)
+                point = {point.time, turn * point.value, turn * point.derivative};
+        }
 }
 
 // The span of the motion: from the earliest key to the latest key or the animations' end; a still
@@ -606,7 +628,15 @@ SceneImport importScene(const QString& path, const ImportOptions& options)
         undoColladaUnit(path, scene);
     warnAboutWhatIsLeftOut(scene, animations, result.warnings);
 
-    SceneBuilder builder(path, scene, animations, result);
+    // TinyGLTF reads the samplers here, in the worker process like Assimp (scene_worker.h).
+    const std::optional<GltfAnimations> gltf =
+        source == SceneSource::Gltf && !animations.empty() ? std::optional(readGltfAnimations(path)) : std::nullopt;
+    if (gltf && gltf->size() != scene.mNumAnimations)
+        throw InputError(path, FileError::tr("Assimp reads %1 animations and TinyGLTF %2")
+                                   .arg(scene.mNumAnimations)
+                                   .arg(gltf->size())
+                                   .toStdString());
+    SceneBuilder builder(path, scene, animations, plan.takes, gltf ? &*gltf : nullptr, result);
     builder.build(*scene.mRootNode, result.applied.metresPerUnit);
     const double earliest = earliestKey(result.scene, builder.animatedObjects());
     if (options.timeOrigin == TimeOrigin::FirstKey && std::isfinite(earliest))

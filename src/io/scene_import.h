@@ -15,6 +15,9 @@
 //   constant and adds no time of its own. A value the channel does not animate,
 //   and every value of a node without a channel, is the node's own transform; a node without a
 //   channel gets one key at time 0. Imported tracks use slerp, which plays the file's motion.
+// - glTF: Assimp keeps no sampler interpolation, so a glTF node's rotation and translation come from
+//   TinyGLTF instead (gltf_animation.h): STEP stays a step, CUBICSPLINE keeps its tangents (a hermite
+//   track whose applied fit is the file's spline). Meshes, hierarchy and scale are Assimp's.
 // - Settings (ImportSettings): frame rate, unit and up axis as the file says (scene_import_settings.h)
 //   unless the options say otherwise; positions and meshes are scaled to metres, a Y-up scene turned
 //   Z-up (Gyre's world), and the times moved so the first key is at 0 unless TimeOrigin::File.

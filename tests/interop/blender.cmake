@@ -3,11 +3,13 @@
 #   with its default FBX, glb and Collada settings; tst_blender_exports then imports what it wrote, as
 #   tst_blender_fixtures does the committed copies, and checks every frame against Blender's own
 #   evaluation (0.01° FBX and Collada, 0.2° glb).
-# - blender_imports_gyre_fbx_<sample> and blender_imports_gyre_glb_<sample> run blender_import_gyre.py:
-#   gyre-cli exports every bundled sample as FBX and as glb, Blender imports each with its default
+# - blender_imports_gyre_<format>_<sample>, for fbx, glb and dae, run blender_import_gyre.py:
+#   gyre-cli exports every bundled sample as FBX, glb and Collada, Blender imports each with its default
 #   importer, and every object's pose at every baked time must match gyre-cli bake (0.01°, 1e-4 m),
 #   its mesh standing where Gyre puts it, each action the clip's full length; FBX also with the
-#   project's frame rate (glTF stores none: Blender keys it at 24 fps).
+#   project's frame rate (glTF and Gyre's Collada store none: Blender keys them at 24 fps).
+#   blender_imports_gyre_glb-spline_<sample>, for the samples with hermite tracks: the same without
+#   their fits, so that the rotations go out as CUBICSPLINE samplers.
 # scripts/install-deps.sh installs Blender with the other packages; without it these tests fail and
 # say so, rather than pass unseen.
 find_program(GYRE_BLENDER blender)
@@ -29,10 +31,19 @@ set_tests_properties(tst_blender_exports PROPERTIES LABELS interop FIXTURES_REQU
 file(GLOB bundled_samples ${PROJECT_SOURCE_DIR}/resources/samples/*.gyre)
 foreach(sample IN LISTS bundled_samples)
     get_filename_component(name ${sample} NAME_WE)
-    foreach(format IN ITEMS fbx glb)
+    foreach(format IN ITEMS fbx glb dae)
         add_test(NAME blender_imports_gyre_${format}_${name}
                  COMMAND ${blender_command} ${CMAKE_CURRENT_SOURCE_DIR}/blender_import_gyre.py
                          -- ${format} $<TARGET_FILE:gyre-cli> ${sample})
         set_tests_properties(blender_imports_gyre_${format}_${name} PROPERTIES LABELS interop)
     endforeach()
+    # glb-spline: the samples with hermite tracks, their fits removed, written as CUBICSPLINE samplers.
+    file(READ ${sample} sample_text)
+    string(FIND "${sample_text}" "\"interpolation\": \"hermite\"" hermite_at)
+    if(hermite_at GREATER_EQUAL 0)
+        add_test(NAME blender_imports_gyre_glb-spline_${name}
+                 COMMAND ${blender_command} ${CMAKE_CURRENT_SOURCE_DIR}/blender_import_gyre.py
+                         -- glb-spline $<TARGET_FILE:gyre-cli> ${sample})
+        set_tests_properties(blender_imports_gyre_glb-spline_${name} PROPERTIES LABELS interop)
+    endif()
 endforeach()

@@ -1,4 +1,5 @@
-# Does Blender import Gyre's exports as Gyre plays them? For each project and format (FBX or glb):
+# Does Blender import Gyre's exports as Gyre plays them? For each project and format (FBX, glb or
+# Collada):
 # `gyre-cli export` writes the file, `gyre-cli bake` gives every object's pose relative to its parent
 # at each frame and key time (the times the export samples), and Blender's default importer for the
 # format (bpy.ops.import_scene.fbx or .gltf, default settings) reads it. At every baked time the
@@ -24,10 +25,24 @@
 # at that (sub)frame. The importer reads the file's float32 times and interpolates quaternion keys
 # linearly; at the baked times (the file's keys) that is the key itself.
 #
+# Collada: Gyre writes it Y-up (Assimp's writer says Y_UP), its top-level poses turned by C⁻¹ as for
+# glTF. Blender 3.4's Collada importer (bpy.ops.wm.collada_import, default settings) reads the nodes'
+# matrices as they are and ignores <up_axis>: a top-level object's matrix_world is C⁻¹·P and its
+# mesh is as Gyre's, so the object's Gyre frame is C·matrix_world (C on the left, unlike glTF's change
+# of basis), and relative to its parent nothing changes. The visual scene (GyreScene) is no object.
+# Collada stores no frame rate either: the importer keys time t at frame t × 24 (time 0 at frame 0),
+# linearly, each baked matrix as location, rotation_quaternion and scale keys.
+#
+# glb-spline: glb again, from a copy of the project whose fits are removed, so that every hermite
+# track is Gyre's spline through its keys, which Gyre writes as a CUBICSPLINE rotation sampler
+# (src/io/gltf_scene_writer.h); the file must hold one per moving hermite object. Blender 3.4 makes
+# each CUBICSPLINE key a Bézier key with handles a third of the span along the tangents, the same
+# cubic, and normalises the quaternion: the baked times between the spline's keys check that.
+#
 # Run it with Blender 3.4 (Debian's `blender`), from the top of the source tree:
 #   blender -b --factory-startup --python tests/interop/blender_import_gyre.py -- \
 #       fbx build/src/cli/gyre-cli resources/samples/*.gyre
-# (glb in place of fbx for glb). It prints one line per project and exits with status 1 if any
+# (glb, glb-spline or dae in place of fbx for those). It prints one line per project and exits with status 1 if any
 # check fails. Objects whose name another object shares, or that bears the glTF root's name, are
 # skipped (gyre-cli bake selects objects by name, and the export renames them).
 #
@@ -58,8 +73,9 @@ GLTF_ROOT_NAME = "GyreScene"  # kRootName in src/io/scene_export.cpp
 
 def arguments():
     args = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    if len(args) < 3 or args[0] not in ("fbx", "glb"):
-        sys.exit("usage: blender -b --factory-startup --python blender_import_gyre.py -- fbx|glb GYRE_CLI PROJECT.gyre...")
+    if len(args) < 3 or args[0] not in ("fbx", "glb", "glb-spline", "dae"):
+        sys.exit("usage: blender -b --factory-startup --python blender_import_gyre.py -- fbx|glb|glb-spline|dae "
+                 "GYRE_CLI PROJECT.gyre...")
     return args[0], args[1], args[2:]
 
 
@@ -67,6 +83,7 @@ class Fbx:
     """Blender's FBX importer: the file's frame rate, Z up as Gyre, time 0 at frame 1."""
     name = "fbx"
     basis = Matrix.Identity(4)  # from an object's frame in Gyre to its frame in Blender
+    world_turn = Matrix.Identity(4)  # from Blender's world to Gyre's
     root = None  # the name of an object the importer makes above the top-level ones
     frame_of_time_0 = 1.0
 
@@ -97,6 +114,7 @@ class Glb:
     """Blender's glTF importer: Y up turned to Z up by a change of basis, keys at time × 24 fps."""
     name = "glb"
     basis = Matrix.Rotation(math.radians(90.0), 4, "X")  # C: glTF's Y up to Blender's Z up
+    world_turn = Matrix.Identity(4)
     root = GLTF_ROOT_NAME
     frame_of_time_0 = 0.0
 
@@ -114,6 +132,40 @@ class Glb:
     def check_scene(scene, fps, problems):
         # glTF stores no frame rate: the importer keeps the scene's (24) and keys at time × that.
         return "keys at %d fps (glTF stores no frame rate)" % scene.render.fps
+
+
+class GlbSpline(Glb):
+    """glb from the project without its fits: hermite tracks as CUBICSPLINE samplers."""
+    name = "glb-spline"
+    without_fits = True
+
+
+def cubic_spline_samplers(path):
+    """How many samplers of a .glb's animations are CUBICSPLINE."""
+    with open(path, "rb") as f:
+        data = f.read()
+    length, = struct.unpack_from("<I", data, 12)  # the JSON chunk's length, after the 12-byte header
+    gltf = json.loads(data[20:20 + length])
+    return sum(sampler.get("interpolation") == "CUBICSPLINE"
+               for animation in gltf.get("animations", []) for sampler in animation["samplers"])
+
+
+class Dae:
+    """Blender's Collada importer: the file's Y-up world kept as it is, keys at time × 24 fps."""
+    name = "dae"
+    basis = Matrix.Identity(4)
+    world_turn = Matrix.Rotation(math.radians(90.0), 4, "X")  # C: undoes Gyre's turn to Y up
+    root = None
+    frame_of_time_0 = 0.0
+
+    @staticmethod
+    def load(path):
+        bpy.ops.wm.collada_import(filepath=path)
+
+    @staticmethod
+    def check_scene(scene, fps, problems):
+        # Collada as Gyre writes it stores no frame rate: the importer keys at the scene's (24).
+        return "keys at %d fps (the file stores no frame rate)" % scene.render.fps
 
 
 def baked_poses(gyre_cli, project, name, fps, folder):
@@ -144,9 +196,10 @@ def angle_between(a, b):
     return math.degrees(2.0 * math.atan2(Vector((d.x, d.y, d.z)).length, abs(d.w)))
 
 
-def geometry_error(obj, positions, orientation_in_world, position_in_world):
-    """How far the project's vertices, posed as Gyre poses them, lie from Blender's posed vertices."""
-    world = obj.matrix_world
+def geometry_error(obj, world_turn, positions, orientation_in_world, position_in_world):
+    """How far the project's vertices, posed as Gyre poses them, lie from Blender's posed vertices,
+    Blender's world turned into Gyre's by world_turn."""
+    world = world_turn @ obj.matrix_world
     tree = KDTree(len(obj.data.vertices))
     for i, vertex in enumerate(obj.data.vertices):
         tree.insert(world @ vertex.co, i)
@@ -155,24 +208,36 @@ def geometry_error(obj, positions, orientation_in_world, position_in_world):
 
 
 def check_project(kind, gyre_cli, project, folder):
+    source = project
     with open(project, encoding="utf-8") as f:
         document = json.load(f)
     fps = float(document["fps"])
     end = float(document["endTime"])
     # A glTF file starts at 0 s: Gyre moves a scene that starts earlier (prepareGltfTimes).
-    shift = max(0.0, -float(document.get("startTime", 0.0))) if kind is Glb else 0.0
+    shift = max(0.0, -float(document.get("startTime", 0.0))) if issubclass(kind, Glb) else 0.0
     names = [o["name"] for o in document["objects"]]
     parent_of = {o["id"]: o.get("parent") for o in document["objects"]}
     name_of = {o["id"]: o["name"] for o in document["objects"]}
     mesh_of = {o["id"]: o.get("mesh") for o in document["objects"]}
     meshes = document.get("meshes", [])
 
-    path = os.path.join(folder, "scene." + kind.name)
+    problems = []
+    if getattr(kind, "without_fits", False):
+        for o in document["objects"]:
+            o["sketch"]["fittedCurve"] = []
+            o["sketch"]["keysBeforeFit"] = []
+        project = os.path.join(folder, "without-fits.gyre")
+        with open(project, "w", encoding="utf-8") as f:
+            json.dump(document, f)
+    path = os.path.join(folder, "scene." + kind.name.split("-")[0])
     subprocess.run([gyre_cli, "export", project, "-o", path], check=True)
+    if getattr(kind, "without_fits", False):
+        splines = sum(o["interpolation"] == "hermite" and len(o["keyframes"]) > 1 for o in document["objects"])
+        if splines == 0 or cubic_spline_samplers(path) != splines:
+            problems.append("%d CUBICSPLINE samplers for %d hermite tracks" % (cubic_spline_samplers(path), splines))
     bpy.ops.wm.read_factory_settings(use_empty=True)
     kind.load(path)
     scene = bpy.context.scene
-    problems = []
     rate = kind.check_scene(scene, fps, problems)
     key_fps = scene.render.fps
 
@@ -187,9 +252,9 @@ def check_project(kind, gyre_cli, project, folder):
             problems.append("the file's root '%s' is not the identity" % kind.root)
 
     def gyre_frame(obj):
-        """The object's frame as Gyre has it, from Blender's: its world matrix, the basis the
-        importer gave its mesh undone."""
-        return obj.matrix_world @ kind.basis
+        """The object's frame as Gyre has it, from Blender's: its world matrix in Gyre's world, the
+        basis the importer gave its mesh undone."""
+        return kind.world_turn @ obj.matrix_world @ kind.basis
 
     worst_angle = worst_position = worst_scale = worst_vertex = 0.0
     for object_id, name in name_of.items():
@@ -231,7 +296,7 @@ def check_project(kind, gyre_cli, project, folder):
                 parent_rotation = frame_of_parent.to_quaternion()
                 parent_location = frame_of_parent.to_translation()
                 worst_vertex = max(worst_vertex, geometry_error(
-                    obj, positions, parent_rotation @ orientation, parent_rotation @ position + parent_location))
+                    obj, kind.world_turn, positions, parent_rotation @ orientation, parent_rotation @ position + parent_location))
     if worst_angle > ANGLE_TOLERANCE_DEGREES:
         problems.append("orientation off by %.6f°" % worst_angle)
     if worst_position > POSITION_TOLERANCE:
@@ -241,14 +306,14 @@ def check_project(kind, gyre_cli, project, folder):
     if worst_vertex > POSITION_TOLERANCE:
         problems.append("vertices off by %g" % worst_vertex)
     print("%s %s: %d objects, %s, %g s; worst angle %.2e°, position %.1e, scale %.1e, vertex %.1e%s"
-          % (kind.name, os.path.basename(project), len(names), rate, end, worst_angle, worst_position,
+          % (kind.name, os.path.basename(source), len(names), rate, end, worst_angle, worst_position,
              worst_scale, worst_vertex, "" if not problems else " -- FAILED: " + "; ".join(problems)))
     return not problems
 
 
 def main():
     format_name, gyre_cli, projects = arguments()
-    kind = {"fbx": Fbx, "glb": Glb}[format_name]
+    kind = {"fbx": Fbx, "glb": Glb, "glb-spline": GlbSpline, "dae": Dae}[format_name]
     passed = True
     with tempfile.TemporaryDirectory() as folder:
         for project in projects:

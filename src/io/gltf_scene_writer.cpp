@@ -1,0 +1,246 @@
+#include "io/gltf_scene_writer.h"
+
+#include <tiny_gltf.h>
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QUrl>
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace gyre::io {
+
+namespace {
+
+// The glTF buffer view targets of vertex attributes and of indices.
+constexpr int kArrayBuffer = 34962;
+constexpr int kElementArrayBuffer = 34963;
+
+std::vector<double> xyzw(const Eigen::Quaterniond& q) { return {q.x(), q.y(), q.z(), q.w()}; }
+
+// The model under construction: one buffer, one buffer view per accessor.
+class GltfModelBuilder {
+public:
+    GltfModelBuilder()
+    {
+        model_.asset.version = "2.0";
+        model_.asset.generator = "Gyre";
+        model_.buffers.emplace_back();
+    }
+
+    // An accessor over `floats`, `components` per element (TINYGLTF_TYPE_* in `type`), with the
+    // per-component bounds when `bounds` (positions and animation inputs must have them).
+    int floatAccessor(const std::vector<float>& floats, int components, int type, bool bounds, int target = 0)
+    {
+        const std::size_t count = floats.size() / static_cast<std::size_t>(components);
+        const int view = addView(floats.data(), floats.size() * sizeof(float), target);
+        tinygltf::Accessor accessor;
+        accessor.bufferView = view;
+        accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+        accessor.count = count;
+        accessor.type = type;
+        if (bounds) {
+            accessor.minValues.assign(static_cast<std::size_t>(components), std::numeric_limits<double>::infinity());
+            accessor.maxValues.assign(static_cast<std::size_t>(components), -std::numeric_limits<double>::infinity());
+            for (std::size_t i = 0; i < floats.size(); ++i) {
+                const std::size_t c = i % static_cast<std::size_t>(components);
+                accessor.minValues[c] = std::min(accessor.minValues[c], static_cast<double>(floats[i]));
+                accessor.maxValues[c] = std::max(accessor.maxValues[c], static_cast<double>(floats[i]));
+            }
+        }
+        model_.accessors.push_back(std::move(accessor));
+        return static_cast<int>(model_.accessors.size()) - 1;
+    }
+
+    int indexAccessor(const std::vector<std::uint32_t>& indices)
+    {
+        tinygltf::Accessor accessor;
+        accessor.bufferView = addView(indices.data(), indices.size() * sizeof(std::uint32_t), kElementArrayBuffer);
+        accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+        accessor.count = indices.size();
+        accessor.type = TINYGLTF_TYPE_SCALAR;
+        model_.accessors.push_back(std::move(accessor));
+        return static_cast<int>(model_.accessors.size()) - 1;
+    }
+
+    int mesh(const model::Mesh& source)
+    {
+        std::vector<float> positions;
+        for (const Eigen::Vector3f& p : source.positions)
+            positions.insert(positions.end(), {p.x(), p.y(), p.z()});
+        tinygltf::Primitive primitive;
+        primitive.mode = TINYGLTF_MODE_TRIANGLES;
+        primitive.material = 0;
+        primitive.attributes["POSITION"] = floatAccessor(positions, 3, TINYGLTF_TYPE_VEC3, true, kArrayBuffer);
+        if (source.normals.size() == source.positions.size()) {
+            std::vector<float> normals;
+            for (const Eigen::Vector3f& n : source.normals)
+                normals.insert(normals.end(), {n.x(), n.y(), n.z()});
+            primitive.attributes["NORMAL"] = floatAccessor(normals, 3, TINYGLTF_TYPE_VEC3, false, kArrayBuffer);
+        }
+        primitive.indices = indexAccessor(source.indices);
+        tinygltf::Mesh mesh;
+        mesh.primitives.push_back(std::move(primitive));
+        model_.meshes.push_back(std::move(mesh));
+        return static_cast<int>(model_.meshes.size()) - 1;
+    }
+
+    tinygltf::Model& model() { return model_; }
+
+private:
+    // A buffer view over a copy of `bytes`, starting on a 4-byte boundary as glTF asks.
+    int addView(const void* bytes, std::size_t size, int target)
+    {
+        std::vector<unsigned char>& data = model_.buffers[0].data;
+        data.resize((data.size() + 3) / 4 * 4, 0);
+        tinygltf::BufferView view;
+        view.buffer = 0;
+        view.byteOffset = data.size();
+        view.byteLength = size;
+        view.target = target;
+        data.resize(data.size() + size);
+        if (size > 0)
+            std::memcpy(data.data() + view.byteOffset, bytes, size);
+        model_.bufferViews.push_back(std::move(view));
+        return static_cast<int>(model_.bufferViews.size()) - 1;
+    }
+
+    tinygltf::Model model_;
+};
+
+// A sampler of `input` times and `output` values, and the channel that drives the node's `path` with it.
+void addChannel(tinygltf::Animation& animation, int input, int output, const char* interpolation, int node,
+                const char* path)
+{
+    tinygltf::AnimationSampler sampler;
+    sampler.input = input;
+    sampler.output = output;
+    sampler.interpolation = interpolation;
+    animation.samplers.push_back(std::move(sampler));
+    tinygltf::AnimationChannel channel;
+    channel.sampler = static_cast<int>(animation.samplers.size()) - 1;
+    channel.target_node = node;
+    channel.target_path = path;
+    animation.channels.push_back(std::move(channel));
+}
+
+// The object's motion as samplers and channels of `animation`.
+void addMotion(GltfModelBuilder& builder, tinygltf::Animation& animation, const BakedObject& object, int node)
+{
+    std::vector<float> times;
+    std::vector<float> positions;
+    std::vector<float> rotations;
+    Eigen::Quaterniond previous = object.samples.front().pose.orientation;
+    for (const model::TimedPose& sample : object.samples) {
+        times.push_back(static_cast<float>(sample.time));
+        const Eigen::Vector3d& p = sample.pose.position;
+        positions.insert(positions.end(), {static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())});
+        Eigen::Quaterniond q = sample.pose.orientation.normalized();
+        if (q.coeffs().dot(previous.coeffs()) < 0.0)
+            q.coeffs() = -q.coeffs();
+        previous = q;
+        for (const double c : xyzw(q))
+            rotations.push_back(static_cast<float>(c));
+    }
+    const int input = builder.floatAccessor(times, 1, TINYGLTF_TYPE_SCALAR, true);
+    const int translation = builder.floatAccessor(positions, 3, TINYGLTF_TYPE_VEC3, false);
+    addChannel(animation, input, translation, "LINEAR", node, "translation");
+    if (object.rotationSpline.empty()) {
+        const int rotation = builder.floatAccessor(rotations, 4, TINYGLTF_TYPE_VEC4, false);
+        addChannel(animation, input, rotation, "LINEAR", node, "rotation");
+        return;
+    }
+    std::vector<float> splineTimes;
+    std::vector<float> splineValues; // in-tangent, value, out-tangent for each key
+    for (const HermiteControlPoint& point : object.rotationSpline) {
+        splineTimes.push_back(static_cast<float>(point.time));
+        for (const Eigen::Quaterniond* part : {&point.derivative, &point.value, &point.derivative})
+            for (const double c : xyzw(*part))
+                splineValues.push_back(static_cast<float>(c));
+    }
+    const int splineInput = builder.floatAccessor(splineTimes, 1, TINYGLTF_TYPE_SCALAR, true);
+    const int spline = builder.floatAccessor(splineValues, 4, TINYGLTF_TYPE_VEC4, false);
+    addChannel(animation, splineInput, spline, "CUBICSPLINE", node, "rotation");
+}
+
+tinygltf::Model modelOf(const BakedScene& baked)
+{
+    GltfModelBuilder builder;
+    tinygltf::Model& model = builder.model();
+    tinygltf::Material material;
+    material.name = "Gyre default";
+    material.pbrMetallicRoughness.baseColorFactor = {0.7, 0.7, 0.7, 1.0};
+    model.materials.push_back(std::move(material));
+
+    tinygltf::Node root;
+    root.name = "GyreScene";
+    model.nodes.push_back(std::move(root));
+    std::unordered_map<const model::Mesh*, int> meshes;
+    for (const BakedObject& object : baked.objects) {
+        tinygltf::Node node;
+        node.name = object.name;
+        node.translation = {object.startPose.position.x(), object.startPose.position.y(), object.startPose.position.z()};
+        node.rotation = xyzw(object.startPose.orientation.normalized());
+        if (object.mesh) {
+            const auto [entry, isNew] = meshes.try_emplace(object.mesh, 0);
+            if (isNew)
+                entry->second = builder.mesh(*object.mesh);
+            node.mesh = entry->second;
+        }
+        model.nodes.push_back(std::move(node));
+    }
+    // Node i + 1 is object i; the root is node 0.
+    for (std::size_t i = 0; i < baked.objects.size(); ++i) {
+        const std::size_t parent = baked.objects[i].parent ? *baked.objects[i].parent + 1 : 0;
+        model.nodes[parent].children.push_back(static_cast<int>(i + 1));
+    }
+    tinygltf::Scene scene;
+    scene.nodes = {0};
+    model.scenes.push_back(std::move(scene));
+    model.defaultScene = 0;
+
+    tinygltf::Animation animation;
+    animation.name = "Gyre";
+    for (std::size_t i = 0; i < baked.objects.size(); ++i)
+        if (!baked.objects[i].samples.empty())
+            addMotion(builder, animation, baked.objects[i], static_cast<int>(i + 1));
+    if (!animation.channels.empty())
+        model.animations.push_back(std::move(animation));
+    if (model.buffers[0].data.empty())
+        model.buffers.clear();
+    return std::move(model);
+}
+
+} // namespace
+
+GltfFiles gltfSceneFiles(const BakedScene& baked, bool binary, const QString& binName)
+{
+    tinygltf::Model model = modelOf(baked);
+    std::vector<unsigned char> bin;
+    if (!binary && !model.buffers.empty())
+        bin.swap(model.buffers[0].data);
+    std::ostringstream stream;
+    tinygltf::TinyGLTF writer;
+    // TinyGLTF would embed the buffer as a data URI: it is written empty and then named in the JSON.
+    if (!writer.WriteGltfSceneToStream(&model, stream, !binary, binary))
+        throw std::runtime_error("TinyGLTF cannot write the model");
+    const std::string text = stream.str();
+    GltfFiles files{QByteArray(text.data(), static_cast<qsizetype>(text.size())), {}};
+    if (binary || model.buffers.empty())
+        return files;
+    QJsonObject json = QJsonDocument::fromJson(files.main).object();
+    const QJsonObject buffer{{QStringLiteral("byteLength"), static_cast<qint64>(bin.size())},
+                             {QStringLiteral("uri"), QString::fromLatin1(QUrl::toPercentEncoding(binName))}};
+    json[QStringLiteral("buffers")] = QJsonArray{buffer};
+    files.main = QJsonDocument(json).toJson(QJsonDocument::Indented);
+    files.bin = QByteArray(reinterpret_cast<const char*>(bin.data()), static_cast<qsizetype>(bin.size()));
+    return files;
+}
+
+} // namespace gyre::io

@@ -1,0 +1,32 @@
+#pragma once
+// A baked scene (baked_scene.h) as glTF 2.0, built as a TinyGLTF model and written by TinyGLTF:
+//
+// - One node "GyreScene" holding the objects' nodes, each with its parent kept, its mesh and its pose at
+//   the start time (translation, rotation); one mesh per distinct Mesh (POSITION with its bounds,
+//   NORMAL when every vertex has one, UNSIGNED_INT indices, triangles) and one grey material.
+// - One animation "Gyre": for every moving object a translation sampler (LINEAR, at the baked
+//   samples) and a rotation sampler: CUBICSPLINE through BakedObject::rotationSpline (the track's
+//   spline cut at the baked times) when it has one (in- and out-tangent both the raw cubic's time
+//   derivative, which glTF, like HermiteQuaternionSpline, multiplies by the span's duration, and both
+//   normalise the cubic), else LINEAR at the baked
+//   samples, each quaternion on the side of the one before so that slerp takes the short arc.
+// - Values, times and tangents are float32, which is what the glTF format stores.
+//
+// A .glb holds its buffer in its BIN chunk; a .gltf refers to a .bin beside it, `binName`.
+
+#include "io/baked_scene.h"
+
+#include <QByteArray>
+#include <QString>
+
+namespace gyre::io {
+
+struct GltfFiles {
+    QByteArray main; // the .gltf or .glb
+    QByteArray bin;  // the .gltf's buffer; empty for a .glb
+};
+
+// Throws std::runtime_error when TinyGLTF cannot write the model.
+GltfFiles gltfSceneFiles(const BakedScene& scene, bool binary, const QString& binName);
+
+} // namespace gyre::io
