@@ -1,5 +1,5 @@
 #pragma once
-// The shape drawn for an object without a mesh: a block with a nose along +x and a fin on top (+z),
+// The shapes drawn for objects without a mesh. A lone one is a block with a nose along +x and a fin on top (+z),
 // so that every rotation of it, even a half turn about any axis, looks different.
 
 #include "model/scene.h"
@@ -8,6 +8,9 @@ namespace gyre::app {
 
 // Built once; flat-shaded (each face has its own vertices and normal).
 const model::Mesh& defaultShapeMesh();
+
+// A joint's bone (skeleton.h): an octahedron from the origin to (1, 0, 0), flat-shaded.
+const model::Mesh& boneMesh();
 
 // The mesh drawn for the object: its own, or the default shape.
 inline const model::Mesh& displayMesh(const model::SceneObject& object)
