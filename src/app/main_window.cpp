@@ -1,5 +1,6 @@
 #include "app/main_window.h"
 
+#include "app/add_object_actions.h"
 #include "app/inspector_widget.h"
 #include "app/outliner/outliner_panel.h"
 #include "app/preferences_dialog.h"
@@ -142,6 +143,7 @@ void MainWindow::setUpActions()
     sceneFiles_ = new SceneFileActions(document_, selection_, this, statusBar(), this);
     connect(ui_->actionImportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToImport);
     connect(ui_->actionExportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToExport);
+    new AddObjectActions(document_, selection_, *ui_->menuAdd, this);
     new KeyframeActions(
         document_, selection_, {ui_->actionAddKeyframe, ui_->actionDeleteKeyframe, ui_->actionToggleConstraint},
         statusBar(), this);
@@ -366,7 +368,7 @@ void MainWindow::updateTitle()
 void MainWindow::newProject()
 {
     if (maybeSave())
-        document_.clear();
+        document_.startNewProject();
 }
 
 void MainWindow::chooseProjectToOpen()

@@ -35,11 +35,13 @@ QString exportFilter()
                                 "OBJ, meshes only (*.obj)");
 }
 
-// The scene's time range after an import: the imported one for an empty document, else the
-// document's, widened to cover the imported motion.
+// The scene's time range after an import: the imported one for a document with no keys yet (empty,
+// or a new project's block), else the document's, widened to cover the imported motion.
 model::TimeRange rangeAfterImport(const model::Scene& current, const model::Scene& imported)
 {
-    if (current.objects.empty())
+    const bool keyed = std::any_of(current.objects.begin(), current.objects.end(),
+                                   [](const model::SceneObject& object) { return !object.track.keys.empty(); });
+    if (!keyed)
         return {imported.fps, imported.startTime, imported.endTime};
     return {current.fps, std::min(current.startTime, imported.startTime),
             std::max(current.endTime, imported.endTime)};

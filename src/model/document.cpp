@@ -66,7 +66,15 @@ void Document::setCurrentTime(double seconds)
     emit currentTimeChanged(seconds);
 }
 
-void Document::clear() { replaceScene(Scene{}, QString(), false); }
+void Document::startNewProject()
+{
+    Scene scene;
+    SceneObject block;
+    block.id = scene.nextObjectId++;
+    block.name = tr("Block");
+    scene.objects.push_back(std::move(block));
+    replaceScene(std::move(scene), QString(), false);
+}
 
 void Document::load(const QString& path) { replaceScene(readProject(path), path, false); }
 
@@ -86,8 +94,8 @@ void Document::recover(const QString& recoveryPath, const QString& documentPath)
 
 void Document::replaceScene(Scene scene, const QString& filePath, bool modified)
 {
-    // clear() leaves an empty, clean stack; resetClean() then makes the clean state unreachable, so
-    // a recovered document stays modified until it is saved. modifiedChanged follows cleanChanged.
+    // QUndoStack::clear() leaves an empty, clean stack; resetClean() then makes the clean state
+    // unreachable, so a recovered document stays modified until it is saved. modifiedChanged follows cleanChanged.
     undoStack_.clear();
     if (modified)
         undoStack_.resetClean();

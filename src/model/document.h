@@ -68,8 +68,9 @@ public:
     // Throws std::invalid_argument for a time that is not finite.
     void setCurrentTime(double seconds);
 
-    // An empty, unmodified document with no file.
-    void clear();
+    // A new project: untitled, unmodified, holding one object to key (a block with no mesh of its
+    // own and no keys), so that the artist has something to turn without importing a file.
+    void startNewProject();
     // Replaces the scene with the project at `path` and forgets the undo history. Throws InputError
     // and leaves the document untouched if the file cannot be read whole.
     void load(const QString& path);

@@ -71,11 +71,12 @@ QByteArray skeletonBvh(double scale)
 constexpr std::size_t kJoints = 12;
 constexpr std::size_t kBones = kJoints + 5; // and one on from each leaf: the hands, the feet, the end site
 
-// The main window with a skeleton imported into an empty project, paused at 0.
+// The main window with a skeleton imported into a new project, paused at 0.
 struct Session {
     app::MainWindow window;
     app::Viewport* viewport = nullptr;
     QTemporaryDir folder;
+    std::size_t firstJoint = 0; // the index of the skeleton's root in the scene; the project's own objects come first
 
     explicit Session(double scale = 1.0)
     {
@@ -91,7 +92,6 @@ struct Session {
         if (!file.open(QIODevice::WriteOnly) || file.write(bvh) != bvh.size())
             qFatal("Cannot write the BVH file");
         file.close();
-        window.document().clear();
         QSignalSpy imported(&window.sceneFiles(), &app::SceneFileActions::objectsImported);
         window.openFile(path);
         if (!imported.wait(30'000))
@@ -105,6 +105,9 @@ struct Session {
         };
         if (!QTest::qWaitFor(bonesDrawn, 30'000))
             qFatal("The viewport did not draw the bones");
+        const model::ObjectId hips = objectNamed("Hips");
+        while (scene().objects[firstJoint].id != hips)
+            ++firstJoint;
     }
 
     const model::Scene& scene() { return window.document().scene(); }
@@ -141,7 +144,7 @@ struct Session {
     {
         std::vector<Eigen::Vector3d> points;
         const model::SceneMotion built = motion();
-        for (std::size_t i = 0; i < scene().objects.size(); ++i)
+        for (std::size_t i = firstJoint; i < scene().objects.size(); ++i)
             points.push_back(viewport->camera().project(built.worldPose(scene().objects[i].id, 0.0).position));
         return points;
     }
@@ -194,14 +197,17 @@ private slots:
     {
         Session session;
         const model::Scene& scene = session.scene();
-        QCOMPARE(scene.objects.size(), kJoints + 1); // and the head's end site
+        QCOMPARE(scene.objects.size() - session.firstJoint, kJoints + 1); // and the head's end site
         const app::Skeleton& skeleton = session.viewport->skeleton();
         const model::SceneMotion motion = session.motion();
         std::map<model::ObjectId, int> childJoints;
-        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        // The project's own block, without a mesh but alone, is no joint.
+        for (std::size_t i = 0; i < session.firstJoint; ++i)
+            QVERIFY(!skeleton.isJoint(i));
+        for (std::size_t i = session.firstJoint; i < scene.objects.size(); ++i) {
             QVERIFY(skeleton.isJoint(i));
             const model::SceneObject& child = scene.objects[i];
-            if (i == 0)
+            if (i == session.firstJoint)
                 continue;
             ++childJoints[child.parent];
             const Eigen::Vector3d head = motion.worldPose(child.parent, 0.0).position;

@@ -1,7 +1,8 @@
 // The small behaviours of the main window an animator relies on, driven on the real window: Ctrl+H
 // brings the undo history to the front and closes it again; scrolling over a panel changes no setting;
 // pausing rests on a frame, so K keys there; a track made a screw track is open; the speed plot and the
-// sphere can be given room; the fit says what it applied; the frame rate shows only while the view moves.
+// sphere can be given room; the fit says what it applied; the frame rate shows only while the view moves;
+// Object ▸ Add makes a shape, and a new project has an object to key.
 
 #include "app/main_window.h"
 #include "app/sketch/fit_controller.h"
@@ -189,6 +190,60 @@ private slots:
         const std::vector<model::Keyframe>& keys = sample.track().keys;
         QVERIFY(std::any_of(keys.begin(), keys.end(), [&](const model::Keyframe& key) { return key.time == paused; }));
         QCOMPARE(sample.window().selection().selectedKey()->time, paused);
+    }
+
+    void objectAddMakesASelectedShapeInOneStep()
+    {
+        SampleWindow sample;
+        model::Document& document = sample.document();
+        const std::size_t objects = document.scene().objects.size();
+        const int steps = document.undoStack().count();
+        sample.child<QAction>("actionAdd-box")->trigger();
+        QCOMPARE(document.scene().objects.size(), objects + 1);
+        const model::SceneObject& box = document.scene().objects.back();
+        QCOMPARE(box.name, QStringLiteral("Box"));
+        QVERIFY(box.mesh != nullptr);
+        QCOMPARE(box.mesh->indices.size(), std::size_t(36)); // six faces of two triangles
+        QCOMPARE(box.parent, model::kNoObject);
+        QVERIFY(box.track.keys.empty());
+        QCOMPARE(sample.window().selection().object(), box.id);
+        QCOMPARE(document.undoStack().count(), steps + 1);
+        QCOMPARE(document.undoStack().text(steps), QStringLiteral("Add Box"));
+
+        // A second box is named apart; the block needs no mesh of its own.
+        sample.child<QAction>("actionAdd-box")->trigger();
+        QCOMPARE(document.scene().objects.back().name, QStringLiteral("Box.001"));
+        sample.child<QAction>("actionAdd-block")->trigger();
+        QCOMPARE(document.scene().objects.back().name, QStringLiteral("Block"));
+        QVERIFY(document.scene().objects.back().mesh == nullptr);
+
+        // K keys the new object where it stands.
+        sample.child<QAction>("actionAddKeyframe")->trigger();
+        QCOMPARE(document.scene().objects.back().track.keys.size(), std::size_t(1));
+
+        for (int step = 0; step < 4; ++step)
+            document.undoStack().undo();
+        QCOMPARE(document.scene().objects.size(), objects);
+    }
+
+    void aNewProjectHoldsOneObjectToKey()
+    {
+        SampleWindow sample;
+        sample.child<QAction>("actionNew")->trigger();
+        model::Document& document = sample.document();
+        QCOMPARE(document.scene().objects.size(), std::size_t(1));
+        const model::SceneObject& block = document.scene().objects.front();
+        QCOMPARE(block.name, QStringLiteral("Block"));
+        QVERIFY(block.mesh == nullptr);
+        QVERIFY(block.track.keys.empty());
+        QVERIFY(!document.isModified());
+        QVERIFY(document.filePath().isEmpty());
+        QCOMPARE(document.undoStack().count(), 0);
+        QTRY_COMPARE(sample.window().selection().object(), block.id);
+
+        sample.child<QAction>("actionAddKeyframe")->trigger();
+        QCOMPARE(document.scene().objects.front().track.keys.size(), std::size_t(1));
+        QVERIFY(document.isModified());
     }
 
     void aNewScrewTrackIsOpenUntilCyclicIsTicked()

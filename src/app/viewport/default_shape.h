@@ -1,6 +1,7 @@
 #pragma once
-// The shapes drawn for objects without a mesh. A lone one is a block with a nose along +x and a fin on top (+z),
-// so that every rotation of it, even a half turn about any axis, looks different.
+// The shapes drawn for objects without a mesh: a joint's bone (skeleton.h), and for any other the
+// block primitive (model/primitive_meshes.h), with a nose and a fin so that every rotation of it looks
+// different.
 
 #include "model/scene.h"
 
