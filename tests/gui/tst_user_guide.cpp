@@ -479,21 +479,12 @@ private slots:
     // in the Outliner; typing in the filter box leaves the matching joints with their ancestors.
     void showsAMotionCapturesSkeletonInTheOutliner()
     {
-        test::useBuiltSceneWorker();
-        QTemporaryDir folder;
-        const QString path = folder.filePath(QStringLiteral("walk.bvh"));
-        QFile file(path);
-        const QByteArray bvh = humanBvh();
-        QVERIFY(file.open(QIODevice::WriteOnly) && file.write(bvh) == bvh.size());
-        file.close();
         GuideWindow guide;
         app::MainWindow& window = guide.window();
-        QSignalSpy imported(&window.sceneFiles().jobs(), &jobs::SceneFileJobs::imported);
-        window.openFile(path);
-        QTRY_COMPARE_WITH_TIMEOUT(imported.count(), 1, 30'000);
+        openHumanCapture(window);
+        if (QTest::currentTestFailed())
+            return;
         QCOMPARE(window.document().scene().objects.size(), std::size_t{19});
-        window.playback().pause();
-        window.document().setCurrentTime(1.0);
         guide.child<QAction>("actionFrameAll")->trigger(); // View ▸ Frame Scene
         auto* outliner = guide.child<app::OutlinerPanel>();
         const model::ObjectId foreArm = window.document().scene().objects[7].id;
@@ -517,20 +508,11 @@ private slots:
     // (the hips below the head on screen), a click on the left forearm's bone selecting it.
     void showsAMotionCapturesBones()
     {
-        test::useBuiltSceneWorker();
-        QTemporaryDir folder;
-        const QString path = folder.filePath(QStringLiteral("walk.bvh"));
-        QFile file(path);
-        const QByteArray bvh = humanBvh();
-        QVERIFY(file.open(QIODevice::WriteOnly) && file.write(bvh) == bvh.size());
-        file.close();
         GuideWindow guide;
         app::MainWindow& window = guide.window();
-        QSignalSpy imported(&window.sceneFiles().jobs(), &jobs::SceneFileJobs::imported);
-        window.openFile(path);
-        QTRY_COMPARE_WITH_TIMEOUT(imported.count(), 1, 30'000);
-        window.playback().pause();
-        window.document().setCurrentTime(1.0);
+        openHumanCapture(window);
+        if (QTest::currentTestFailed())
+            return;
         auto* viewport = guide.child<app::Viewport>();
         // The capture's motion is built off the UI thread: its 23 bones (18 links and 5 leaves) show once it is in.
         QVERIFY(QTest::qWaitFor([&] { viewport->update(); return viewport->skeleton().bones().size() == 23; }, 30'000));
@@ -552,6 +534,23 @@ private slots:
     }
 
 private:
+    // Opens humanBvh as the guide tells (a scene file opened is imported), at 1 s, paused.
+    static void openHumanCapture(app::MainWindow& window)
+    {
+        test::useBuiltSceneWorker();
+        QTemporaryDir folder;
+        const QString path = folder.filePath(QStringLiteral("walk.bvh"));
+        QFile file(path);
+        const QByteArray bvh = humanBvh();
+        QVERIFY(file.open(QIODevice::WriteOnly) && file.write(bvh) == bvh.size());
+        file.close();
+        QSignalSpy imported(&window.sceneFiles().jobs(), &jobs::SceneFileJobs::imported);
+        window.openFile(path);
+        QTRY_COMPARE_WITH_TIMEOUT(imported.count(), 1, 30'000);
+        window.playback().pause();
+        window.document().setCurrentTime(1.0);
+    }
+
     // The sphere and the speed plot show a fitted track's fit and its motion before the fit.
     static void checkShowsTheFit(GuideWindow& guide)
     {
