@@ -592,6 +592,106 @@
         <translation>Die Kamera auf die ganze Szene richten</translation>
     </message>
     <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Frame &amp;Selected</source>
+        <translation>&amp;Auswahl einpassen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Point the camera at the selected object</source>
+        <translation>Die Kamera auf das ausgewählte Objekt richten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;Front View</source>
+        <translation>&amp;Vorderansicht</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Look along +Y, Z up</source>
+        <translation>Entlang +Y blicken, Z oben</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;Back View</source>
+        <translation>&amp;Rückansicht</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Look along −Y, Z up</source>
+        <translation>Entlang −Y blicken, Z oben</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;Right View</source>
+        <translation>Ansicht von r&amp;echts</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Look along −X, Z up</source>
+        <translation>Entlang −X blicken, Z oben</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;Left View</source>
+        <translation>Ansicht von &amp;links</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Look along +X, Z up</source>
+        <translation>Entlang +X blicken, Z oben</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;Top View</source>
+        <translation>Ansicht von &amp;oben</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Look down −Z, Y up</source>
+        <translation>Entlang −Z nach unten blicken, Y oben</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Botto&amp;m View</source>
+        <translation>Ansicht von &amp;unten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Look up +Z</source>
+        <translation>Entlang +Z nach oben blicken</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;Orthographic</source>
+        <translation>&amp;Orthografisch</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Parallel projection instead of perspective</source>
+        <translation>Parallelprojektion statt Perspektive</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;Wireframe</source>
+        <translation>&amp;Drahtgitter</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Draw the objects as the edges of their triangles</source>
+        <translation>Die Objekte als Kanten ihrer Dreiecke zeichnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;X-Ray</source>
+        <translation>&amp;Röntgen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Draw the objects see-through</source>
+        <translation>Die Objekte durchsichtig zeichnen</translation>
+    </message>
+    <message>
         <location filename="../ui/main_window.ui" line="267"/>
         <source>&amp;Play</source>
         <translation>&amp;Abspielen</translation>

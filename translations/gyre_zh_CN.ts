@@ -592,6 +592,106 @@
         <translation>将相机对准整个场景</translation>
     </message>
     <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Frame &amp;Selected</source>
+        <translation>显示所选对象(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Point the camera at the selected object</source>
+        <translation>将相机对准所选对象</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;Front View</source>
+        <translation>前视图(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Look along +Y, Z up</source>
+        <translation>沿 +Y 方向看,Z 朝上</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;Back View</source>
+        <translation>后视图(&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Look along −Y, Z up</source>
+        <translation>沿 −Y 方向看,Z 朝上</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;Right View</source>
+        <translation>右视图(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Look along −X, Z up</source>
+        <translation>沿 −X 方向看,Z 朝上</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;Left View</source>
+        <translation>左视图(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Look along +X, Z up</source>
+        <translation>沿 +X 方向看,Z 朝上</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;Top View</source>
+        <translation>顶视图(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Look down −Z, Y up</source>
+        <translation>沿 −Z 向下看,Y 朝上</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Botto&amp;m View</source>
+        <translation>底视图(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Look up +Z</source>
+        <translation>沿 +Z 向上看</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;Orthographic</source>
+        <translation>正交投影(&amp;O)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Parallel projection instead of perspective</source>
+        <translation>使用平行投影而非透视投影</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;Wireframe</source>
+        <translation>线框(&amp;W)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Draw the objects as the edges of their triangles</source>
+        <translation>将对象绘制为其三角形的边</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>&amp;X-Ray</source>
+        <translation>X 射线(&amp;X)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui"/>
+        <source>Draw the objects see-through</source>
+        <translation>将对象绘制为半透明</translation>
+    </message>
+    <message>
         <location filename="../ui/main_window.ui" line="267"/>
         <source>&amp;Play</source>
         <translation>播放(&amp;P)</translation>

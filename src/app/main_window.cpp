@@ -265,7 +265,9 @@ void MainWindow::createViewport()
         missing->setWordWrap(true);
         ui_->centralLayout->addWidget(missing);
         for (QAction* action : {ui_->actionShowGhost, ui_->actionShowTrajectory, ui_->actionShowControlPoses,
-                                ui_->actionShowTrail, ui_->actionFrameAll})
+                                ui_->actionShowTrail, ui_->actionFrameAll, ui_->actionFrameSelected, ui_->actionViewFront,
+                                ui_->actionViewBack, ui_->actionViewRight, ui_->actionViewLeft, ui_->actionViewTop,
+                                ui_->actionViewBottom, ui_->actionOrthographic, ui_->actionWireframe, ui_->actionXray})
             action->setEnabled(false);
         return;
     }
@@ -281,6 +283,18 @@ void MainWindow::createViewport()
     connect(ui_->actionShowTrail, &QAction::toggled, viewport_, &Viewport::setShowTrail);
     connect(viewport_, &Viewport::drawingFailed, this, [this](const QString& message) { statusBar()->showMessage(message); });
     connect(ui_->actionFrameAll, &QAction::triggered, viewport_, &Viewport::frameScene);
+    connect(ui_->actionFrameSelected, &QAction::triggered, viewport_, &Viewport::frameSelected);
+    connect(sceneFiles_, &SceneFileActions::objectsImported, viewport_, &Viewport::frameSceneWhenDrawn);
+    using ViewPoint = Viewport::ViewPoint;
+    for (const auto& [action, point] : {std::pair{ui_->actionViewFront, ViewPoint::Front}, std::pair{ui_->actionViewBack, ViewPoint::Back},
+                                        std::pair{ui_->actionViewRight, ViewPoint::Right}, std::pair{ui_->actionViewLeft, ViewPoint::Left},
+                                        std::pair{ui_->actionViewTop, ViewPoint::Top}, std::pair{ui_->actionViewBottom, ViewPoint::Bottom}})
+        connect(action, &QAction::triggered, viewport_, [this, view = point] { viewport_->viewFrom(view); });
+    connect(ui_->actionOrthographic, &QAction::toggled, viewport_, &Viewport::setOrthographic);
+    for (QAction* action : {ui_->actionWireframe, ui_->actionXray})
+        connect(action, &QAction::toggled, viewport_, [this] {
+            viewport_->setShading({ui_->actionWireframe->isChecked(), ui_->actionXray->isChecked()});
+        });
     // A live fit's motion follows the pen while a stroke is drawn.
     connect(fitController_, &FitController::previewChanged, viewport_, &Viewport::setPreviewTrack);
 

@@ -186,6 +186,7 @@ void SceneFileActions::addImportedObjects(const QString& path, const std::shared
     const model::ObjectId first = objects->ids().front();
     document_.push(step);
     selection_.selectObject(first);
+    emit objectsImported();
     statusBar_->showMessage(tr("Objects imported from %1: %n", nullptr, static_cast<int>(imported->scene.objects.size()))
                                 .arg(name),
                             kMessageMilliseconds);

@@ -42,6 +42,8 @@ public:
 signals:
     // The import dialog opened for a file that has been read (for tests and tours).
     void importDialogOpened(QDialog* dialog);
+    // An import's objects were added to the document (one undo step).
+    void objectsImported();
 
 private:
     void startImport(const QString& path, const io::ImportOptions& options);

@@ -6,25 +6,24 @@
 
 namespace gyre::model {
 
-namespace {
-
-using Corner = Eigen::Vector3f;
-
-// The number of sides a round primitive is made of.
-constexpr int kRoundSides = 32;
-
-// A flat convex polygon, its corners counter-clockwise seen from outside, fanned into triangles.
-void addFace(Mesh& mesh, const std::vector<Corner>& corners)
+void addFace(Mesh& mesh, const std::vector<Eigen::Vector3f>& corners)
 {
     const Eigen::Vector3f normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
     const auto first = static_cast<std::uint32_t>(mesh.positions.size());
-    for (const Corner& corner : corners) {
+    for (const Eigen::Vector3f& corner : corners) {
         mesh.positions.push_back(corner);
         mesh.normals.push_back(normal);
     }
     for (std::uint32_t i = 1; i + 1 < corners.size(); ++i)
         mesh.indices.insert(mesh.indices.end(), {first, first + i, first + i + 1});
 }
+
+namespace {
+
+using Corner = Eigen::Vector3f;
+
+// The number of sides a round primitive is made of.
+constexpr int kRoundSides = 32;
 
 // Which faces addBox leaves out: the face that another part covers, so that the whole stays closed.
 enum class BoxOpening { None, PlusX };

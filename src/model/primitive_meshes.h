@@ -7,6 +7,8 @@
 #include "core/name_table.h"
 #include "model/scene.h"
 
+#include <vector>
+
 namespace gyre::model {
 
 enum class Primitive { Block, Box, Disc, Cone, Arrow };
@@ -21,5 +23,9 @@ inline constexpr NameTable<Primitive, 5> kPrimitiveNames{{
 
 // Each face has its own vertices and normal; the faces are counter-clockwise seen from outside.
 Mesh primitiveMesh(Primitive primitive);
+
+// Appends a flat convex polygon, its corners counter-clockwise seen from outside, fanned into
+// triangles, with its own vertices and normal.
+void addFace(Mesh& mesh, const std::vector<Eigen::Vector3f>& corners);
 
 } // namespace gyre::model

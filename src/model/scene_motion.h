@@ -29,6 +29,8 @@ public:
     // std::invalid_argument where TrackMotion does.
     void build() const;
 
+    // Whether the motion was built from a scene holding the object.
+    bool contains(ObjectId id) const { return entries_.contains(id); }
     // The object's pose in the world at `time`; an unknown object is at the identity.
     Pose worldPose(ObjectId id, double time) const;
     // The world pose of the frame its track is relative to: its parent's world pose, or the identity.

@@ -41,6 +41,7 @@
 #include <QUndoStack>
 #include <qcustomplot.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <initializer_list>
 #include <memory>
@@ -478,21 +479,12 @@ private slots:
     // in the Outliner; typing in the filter box leaves the matching joints with their ancestors.
     void showsAMotionCapturesSkeletonInTheOutliner()
     {
-        test::useBuiltSceneWorker();
-        QTemporaryDir folder;
-        const QString path = folder.filePath(QStringLiteral("walk.bvh"));
-        QFile file(path);
-        const QByteArray bvh = humanBvh();
-        QVERIFY(file.open(QIODevice::WriteOnly) && file.write(bvh) == bvh.size());
-        file.close();
         GuideWindow guide;
         app::MainWindow& window = guide.window();
-        QSignalSpy imported(&window.sceneFiles().jobs(), &jobs::SceneFileJobs::imported);
-        window.openFile(path);
-        QTRY_COMPARE_WITH_TIMEOUT(imported.count(), 1, 30'000);
+        openHumanCapture(window);
+        if (QTest::currentTestFailed())
+            return;
         QCOMPARE(window.document().scene().objects.size(), std::size_t{19});
-        window.playback().pause();
-        window.document().setCurrentTime(1.0);
         guide.child<QAction>("actionFrameAll")->trigger(); // View ▸ Frame Scene
         auto* outliner = guide.child<app::OutlinerPanel>();
         const model::ObjectId foreArm = window.document().scene().objects[7].id;
@@ -512,7 +504,53 @@ private slots:
                                                 QStringLiteral("LeftLeg"), 1, Qt::MatchRecursive).isEmpty());
     }
 
+    // The same capture in the front view (number pad 1), framed: its joints drawn as bones, standing up
+    // (the hips below the head on screen), a click on the left forearm's bone selecting it.
+    void showsAMotionCapturesBones()
+    {
+        GuideWindow guide;
+        app::MainWindow& window = guide.window();
+        openHumanCapture(window);
+        if (QTest::currentTestFailed())
+            return;
+        auto* viewport = guide.child<app::Viewport>();
+        // The capture's motion is built off the UI thread: its 23 bones (18 links and 5 leaves) show once it is in.
+        QVERIFY(QTest::qWaitFor([&] { viewport->update(); return viewport->skeleton().bones().size() == 23; }, 30'000));
+        guide.child<QAction>("actionViewFront")->trigger();
+        guide.child<QAction>("actionFrameAll")->trigger();
+        guide.settle();
+        const model::Scene& scene = window.document().scene();
+        const model::ObjectId foreArm = scene.objects[7].id;
+        QCOMPARE(scene.objects[7].name, QStringLiteral("LeftForeArm"));
+        QVERIFY(viewport->objectScreenPosition(scene.objects[0].id)->y() > viewport->objectScreenPosition(scene.objects[4].id)->y());
+        const std::vector<app::Bone>& bones = viewport->skeleton().bones();
+        const auto bone = std::find_if(bones.begin(), bones.end(), [&](const app::Bone& each) { return each.joint == foreArm; });
+        QVERIFY(bone != bones.end());
+        const Eigen::Vector3d middle = viewport->camera().project(0.5 * (bone->head() + bone->tail()));
+        QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, QPoint(int(middle.x()), int(middle.y())));
+        QCOMPARE(window.selection().object(), foreArm);
+        guide.settle();
+        guide.picture(QStringLiteral("guide-bones.png"));
+    }
+
 private:
+    // Opens humanBvh as the guide tells (a scene file opened is imported), at 1 s, paused.
+    static void openHumanCapture(app::MainWindow& window)
+    {
+        test::useBuiltSceneWorker();
+        QTemporaryDir folder;
+        const QString path = folder.filePath(QStringLiteral("walk.bvh"));
+        QFile file(path);
+        const QByteArray bvh = humanBvh();
+        QVERIFY(file.open(QIODevice::WriteOnly) && file.write(bvh) == bvh.size());
+        file.close();
+        QSignalSpy imported(&window.sceneFiles().jobs(), &jobs::SceneFileJobs::imported);
+        window.openFile(path);
+        QTRY_COMPARE_WITH_TIMEOUT(imported.count(), 1, 30'000);
+        window.playback().pause();
+        window.document().setCurrentTime(1.0);
+    }
+
     // The sphere and the speed plot show a fitted track's fit and its motion before the fit.
     static void checkShowsTheFit(GuideWindow& guide)
     {

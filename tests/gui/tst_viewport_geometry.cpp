@@ -4,12 +4,15 @@
 #include "app/viewport/mesh_winding.h"
 #include "app/viewport/orbit_camera.h"
 #include "app/viewport/picking.h"
+#include "app/viewport/skeleton.h"
+#include "model/scene_motion.h"
 
 #include <QTest>
 
 #include <Eigen/Geometry>
 
 #include <array>
+#include <numbers>
 #include <random>
 
 using namespace gyre;
@@ -44,6 +47,22 @@ model::Mesh reversed(model::Mesh mesh)
     for (std::size_t i = 0; i < mesh.indices.size(); i += 3)
         std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
     return mesh;
+}
+
+// An object at a fixed pose relative to its parent: one key.
+model::SceneObject placed(model::ObjectId id, model::ObjectId parent, const Pose& pose, std::shared_ptr<const model::Mesh> mesh = nullptr)
+{
+    model::SceneObject object;
+    object.id = id;
+    object.parent = parent;
+    object.mesh = std::move(mesh);
+    object.track.keys.push_back({0.0, pose, true});
+    return object;
+}
+
+Pose turned(double angle, const Eigen::Vector3d& axis, const Eigen::Vector3d& position)
+{
+    return {Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis.normalized())), position};
 }
 
 } // namespace
@@ -206,6 +225,122 @@ private slots:
         QCOMPARE(app::meshWinding(sheet), app::MeshWinding::Open);
         sheet.indices.insert(sheet.indices.end(), {0, 2, 1, 0, 3, 2});
         QVERIFY(app::meshWinding(sheet) != app::MeshWinding::Open);
+    }
+
+    void jointsAreMeshlessObjectsJoinedToMeshlessObjects()
+    {
+        // Root (1) ─ Upper (2) ─ Lower (3, a leaf); Root ─ Prop (4, a mesh) ─ Tag (5, meshless);
+        // Lone (6, meshless, alone).
+        auto mesh = std::make_shared<const model::Mesh>(tetrahedron());
+        model::Scene scene;
+        scene.objects = {placed(1, model::kNoObject, turned(0.3, {1, 2, 3}, {1, 0, 0})),
+                         placed(2, 1, turned(0.8, {0, 1, 0}, {0, 0, 2})),
+                         placed(3, 2, turned(-0.5, {1, 0, 1}, {1.5, 0, 0})),
+                         placed(4, 1, turned(0.1, {0, 0, 1}, {0, 3, 0}), mesh),
+                         placed(5, 4, turned(0.2, {0, 0, 1}, {0, 1, 0})),
+                         placed(6, model::kNoObject, turned(0.4, {1, 0, 0}, {5, 5, 0}))};
+        const model::SceneMotion motion(scene);
+        app::Skeleton skeleton;
+        skeleton.update(scene, motion, 0.0);
+        for (std::size_t i = 0; i < scene.objects.size(); ++i)
+            QCOMPARE(skeleton.isJoint(i), i < 3);
+        const auto world = [&](model::ObjectId id) { return motion.worldPose(id, 0.0); };
+        const std::vector<app::Bone>& bones = skeleton.bones();
+        QCOMPARE(bones.size(), std::size_t{3});
+        // From each joint to its child joint, and the leaf's own on along its offset, half as long.
+        const Eigen::Vector3d leafTail = world(3).apply(app::Skeleton::kLeafBoneFraction * Eigen::Vector3d(1.5, 0, 0));
+        const std::array<std::array<Eigen::Vector3d, 2>, 3> expected{{{world(1).position, world(2).position},
+                                                                      {world(2).position, world(3).position},
+                                                                      {world(3).position, leafTail}}};
+        for (std::size_t i = 0; i < 3; ++i) {
+            QCOMPARE(bones[i].joint, model::ObjectId(i + 1));
+            QVERIFY((bones[i].head() - expected[i][0]).norm() < 1e-12);
+            QVERIFY((bones[i].tail() - expected[i][1]).norm() < 1e-12);
+        }
+        // A bone turns with its joint: its x axis is fixed in the joint's frame.
+        const Eigen::Vector3d alongInJoint = world(1).orientation.conjugate() * (bones[0].pose.orientation * Eigen::Vector3d::UnitX());
+        QVERIFY((alongInJoint - Eigen::Vector3d::UnitZ()).norm() < 1e-12);
+    }
+
+    void aJointWithoutABoneOfItsOwnGetsOne()
+    {
+        // Hips (1) with Pelvis (2) at its very place, Pelvis with Leg (3) below: the Hips' bone to the
+        // Pelvis has no length, so the Hips get a stub along their x axis; the Pelvis's goes to the Leg.
+        model::Scene scene;
+        scene.objects = {placed(1, model::kNoObject, turned(0.4, {0, 1, 1}, {2, 0, 5})),
+                         placed(2, 1, turned(0.3, {1, 0, 0}, {0, 0, 0})),
+                         placed(3, 2, turned(0.2, {0, 1, 0}, {0, 0, -4}))};
+        const model::SceneMotion motion(scene);
+        app::Skeleton skeleton;
+        skeleton.update(scene, motion, 0.0);
+        const std::vector<app::Bone>& bones = skeleton.bones();
+        QCOMPARE(bones.size(), std::size_t{3});
+        QCOMPARE(bones[0].joint, model::ObjectId(2));
+        QCOMPARE(bones[0].length, 4.0);
+        QCOMPARE(bones[1].joint, model::ObjectId(3)); // the leaf's, 2 long
+        QCOMPARE(bones[2].joint, model::ObjectId(1));
+        QVERIFY(std::abs(bones[2].length - app::Skeleton::kStubFraction * (4.0 + 2.0) / 2) < 1e-12);
+        const Pose hips = motion.worldPose(1, 0.0);
+        QVERIFY((bones[2].tail() - hips.apply(Eigen::Vector3d(bones[2].length, 0, 0))).norm() < 1e-12);
+    }
+
+    void aRayThroughABoneHitsIt()
+    {
+        QCOMPARE(app::meshWinding(app::boneMesh()), app::MeshWinding::CounterClockwise);
+        const app::Bone bone{7, turned(0.7, {1, 1, 0}, {1, 2, 3}), 4.0};
+        const std::vector<app::MeshPlacement> placements{{&app::defaultShapeMesh(), Pose{{}, {20, 0, 0}}, 1.0},
+                                                         {&app::boneMesh(), bone.pose, bone.length}};
+        const app::OrbitCamera camera = cameraAt(0.5 * (bone.head() + bone.tail()));
+        for (const double along : {0.1, 0.5, 0.9}) {
+            const Eigen::Vector3d screen = camera.project(bone.head() + along * (bone.tail() - bone.head()));
+            QCOMPARE(app::nearestHit(camera.ray(screen.x(), screen.y()), placements), std::optional<std::size_t>(1));
+        }
+        // Across the bone on screen, a quarter of its length from its middle, beyond its widest
+        // (a tenth of its length, √2 times at the waist's corners), a ray misses it.
+        const Eigen::Vector2d head = camera.project(bone.head()).head<2>();
+        const Eigen::Vector2d tail = camera.project(bone.tail()).head<2>();
+        const Eigen::Vector2d across = Eigen::Vector2d(head.y() - tail.y(), tail.x() - head.x()).normalized();
+        const Eigen::Vector2d beside = 0.5 * (head + tail) + 0.25 * bone.length / camera.worldPerPixel() * across;
+        QVERIFY(!app::nearestHit(camera.ray(beside.x(), beside.y()), placements));
+    }
+
+    void lookingFromAViewPointTurnsOnlyTheView()
+    {
+        app::OrbitCamera camera = cameraAt(Eigen::Vector3d(1, 2, 3));
+        const double distance = camera.distance();
+        constexpr double kQuarter = std::numbers::pi / 2;
+        camera.lookFrom(-kQuarter, kQuarter); // straight down: right is +x, up +y
+        QVERIFY((camera.viewDirection() + Eigen::Vector3d::UnitZ()).norm() < 1e-12);
+        QVERIFY((camera.target() - Eigen::Vector3d(1, 2, 3)).norm() < 1e-12);
+        QCOMPARE(camera.distance(), distance);
+        const Eigen::Vector3d centre = camera.project(camera.target());
+        const Eigen::Vector3d right = camera.project(camera.target() + Eigen::Vector3d::UnitX()) - centre;
+        const Eigen::Vector3d up = camera.project(camera.target() + Eigen::Vector3d::UnitY()) - centre;
+        QVERIFY(right.x() > 1 && std::abs(right.y()) < 1e-9);
+        QVERIFY(up.y() < -1 && std::abs(up.x()) < 1e-9);
+    }
+
+    void orthographicKeepsTheSizeAtTheTargetAndCastsParallelRays()
+    {
+        app::OrbitCamera camera = cameraAt(Eigen::Vector3d(1, 2, 3));
+        camera.orbit(40, 20);
+        const Eigen::Vector3d aside = camera.target() + Eigen::Vector3d(0.5, -0.3, 0.4);
+        const Eigen::Vector3d inPerspective = camera.project(aside);
+        camera.setOrthographic(true);
+        const double perPixel = camera.worldPerPixel();
+        // A point at the target's depth is where the perspective drew it, to first order about the centre.
+        const Eigen::Vector3d offset = 0.01 * camera.viewMatrix().block<1, 3>(0, 0).transpose();
+        const double pixels = (camera.project(camera.target() + offset) - camera.project(camera.target())).norm();
+        QVERIFY(std::abs(pixels * perPixel - 0.01) < 1e-9);
+        QVERIFY((camera.project(aside) - inPerspective).head<2>().norm() < 0.1 * camera.height());
+        for (const Eigen::Vector3d& point : {aside, Eigen::Vector3d(-4, 0, 1)}) {
+            const Eigen::Vector3d screen = camera.project(point);
+            QVERIFY((camera.unproject(screen) - point).norm() < 1e-6);
+            const app::Ray ray = camera.ray(screen.x(), screen.y());
+            QVERIFY((ray.direction - camera.viewDirection()).norm() < 1e-12);
+            // The ray passes through the point: its distance from the ray's line is nought.
+            QVERIFY(((point - ray.origin).cross(ray.direction)).norm() < 1e-6);
+        }
     }
 
     void theNearestPointOnAnAxisToARay()

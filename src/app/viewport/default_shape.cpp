@@ -2,7 +2,38 @@
 
 #include "model/primitive_meshes.h"
 
+#include <array>
+
 namespace gyre::app {
+
+namespace {
+
+model::Mesh makeBone()
+{
+    // Blender's octahedral bone along +x: the head at the origin, the tail at 1, widest (a square of
+    // half-width kWaist) at kWaist along.
+    constexpr float kWaist = 0.1F;
+    using Corner = Eigen::Vector3f;
+    const Corner head(0.0F, 0.0F, 0.0F), tail(1.0F, 0.0F, 0.0F);
+    const std::array<Corner, 4> waist{Corner(kWaist, -kWaist, 0.0F), Corner(kWaist, 0.0F, -kWaist),
+                                      Corner(kWaist, kWaist, 0.0F), Corner(kWaist, 0.0F, kWaist)};
+    model::Mesh mesh;
+    for (std::size_t i = 0; i < waist.size(); ++i) {
+        const Corner& a = waist[i];
+        const Corner& b = waist[(i + 1) % waist.size()];
+        model::addFace(mesh, {head, b, a});
+        model::addFace(mesh, {tail, a, b});
+    }
+    return mesh;
+}
+
+} // namespace
+
+const model::Mesh& boneMesh()
+{
+    static const model::Mesh bone = makeBone();
+    return bone;
+}
 
 const model::Mesh& defaultShapeMesh()
 {

@@ -2,6 +2,7 @@
 
 #include "app/viewport/default_shape.h"
 #include "app/viewport/pose_matrix.h"
+#include "app/viewport/skeleton.h"
 #include "model/scene_queries.h"
 
 #include <Eigen/Geometry>
@@ -200,7 +201,9 @@ void DrawnMotion::rebuildTrajectory()
     const model::Scene& scene = document_.scene();
     if (object == nullptr || !(scene.endTime > scene.startTime))
         return;
-    const Eigen::Vector3d centre = meshCentre(displayMesh(*object));
+    // A joint's path is its origin's, where its bones meet.
+    const bool joint = findJoints(scene)[static_cast<std::size_t>(object - scene.objects.data())];
+    const Eigen::Vector3d centre = joint ? Eigen::Vector3d::Zero() : meshCentre(displayMesh(*object));
     // One sample per frame of the scene, fewer for very long scenes.
     const double frames = std::ceil((scene.endTime - scene.startTime) * scene.fps);
     const int samples = static_cast<int>(std::clamp(frames, 1.0, double(kMaxTrajectorySamples))) + 1;

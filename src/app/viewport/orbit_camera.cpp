@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace gyre::app {
 
@@ -60,12 +61,24 @@ void OrbitCamera::frame(const Eigen::Vector3d& boxMin, const Eigen::Vector3d& bo
     distance_ = std::clamp(radius / std::sin(halfAngle), kMinDistance, kMaxDistance);
 }
 
+void OrbitCamera::lookFrom(double yaw, double pitch)
+{
+    yaw_ = yaw;
+    pitch_ = std::clamp(pitch, -std::numbers::pi / 2, std::numbers::pi / 2);
+}
+
+Eigen::Vector3d OrbitCamera::viewDirection() const
+{
+    return (target_ - eye()).normalized();
+}
+
 Eigen::Matrix4d OrbitCamera::viewMatrix() const
 {
-    // lookAt: rows right, up, backward; the eye goes to the origin.
+    // lookAt: rows right, up, backward; the eye goes to the origin. Right is z × backward normalised,
+    // (−sin yaw, cos yaw, 0), written from the yaw so that it holds looking straight down or up too.
     const Eigen::Vector3d from = eye();
     const Eigen::Vector3d backward = (from - target_).normalized();
-    const Eigen::Vector3d right = Eigen::Vector3d::UnitZ().cross(backward).normalized();
+    const Eigen::Vector3d right(-std::sin(yaw_), std::cos(yaw_), 0.0);
     const Eigen::Vector3d up = backward.cross(right);
     Eigen::Matrix4d view = Eigen::Matrix4d::Identity();
     view.block<1, 3>(0, 0) = right.transpose();
@@ -78,11 +91,21 @@ Eigen::Matrix4d OrbitCamera::viewMatrix() const
 Eigen::Matrix4d OrbitCamera::projectionMatrix() const
 {
     // The OpenGL perspective: f = cot(fovY/2), clip z = ((far+near)·z + 2·far·near)/(near − far).
-    const double nearPlane = kNearPerDistance * distance_;
     const double farPlane = kFarPerDistance * distance_;
     const double f = 1.0 / std::tan(kFieldOfViewY / 2);
     const double aspect = double(width_) / height_;
     Eigen::Matrix4d projection = Eigen::Matrix4d::Zero();
+    if (orthographic_) {
+        // glOrtho with half-height h = distance·tan(fovY/2), the perspective's at the target, from
+        // −far to far: nothing behind the eye is cut off, since zooming moves no plane through the scene.
+        const double halfHeight = distance_ / f;
+        projection(0, 0) = 1 / (aspect * halfHeight);
+        projection(1, 1) = 1 / halfHeight;
+        projection(2, 2) = -1 / farPlane;
+        projection(3, 3) = 1;
+        return projection;
+    }
+    const double nearPlane = kNearPerDistance * distance_;
     projection(0, 0) = f / aspect;
     projection(1, 1) = f;
     projection(2, 2) = (farPlane + nearPlane) / (nearPlane - farPlane);
@@ -107,6 +130,8 @@ Eigen::Vector3d OrbitCamera::unproject(const Eigen::Vector3d& screen) const
 
 Ray OrbitCamera::ray(double x, double y) const
 {
+    if (orthographic_)
+        return {unproject({x, y, 0.0}), viewDirection()};
     const Eigen::Vector3d from = eye();
     return {from, (unproject({x, y, 0.5}) - from).normalized()};
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The viewport's camera: it looks at a target from a distance, along a direction given by yaw about
-// the world's up axis (z) and pitch above the ground plane. Orbiting turns about the target, panning
+// the world's up axis (z) and pitch above the ground plane, in perspective or orthographic. Orbiting turns about the target, panning
 // slides the target across the view, zooming changes the distance. No OpenGL here: the viewport
 // hands its matrices to the shaders, and tests check the geometry alone.
 //
@@ -33,6 +33,14 @@ public:
     void zoom(double steps);
     // Looks at the box's centre from a distance at which the box's bounding sphere fills the view.
     void frame(const Eigen::Vector3d& boxMin, const Eigen::Vector3d& boxMax);
+    // Looks from the direction of yaw and pitch (radians, pitch within ±π/2: straight down or up
+    // included), keeping the target and the distance.
+    void lookFrom(double yaw, double pitch);
+    // The unit direction the camera looks in, from the eye towards the target.
+    Eigen::Vector3d viewDirection() const;
+    // Orthographic: parallel projection, showing at the target's distance what the perspective shows there.
+    void setOrthographic(bool orthographic) { orthographic_ = orthographic; }
+    bool isOrthographic() const { return orthographic_; }
 
     Eigen::Matrix4d viewMatrix() const;
     Eigen::Matrix4d projectionMatrix() const;
@@ -42,7 +50,7 @@ public:
     Eigen::Vector3d project(const Eigen::Vector3d& world) const;
     // The world point at a screen point and depth: project's inverse.
     Eigen::Vector3d unproject(const Eigen::Vector3d& screen) const;
-    // The ray from the eye through a screen point.
+    // The ray through a screen point: from the eye, or in orthographic from the near plane along the view.
     Ray ray(double x, double y) const;
     // World units per pixel at the target's distance: how large to draw things that keep their size
     // on screen.
@@ -60,6 +68,7 @@ private:
     double pitch_ = 0.6; // radians above the ground plane
     int width_ = 1;
     int height_ = 1;
+    bool orthographic_ = false;
 };
 
 } // namespace gyre::app

@@ -5,6 +5,8 @@
 #include "app/viewport/pose_matrix.h"
 
 #include <QMatrix4x4>
+#include <QOpenGLContext>
+#include <QOpenGLVersionFunctionsFactory>
 #include <QVector3D>
 #include <QVector4D>
 
@@ -31,6 +33,7 @@ constexpr Rgba kTrailEnd{0.55F, 0.90F, 0.75F, 0.3F};
 constexpr Rgba kControlPoseColor{0.95F, 0.95F, 0.98F, 0.35F};
 constexpr Rgba kSelectedKeyColor{1.0F, 0.85F, 0.30F, 0.6F};
 constexpr Rgba kGhostColor{0.85F, 0.85F, 1.0F, 0.25F};
+constexpr float kXrayAlpha = 0.35F; // the objects' opacity in X-ray shading
 
 QVector4D toVector(const Rgba& color)
 {
@@ -63,6 +66,7 @@ std::optional<GLenum> cullableFrontFace(const model::Mesh& mesh)
 void SceneRenderer::initialize()
 {
     initializeOpenGLFunctions();
+    desktopGl_ = QOpenGLVersionFunctionsFactory::get<QOpenGLFunctions_3_3_Core>(QOpenGLContext::currentContext());
     const auto buildProgram = [](const QString& name) {
         auto program = std::make_unique<QOpenGLShaderProgram>();
         // The shaders are compiled into the program: failing to build them is a broken build or a
@@ -118,13 +122,17 @@ void SceneRenderer::release()
 
 SceneRenderer::GpuMesh& SceneRenderer::gpuMesh(const model::SceneObject& object)
 {
-    const model::Mesh& mesh = displayMesh(object);
+    return gpuMesh(displayMesh(object), object.mesh);
+}
+
+SceneRenderer::GpuMesh& SceneRenderer::gpuMesh(const model::Mesh& mesh, const std::shared_ptr<const model::Mesh>& owner)
+{
     const auto found = gpuMeshes_.find(&mesh);
     if (found != gpuMeshes_.end())
         return found->second;
 
     GpuMesh& gpu = gpuMeshes_[&mesh];
-    gpu.owner = object.mesh;
+    gpu.owner = owner;
     // Interleaved position and normal. A mesh without normals gets each vertex's area-weighted mean
     // of its triangles' normals (the cross product's length is twice the area).
     std::vector<Eigen::Vector3f> normals = mesh.normals;
@@ -196,7 +204,7 @@ void SceneRenderer::drawMesh(GpuMesh& mesh, QOpenGLBuffer& instances, int instan
         glVertexAttribPointer(kInstanceAttribute + column, 4, GL_FLOAT, GL_FALSE, kFloatsPerMatrix * sizeof(float),
                               reinterpret_cast<const void*>(column * 4 * sizeof(float)));
     meshProgram_->setUniformValue("uInstanceCount", instanceCount);
-    if (mesh.frontFace) {
+    if (mesh.frontFace && cullBackFaces_) {
         glEnable(GL_CULL_FACE);
         glFrontFace(*mesh.frontFace);
     }
@@ -235,6 +243,47 @@ void SceneRenderer::setMeshColors(const Rgba& start, const Rgba& end)
     meshProgram_->setUniformValue("uColorEnd", toVector(end));
 }
 
+void SceneRenderer::drawObjects(const FrameMeshes& meshes)
+{
+    const model::Scene& scene = *meshes.scene;
+    const Shading shading = meshes.shading;
+    // X-ray: every object see-through, none hiding another, with its back faces showing.
+    const float alpha = shading.xray ? kXrayAlpha : 1.0F;
+    const auto setColor = [&](bool selected) {
+        Rgba color = selected ? kSelectedColor : kObjectColor;
+        color.a = alpha;
+        setMeshColors(color, color);
+    };
+    if (shading.xray) {
+        glEnable(GL_BLEND);
+        glDepthMask(GL_FALSE);
+    }
+    if (shading.wireframe)
+        desktopGl_->glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    // The back faces show through in X-ray and wireframe.
+    cullBackFaces_ = !shading.xray && !shading.wireframe;
+    const auto draw = [this](GpuMesh& mesh) { drawMesh(mesh, identityInstance_, 1); };
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const model::SceneObject& object = scene.objects[i];
+        if (meshes.skeleton->isJoint(i))
+            continue;
+        setColor(&object == meshes.selected);
+        meshProgram_->setUniformValue("uFrame", toQMatrix(poseMatrix(meshes.motion->worldPose(object.id, scene.currentTime))));
+        draw(gpuMesh(object));
+    }
+    GpuMesh& bone = gpuMesh(boneMesh(), nullptr);
+    for (const Bone& each : meshes.skeleton->bones()) {
+        setColor(meshes.selected != nullptr && each.joint == meshes.selected->id);
+        meshProgram_->setUniformValue("uFrame", toQMatrix(poseMatrix(each.pose, each.length)));
+        draw(bone);
+    }
+    if (shading.wireframe)
+        desktopGl_->glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    cullBackFaces_ = true;
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+}
+
 void SceneRenderer::drawFrame(const Eigen::Matrix4d& viewProjectionMatrix, const Eigen::Vector3d& eyePoint,
                               const FrameLines& lines, const FrameMeshes& meshes)
 {
@@ -245,7 +294,6 @@ void SceneRenderer::drawFrame(const Eigen::Matrix4d& viewProjectionMatrix, const
     if (meshesMayBeUnused_)
         dropUnusedMeshes();
 
-    const model::Scene& scene = *meshes.scene;
     const model::SceneObject* selected = meshes.selected;
     const QMatrix4x4 viewProjection = toQMatrix(viewProjectionMatrix);
     const Eigen::Vector3f eye = eyePoint.cast<float>();
@@ -266,12 +314,7 @@ void SceneRenderer::drawFrame(const Eigen::Matrix4d& viewProjectionMatrix, const
     meshProgram_->setUniformValue("uViewProjection", viewProjection);
     meshProgram_->setUniformValue("uEye", QVector3D(eye.x(), eye.y(), eye.z()));
     meshProgram_->setUniformValue("uHighlightInstance", -1);
-    for (const model::SceneObject& object : scene.objects) {
-        const Rgba& color = &object == selected ? kSelectedColor : kObjectColor;
-        setMeshColors(color, color);
-        meshProgram_->setUniformValue("uFrame", toQMatrix(poseMatrix(meshes.motion->worldPose(object.id, scene.currentTime))));
-        drawMesh(gpuMesh(object), identityInstance_, 1);
-    }
+    drawObjects(meshes);
 
     const QMatrix4x4 selectedFrame = toQMatrix(poseMatrix(meshes.selectedParentFrame));
     // Translucent last, over everything opaque, without hiding each other. The trail too: a few

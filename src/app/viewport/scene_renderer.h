@@ -6,12 +6,14 @@
 // the viewport gathers that from the document, its motion and the selection.
 
 #include "app/viewport/frame_lines.h"
+#include "app/viewport/skeleton.h"
 #include "model/scene_motion.h"
 #include "core/pose.h"
 #include "model/scene.h"
 
 #include <QOpenGLBuffer>
 #include <QOpenGLExtraFunctions>
+#include <QOpenGLFunctions_3_3_Core>
 #include <QOpenGLShaderProgram>
 #include <QOpenGLVertexArrayObject>
 
@@ -25,11 +27,20 @@
 
 namespace gyre::app {
 
-// The meshes of one frame: every object of the scene at its current time, and the selected object's
-// trail, control poses (its keys) and ghost.
+// How the scene's objects are shaded: solid or as the edges of their triangles (wireframe), opaque
+// or see-through (X-ray).
+struct Shading {
+    bool wireframe = false;
+    bool xray = false;
+};
+
+// The meshes of one frame: every object of the scene at its current time (joints as their bones),
+// and the selected object's trail, control poses (its keys) and ghost.
 struct FrameMeshes {
     const model::Scene* scene = nullptr;
     const model::SceneMotion* motion = nullptr;
+    const Skeleton* skeleton = nullptr; // updated for the scene at its current time
+    Shading shading;
     const model::SceneObject* selected = nullptr;
     Pose selectedParentFrame; // the world frame of the selected object's keys and trail
     bool trail = false;       // as last uploaded with setTrail
@@ -75,6 +86,9 @@ private:
     };
 
     GpuMesh& gpuMesh(const model::SceneObject& object);
+    // owner: the shared pointer that holds `mesh`, or null for a shape built once (default_shape.h).
+    GpuMesh& gpuMesh(const model::Mesh& mesh, const std::shared_ptr<const model::Mesh>& owner);
+    void drawObjects(const FrameMeshes& meshes);
     void dropUnusedMeshes();
     void drawMesh(GpuMesh& mesh, QOpenGLBuffer& instances, int instanceCount);
     void drawLines(GLenum mode, LineRange range);
@@ -82,10 +96,12 @@ private:
     void uploadControlPoses(const model::SceneObject& object);
     void setMeshColors(const Rgba& start, const Rgba& end);
 
+    QOpenGLFunctions_3_3_Core* desktopGl_ = nullptr; // for glPolygonMode, which OpenGL ES lacks
     std::unique_ptr<QOpenGLShaderProgram> meshProgram_;
     std::unique_ptr<QOpenGLShaderProgram> lineProgram_;
     std::unordered_map<const model::Mesh*, GpuMesh> gpuMeshes_;
     bool meshesMayBeUnused_ = false;
+    bool cullBackFaces_ = true; // of closed meshes; not while the objects are drawn in X-ray or wireframe
     QOpenGLBuffer identityInstance_{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer trailInstances_{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer controlPoseInstances_{QOpenGLBuffer::VertexBuffer};

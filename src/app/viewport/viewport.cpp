@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <numbers>
 #include <vector>
 
 namespace gyre::app {
@@ -110,16 +111,46 @@ void Viewport::setShowTrail(bool show)
     update();
 }
 
+void Viewport::updateSkeleton()
+{
+    const model::Scene& scene = document_.scene();
+    skeleton_.update(scene, drawn_.motion(), scene.currentTime);
+}
+
+Eigen::AlignedBox3d Viewport::objectBox(std::size_t index) const
+{
+    const model::Scene& scene = document_.scene();
+    const model::SceneObject& object = scene.objects[index];
+    Eigen::AlignedBox3d box;
+    if (skeleton_.isJoint(index)) {
+        for (const Bone& bone : skeleton_.bones())
+            if (bone.joint == object.id)
+                box.extend(bone.head()).extend(bone.tail());
+        box.extend(drawn_.motion().worldPose(object.id, scene.currentTime).position);
+        return box;
+    }
+    const Pose pose = drawn_.motion().worldPose(object.id, scene.currentTime);
+    for (const Eigen::Vector3f& position : displayMesh(object).positions)
+        box.extend(pose.apply(position.cast<double>()));
+    return box;
+}
+
+void Viewport::frameBox(Eigen::AlignedBox3d box)
+{
+    if (box.isEmpty())
+        box = Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-kGridHalfLines / 2.0), Eigen::Vector3d::Constant(kGridHalfLines / 2.0));
+    camera_.frame(box.min(), box.max());
+    update();
+}
+
 void Viewport::frameScene()
 {
     const model::Scene& scene = document_.scene();
     const model::SceneMotion& motion = drawn_.motion();
+    updateSkeleton();
     Eigen::AlignedBox3d box;
-    for (const model::SceneObject& object : scene.objects) {
-        const Pose pose = motion.worldPose(object.id, scene.currentTime);
-        for (const Eigen::Vector3f& position : displayMesh(object).positions)
-            box.extend(pose.apply(position.cast<double>()));
-    }
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        box.extend(objectBox(i));
     if (const model::SceneObject* selected = selection_.selectedObject()) {
         const Pose frame = motion.parentWorldPose(selected->id, scene.currentTime);
         for (const model::Keyframe& key : selected->track.keys)
@@ -127,10 +158,66 @@ void Viewport::frameScene()
     }
     for (const Eigen::Vector3f& point : drawn_.trajectory())
         box.extend(point.cast<double>());
-    if (box.isEmpty())
-        box = Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-kGridHalfLines / 2.0), Eigen::Vector3d::Constant(kGridHalfLines / 2.0));
-    camera_.frame(box.min(), box.max());
+    frameBox(box);
     cameraIsFramed_ = true;
+}
+
+void Viewport::frameSceneWhenDrawn()
+{
+    framePending_ = true;
+    update();
+}
+
+void Viewport::frameSelected()
+{
+    const model::Scene& scene = document_.scene();
+    const auto selected = std::find_if(scene.objects.begin(), scene.objects.end(),
+                                       [this](const model::SceneObject& object) { return object.id == selection_.object(); });
+    if (selected == scene.objects.end()) {
+        frameScene();
+        return;
+    }
+    updateSkeleton();
+    frameBox(objectBox(static_cast<std::size_t>(selected - scene.objects.begin())));
+    cameraIsFramed_ = false;
+}
+
+void Viewport::viewFrom(ViewPoint point)
+{
+    // (yaw, pitch) of the direction from the target towards the eye.
+    constexpr double kQuarter = std::numbers::pi / 2;
+    switch (point) {
+    case ViewPoint::Front:
+        camera_.lookFrom(-kQuarter, 0.0);
+        break;
+    case ViewPoint::Back:
+        camera_.lookFrom(kQuarter, 0.0);
+        break;
+    case ViewPoint::Right:
+        camera_.lookFrom(0.0, 0.0);
+        break;
+    case ViewPoint::Left:
+        camera_.lookFrom(std::numbers::pi, 0.0);
+        break;
+    case ViewPoint::Top:
+        camera_.lookFrom(-kQuarter, kQuarter);
+        break;
+    case ViewPoint::Bottom:
+        camera_.lookFrom(-kQuarter, -kQuarter);
+        break;
+    }
+    update();
+}
+
+void Viewport::setOrthographic(bool orthographic)
+{
+    camera_.setOrthographic(orthographic);
+    update();
+}
+
+void Viewport::setShading(Shading shading)
+{
+    shading_ = shading;
     update();
 }
 
@@ -182,9 +269,18 @@ void Viewport::pickAt(const QPointF& position)
     std::vector<MeshPlacement> placements;
     std::vector<model::ObjectId> objects;
     std::vector<std::optional<std::size_t>> keys;
-    for (const model::SceneObject& object : scene.objects) {
+    updateSkeleton();
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const model::SceneObject& object = scene.objects[i];
+        if (skeleton_.isJoint(i))
+            continue;
         placements.push_back({&displayMesh(object), motion.worldPose(object.id, scene.currentTime), 1.0});
         objects.push_back(object.id);
+        keys.emplace_back();
+    }
+    for (const Bone& bone : skeleton_.bones()) {
+        placements.push_back({&boneMesh(), bone.pose, bone.length});
+        objects.push_back(bone.joint);
         keys.emplace_back();
     }
     if (showsControlPoses()) {
@@ -390,6 +486,12 @@ void Viewport::paintGL()
 {
     measureFrame();
     const model::Scene& scene = document_.scene();
+    if (framePending_ && std::all_of(scene.objects.begin(), scene.objects.end(),
+                                     [this](const model::SceneObject& object) { return drawn_.motion().contains(object.id); })) {
+        framePending_ = false;
+        frameScene();
+    }
+    updateSkeleton();
     const model::SceneObject* selected = selection_.selectedObject();
     if (drawn_.takeTrailChange() || !trailUploaded_) {
         renderer_.setTrail(drawn_.trailMatrices());
@@ -400,6 +502,8 @@ void Viewport::paintGL()
     FrameMeshes meshes;
     meshes.scene = &scene;
     meshes.motion = &drawn_.motion();
+    meshes.skeleton = &skeleton_;
+    meshes.shading = shading_;
     meshes.selected = selected;
     if (selected != nullptr) {
         meshes.selectedParentFrame = drawn_.motion().parentWorldPose(selected->id, scene.currentTime);

@@ -20,12 +20,15 @@
 #include "app/viewport/orbit_camera.h"
 #include "app/viewport/pose_handles.h"
 #include "app/viewport/scene_renderer.h"
+#include "app/viewport/skeleton.h"
 #include "model/document.h"
 
 #include <QElapsedTimer>
 #include <QOpenGLWidget>
 #include <QPointF>
 #include <QSurfaceFormat>
+
+#include <Eigen/Geometry>
 
 #include <cstddef>
 #include <cstdint>
@@ -61,7 +64,22 @@ public:
     void setShowTrail(bool show);
     // Points the camera at all objects, the selected object's trajectory and its control poses.
     void frameScene();
+    // frameScene as soon as the motion drawn holds every object of the scene (after an import, whose
+    // motion is built off the UI thread).
+    void frameSceneWhenDrawn();
+    // Points the camera at the selected object (a joint: its bones); at the scene when none is selected.
+    void frameSelected();
 
+    // Blender's number-pad views, in Gyre's Z-up world: front looks along +y, right along −x, top
+    // down −z; each opposite looks the other way.
+    enum class ViewPoint { Front, Back, Right, Left, Top, Bottom };
+    void viewFrom(ViewPoint point);
+    void setOrthographic(bool orthographic);
+    void setShading(Shading shading);
+    Shading shading() const { return shading_; }
+
+    // The joints and bones as the last frame drew them.
+    const Skeleton& skeleton() const { return skeleton_; }
     OrbitCamera& camera() { return camera_; }
     // Instances in the last trail drawn (0 when the last frame drew none).
     std::size_t trailInstanceCount() const { return drawnTrailInstances_; }
@@ -112,6 +130,10 @@ private:
     // Whether the selected object's control poses are drawn and can be clicked.
     bool showsControlPoses() const;
     void pickAt(const QPointF& position);
+    // The box about what is drawn for the object at scene.objects[index] at the current time.
+    Eigen::AlignedBox3d objectBox(std::size_t index) const;
+    void updateSkeleton();
+    void frameBox(Eigen::AlignedBox3d box);
     void releaseGl();
     void buildLines();
     void measureFrame();
@@ -123,6 +145,9 @@ private:
     SceneRenderer renderer_;
     OrbitCamera camera_;
     bool cameraIsFramed_ = false; // by frameScene, and not moved since
+    bool framePending_ = false;   // frameSceneWhenDrawn waits for the motion
+    Skeleton skeleton_;
+    Shading shading_;
     bool trailUploaded_ = false;  // to the renderer's present context
 
     bool showGhost_ = true;
