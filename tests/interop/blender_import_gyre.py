@@ -34,7 +34,6 @@
 # One limit of Blender 3.4's FBX importer shows here, not of the file: it places keys at the frame
 # rate rounded to an integer (so a 12.5 fps project plays 4% fast; integer rates are exact).
 
-import base64
 import json
 import math
 import os
@@ -129,11 +128,23 @@ def baked_poses(gyre_cli, project, name, fps, folder):
     return rows
 
 
-def mesh_positions(mesh):
-    """A project mesh's vertex positions (little-endian float32 triples, base64)."""
-    data = base64.b64decode(mesh["positions"])
-    values = struct.unpack("<%df" % (len(data) // 4), data)
-    return [Vector(values[i:i + 3]) for i in range(0, len(values) - 2, 3)]
+def read_project(path):
+    """A version 3 project (docs/file-format.md): its JSON header, and each mesh's vertex positions,
+    from the mesh blocks that come first after the header (float32 x, y, z per vertex, then normals
+    and indices)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:12] != b"gyre-project" or struct.unpack_from("<I", data, 12)[0] != 3:
+        sys.exit("%s: not a version 3 Gyre project" % path)
+    header_bytes = struct.unpack_from("<Q", data, 16)[0]
+    document = json.loads(data[24:24 + header_bytes].decode("utf-8"))
+    at = 24 + header_bytes
+    positions = []
+    for mesh in document["meshes"]:
+        values = struct.unpack_from("<%df" % (3 * mesh["positions"]), data, at)
+        positions.append([Vector(values[i:i + 3]) for i in range(0, len(values), 3)])
+        at += 12 * (mesh["positions"] + mesh["normals"]) + 4 * mesh["indices"]
+    return document, positions
 
 
 def angle_between(a, b):
@@ -155,8 +166,7 @@ def geometry_error(obj, positions, orientation_in_world, position_in_world):
 
 
 def check_project(kind, gyre_cli, project, folder):
-    with open(project, encoding="utf-8") as f:
-        document = json.load(f)
+    document, mesh_positions = read_project(project)
     fps = float(document["fps"])
     end = float(document["endTime"])
     # A glTF file starts at 0 s: Gyre moves a scene that starts earlier (prepareGltfTimes).
@@ -165,7 +175,6 @@ def check_project(kind, gyre_cli, project, folder):
     parent_of = {o["id"]: o.get("parent") for o in document["objects"]}
     name_of = {o["id"]: o["name"] for o in document["objects"]}
     mesh_of = {o["id"]: o.get("mesh") for o in document["objects"]}
-    meshes = document.get("meshes", [])
 
     path = os.path.join(folder, "scene." + kind.name)
     subprocess.run([gyre_cli, "export", project, "-o", path], check=True)
@@ -213,7 +222,7 @@ def check_project(kind, gyre_cli, project, folder):
             if action is None or abs(action.frame_range[1] - last_frame) > 1e-3:
                 problems.append("'%s' ends at frame %s, not %g" % (name, action and action.frame_range[1], last_frame))
         mesh = mesh_of[object_id]
-        positions = mesh_positions(meshes[mesh]) if mesh is not None and obj.type == "MESH" else []
+        positions = mesh_positions[mesh] if mesh is not None and obj.type == "MESH" else []
         if mesh is not None and obj.type != "MESH":
             problems.append("'%s' has no mesh" % name)
         geometry_rows = {round(i * (len(rows) - 1) / max(1, GEOMETRY_CHECKS - 1)) for i in range(GEOMETRY_CHECKS)}
