@@ -642,8 +642,8 @@ void TstCli::badInput_data()
 
     const QString wheel = projectObject(1, "wheel", "null", randomKeys(2, 8));
     const QStringList keysVerb{"keys", "IN", "-o", "OUT", "--object", "wheel"};
-    QTest::newRow("project of a newer version") << keysVerb << project({wheel}, 3) << 1
-                                                << "IN: version: the file has version 3, newer than this build";
+    QTest::newRow("project of a newer version") << keysVerb << project({wheel}, 4) << 1
+                                                << "IN: version: the file has version 4, newer than this build";
     QTest::newRow("no such object") << QStringList{"keys", "IN", "-o", "OUT", "--object", "ghost"} << project({wheel})
                                     << 1 << "IN: --object: no object is named 'ghost'";
     QTest::newRow("two objects of that name")

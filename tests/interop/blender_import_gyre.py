@@ -49,7 +49,6 @@
 # One limit of Blender 3.4's FBX importer shows here, not of the file: it places keys at the frame
 # rate rounded to an integer (so a 12.5 fps project plays 4% fast; integer rates are exact).
 
-import base64
 import json
 import math
 import os
@@ -181,11 +180,53 @@ def baked_poses(gyre_cli, project, name, fps, folder):
     return rows
 
 
-def mesh_positions(mesh):
-    """A project mesh's vertex positions (little-endian float32 triples, base64)."""
-    data = base64.b64decode(mesh["positions"])
-    values = struct.unpack("<%df" % (len(data) // 4), data)
-    return [Vector(values[i:i + 3]) for i in range(0, len(values) - 2, 3)]
+def read_project(path):
+    """A version 3 project (docs/file-format.md): its JSON header, and each mesh's vertex positions,
+    from the mesh blocks that come first after the header (float32 x, y, z per vertex, then normals
+    and indices)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:12] != b"gyre-project" or struct.unpack_from("<I", data, 12)[0] != 3:
+        sys.exit("%s: not a version 3 Gyre project" % path)
+    header_bytes = struct.unpack_from("<Q", data, 16)[0]
+    document = json.loads(data[24:24 + header_bytes].decode("utf-8"))
+    at = 24 + header_bytes
+    positions = []
+    for mesh in document["meshes"]:
+        values = struct.unpack_from("<%df" % (3 * mesh["positions"]), data, at)
+        positions.append([Vector(values[i:i + 3]) for i in range(0, len(values), 3)])
+        at += 12 * (mesh["positions"] + mesh["normals"]) + 4 * mesh["indices"]
+    return document, positions
+
+
+def write_without_fits(path, document, out):
+    """The version 3 project at `path`, whose header is `document`, with every fit taken off: the
+    fitted curve emptied and the block of keys the fit moved dropped (docs/file-format.md: the mesh
+    blocks, the time lists, then each object's keys and its keys before the fit)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    at = 24 + struct.unpack_from("<Q", data, 16)[0]
+    for mesh in document["meshes"]:
+        at += 12 * (mesh["positions"] + mesh["normals"]) + 4 * mesh["indices"]
+    at += sum(8 * count for count in document["times"])
+    blocks = [data[24 + struct.unpack_from("<Q", data, 16)[0]:at]]
+
+    def key_bytes(layout):
+        n = layout["count"]
+        return 32 * n + (0 if layout["position"] is not None else 24 * n) + (0 if layout["constrained"] is not None else n)
+
+    for o in document["objects"]:
+        keys = key_bytes(o["keyframes"])
+        blocks.append(data[at:at + keys])
+        at += keys + key_bytes(o["sketch"]["keysBeforeFit"])
+        o["sketch"]["fittedCurve"] = []
+        o["sketch"]["keysBeforeFit"] = {"count": 0, "times": o["keyframes"]["times"], "position": None,
+                                        "constrained": None}
+    if at != len(data):
+        sys.exit("%s: %d bytes after the blocks the header names" % (path, len(data) - at))
+    header = json.dumps(document).encode("utf-8")
+    with open(out, "wb") as f:
+        f.write(data[:16] + struct.pack("<Q", len(header)) + header + b"".join(blocks))
 
 
 def angle_between(a, b):
@@ -209,8 +250,7 @@ def geometry_error(obj, world_turn, positions, orientation_in_world, position_in
 
 def check_project(kind, gyre_cli, project, folder):
     source = project
-    with open(project, encoding="utf-8") as f:
-        document = json.load(f)
+    document, mesh_positions = read_project(project)
     fps = float(document["fps"])
     end = float(document["endTime"])
     # A glTF file starts at 0 s: Gyre moves a scene that starts earlier (prepareGltfTimes).
@@ -219,20 +259,15 @@ def check_project(kind, gyre_cli, project, folder):
     parent_of = {o["id"]: o.get("parent") for o in document["objects"]}
     name_of = {o["id"]: o["name"] for o in document["objects"]}
     mesh_of = {o["id"]: o.get("mesh") for o in document["objects"]}
-    meshes = document.get("meshes", [])
 
     problems = []
     if getattr(kind, "without_fits", False):
-        for o in document["objects"]:
-            o["sketch"]["fittedCurve"] = []
-            o["sketch"]["keysBeforeFit"] = []
         project = os.path.join(folder, "without-fits.gyre")
-        with open(project, "w", encoding="utf-8") as f:
-            json.dump(document, f)
+        write_without_fits(source, document, project)
     path = os.path.join(folder, "scene." + kind.name.split("-")[0])
     subprocess.run([gyre_cli, "export", project, "-o", path], check=True)
     if getattr(kind, "without_fits", False):
-        splines = sum(o["interpolation"] == "hermite" and len(o["keyframes"]) > 1 for o in document["objects"])
+        splines = sum(o["interpolation"] == "hermite" and o["keyframes"]["count"] > 1 for o in document["objects"])
         if splines == 0 or cubic_spline_samplers(path) != splines:
             problems.append("%d CUBICSPLINE samplers for %d hermite tracks" % (cubic_spline_samplers(path), splines))
     bpy.ops.wm.read_factory_settings(use_empty=True)
@@ -278,7 +313,7 @@ def check_project(kind, gyre_cli, project, folder):
             if action is None or abs(action.frame_range[1] - last_frame) > 1e-3:
                 problems.append("'%s' ends at frame %s, not %g" % (name, action and action.frame_range[1], last_frame))
         mesh = mesh_of[object_id]
-        positions = mesh_positions(meshes[mesh]) if mesh is not None and obj.type == "MESH" else []
+        positions = mesh_positions[mesh] if mesh is not None and obj.type == "MESH" else []
         if mesh is not None and obj.type != "MESH":
             problems.append("'%s' has no mesh" % name)
         geometry_rows = {round(i * (len(rows) - 1) / max(1, GEOMETRY_CHECKS - 1)) for i in range(GEOMETRY_CHECKS)}
