@@ -101,10 +101,11 @@ private slots:
         f.document.push(new model::SetTimeRangeCommand(f.document, {25, 0, 4}));
         QCOMPARE(f.said, std::vector<Changes>{Change::SceneSettings});
         f.said.clear();
-        f.document.clear();
+        f.document.startNewProject();
         QVERIFY(!f.said.empty());
         QVERIFY(f.said.back().testFlag(Change::Scene));
-        QCOMPARE(f.track.object(), model::kNoObject);
+        // The selection moves to the new project's block.
+        QCOMPARE(f.track.object(), f.document.scene().objects.front().id);
     }
 
     // Every SelectedTrack of the same selection hands out the document's one motion of the track.
