@@ -415,7 +415,8 @@ private slots:
         for (std::size_t key = 0; key < keyed.keys.size(); ++key)
             QVERIFY(sameQuaternion(track().keys[key].pose.orientation, keyed.keys[key].pose.orientation));
 
-        const model::SceneMotion played(document_->scene());
+        const model::SceneMotion played(document_->scene(),
+                                        [this](const model::SceneObject& object) { return document_->motion(object.id); });
         const model::TrackMotion polyscrew(keyed);
         const HermiteQuaternionSpline curve(track().sketch.fittedCurve);
         for (double time = 0.0; time <= 4.0; time += 0.05) {

@@ -137,7 +137,11 @@ struct Session {
             qFatal("The viewport did not draw");
     }
 
-    model::SceneMotion motion() { return model::SceneMotion(scene()); }
+    model::SceneMotion motion()
+    {
+        model::Document& document = window.document();
+        return model::SceneMotion(scene(), [&document](const model::SceneObject& object) { return document.motion(object.id); });
+    }
 
     // Every joint's origin on screen.
     std::vector<Eigen::Vector3d> jointsOnScreen()

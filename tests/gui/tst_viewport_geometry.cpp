@@ -19,6 +19,12 @@ using namespace gyre;
 
 namespace {
 
+// Each object moving by its own track, as the document's motion() would give it.
+std::shared_ptr<const model::SharedTrackMotion> ownMotion(const model::SceneObject& object)
+{
+    return std::make_shared<const model::SharedTrackMotion>(object.track);
+}
+
 app::OrbitCamera cameraAt(const Eigen::Vector3d& target)
 {
     app::OrbitCamera camera;
@@ -239,7 +245,7 @@ private slots:
                          placed(4, 1, turned(0.1, {0, 0, 1}, {0, 3, 0}), mesh),
                          placed(5, 4, turned(0.2, {0, 0, 1}, {0, 1, 0})),
                          placed(6, model::kNoObject, turned(0.4, {1, 0, 0}, {5, 5, 0}))};
-        const model::SceneMotion motion(scene);
+        const model::SceneMotion motion(scene, ownMotion);
         app::Skeleton skeleton;
         skeleton.update(scene, motion, 0.0);
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
@@ -270,7 +276,7 @@ private slots:
         scene.objects = {placed(1, model::kNoObject, turned(0.4, {0, 1, 1}, {2, 0, 5})),
                          placed(2, 1, turned(0.3, {1, 0, 0}, {0, 0, 0})),
                          placed(3, 2, turned(0.2, {0, 1, 0}, {0, 0, -4}))};
-        const model::SceneMotion motion(scene);
+        const model::SceneMotion motion(scene, ownMotion);
         app::Skeleton skeleton;
         skeleton.update(scene, motion, 0.0);
         const std::vector<app::Bone>& bones = skeleton.bones();
