@@ -7,6 +7,7 @@
 #include <QMouseEvent>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QStringList>
 #include <QTest>
 #include <QTimer>
 
@@ -86,6 +87,38 @@ std::vector<QPointF> straightPath(const QPointF& from, const QPointF& to, int st
     for (int i = 0; i <= steps; ++i)
         path.push_back(from + (to - from) * (double(i) / steps));
     return path;
+}
+
+QByteArray bvhFile(std::span<const BvhJoint> joints, double scale, int frames,
+                   const std::function<Eigen::Vector3d(int frame)>& rootPosition,
+                   const std::function<double(int frame, std::size_t joint, int axis)>& angle, const char* endSiteJoint)
+{
+    QString text = QStringLiteral("HIERARCHY\n");
+    int depth = -1;
+    for (const BvhJoint& joint : joints) {
+        for (; depth >= joint.depth; --depth)
+            text += QStringLiteral("}\n");
+        depth = joint.depth;
+        text += QStringLiteral("%1 %2\n{\nOFFSET %3 %4 %5\n")
+                    .arg(QLatin1String(depth == 0 ? "ROOT" : "JOINT"), QLatin1String(joint.name))
+                    .arg(scale * joint.x).arg(scale * joint.y).arg(scale * joint.z);
+        text += depth == 0 ? QStringLiteral("CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n")
+                           : QStringLiteral("CHANNELS 3 Zrotation Xrotation Yrotation\n");
+        if (endSiteJoint != nullptr && QLatin1String(joint.name) == QLatin1String(endSiteJoint))
+            text += QStringLiteral("End Site\n{\nOFFSET 0 %1 0\n}\n").arg(scale);
+    }
+    for (; depth >= 0; --depth)
+        text += QStringLiteral("}\n");
+    text += QStringLiteral("MOTION\nFrames: %1\nFrame Time: %2\n").arg(frames).arg(1.0 / 30.0, 0, 'g', 17);
+    for (int frame = 0; frame < frames; ++frame) {
+        const Eigen::Vector3d root = rootPosition(frame);
+        QStringList values{QString::number(root.x()), QString::number(root.y()), QString::number(root.z())};
+        for (std::size_t joint = 0; joint < joints.size(); ++joint)
+            for (int axis = 0; axis < 3; ++axis)
+                values << QString::number(angle(frame, joint, axis));
+        text += values.join(QLatin1Char(' ')) + QLatin1Char('\n');
+    }
+    return text.toUtf8();
 }
 
 } // namespace gyre::test

@@ -6,7 +6,13 @@
 #include <QString>
 #include <QWidget>
 
+#include <QByteArray>
+
+#include <Eigen/Core>
+
+#include <cstddef>
 #include <functional>
+#include <span>
 #include <vector>
 
 namespace gyre::test {
@@ -35,5 +41,22 @@ void dragAlong(QWidget* widget, const std::vector<QPointF>& path);
 
 // `steps` + 1 points from `from` to `to`, evenly spaced.
 std::vector<QPointF> straightPath(const QPointF& from, const QPointF& to, int steps);
+
+// A joint of a BVH skeleton written by bvhFile: its depth in the hierarchy (0 for the root) and its
+// offset from its parent, in the file's units.
+struct BvhJoint {
+    const char* name;
+    int depth;
+    double x, y, z;
+};
+
+// A motion capture as a BVH file (Y-up, as BVH files are): `joints` depth first, their offsets times
+// `scale`, an end site of one `scale` up on `endSiteJoint` if given; `frames` frames at 30 a second,
+// the root at rootPosition(frame) and each joint turned by angle(frame, joint, axis) degrees about
+// z, x and y in turn.
+QByteArray bvhFile(std::span<const BvhJoint> joints, double scale, int frames,
+                   const std::function<Eigen::Vector3d(int frame)>& rootPosition,
+                   const std::function<double(int frame, std::size_t joint, int axis)>& angle,
+                   const char* endSiteJoint = nullptr);
 
 } // namespace gyre::test

@@ -156,12 +156,7 @@ void drawBadge(QPainter& painter, const QWidget& window, const QWidget& widget, 
 // each joint's block stands apart), every joint swinging on its own for four seconds at 30 frames a second.
 QByteArray humanBvh()
 {
-    struct Joint {
-        const char* name;
-        int depth;
-        double x, y, z; // offset from the parent
-    };
-    static const Joint joints[] = {
+    static const test::BvhJoint joints[] = {
         {"Hips", 0, 0, 0, 0},          {"Spine", 1, 0, 2, 0},        {"Chest", 2, 0, 2, 0},
         {"Neck", 3, 0, 2, 0},          {"Head", 4, 0, 1.5, 0},       {"LeftShoulder", 3, 1.5, 1.5, 0},
         {"LeftArm", 4, 2, 0, 0},       {"LeftForeArm", 5, 2.5, 0, 0}, {"LeftHand", 6, 2, 0, 0},
@@ -170,30 +165,11 @@ QByteArray humanBvh()
         {"LeftFoot", 3, 0, -4, 0},     {"RightUpLeg", 1, -1.2, -1, 0}, {"RightLeg", 2, 0, -4, 0},
         {"RightFoot", 3, 0, -4, 0},
     };
-    QString text = QStringLiteral("HIERARCHY\n");
-    int depth = -1;
-    for (const Joint& joint : joints) {
-        for (; depth >= joint.depth; --depth)
-            text += QStringLiteral("}\n");
-        depth = joint.depth;
-        text += QStringLiteral("%1 %2\n{\nOFFSET %3 %4 %5\n")
-                    .arg(QLatin1String(depth == 0 ? "ROOT" : "JOINT"), QLatin1String(joint.name))
-                    .arg(joint.x).arg(joint.y).arg(joint.z);
-        text += depth == 0 ? QStringLiteral("CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n")
-                           : QStringLiteral("CHANNELS 3 Zrotation Xrotation Yrotation\n");
-    }
-    for (; depth >= 0; --depth)
-        text += QStringLiteral("}\n");
-    constexpr int kFrames = 120;
-    text += QStringLiteral("MOTION\nFrames: %1\nFrame Time: %2\n").arg(kFrames).arg(1.0 / 30.0, 0, 'g', 17);
-    for (int frame = 0; frame < kFrames; ++frame) {
-        QStringList values{QString::number(0.05 * frame), QStringLiteral("10"), QStringLiteral("0")};
-        for (std::size_t joint = 0; joint < std::size(joints); ++joint)
-            for (int axis = 0; axis < 3; ++axis)
-                values << QString::number(25.0 * std::sin(0.1 * frame * (axis + 1) + 0.9 * double(joint) + axis));
-        text += values.join(QLatin1Char(' ')) + QLatin1Char('\n');
-    }
-    return text.toUtf8();
+    return test::bvhFile(
+        joints, 1.0, 120, [](int frame) { return Eigen::Vector3d(0.05 * frame, 10.0, 0.0); },
+        [](int frame, std::size_t joint, int axis) {
+            return 25.0 * std::sin(0.1 * frame * (axis + 1) + 0.9 * double(joint) + axis);
+        });
 }
 
 // The main window as the guide shows it: its first-start layout (test settings are empty), shown.

@@ -30,42 +30,14 @@ namespace {
 // a spine to the head (with an end site), two arms from the chest and two legs from the hips.
 QByteArray skeletonBvh(double scale)
 {
-    struct Joint {
-        const char* name;
-        int depth;
-        double x, y, z;
-    };
-    static const Joint joints[] = {
+    static const test::BvhJoint joints[] = {
         {"Hips", 0, 0, 0, 0},        {"Spine", 1, 0, 2, 0},     {"Chest", 2, 0, 2, 0},     {"Head", 3, 0, 2, 0},
         {"LeftArm", 3, 2, 1.5, 0},   {"LeftHand", 4, 3, 0, 0},  {"RightArm", 3, -2, 1.5, 0}, {"RightHand", 4, -3, 0, 0},
         {"LeftLeg", 1, 1, -1, 0},    {"LeftFoot", 2, 0, -4, 0}, {"RightLeg", 1, -1, -1, 0},  {"RightFoot", 2, 0, -4, 0},
     };
-    QString text = QStringLiteral("HIERARCHY\n");
-    int depth = -1;
-    for (const Joint& joint : joints) {
-        for (; depth >= joint.depth; --depth)
-            text += QStringLiteral("}\n");
-        depth = joint.depth;
-        text += QStringLiteral("%1 %2\n{\nOFFSET %3 %4 %5\n")
-                    .arg(QLatin1String(depth == 0 ? "ROOT" : "JOINT"), QLatin1String(joint.name))
-                    .arg(scale * joint.x).arg(scale * joint.y).arg(scale * joint.z);
-        text += depth == 0 ? QStringLiteral("CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n")
-                           : QStringLiteral("CHANNELS 3 Zrotation Xrotation Yrotation\n");
-        if (QLatin1String(joint.name) == QLatin1String("Head"))
-            text += QStringLiteral("End Site\n{\nOFFSET 0 %1 0\n}\n").arg(scale);
-    }
-    for (; depth >= 0; --depth)
-        text += QStringLiteral("}\n");
-    constexpr int kFrames = 30;
-    text += QStringLiteral("MOTION\nFrames: %1\nFrame Time: 0.0333333\n").arg(kFrames);
-    for (int frame = 0; frame < kFrames; ++frame) {
-        QStringList values{QStringLiteral("0"), QString::number(5 * scale), QStringLiteral("0")};
-        for (std::size_t joint = 0; joint < std::size(joints); ++joint)
-            for (int axis = 0; axis < 3; ++axis)
-                values << QString::number(10.0 * std::sin(0.1 * frame + double(joint) + axis));
-        text += values.join(QLatin1Char(' ')) + QLatin1Char('\n');
-    }
-    return text.toUtf8();
+    return test::bvhFile(
+        joints, scale, 30, [scale](int) { return Eigen::Vector3d(0.0, 5.0 * scale, 0.0); },
+        [](int frame, std::size_t joint, int axis) { return 10.0 * std::sin(0.1 * frame + double(joint) + axis); }, "Head");
 }
 
 constexpr std::size_t kJoints = 12;

@@ -49,6 +49,7 @@
 # One limit of Blender 3.4's FBX importer shows here, not of the file: it places keys at the frame
 # rate rounded to an integer (so a 12.5 fps project plays 4% fast; integer rates are exact).
 
+import base64
 import json
 import math
 import os
@@ -181,13 +182,22 @@ def baked_poses(gyre_cli, project, name, fps, folder):
 
 
 def read_project(path):
-    """A version 3 project (docs/file-format.md): its JSON header, and each mesh's vertex positions,
+    """A project (docs/file-format.md): version 3's JSON header, and each mesh's vertex positions,
     from the mesh blocks that come first after the header (float32 x, y, z per vertex, then normals
-    and indices)."""
+    and indices); or a version 1 or 2 project's JSON text and its meshes' positions."""
     with open(path, "rb") as f:
         data = f.read()
+    if data.lstrip()[:1] == b"{":
+        # Versions 1 and 2 are JSON text, their meshes' positions base64 float32 triples.
+        document = json.loads(data.decode("utf-8"))
+        positions = []
+        for mesh in document.get("meshes", []):
+            values = struct.unpack("<%df" % (len(base64.b64decode(mesh["positions"])) // 4),
+                                   base64.b64decode(mesh["positions"]))
+            positions.append([Vector(values[i:i + 3]) for i in range(0, len(values), 3)])
+        return document, positions
     if data[:12] != b"gyre-project" or struct.unpack_from("<I", data, 12)[0] != 3:
-        sys.exit("%s: not a version 3 Gyre project" % path)
+        sys.exit("%s: not a Gyre project" % path)
     header_bytes = struct.unpack_from("<Q", data, 16)[0]
     document = json.loads(data[24:24 + header_bytes].decode("utf-8"))
     at = 24 + header_bytes
@@ -215,12 +225,14 @@ def write_without_fits(path, document, out):
         n = layout["count"]
         return 32 * n + (0 if layout["position"] is not None else 24 * n) + (0 if layout["constrained"] is not None else n)
 
+    # No keys before a fit: a list of no times, after the others, so that no block moves.
+    document["times"].append(0)
     for o in document["objects"]:
         keys = key_bytes(o["keyframes"])
         blocks.append(data[at:at + keys])
         at += keys + key_bytes(o["sketch"]["keysBeforeFit"])
         o["sketch"]["fittedCurve"] = []
-        o["sketch"]["keysBeforeFit"] = {"count": 0, "times": o["keyframes"]["times"], "position": None,
+        o["sketch"]["keysBeforeFit"] = {"count": 0, "times": len(document["times"]) - 1, "position": None,
                                         "constrained": None}
     if at != len(data):
         sys.exit("%s: %d bytes after the blocks the header names" % (path, len(data) - at))

@@ -35,7 +35,6 @@ FitPanel::FitPanel(model::Document& document, Selection& selection, FitControlle
     , document_(document)
     , selection_(selection)
     , selectedTrack_(document, selection)
-    , refresh_(*this, 0, [this] { showSelectedTrack(); })
     , controller_(controller)
 {
     ui_->setupUi(this);
@@ -73,12 +72,12 @@ FitPanel::FitPanel(model::Document& document, Selection& selection, FitControlle
 
     connect(&selection_, &Selection::changed, this, [this] {
         showStatus({});
-        refresh_.requestNow();
+        showSelectedTrack();
     });
     connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
         using model::Change;
         if (changes & (Change::Scene | Change::Sketch | Change::Keyframes | Change::TrackSettings | Change::Object))
-            refresh_.requestNow();
+            showSelectedTrack();
     });
     ui_->liveCheck->setChecked(controller_.isLive());
     showSelectedTrack();

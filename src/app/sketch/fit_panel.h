@@ -8,7 +8,6 @@
 
 #include "app/selected_track.h"
 #include "app/selection.h"
-#include "app/view_refresh.h"
 #include "app/sketch/fit_controller.h"
 #include "model/commands/object_fields.h"
 #include "model/document.h"
@@ -59,8 +58,9 @@ private:
     model::Document& document_;
     Selection& selection_;
     SelectedTrack selectedTrack_;
-    // The fields follow the selected track while the form is on screen, and catch up when it is back.
-    ViewRefresh refresh_;
+    // The fields follow the selected track at once, on screen or not, so that the Fit button is
+    // enabled rightly the moment the panel is raised (whether the track can be fitted is
+    // sketchFitProblem's answer, quick beside a fit).
     FitController& controller_;
     bool fittable_ = false;
 };
