@@ -128,14 +128,13 @@ private slots:
         screwBenderDock->show();
         QTRY_COMPARE(poseCount->text(), QStringLiteral("384 from 6 keyframes"));
 
+        // The fit's form is the exception: it follows at once, behind the inspector too, so that its
+        // Fit button is right the moment it is raised.
         auto* alpha = inspected.child<QDoubleSpinBox>("alphaSpin");
         QVERIFY(inspected.child<QDockWidget>("fitDock")->visibleRegion().isEmpty()); // behind the inspector
-        const double shownAlpha = alpha->value();
+        QVERIFY(alpha->value() != 0.5);
         document.push(new model::SetFitParameterCommand(document, inspected.object(), model::FitParameter::Alpha, 0.5));
-        QCoreApplication::processEvents();
-        QCOMPARE(alpha->value(), shownAlpha);
-        inspected.child<QDockWidget>("fitDock")->raise();
-        QTRY_COMPARE(alpha->value(), 0.5);
+        QCOMPARE(alpha->value(), 0.5);
     }
 };
 
