@@ -149,8 +149,10 @@ void Viewport::frameScene()
     const model::SceneMotion& motion = drawn_.motion();
     updateSkeleton();
     Eigen::AlignedBox3d box;
+    // As Blender's View All: what is hidden is not framed.
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
-        box.extend(objectBox(i));
+        if (scene.objects[i].visible)
+            box.extend(objectBox(i));
     if (const model::SceneObject* selected = selection_.selectedObject()) {
         const Pose frame = motion.parentWorldPose(selected->id, scene.currentTime);
         for (const model::Keyframe& key : selected->track.keys)
@@ -272,7 +274,7 @@ void Viewport::pickAt(const QPointF& position)
     updateSkeleton();
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const model::SceneObject& object = scene.objects[i];
-        if (skeleton_.isJoint(i))
+        if (skeleton_.isJoint(i) || !object.visible)
             continue;
         placements.push_back({&displayMesh(object), motion.worldPose(object.id, scene.currentTime), 1.0});
         objects.push_back(object.id);
