@@ -52,6 +52,13 @@ std::vector<Keyframe> keysFromBlock(const QByteArray& block, const KeyLayout& la
 QByteArray timeBlock(const std::vector<Keyframe>& keys);
 std::vector<double> timesFromBlock(const QByteArray& block, const JsonField& field);
 
+// An applied fit's Hermite control points: time, value w, x, y, z and derivative w, x, y, z, float64 each,
+// kControlPointBytes a point; read back, checked as the JSON reader checks them (times within the
+// budget and increasing, values and derivatives as controlValue and controlDerivative ask).
+inline constexpr qint64 kControlPointBytes = 9 * sizeof(double);
+QByteArray controlPointBlock(const std::vector<HermiteControlPoint>& points);
+std::vector<HermiteControlPoint> controlPointsFromBlock(const QByteArray& block, const JsonField& field);
+
 // A mesh: positions and normals as float32 x, y, z, then indices as uint32.
 struct MeshCounts {
     std::size_t positions = 0;
