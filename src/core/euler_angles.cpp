@@ -1,5 +1,7 @@
 #include "core/euler_angles.h"
 
+#include "core/fast_trig.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -17,8 +19,9 @@ constexpr double kLockPairNorm = 1e-12;
 
 Eigen::Quaterniond axisRotation(int axis, double angle)
 {
-    Eigen::Quaterniond q(std::cos(0.5 * angle), 0.0, 0.0, 0.0);
-    q.vec()[axis] = std::sin(0.5 * angle);
+    const SinCos half = fastSinCos(0.5 * angle);
+    Eigen::Quaterniond q(half.cos, 0.0, 0.0, 0.0);
+    q.vec()[axis] = half.sin;
     return q;
 }
 
@@ -36,6 +39,30 @@ double parity(int i, int j)
 // Which angle takes the whole turn about the locked axis at exact gimbal lock; the other is 0.
 enum class LockedTurn { First, Last };
 
+// A pair of quaternion components (x, y) = r·(cos φ, sin φ) that carries a half-sum or half-difference
+// φ of e1 and e3, with its length r, which also gives the middle angle.
+struct ComponentPair {
+    double x;
+    double y;
+    double length;
+};
+
+ComponentPair componentPair(double x, double y)
+{
+    return {x, y, std::sqrt(x * x + y * y)};
+}
+
+// atan2(y, x) ∈ (−π, π] to a few ulp, from the core's fast arctangent: (|x|, |y|)/length is folded into
+// the first quadrant for fastAngleOnUnitCircle, then unfolded, a → π − a for x < 0 and a → −a for
+// y < 0. Unlike atan2 it gives π, not −π, for y = −0 and x < 0, which wrapAngle makes alike.
+double angleOf(const ComponentPair& pair)
+{
+    const double inverse = 1.0 / pair.length;
+    const double a = fastAngleOnUnitCircle(std::abs(pair.x) * inverse, std::abs(pair.y) * inverse);
+    const double unfolded = pair.x < 0.0 ? kPi - a : a;
+    return pair.y < 0.0 ? -unfolded : unfolded;
+}
+
 // The half-sum and half-difference of e1 and e3, from the two quaternion pairs that carry them. At
 // exact lock one of them is undetermined and is chosen so that the angle that does not take the turn
 // is 0: e3 = 0 means sum = difference, e1 = 0 means sum = −difference.
@@ -44,24 +71,27 @@ struct HalfAngles {
     double difference;
 };
 
-HalfAngles halfAngles(double sumY, double sumX, double diffY, double diffX, LockedTurn lockedTurn)
+HalfAngles halfAngles(const ComponentPair& sumPair, const ComponentPair& differencePair, LockedTurn lockedTurn)
 {
-    double sum = std::atan2(sumY, sumX);
-    double difference = std::atan2(diffY, diffX);
     const double sign = lockedTurn == LockedTurn::First ? 1.0 : -1.0;
-    if (std::hypot(diffX, diffY) < kLockPairNorm)
-        difference = sign * sum;
-    else if (std::hypot(sumX, sumY) < kLockPairNorm)
-        sum = sign * difference;
-    return {sum, difference};
+    if (differencePair.length < kLockPairNorm) {
+        const double sum = angleOf(sumPair);
+        return {sum, sign * sum};
+    }
+    if (sumPair.length < kLockPairNorm) {
+        const double difference = angleOf(differencePair);
+        return {sign * difference, difference};
+    }
+    return {angleOf(sumPair), angleOf(differencePair)};
 }
 
-// Intrinsic decomposition q = q_i(e1)·q_j(e2)·q_k(e3). With half angles A, B, C:
+// Intrinsic decomposition q = q_i(e1)·q_j(e2)·q_k(e3) of a unit q. With half angles A, B, C:
 //   proper (k = i, m the third axis, ε = parity(i, j)):
 //     q = (cos B cos(A+C), cos B sin(A+C)·e_i, sin B cos(A−C)·e_j, ε sin B sin(A−C)·e_m)
 //   Tait-Bryan (ε = parity(i, j), C′ = εC), with w, x = q_i, y = q_j, z = ε q_k:
 //     w + y = (cos B + sin B) cos(A+C′),  x + z = (cos B + sin B) sin(A+C′)
 //     w − y = (cos B − sin B) cos(A−C′),  x − z = (cos B − sin B) sin(A−C′)
+// The pairs' lengths give B: (cos B, sin B) for proper, √2·(cos(B − π/4), sin(π/4 − B)) for Tait-Bryan.
 EulerAngles intrinsicAngles(const Eigen::Quaterniond& q, int i, int j, int k, LockedTurn lockedTurn)
 {
     const double epsilon = parity(i, j);
@@ -72,14 +102,19 @@ EulerAngles intrinsicAngles(const Eigen::Quaterniond& q, int i, int j, int k, Lo
     if (i == k) {
         const int m = 3 - i - j;
         const double z = epsilon * component(q, m);
-        const HalfAngles h = halfAngles(x, w, z, y, lockedTurn);
-        const double middle = 2.0 * std::atan2(std::hypot(y, z), std::hypot(w, x));
+        const ComponentPair sumPair = componentPair(w, x);
+        const ComponentPair differencePair = componentPair(y, z);
+        const HalfAngles h = halfAngles(sumPair, differencePair, lockedTurn);
+        const double middle = 2.0 * fastAngleOnUnitCircle(sumPair.length, differencePair.length);
         result.angles = {wrapAngle(h.sum + h.difference), middle, wrapAngle(h.sum - h.difference)};
         result.gimbalLockDistance = std::min(middle, kPi - middle);
     } else {
         const double z = epsilon * component(q, k);
-        const HalfAngles h = halfAngles(x + z, w + y, x - z, w - y, lockedTurn);
-        const double middle = 0.5 * kPi - 2.0 * std::atan2(std::hypot(w - y, x - z), std::hypot(w + y, x + z));
+        const ComponentPair sumPair = componentPair(w + y, x + z);
+        const ComponentPair differencePair = componentPair(w - y, x - z);
+        const HalfAngles h = halfAngles(sumPair, differencePair, lockedTurn);
+        constexpr double kHalfSqrt2 = std::numbers::sqrt2 / 2.0;
+        const double middle = 0.5 * kPi - 2.0 * fastAngleOnUnitCircle(kHalfSqrt2 * sumPair.length, kHalfSqrt2 * differencePair.length);
         result.angles = {wrapAngle(h.sum + h.difference), middle, wrapAngle(epsilon * (h.sum - h.difference))};
         result.gimbalLockDistance = 0.5 * kPi - std::abs(middle);
     }
@@ -193,6 +228,12 @@ std::vector<Eigen::Vector3d> unwrappedEulerAngles(const std::vector<Eigen::Quate
 
 double wrapAngle(double e)
 {
+    // Within 2.5π of 0 (every sum of two angles in [−π, π]) one turn added or taken away is exact by
+    // Sterbenz's lemma and is what std::remainder gives, at a fraction of its cost.
+    if (e > kPi && e < 2.5 * kPi)
+        return e - 2.0 * kPi;
+    if (e <= -kPi && e > -2.5 * kPi)
+        return e + 2.0 * kPi;
     const double wrapped = std::remainder(e, 2.0 * kPi);
     return wrapped <= -kPi ? wrapped + 2.0 * kPi : wrapped;
 }

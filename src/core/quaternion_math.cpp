@@ -1,5 +1,7 @@
 #include "core/quaternion_math.h"
 
+#include "core/fast_trig.h"
+
 #include <cmath>
 
 namespace gyre {
@@ -23,6 +25,15 @@ double sincDerivativeOverTheta(double theta)
     if (theta < kSeriesThreshold)
         return -1.0 / 3.0 + theta * theta / 30.0;
     return (theta * std::cos(theta) - std::sin(theta)) / (theta * theta * theta);
+}
+
+// 1/√x. For x within 1e-8 of 1, as the squared norm of a unit quaternion is after rounding, it is
+// 1 − (x − 1)/2, off by less than (3/8)·(1e-8)² < 4e-17, which spares a square root and a division.
+double inverseSqrt(double x)
+{
+    if (std::abs(x - 1.0) < 1e-8) [[likely]]
+        return 1.5 - 0.5 * x;
+    return 1.0 / std::sqrt(x);
 }
 
 } // namespace
@@ -95,8 +106,33 @@ Eigen::Vector3d quatLogOnSphereDerivative(const Eigen::Quaterniond& q, const Eig
 
 Eigen::Quaterniond slerp(const Eigen::Quaterniond& q0, const Eigen::Quaterniond& q1, double t)
 {
-    const Eigen::Quaterniond relative = q0.conjugate() * alignedWith(q1, q0);
-    return (q0 * quatExp(t * quatLog(relative))).normalized();
+    // q0·exp(t·log r) over |q0|, for r = q0⁻¹q1 on q0's side. Written with r = (w, v)/|q0|², whose
+    // w = q0·q1 ≥ 0 once q1 is aligned: if r/|r| = (cos θ, sin θ·n), exp(t·log r) = (cos tθ, sin tθ·n),
+    // and q0·(0, v) = |q0|²·q1 − w·q0 =: d, so that
+    //   slerp = (cos tθ·q0 + (sin tθ/s)·d)/|q0|,   s = |v| = |d|/|q0|,   θ = angle of (w, s).
+    // No quaternion product is needed; θ comes from the core's fast arctangent, cos tθ and sin tθ from
+    // its fast sine and cosine, so that one square root and one division remain.
+    //
+    // alignedWith(q1, q0) is a sign taken by copysign, with no branch: q1 is on either side of q0 as
+    // often as not, and a branch would be mispredicted every other call. Adding +0 turns a dot product
+    // of −0 into +0, which alignedWith does not flip either.
+    const double dot = q1.coeffs().dot(q0.coeffs());
+    const double side = std::copysign(1.0, dot + 0.0);
+    const double w = side * dot;
+    const double n0 = q0.squaredNorm();
+    const double inverseNorm = inverseSqrt(n0);
+    const Eigen::Vector4d d = (side * n0) * q1.coeffs() - w * q0.coeffs();
+    const double s2 = d.squaredNorm() * (inverseNorm * inverseNorm);
+    if (s2 == 0.0)
+        return q0.normalized();
+    const double s = std::sqrt(s2);
+    const double inverseS = 1.0 / s;
+    const double inverseRadius = inverseSqrt(w * w + s2);
+    const double theta = fastAngleOnUnitCircle(w * inverseRadius, s * inverseRadius);
+    const SinCos turn = fastSinCos(t * theta);
+    Eigen::Quaterniond result;
+    result.coeffs() = (inverseNorm * turn.cos) * q0.coeffs() + (inverseNorm * turn.sin * inverseS) * d;
+    return result;
 }
 
 Eigen::Quaterniond nlerp(const Eigen::Quaterniond& q0, const Eigen::Quaterniond& q1, double t)

@@ -114,6 +114,8 @@ void BM_ScrewEvaluate(benchmark::State& state)
 }
 BENCHMARK(BM_ScrewEvaluate);
 
+// Each core operation has an Eigen row right after it, on the same inputs, so that every run prints
+// the ratio: gyre's time over the *Eigen row's.
 void BM_Slerp(benchmark::State& state)
 {
     const PosePairs pairs = randomPairs();
@@ -127,19 +129,120 @@ void BM_Slerp(benchmark::State& state)
 }
 BENCHMARK(BM_Slerp);
 
-void BM_EulerAnglesFromQuaternion(benchmark::State& state)
+// Eigen's Quaterniond::slerp, which also takes the short arc.
+void BM_SlerpEigen(benchmark::State& state)
 {
     const PosePairs pairs = randomPairs();
-    const auto convention = *gyre::EulerConvention::parse("zxz", gyre::AngleFrame::Intrinsic);
     std::size_t i = 0;
     for (auto _ : state) {
-        gyre::EulerAngles angles = gyre::eulerAnglesFromQuaternion(pairs.from[i].orientation, convention);
-        benchmark::DoNotOptimize(angles);
+        Eigen::Quaterniond q = pairs.from[i].orientation.slerp(pairs.t[i], pairs.to[i].orientation);
+        benchmark::DoNotOptimize(q);
         i = (i + 1) & (kPairs - 1);
     }
     state.SetItemsProcessed(state.iterations());
 }
+BENCHMARK(BM_SlerpEigen);
+
+// The 12 orders, intrinsic (Eigen's eulerAngles convention), taken in turn: one order per iteration.
+const std::vector<gyre::EulerConvention>& intrinsicOrders()
+{
+    static const std::vector<gyre::EulerConvention> orders = [] {
+        std::vector<gyre::EulerConvention> intrinsic;
+        for (const gyre::EulerConvention& convention : gyre::EulerConvention::all())
+            if (convention.frame == gyre::AngleFrame::Intrinsic)
+                intrinsic.push_back(convention);
+        return intrinsic;
+    }();
+    return orders;
+}
+
+std::size_t nextOrder(std::size_t order)
+{
+    return order + 1 == intrinsicOrders().size() ? 0 : order + 1;
+}
+
+void BM_EulerAnglesFromQuaternion(benchmark::State& state)
+{
+    const PosePairs pairs = randomPairs();
+    const std::vector<gyre::EulerConvention>& orders = intrinsicOrders();
+    std::size_t i = 0;
+    std::size_t order = 0;
+    for (auto _ : state) {
+        gyre::EulerAngles angles = gyre::eulerAnglesFromQuaternion(pairs.from[i].orientation, orders[order]);
+        benchmark::DoNotOptimize(angles);
+        i = (i + 1) & (kPairs - 1);
+        order = nextOrder(order);
+    }
+    state.SetItemsProcessed(state.iterations());
+}
 BENCHMARK(BM_EulerAnglesFromQuaternion);
+
+// Eigen 3.4 has no canonicalEulerAngles: toRotationMatrix().eulerAngles(i, j, k), the intrinsic angles
+// (first in [0, π]; no gimbal-lock distance).
+void BM_EulerAnglesFromQuaternionEigen(benchmark::State& state)
+{
+    const PosePairs pairs = randomPairs();
+    const std::vector<gyre::EulerConvention>& orders = intrinsicOrders();
+    std::size_t i = 0;
+    std::size_t order = 0;
+    for (auto _ : state) {
+        const auto& axes = orders[order].axes;
+        Eigen::Vector3d angles = pairs.from[i].orientation.toRotationMatrix().eulerAngles(axes[0], axes[1], axes[2]);
+        benchmark::DoNotOptimize(angles);
+        i = (i + 1) & (kPairs - 1);
+        order = nextOrder(order);
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_EulerAnglesFromQuaternionEigen);
+
+// Random angle triples, uniform in [−π, π)³.
+std::vector<Eigen::Vector3d> randomAngleTriples()
+{
+    std::mt19937_64 rng(20261126);
+    std::uniform_real_distribution<double> angle(-std::numbers::pi, std::numbers::pi);
+    std::vector<Eigen::Vector3d> triples;
+    for (std::size_t i = 0; i < kPairs; ++i)
+        triples.emplace_back(angle(rng), angle(rng), angle(rng));
+    return triples;
+}
+
+void BM_QuaternionFromEulerAngles(benchmark::State& state)
+{
+    const std::vector<Eigen::Vector3d> triples = randomAngleTriples();
+    const std::vector<gyre::EulerConvention>& orders = intrinsicOrders();
+    std::size_t i = 0;
+    std::size_t order = 0;
+    for (auto _ : state) {
+        Eigen::Quaterniond q = gyre::quaternionFromEulerAngles(triples[i], orders[order]);
+        benchmark::DoNotOptimize(q);
+        i = (i + 1) & (kPairs - 1);
+        order = nextOrder(order);
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_QuaternionFromEulerAngles);
+
+// Eigen's way: the product of three AngleAxisd about unit axes.
+void BM_QuaternionFromEulerAnglesEigen(benchmark::State& state)
+{
+    const std::vector<Eigen::Vector3d> triples = randomAngleTriples();
+    const std::vector<gyre::EulerConvention>& orders = intrinsicOrders();
+    std::size_t i = 0;
+    std::size_t order = 0;
+    for (auto _ : state) {
+        const auto& axes = orders[order].axes;
+        const Eigen::Vector3d& e = triples[i];
+        Eigen::Quaterniond q = Eigen::AngleAxisd(e[0], Eigen::Vector3d::Unit(axes[0])) *
+                               Eigen::AngleAxisd(e[1], Eigen::Vector3d::Unit(axes[1])) *
+                               Eigen::AngleAxisd(e[2], Eigen::Vector3d::Unit(axes[2]));
+        benchmark::DoNotOptimize(q);
+        i = (i + 1) & (kPairs - 1);
+        order = nextOrder(order);
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_QuaternionFromEulerAnglesEigen);
 
 // One sample (value, derivative, angular velocity) of a squad curve through 64 keys.
 void BM_SquadSample(benchmark::State& state)

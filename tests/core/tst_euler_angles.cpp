@@ -74,6 +74,41 @@ double expectedLockDistance(double middle, const EulerConvention& c)
     return c.isProperEuler() ? std::min(middle, kPi - middle) : kPi / 2.0 - std::abs(middle);
 }
 
+// The decomposition as written before the core's fast arctangent, with the standard library's atan2
+// and hypot: the intrinsic half angles from the two quaternion pairs that carry e1 ± e3, the middle
+// angle from their lengths, the same lock rule (below 1e-12 the undetermined half angle follows the
+// other, so that e3 = 0 for intrinsic and e1 = 0 for extrinsic), extrinsic ijk as intrinsic kji
+// reversed. Returns e1, e2, e3 and the gimbal-lock distance.
+Eigen::Vector4d atan2Angles(const Eigen::Quaterniond& given, const EulerConvention& c)
+{
+    const Eigen::Quaterniond q = given.normalized();
+    const bool intrinsic = c.frame == AngleFrame::Intrinsic;
+    const int i = intrinsic ? c.axes[0] : c.axes[2];
+    const int j = c.axes[1];
+    const double epsilon = (j - i + 3) % 3 == 1 ? 1.0 : -1.0;
+    const double w = q.w();
+    const double x = q.vec()[i];
+    const double y = q.vec()[j];
+    const double z = epsilon * q.vec()[c.isProperEuler() ? 3 - i - j : (intrinsic ? c.axes[2] : c.axes[0])];
+    // The pairs (cos, sin) of the half-sum and half-difference.
+    const Eigen::Vector2d sumPair = c.isProperEuler() ? Eigen::Vector2d(w, x) : Eigen::Vector2d(w + y, x + z);
+    const Eigen::Vector2d differencePair = c.isProperEuler() ? Eigen::Vector2d(y, z) : Eigen::Vector2d(w - y, x - z);
+    double sum = std::atan2(sumPair.y(), sumPair.x());
+    double difference = std::atan2(differencePair.y(), differencePair.x());
+    const double sign = intrinsic ? 1.0 : -1.0;
+    if (std::hypot(differencePair.x(), differencePair.y()) < 1e-12)
+        difference = sign * sum;
+    else if (std::hypot(sumPair.x(), sumPair.y()) < 1e-12)
+        sum = sign * difference;
+    const double lengths = std::atan2(std::hypot(differencePair.x(), differencePair.y()), std::hypot(sumPair.x(), sumPair.y()));
+    const double middle = c.isProperEuler() ? 2.0 * lengths : kPi / 2.0 - 2.0 * lengths;
+    const double third = c.isProperEuler() ? sum - difference : epsilon * (sum - difference);
+    Eigen::Vector4d result(sum + difference, middle, third, expectedLockDistance(middle, c));
+    if (!intrinsic)
+        std::swap(result[0], result[2]);
+    return result;
+}
+
 double matrixDistance(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) { return (a - b).cwiseAbs().maxCoeff(); }
 
 QString anglesStr(const Eigen::Vector3d& e) { return str(e); }
@@ -94,6 +129,7 @@ private slots:
     void unwrappedSequenceCrossingHalfTurn();
     void nearestEquivalentAngles();
     void wrapAngle();
+    void withinRoundingOfTheAtan2Formulas();
 };
 
 void TestEulerAngles::conventions()
@@ -368,6 +404,45 @@ void TestEulerAngles::wrapAngle()
         const double turns = (x - w) / (2.0 * kPi);
         GYRE_CHECK(std::abs(turns - std::round(turns)) < 1e-12, QStringLiteral("wrapAngle(%1) = %2 is not equivalent").arg(str(x), str(w)));
     }
+}
+
+// eulerAnglesFromQuaternion reads its angles with the core's fast arctangent and
+// quaternionFromEulerAngles takes the half-angle sines and cosines from its fast sine and cosine; the
+// references are the same formulas with the standard library's functions (atan2Angles and
+// composedQuaternion), over random rotations, rotations near and at gimbal lock, quaternions off the
+// unit sphere and angles far outside (−π, π].
+void TestEulerAngles::withinRoundingOfTheAtan2Formulas()
+{
+    constexpr double kAngleBound = 3e-15;      // rad, modulo 2π: about 7 units of 2⁻⁵³·π
+    constexpr double kQuaternionBound = 1e-15; // on each coefficient
+    Random random(37);
+    Eigen::Vector2d worst = Eigen::Vector2d::Zero();
+    for (const EulerConvention& c : EulerConvention::all()) {
+        const std::vector<double> locks = c.isProperEuler() ? std::vector<double>{0.0, kPi} : std::vector<double>{kPi / 2.0, -kPi / 2.0};
+        for (int n = 0; n < 3000; ++n) {
+            const double fromLock = n % 3 == 0 ? 0.0 : random.uniform(-1.0, 1.0) * std::pow(10.0, random.uniform(-16.0, 0.0));
+            const Eigen::Vector3d built(random.uniform(-kPi, kPi), locks[std::size_t(n % 2)] + fromLock, random.uniform(-kPi, kPi));
+            Eigen::Quaterniond q = n % 4 == 0 ? random.rotation() : composedQuaternion(built, c);
+            if (n % 5 == 0)
+                q.coeffs() *= 2.5;
+            const EulerAngles got = eulerAnglesFromQuaternion(q, c);
+            const Eigen::Vector4d expected = atan2Angles(q, c);
+            const double error = std::max({std::abs(wrapped(got.angles[0] - expected[0])), std::abs(got.angles[1] - expected[1]),
+                                           std::abs(wrapped(got.angles[2] - expected[2])), std::abs(got.gimbalLockDistance - expected[3])});
+            worst[0] = std::max(worst[0], error);
+            GYRE_CHECK(error <= kAngleBound, QStringLiteral("%1, q %2: angles %3 (lock distance %4), expected %5 (%6), off by %7")
+                                                 .arg(nameOf(c), str(q), anglesStr(got.angles), str(got.gimbalLockDistance),
+                                                      anglesStr(expected.head<3>()), str(expected[3]), str(error)));
+
+            const Eigen::Vector3d angles = random.vector(n % 2 == 0 ? kPi : 40.0);
+            const Eigen::Quaterniond rebuilt = quaternionFromEulerAngles(angles, c);
+            const double quaternionError = (rebuilt.coeffs() - composedQuaternion(angles, c).coeffs()).cwiseAbs().maxCoeff();
+            worst[1] = std::max(worst[1], quaternionError);
+            GYRE_CHECK(quaternionError <= kQuaternionBound, QStringLiteral("%1, angles %2: %3, expected %4")
+                                                                .arg(nameOf(c), anglesStr(angles), str(rebuilt), str(composedQuaternion(angles, c))));
+        }
+    }
+    qInfo("worst differences from the standard library's formulas: angles %.3g rad, quaternion coefficients %.3g", worst[0], worst[1]);
 }
 
 QTEST_APPLESS_MAIN(TestEulerAngles)

@@ -51,6 +51,7 @@ private slots:
     void slerpTinyArcs();
     void slerpNearHalfTurn();
     void slerpExtrapolates();
+    void slerpWithinRoundingOfTheLogExpFormula();
     void nlerp();
     void angularVelocityIsWorldFrame();
     void angularVelocityMatchesFiniteDifferences();
@@ -281,6 +282,43 @@ void TestQuaternionMath::slerpExtrapolates()
                        QStringLiteral("t %1: slerp(%2, %3) = %4, expected %5").arg(str(t), str(q0), str(q1), str(got), str(expected)));
         }
     }
+}
+
+// slerp computes θ and sin tθ, cos tθ with the core's fast trigonometry and no quaternion product;
+// the reference is the log-exp formula with the standard library's atan2, sin and cos (slerpOf),
+// normalised, as slerp was written before. Over random pairs and the edges: near-identical and
+// near-opposite quaternions (tiny arcs either way), arcs near a half turn, identical and negated keys,
+// keys off the unit sphere (slerp normalises), and t from −1 to 2.
+void TestQuaternionMath::slerpWithinRoundingOfTheLogExpFormula()
+{
+    constexpr double kBound = 2e-15; // on each coefficient, about 9 units of 2⁻⁵³
+    Random random(52);
+    double worst = 0.0;
+    for (int i = 0; i < 20000; ++i) {
+        const Eigen::Quaterniond q0 = random.rotation();
+        const double tiny = std::pow(10.0, random.uniform(-16.0, 0.0));
+        // Near a half turn the short arc is decided by the sign of a w of about (π − angle)/2, which
+        // rounding would decide alone below 1e-12.
+        const double nearHalfTurn = kPi - std::pow(10.0, random.uniform(-12.0, 0.0));
+        Eigen::Quaterniond q1;
+        switch (i % 5) {
+        case 0: q1 = random.rotation(); break;
+        case 1: q1 = q0 * random.rotationWithAngle(tiny, tiny); break;
+        case 2: q1 = negated(q0 * random.rotationWithAngle(tiny, tiny)); break;
+        case 3: q1 = q0 * random.rotationWithAngle(nearHalfTurn, nearHalfTurn); break;
+        default: q1 = i % 2 == 0 ? q0 : negated(q0); break;
+        }
+        const double t = random.uniform(-1.0, 2.0);
+        const Eigen::Quaterniond expected = normalizedCopy(slerpOf(q0, sameHemisphere(q1, q0), t));
+        const bool offSphere = i % 7 == 6;
+        const Eigen::Quaterniond got = offSphere ? slerp(scaled(q0, 3.0), scaled(q1, 0.25), t) : slerp(q0, q1, t);
+        const double error = (got.coeffs() - expected.coeffs()).cwiseAbs().maxCoeff();
+        worst = std::max(worst, error);
+        GYRE_CHECK(error <= kBound, QStringLiteral("slerp(%1, %2, %3)%4 = %5, expected %6 (off by %7)")
+                                        .arg(str(q0), str(q1), str(t), offSphere ? QStringLiteral(" off the sphere") : QString(),
+                                             str(got), str(expected), str(error)));
+    }
+    qInfo("worst coefficient difference from the log-exp formula: %.3g", worst);
 }
 
 void TestQuaternionMath::nlerp()
