@@ -25,6 +25,7 @@ enum class EditKind {
     RemoveKeyframe,
     MoveKeyframe,
     RetimeKeyframes,
+    ApplyEulerFilter,
     SetKeyframeOrientation,
     SetKeyframePosition,
     ToggleKeyframeConstraint,
