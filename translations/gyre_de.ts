@@ -791,6 +791,18 @@
         <source>Version, licence and the libraries Gyre is built on</source>
         <translation>Version, Lizenz und die Bibliotheken, auf denen Gyre aufbaut</translation>
     </message>
+    <message>
+        <source>Graph Editor</source>
+        <translation>Grapheneditor</translation>
+    </message>
+    <message>
+        <source>&amp;Euler Filter</source>
+        <translation>&amp;Euler-Filter</translation>
+    </message>
+    <message>
+        <source>Make the selected object&apos;s keys continuous: each key&apos;s quaternion in the hemisphere of the key before</source>
+        <translation>Die Schlüsselbilder des gewählten Objekts stetig machen: das Quaternion jedes Schlüsselbilds in die Hemisphäre des vorigen</translation>
+    </message>
 </context>
 <context>
     <name>PreferencesDialog</name>
@@ -2645,6 +2657,10 @@
         <source>Reparent Object in Place</source>
         <translation>Objekt an Ort und Stelle umhängen</translation>
     </message>
+    <message>
+        <source>Apply Euler Filter</source>
+        <translation>Euler-Filter anwenden</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -2687,6 +2703,84 @@
         <location filename="../src/app/main.cpp" line="79"/>
         <source>give at most one file to open.</source>
         <translation>geben Sie höchstens eine Datei zum Öffnen an.</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::ChannelListModel</name>
+    <message>
+        <source>Euler %1 (°)</source>
+        <translation>Euler %1 (°)</translation>
+    </message>
+    <message>
+        <source>quaternion w</source>
+        <translation>Quaternion w</translation>
+    </message>
+    <message>
+        <source>quaternion %1</source>
+        <translation>Quaternion %1</translation>
+    </message>
+    <message>
+        <source>ω %1 (rad/s)</source>
+        <translation>ω %1 (rad/s)</translation>
+    </message>
+    <message>
+        <source>|ω| (rad/s)</source>
+        <translation>|ω| (rad/s)</translation>
+    </message>
+    <message>
+        <source>position %1</source>
+        <translation>Position %1</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::GraphEditorPanel</name>
+    <message>
+        <source>The channels to plot: check one to show its curve</source>
+        <translation>Die darzustellenden Kanäle: einen ankreuzen, um seine Kurve zu zeigen</translation>
+    </message>
+    <message>
+        <source>The order of the Euler angles, as the inspector shows them</source>
+        <translation>Die Reihenfolge der Eulerwinkel, wie der Inspektor sie zeigt</translation>
+    </message>
+    <message>
+        <source>Euler &amp;order:</source>
+        <translation>Euler-&amp;Reihenfolge:</translation>
+    </message>
+    <message>
+        <source>world frame</source>
+        <translation>Weltsystem</translation>
+    </message>
+    <message>
+        <source>object&apos;s frame</source>
+        <translation>Objektsystem</translation>
+    </message>
+    <message>
+        <source>The frame the angular velocity&apos;s components are given in</source>
+        <translation>Das System, in dem die Komponenten der Winkelgeschwindigkeit angegeben sind</translation>
+    </message>
+    <message>
+        <source>ω &amp;in:</source>
+        <translation>ω &amp;im:</translation>
+    </message>
+    <message>
+        <source>Frame &amp;All</source>
+        <translation>&amp;Alles zeigen</translation>
+    </message>
+    <message>
+        <source>Show the whole time range and every shown curve (Home)</source>
+        <translation>Den ganzen Zeitbereich und jede gezeigte Kurve zeigen (Pos1)</translation>
+    </message>
+    <message>
+        <source>Frame &amp;Selected</source>
+        <translation>Auswahl &amp;zeigen</translation>
+    </message>
+    <message>
+        <source>Show the selected key between its neighbours</source>
+        <translation>Das gewählte Schlüsselbild zwischen seinen Nachbarn zeigen</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
     </message>
 </context>
 </TS>

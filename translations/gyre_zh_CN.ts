@@ -791,6 +791,18 @@
         <source>Version, licence and the libraries Gyre is built on</source>
         <translation>版本、许可证以及 Gyre 所基于的库</translation>
     </message>
+    <message>
+        <source>Graph Editor</source>
+        <translation>曲线编辑器</translation>
+    </message>
+    <message>
+        <source>&amp;Euler Filter</source>
+        <translation>欧拉滤波器(&amp;E)</translation>
+    </message>
+    <message>
+        <source>Make the selected object&apos;s keys continuous: each key&apos;s quaternion in the hemisphere of the key before</source>
+        <translation>使所选对象的关键帧连续：每个关键帧的四元数位于前一关键帧的半球中</translation>
+    </message>
 </context>
 <context>
     <name>PreferencesDialog</name>
@@ -2641,6 +2653,10 @@
         <source>Reparent Object in Place</source>
         <translation>原位更改对象的父级</translation>
     </message>
+    <message>
+        <source>Apply Euler Filter</source>
+        <translation>应用欧拉滤波器</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -2683,6 +2699,84 @@
         <location filename="../src/app/main.cpp" line="79"/>
         <source>give at most one file to open.</source>
         <translation>最多只能指定一个要打开的文件。</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::ChannelListModel</name>
+    <message>
+        <source>Euler %1 (°)</source>
+        <translation>欧拉角 %1 (°)</translation>
+    </message>
+    <message>
+        <source>quaternion w</source>
+        <translation>四元数 w</translation>
+    </message>
+    <message>
+        <source>quaternion %1</source>
+        <translation>四元数 %1</translation>
+    </message>
+    <message>
+        <source>ω %1 (rad/s)</source>
+        <translation>ω %1 (rad/s)</translation>
+    </message>
+    <message>
+        <source>|ω| (rad/s)</source>
+        <translation>|ω| (rad/s)</translation>
+    </message>
+    <message>
+        <source>position %1</source>
+        <translation>位置 %1</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::GraphEditorPanel</name>
+    <message>
+        <source>The channels to plot: check one to show its curve</source>
+        <translation>要绘制的通道：勾选一个以显示其曲线</translation>
+    </message>
+    <message>
+        <source>The order of the Euler angles, as the inspector shows them</source>
+        <translation>欧拉角的顺序，与检查器中显示的相同</translation>
+    </message>
+    <message>
+        <source>Euler &amp;order:</source>
+        <translation>欧拉顺序(&amp;O)：</translation>
+    </message>
+    <message>
+        <source>world frame</source>
+        <translation>世界坐标系</translation>
+    </message>
+    <message>
+        <source>object&apos;s frame</source>
+        <translation>对象坐标系</translation>
+    </message>
+    <message>
+        <source>The frame the angular velocity&apos;s components are given in</source>
+        <translation>角速度分量所在的坐标系</translation>
+    </message>
+    <message>
+        <source>ω &amp;in:</source>
+        <translation>ω 坐标系(&amp;I)：</translation>
+    </message>
+    <message>
+        <source>Frame &amp;All</source>
+        <translation>显示全部(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Show the whole time range and every shown curve (Home)</source>
+        <translation>显示整个时间范围和所有显示的曲线 (Home)</translation>
+    </message>
+    <message>
+        <source>Frame &amp;Selected</source>
+        <translation>显示所选(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Show the selected key between its neighbours</source>
+        <translation>在相邻关键帧之间显示所选关键帧</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>时间 (s)</translation>
     </message>
 </context>
 </TS>

@@ -122,7 +122,7 @@ QWidget* GraphEditorPanel::makeChoosers()
     velocityFrameChooser_->addItem(tr("world frame"), static_cast<int>(model::VelocityFrame::World));
     velocityFrameChooser_->addItem(tr("object's frame"), static_cast<int>(model::VelocityFrame::Local));
     velocityFrameChooser_->setToolTip(tr("The frame the angular velocity's components are given in"));
-    auto* velocityLabel = new QLabel(tr("&ω in:"), row);
+    auto* velocityLabel = new QLabel(tr("ω &in:"), row);
     velocityLabel->setBuddy(velocityFrameChooser_);
 
     // Home is View ▸ Frame Scene's in the rest of the window: the plot takes it as a key while it has
