@@ -209,6 +209,9 @@ model::ChannelSettings GraphEditorPanel::settings() const
 void GraphEditorPanel::showCurves(const model::ChannelCurves& curves)
 {
     curves_ = curves;
+    // Another object's curves are framed whole; the same object's keep the artist's view, as a drag
+    // needs.
+    const bool anotherObject = shownObject_ != selection_.object();
     shownObject_ = selection_.object();
     const QVector<double> times(curves.times.begin(), curves.times.end());
     for (std::size_t c = 0; c < model::kChannelCount; ++c) {
@@ -229,11 +232,8 @@ void GraphEditorPanel::showCurves(const model::ChannelCurves& curves)
         keyGraphs_[c]->setData(keyTimes, keyValues, true);
     }
     showGimbalZones(curves.gimbalZones);
-    // The first curves are framed whole; later ones keep the artist's view, as a drag needs.
-    if (!framedOnce_ && !curves.times.empty()) {
-        framedOnce_ = true;
+    if (anotherObject)
         frameAll();
-    }
     plot_->replot();
     emit curvesUpdated();
 }

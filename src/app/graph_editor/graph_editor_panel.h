@@ -117,7 +117,6 @@ private:
     // The curves shown, and the object whose they are.
     model::ChannelCurves curves_;
     model::ObjectId shownObject_ = model::kNoObject;
-    bool framedOnce_ = false;
     std::optional<KeyDrag> drag_;
     SelectedTrackSampler<model::ChannelCurves> sampler_; // last: waits for its work before the members it uses go
 };
