@@ -90,6 +90,10 @@ private:
     QWidget* makeChoosers();
     void setUpPlot();
     void showCurves(const model::ChannelCurves& curves);
+    // Draws the keys only where they are at least a marker apart on average over the shown time: a
+    // motion capture's key at every frame makes a solid band of markers none of which can be picked,
+    // and costs their drawing at every replot. Zooming in shows them.
+    void showKeyMarkers();
     void showGimbalZones(const std::vector<std::pair<double, double>>& zones);
     void showChannel(model::Channel channel, bool shown);
     // The drawn key on a shown Euler channel within kKeyGrabPixels of `position`, nearest first.
@@ -117,6 +121,8 @@ private:
     // The curves shown, and the object whose they are.
     model::ChannelCurves curves_;
     model::ObjectId shownObject_ = model::kNoObject;
+    std::vector<double> keyTimes_; // of the drawn keys, increasing
+    bool keyMarkersShown_ = false;
     std::optional<KeyDrag> drag_;
     SelectedTrackSampler<model::ChannelCurves> sampler_; // last: waits for its work before the members it uses go
 };
