@@ -207,8 +207,10 @@ void MainWindow::setUpDocks()
     splitDockWidget(ui_->sphereDock, ui_->screwBenderDock, Qt::Vertical);
     // The speed plot shares the timeline's time axis: above it, as wide as the window.
     splitDockWidget(ui_->magnitudeDock, ui_->timelineDock, Qt::Vertical);
-    // The graph editor's curves run over time too: behind the speed plot, as wide as the window.
+    // The graph editor's curves run over time too: a tab beside the speed plot, as wide as the window,
+    // closed until View ▸ Panels opens it, so that its tab bar takes no height from the speed plot.
     tabifyDockWidget(ui_->magnitudeDock, ui_->graphEditorDock);
+    ui_->graphEditorDock->hide();
     ui_->magnitudeDock->raise();
 }
 

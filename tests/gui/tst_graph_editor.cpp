@@ -86,9 +86,12 @@ private slots:
         window_->selection().selectObject(object_);
         panel_ = window_->findChild<app::GraphEditorPanel*>();
         QVERIFY(panel_ != nullptr);
-        // Tabbed behind the speed plot, the editor samples nothing until it is in front.
+        // Closed, the editor samples nothing until it is opened and in front.
         QSignalSpy updated(panel_, &app::GraphEditorPanel::curvesUpdated);
-        window_->findChild<QDockWidget*>(QStringLiteral("graphEditorDock"))->raise();
+        auto* dock = window_->findChild<QDockWidget*>(QStringLiteral("graphEditorDock"));
+        QVERIFY(dock->isHidden()); // closed until View ▸ Panels opens it
+        dock->toggleViewAction()->trigger();
+        dock->raise();
         QVERIFY(updated.wait(5000));
         QTRY_VERIFY_WITH_TIMEOUT(panel_->graph(Channel::EulerThird)->dataCount() > 0, 5000);
     }

@@ -428,6 +428,7 @@ private slots:
         guide.openSample("spinning-top", 7.0);
         auto* editor = guide.child<app::GraphEditorPanel>();
         QSignalSpy updated(editor, &app::GraphEditorPanel::curvesUpdated);
+        guide.child<QDockWidget>("graphEditorDock")->show();
         guide.raiseDock("graphEditorDock");
         QVERIFY(updated.wait(10'000));
         guide.settle();
