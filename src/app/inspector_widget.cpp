@@ -1,5 +1,6 @@
 #include "app/inspector_widget.h"
 
+#include "app/euler_convention_choosers.h"
 #include "core/rotation.h"
 #include "model/commands/set_keyframe_time_command.h"
 #include "model/commands/set_keyframe_orientation_command.h"
@@ -123,17 +124,7 @@ InspectorWidget::~InspectorWidget() = default;
 
 void InspectorWidget::setUpConventionChoosers()
 {
-    // The six Tait-Bryan orders, xyz first as DESIGN.md's default, then the six proper Euler orders.
-    for (const bool properEuler : {false, true}) {
-        for (const EulerConvention& convention : EulerConvention::all()) {
-            if (convention.frame == AngleFrame::Extrinsic && convention.isProperEuler() == properEuler) {
-                const QString order = QString::fromStdString(convention.order());
-                ui_->eulerOrderCombo->addItem(order.toUpper(), order);
-            }
-        }
-    }
-    ui_->eulerFrameCombo->addItem(tr("extrinsic (fixed axes)"), static_cast<int>(AngleFrame::Extrinsic));
-    ui_->eulerFrameCombo->addItem(tr("intrinsic (moving axes)"), static_cast<int>(AngleFrame::Intrinsic));
+    fillConventionChoosers(*ui_->eulerOrderCombo, *ui_->eulerFrameCombo);
     const auto conventionChanged = [this] {
         updateEulerLabels();
         showSelectedKey();
@@ -145,9 +136,7 @@ void InspectorWidget::setUpConventionChoosers()
 
 EulerConvention InspectorWidget::chosenConvention() const
 {
-    const auto frame = static_cast<AngleFrame>(ui_->eulerFrameCombo->currentData().toInt());
-    // The orders in the chooser are those EulerConvention::all() names, so they parse.
-    return *EulerConvention::parse(ui_->eulerOrderCombo->currentData().toString().toStdString(), frame);
+    return app::chosenConvention(*ui_->eulerOrderCombo, *ui_->eulerFrameCombo);
 }
 
 void InspectorWidget::updateEulerLabels()

@@ -1,6 +1,7 @@
 #include "app/keyframe_actions.h"
 
 #include "model/commands/add_keyframe_command.h"
+#include "model/commands/apply_euler_filter_command.h"
 #include "model/commands/remove_keyframe_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
 #include "model/track_evaluation.h"
@@ -33,6 +34,7 @@ KeyframeActions::KeyframeActions(model::Document& document, Selection& selection
     // triggered, not toggled: the action's check mark follows the key, and setChecked from
     // updateActions must not toggle the key back.
     connect(actions_.toggleConstraint, &QAction::triggered, this, &KeyframeActions::toggleConstraint);
+    connect(actions_.eulerFilter, &QAction::triggered, this, &KeyframeActions::applyEulerFilter);
     connect(&selection_, &Selection::changed, this, &KeyframeActions::updateActions);
     connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
         if (changes & (model::Change::Keyframes | model::Change::Scene))
@@ -79,9 +81,18 @@ void KeyframeActions::toggleConstraint()
     updateActions();
 }
 
+void KeyframeActions::applyEulerFilter()
+{
+    const model::SceneObject* object = selection_.selectedObject();
+    if (object != nullptr && model::ApplyEulerFilterCommand::changes(object->track))
+        document_.push(new model::ApplyEulerFilterCommand(document_, object->id));
+}
+
 void KeyframeActions::updateActions()
 {
     const model::Keyframe* key = selection_.selectedKey();
+    const model::SceneObject* object = selection_.selectedObject();
+    actions_.eulerFilter->setEnabled(object != nullptr && model::ApplyEulerFilterCommand::changes(object->track));
     actions_.add->setEnabled(selection_.selectedObject() != nullptr);
     actions_.remove->setEnabled(key != nullptr);
     actions_.toggleConstraint->setEnabled(key != nullptr);

@@ -1,7 +1,7 @@
 #pragma once
 // The Motion menu's keyframe actions on the selection: key the selected object's pose at the current
-// time, delete the selected key, constrain or free it. Each is one undo step; each is enabled only
-// when it applies.
+// time, delete the selected key, constrain or free it, run the Euler filter on the object's keys. Each
+// is one undo step; each is enabled only when it applies (the filter when it would change a key).
 
 #include "app/selected_track.h"
 #include "app/selection.h"
@@ -18,6 +18,7 @@ struct KeyframeActionSet {
     QAction* add = nullptr;
     QAction* remove = nullptr;
     QAction* toggleConstraint = nullptr; // checkable: checked when the selected key is constrained
+    QAction* eulerFilter = nullptr;      // on the selected object's keys (apply_euler_filter_command.h)
 };
 
 class KeyframeActions : public QObject {
@@ -31,6 +32,7 @@ public:
     void addKeyframe();
     void removeKeyframe();
     void toggleConstraint();
+    void applyEulerFilter();
 
 private:
     void updateActions();

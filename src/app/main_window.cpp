@@ -1,6 +1,8 @@
 #include "app/main_window.h"
 
 #include "app/add_object_actions.h"
+#include "app/euler_convention_choosers.h"
+#include "app/graph_editor/graph_editor_panel.h"
 #include "app/inspector_widget.h"
 #include "app/outliner/outliner_panel.h"
 #include "app/preferences_dialog.h"
@@ -24,6 +26,7 @@
 #include <qcustomplot.h>
 
 #include <QCloseEvent>
+#include <QComboBox>
 #include <QDragEnterEvent>
 #include <QDockWidget>
 #include <QDropEvent>
@@ -161,7 +164,7 @@ void MainWindow::setUpActions()
     connect(ui_->actionExportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToExport);
     new AddObjectActions(document_, selection_, *ui_->menuAdd, this);
     new KeyframeActions(
-        document_, selection_, {ui_->actionAddKeyframe, ui_->actionDeleteKeyframe, ui_->actionToggleConstraint},
+        document_, selection_, {ui_->actionAddKeyframe, ui_->actionDeleteKeyframe, ui_->actionToggleConstraint, ui_->actionEulerFilter},
         statusBar(), this);
 
     QAction* undo = document_.undoStack().createUndoAction(this, tr("&Undo"));
@@ -202,7 +205,8 @@ void MainWindow::setUpDocks()
     addDockWidget(Qt::RightDockWidgetArea, outlinerDock);
     splitDockWidget(outlinerDock, ui_->inspectorDock, Qt::Vertical);
     for (QDockWidget* dock : {outlinerDock, ui_->inspectorDock, ui_->screwBenderDock, ui_->historyDock, ui_->timelineDock,
-                              ui_->smoothnessDock, ui_->sphereDock, ui_->fitDock, ui_->magnitudeDock})
+                              ui_->smoothnessDock, ui_->sphereDock, ui_->fitDock, ui_->magnitudeDock,
+                              ui_->graphEditorDock})
         ui_->menuPanels->addAction(dock->toggleViewAction());
     // The history dock has its own action in the Edit menu, checked while the dock is open, as the
     // dock's own action in View ▸ Panels is (tabbed behind another dock included).
@@ -219,6 +223,11 @@ void MainWindow::setUpDocks()
     splitDockWidget(ui_->sphereDock, ui_->screwBenderDock, Qt::Vertical);
     // The speed plot shares the timeline's time axis: above it, as wide as the window.
     splitDockWidget(ui_->magnitudeDock, ui_->timelineDock, Qt::Vertical);
+    // The graph editor's curves run over time too: a tab beside the speed plot, as wide as the window,
+    // closed until View ▸ Panels opens it, so that its tab bar takes no height from the speed plot.
+    tabifyDockWidget(ui_->magnitudeDock, ui_->graphEditorDock);
+    ui_->graphEditorDock->hide();
+    ui_->magnitudeDock->raise();
 }
 
 void MainWindow::toggleUndoHistory()
@@ -244,6 +253,12 @@ void MainWindow::createViews()
     ui_->timelineDockLayout->addWidget(new TimelineWidget(document_, selection_, playback_, ui_->timelineDockContents), 1);
     addScrolled(ui_->smoothnessDockLayout, new SmoothnessPanel(document_, selection_));
     ui_->magnitudeDockLayout->addWidget(new MagnitudePlot(document_, selection_, ui_->magnitudeDockContents));
+    auto* graphEditor = new GraphEditorPanel(document_, selection_, ui_->graphEditorDockContents);
+    ui_->graphEditorDockLayout->addWidget(graphEditor);
+    // Its Euler angles are those the inspector shows, in one convention chosen in either.
+    auto* inspectorOrder = findChild<QComboBox*>(QStringLiteral("eulerOrderCombo"));
+    auto* inspectorFrame = findChild<QComboBox*>(QStringLiteral("eulerFrameCombo"));
+    linkConventionChoosers(*inspectorOrder, *inspectorFrame, *graphEditor->orderChooser(), *graphEditor->frameChooser());
     createFitViews();
     createViewport();
     createSphereView();

@@ -7,6 +7,7 @@
 // With GYRE_GUIDE_IMAGES set to a folder, each of those states is also saved there as the guide's
 // picture, named as the guide names it: scripts/user-guide-screenshots.sh regenerates them so.
 
+#include "app/graph_editor/graph_editor_panel.h"
 #include "app/main_window.h"
 #include "app/outliner/outliner_panel.h"
 #include "built_scene_worker.h"
@@ -417,6 +418,25 @@ private slots:
             QVERIFY(found && range.upper > 0.5);
         }
         guide.picture(QStringLiteral("guide-pendulum.png"));
+    }
+
+    // The spinning top in the Graph Editor: its Euler angles unwrapped, so the spin about z climbs
+    // through many turns instead of wrapping at ±180°, with its 85 keys on the curves.
+    void showsTheSpinningTopsChannelsInTheGraphEditor()
+    {
+        GuideWindow guide;
+        guide.openSample("spinning-top", 7.0);
+        auto* editor = guide.child<app::GraphEditorPanel>();
+        QSignalSpy updated(editor, &app::GraphEditorPanel::curvesUpdated);
+        guide.child<QDockWidget>("graphEditorDock")->show();
+        guide.raiseDock("graphEditorDock");
+        QVERIFY(updated.wait(10'000));
+        guide.settle();
+        bool found = false;
+        const QCPRange spin = editor->graph(model::Channel::EulerThird)->getValueRange(found);
+        QVERIFY(found && spin.size() > 3 * 360.0);
+        QCOMPARE(editor->keyGraph(model::Channel::EulerThird)->dataCount(), int(guide.track().keys.size()));
+        guide.picture(QStringLiteral("guide-graph-editor.png"));
     }
 
     // The spinning block as it opens; then Decoupled, for comparison, ticked: one undo step, the track

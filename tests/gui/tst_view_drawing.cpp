@@ -1,8 +1,10 @@
 // What drawing costs while a motion capture plays: the main window on a 31-joint capture of 4,500
 // frames at 120 Hz (the one gyre-bench imports), a bone of it selected, the docks as the window lays
 // them out. Prints the time to repaint the timeline and the sphere view for a new current time, and
-// the frame rate of playback with every view drawing; tests never assert on time.
+// the frame rate of playback with every view drawing; and what the Graph Editor costs with the bone
+// selected (issue 23). Tests never assert on time.
 
+#include "app/graph_editor/graph_editor_panel.h"
 #include "app/main_window.h"
 #include "app/sketch/sphere_view.h"
 #include "app/timeline_widget.h"
@@ -11,8 +13,10 @@
 #include "io/bvh_fixture.h"
 #include "io/scene_import.h"
 #include "model/commands/import_objects_command.h"
+#include "model/commands/set_keyframe_orientation_command.h"
 #include "model/commands/set_time_range_command.h"
 
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QImage>
@@ -24,7 +28,9 @@
 #include <cstdio>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
+#include <qcustomplot.h>
 
 using namespace gyre;
 using namespace gyre::io;
@@ -36,12 +42,41 @@ constexpr int kFrames = 4500;
 constexpr double kFrameTime = 1.0 / 120.0;
 constexpr std::size_t kSelectedJoint = 15;
 constexpr int kMeasuredFrames = 60;
+// Fewer for the Graph Editor, whose replot under the sanitizers takes a good part of a second.
+constexpr int kGraphEditorRuns = 15;
 constexpr qint64 kPlayingMilliseconds = 4000;
 
 double median(std::vector<double> values)
 {
     std::sort(values.begin(), values.end());
     return values[values.size() / 2];
+}
+
+// Imports the 31-joint capture into `window`, shown, as the app adds an import to a new document:
+// the objects and the capture's range, one step. Returns the import and the objects' ids; no ids if
+// the capture could not be written or read.
+std::pair<SceneImport, std::vector<model::ObjectId>> openCapture(app::MainWindow& window)
+{
+    QTemporaryDir folder;
+    const QString path = folder.filePath(QStringLiteral("capture.bvh"));
+    QFile file(path);
+    const QByteArray bvh = test::bvhChain(kJoints, kFrames, kFrameTime);
+    if (!file.open(QIODevice::WriteOnly) || file.write(bvh) != bvh.size())
+        return {};
+    file.close();
+    SceneImport imported = importScene(path);
+    window.resize(1500, 950);
+    window.show();
+    if (imported.scene.objects.size() <= kSelectedJoint || !QTest::qWaitForWindowExposed(&window))
+        return {};
+    window.playback().pause();
+    model::Document& document = window.document();
+    auto* step = new QUndoCommand(QStringLiteral("Import"));
+    auto* objects = new model::ImportObjectsCommand(document, imported.scene.objects, step);
+    new model::SetTimeRangeCommand(
+        document, {imported.scene.fps, imported.scene.startTime, imported.scene.endTime}, step);
+    document.undoStack().push(step);
+    return {std::move(imported), objects->ids()};
 }
 
 } // namespace
@@ -54,35 +89,17 @@ private slots:
 
     void measuresPlayingAMotionCapture()
     {
-        QTemporaryDir folder;
-        const QString path = folder.filePath(QStringLiteral("capture.bvh"));
-        QFile file(path);
-        const QByteArray bvh = test::bvhChain(kJoints, kFrames, kFrameTime);
-        QVERIFY(file.open(QIODevice::WriteOnly) && file.write(bvh) == bvh.size());
-        file.close();
-        const SceneImport imported = importScene(path);
-        QVERIFY(imported.scene.objects.size() > kSelectedJoint);
-
         app::MainWindow window;
-        window.resize(1500, 950);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        window.playback().pause();
+        const auto [imported, ids] = openCapture(window);
+        QVERIFY(!ids.empty());
         model::Document& document = window.document();
-        // As the app adds an import to a new document: the objects and the capture's range, one step.
-        auto* step = new QUndoCommand(QStringLiteral("Import"));
-        auto* objects = new model::ImportObjectsCommand(document, imported.scene.objects, step);
-        new model::SetTimeRangeCommand(
-            document, {imported.scene.fps, imported.scene.startTime, imported.scene.endTime}, step);
-        document.undoStack().push(step);
-
         auto* sphere = window.findChild<app::SphereView*>();
         auto* timeline = window.findChild<app::TimelineWidget*>();
         auto* viewport = window.findChild<app::Viewport*>();
         QVERIFY(sphere != nullptr && timeline != nullptr && viewport != nullptr);
         QVERIFY(sphere->isVisible() && timeline->isVisible());
         QSignalSpy curves(sphere, &app::SphereView::curvesUpdated);
-        const model::ObjectId bone = objects->ids().at(kSelectedJoint);
+        const model::ObjectId bone = ids.at(kSelectedJoint);
         window.selection().selectObject(bone);
         QVERIFY(curves.wait(30000));
         const std::size_t keys = document.object(bone)->track.keys.size();
@@ -131,6 +148,68 @@ private slots:
         std::printf("playing: %.1f current times a second over %.1f s; the viewport's readout %.1f frames a second\n",
                     static_cast<double>(frames.count()) / seconds, seconds, viewportFps);
         QVERIFY(frames.count() > 0);
+    }
+
+    // The Graph Editor with a bone of the capture selected: sampling its channels (the editor's job,
+    // off the UI thread), and redrawing the plot with the Euler angles shown and with all 14 channels.
+    void measuresTheGraphEditorOnAMotionCapture()
+    {
+        app::MainWindow window;
+        const auto [imported, ids] = openCapture(window);
+        QVERIFY(!ids.empty());
+        model::Document& document = window.document();
+        auto* editor = window.findChild<app::GraphEditorPanel*>();
+        QVERIFY(editor != nullptr);
+        QSignalSpy curves(editor, &app::GraphEditorPanel::curvesUpdated);
+        const model::ObjectId bone = ids.at(kSelectedJoint);
+        window.selection().selectObject(bone);
+        auto* dock = window.findChild<QDockWidget*>(QStringLiteral("graphEditorDock"));
+        dock->show();
+        dock->raise();
+        QVERIFY(curves.wait(30000));
+        const auto& keys = document.object(bone)->track.keys;
+
+        const auto medianOf = [](const std::function<void()>& work) {
+            std::vector<double> milliseconds;
+            for (int run = 0; run < kGraphEditorRuns; ++run) {
+                QElapsedTimer clock;
+                clock.start();
+                work();
+                milliseconds.push_back(static_cast<double>(clock.nsecsElapsed()) / 1e6);
+            }
+            return median(milliseconds);
+        };
+        const std::shared_ptr<const model::SharedTrackMotion> motion = document.motion(bone);
+        const model::ChannelSettings settings{{}, model::VelocityFrame::World, document.scene().startTime,
+                                              document.scene().endTime, app::GraphEditorPanel::kSampleCount};
+        std::size_t samples = 0;
+        const double samplingMs = medianOf([&] { samples = model::sampleChannels(motion->motion(), keys, settings).times.size(); });
+        QCustomPlot* plot = editor->plot();
+        const double eulerReplotMs = medianOf([&] { plot->replot(QCustomPlot::rpImmediateRefresh); });
+        for (std::size_t c = 0; c < model::kChannelCount; ++c)
+            editor->channels().setShown(static_cast<model::Channel>(c), true);
+        const double allReplotMs = medianOf([&] { plot->replot(QCustomPlot::rpImmediateRefresh); });
+
+        // An edit of the selected bone's key, to the curves shown again: the coalescing interval, the
+        // job's sampling and the replot.
+        std::vector<double> latencies;
+        for (int edit = 0; edit < 5; ++edit) {
+            QSignalSpy updated(editor, &app::GraphEditorPanel::curvesUpdated);
+            QElapsedTimer clock;
+            clock.start();
+            const Eigen::Quaterniond turned =
+                keys[1].pose.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(0.01, Eigen::Vector3d::UnitX()));
+            document.push(new model::SetKeyframeOrientationCommand(document, bone, 1, turned));
+            QVERIFY(updated.wait(30000));
+            latencies.push_back(static_cast<double>(clock.nsecsElapsed()) / 1e6);
+        }
+        std::printf("graph editor, a bone of %zu keys selected, plot %dx%d: sampling %zu times of 14 channels "
+                    "%.2f ms (median of %d, on the editor's job); replot with the 3 Euler curves %.2f ms, with all "
+                    "14 curves %.2f ms; a key edit to its curves shown %.1f ms (median of 5, the %d ms coalescing "
+                    "interval included)\n",
+                    keys.size(), plot->width(), plot->height(), samples, samplingMs, kGraphEditorRuns, eulerReplotMs,
+                    allReplotMs, median(latencies), app::SelectedTrackSampler<model::ChannelCurves>::kIntervalMilliseconds);
+        QVERIFY(samples > 0);
     }
 };
 

@@ -2,6 +2,7 @@
 
 #include "model/commands/add_keyframe_command.h"
 #include "model/commands/add_stroke_command.h"
+#include "model/commands/apply_euler_filter_command.h"
 #include "model/commands/apply_fit_result_command.h"
 #include "model/commands/delete_object_command.h"
 #include "model/commands/edit_stroke_command.h"
@@ -205,6 +206,8 @@ std::unique_ptr<QUndoCommand> RandomEdits::command(Document& document, EditKind 
         return std::make_unique<AddKeyframeCommand>(document, id, keyframe(gridTime(engine_)));
     case EditKind::RetimeKeyframes:
         return std::make_unique<RetimeKeyframesCommand>(document, id, number(0.5, 2), number(-1, 1));
+    case EditKind::ApplyEulerFilter:
+        return std::make_unique<ApplyEulerFilterCommand>(document, id);
     case EditKind::SetInterpolation:
         return std::make_unique<SetInterpolationCommand>(document, id, static_cast<InterpolationMethod>(index(6)));
     case EditKind::SetSubdivision:

@@ -26,6 +26,7 @@ enum class EditKind {
     RemoveKeyframe,
     MoveKeyframe,
     RetimeKeyframes,
+    ApplyEulerFilter,
     SetKeyframeOrientation,
     SetKeyframePosition,
     ToggleKeyframeConstraint,

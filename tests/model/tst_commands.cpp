@@ -7,6 +7,7 @@
 
 #include "model/commands/add_keyframe_command.h"
 #include "model/commands/add_stroke_command.h"
+#include "model/commands/apply_euler_filter_command.h"
 #include "model/commands/apply_fit_result_command.h"
 #include "model/commands/remove_fit_command.h"
 #include "model/commands/delete_object_command.h"
@@ -598,6 +599,7 @@ void TstCommands::signalsSayWhatChanged_data()
     row("move keyframe", [](Document& d) { return new SetKeyframeTimeCommand(d, 2, 1, 1.5); }, {"Keyframes:2"});
     row("retime", [](Document& d) { return new RetimeKeyframesCommand(d, 2, 2, 0); },
         {"Keyframes:2", "Sketch:2"});
+    row("euler filter", [](Document& d) { return new ApplyEulerFilterCommand(d, 2); }, {"Keyframes:2"});
     row("orientation", [](Document& d) { return new SetKeyframeOrientationCommand(d, 2, 1, Eigen::Quaterniond::Identity()); }, {"Keyframes:2"});
     row("position", [](Document& d) { return new SetKeyframePositionCommand(d, 2, 1, Eigen::Vector3d::Zero()); }, {"Keyframes:2"});
     row("constraint", [](Document& d) { return new ToggleKeyframeConstraintCommand(d, 2, 1); }, {"Keyframes:2"});

@@ -70,10 +70,13 @@ inline constexpr auto sketchFitParameter = [](auto& object, std::size_t paramete
     return chosen == FitParameter::Alpha ? sketch.alpha : chosen == FitParameter::Beta ? sketch.beta : sketch.delta;
 };
 
+inline constexpr auto trackKeys = [](auto& object, std::size_t) -> auto& { return object.track.keys; };
+
 using KeyframeTimeField = MemberField<keyTime, double, Merge::WithinGesture, Change::Keyframes>;
 using KeyframeOrientationField =
     MemberField<keyOrientation, Eigen::Quaterniond, Merge::WithinGesture, Change::Keyframes>;
 using KeyframePositionField = MemberField<keyPosition, Eigen::Vector3d, Merge::WithinGesture, Change::Keyframes>;
+using KeyframesField = MemberField<trackKeys, SharedVector<Keyframe>, Merge::Never, Change::Keyframes>;
 using KeyframeConstraintField = MemberField<keyConstrained, bool, Merge::Never, Change::Keyframes>;
 using ObjectNameField = MemberField<objectName, QString, Merge::Never, Change::Object>;
 using ObjectVisibilityField = MemberField<objectVisible, bool, Merge::Never, Change::Object>;

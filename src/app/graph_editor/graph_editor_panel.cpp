@@ -1,0 +1,403 @@
+#include "app/graph_editor/graph_editor_panel.h"
+
+#include "app/euler_convention_choosers.h"
+#include "core/quaternion_math.h"
+#include "model/commands/set_keyframe_orientation_command.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QListView>
+#include <QSplitter>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace gyre::app {
+
+namespace {
+
+using model::Channel;
+
+constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
+constexpr int kMinimumPlotWidth = 320;
+constexpr int kMinimumPlotHeight = 200;
+constexpr double kKeyMarkerPixels = 7.0;
+// Room above and below the framed curves, as a factor of their span.
+constexpr double kFrameMargin = 1.1;
+
+QPen channelPen(Channel channel)
+{
+    // x, y, z in red, green, blue throughout; the kind of channel by the line's dashes. One pixel wide:
+    // QPainter strokes a wider pen as a filled outline, and with a motion capture's curves a replot of
+    // the three Euler curves took 350 to 420 ms instead of 30 to 45 (tst_view_drawing, Release).
+    const std::array<QColor, 4> colours{QColor(214, 39, 40), QColor(44, 160, 44), QColor(31, 119, 180),
+                                        QColor(90, 90, 90)};
+    const auto index = static_cast<int>(channel);
+    if (model::isEulerChannel(channel))
+        return QPen(colours[static_cast<std::size_t>(index)], 1.0);
+    if (channel <= Channel::QuaternionZ) {
+        // w grey, then x, y, z.
+        const int component = index - static_cast<int>(Channel::QuaternionW);
+        return QPen(colours[static_cast<std::size_t>((component + 3) % 4)], 1.0, Qt::DashLine);
+    }
+    if (channel <= Channel::AngularSpeed) {
+        const int component = index - static_cast<int>(Channel::AngularVelocityX);
+        return QPen(colours[static_cast<std::size_t>(component)], 1.0, Qt::DotLine);
+    }
+    const int component = index - static_cast<int>(Channel::PositionX);
+    return QPen(colours[static_cast<std::size_t>(component)], 1.0, Qt::DashDotLine);
+}
+
+bool isFrameAllKey(const QKeyEvent& event)
+{
+    return event.key() == Qt::Key_Home && event.modifiers() == Qt::NoModifier;
+}
+
+} // namespace
+
+GraphEditorPanel::GraphEditorPanel(model::Document& document, Selection& selection, QWidget* parent)
+    : QWidget(parent)
+    , document_(document)
+    , selection_(selection)
+    , selectedTrack_(document, selection)
+    , plot_(new QCustomPlot(this))
+    , sampler_(
+          *this, selection, document,
+          [this](const std::shared_ptr<const model::SharedTrackMotion>& motion, const model::Scene&) {
+              return [motion, settings = settings()] {
+                  return model::sampleChannels(motion->motion(), motion->track().keys, settings);
+              };
+          },
+          [this](const model::ChannelCurves& curves) { showCurves(curves); })
+{
+    channelList_ = new QListView(this);
+    channelList_->setObjectName(QStringLiteral("graphChannelList"));
+    channelList_->setModel(&channels_);
+    channelList_->setToolTip(tr("The channels to plot: check one to show its curve"));
+    channelList_->setMinimumWidth(channelList_->sizeHintForColumn(0) + 24);
+
+    auto* splitter = new QSplitter(this);
+    splitter->addWidget(channelList_);
+    splitter->addWidget(plot_);
+    splitter->setStretchFactor(1, 1);
+    plot_->setMinimumSize(kMinimumPlotWidth, kMinimumPlotHeight);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(makeChoosers());
+    layout->addWidget(splitter, 1);
+    setUpPlot();
+
+    connect(&channels_, &ChannelListModel::shownChanged, this, &GraphEditorPanel::showChannel);
+    connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
+        if (changes & (SelectedTrack::kAnotherObject | model::Change::Scene))
+            releasePlot(); // the held key is another object's now
+        if (changes & (model::kMotionChanges | model::Change::SceneSettings))
+            sampler_.schedule();
+    });
+    sampler_.schedule();
+}
+
+QWidget* GraphEditorPanel::makeChoosers()
+{
+    auto* row = new QWidget(this);
+    auto* layout = new QHBoxLayout(row);
+    layout->setContentsMargins(6, 2, 6, 2);
+    orderChooser_ = new QComboBox(row);
+    orderChooser_->setObjectName(QStringLiteral("graphEulerOrderCombo"));
+    frameChooser_ = new QComboBox(row);
+    frameChooser_->setObjectName(QStringLiteral("graphEulerFrameCombo"));
+    fillConventionChoosers(*orderChooser_, *frameChooser_);
+    orderChooser_->setToolTip(tr("The order of the Euler angles, as the inspector shows them"));
+    auto* orderLabel = new QLabel(tr("Euler &order:"), row);
+    orderLabel->setBuddy(orderChooser_);
+    velocityFrameChooser_ = new QComboBox(row);
+    velocityFrameChooser_->setObjectName(QStringLiteral("graphVelocityFrameCombo"));
+    velocityFrameChooser_->addItem(tr("world frame"), static_cast<int>(model::VelocityFrame::World));
+    velocityFrameChooser_->addItem(tr("object's frame"), static_cast<int>(model::VelocityFrame::Local));
+    velocityFrameChooser_->setToolTip(tr("The frame the angular velocity's components are given in"));
+    auto* velocityLabel = new QLabel(tr("ω &in:"), row);
+    velocityLabel->setBuddy(velocityFrameChooser_);
+
+    // Home is View ▸ Frame Scene's in the rest of the window: the plot takes it as a key while it has
+    // the focus (event), not as a second shortcut, which Qt would find ambiguous and run neither.
+    frameAll_ = new QAction(tr("Frame &All"), this);
+    frameAll_->setToolTip(tr("Show the whole time range and every shown curve (Home)"));
+    frameSelected_ = new QAction(tr("Frame &Selected"), this);
+    frameSelected_->setShortcut(Qt::Key_F);
+    frameSelected_->setStatusTip(tr("Show the selected key between its neighbours"));
+    for (QAction* action : {frameAll_, frameSelected_}) {
+        action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        addAction(action);
+        auto* button = new QToolButton(row);
+        button->setDefaultAction(action);
+        layout->addWidget(button);
+    }
+    connect(frameAll_, &QAction::triggered, this, &GraphEditorPanel::frameAll);
+    connect(frameSelected_, &QAction::triggered, this, &GraphEditorPanel::frameSelectedKey);
+
+    layout->addStretch();
+    layout->addWidget(orderLabel);
+    layout->addWidget(orderChooser_);
+    layout->addWidget(frameChooser_);
+    layout->addWidget(velocityLabel);
+    layout->addWidget(velocityFrameChooser_);
+    for (QComboBox* chooser : {orderChooser_, frameChooser_, velocityFrameChooser_})
+        connect(chooser, &QComboBox::currentIndexChanged, this, [this] {
+            channels_.setConvention(chosenConvention(*orderChooser_, *frameChooser_));
+            sampler_.schedule();
+        });
+    return row;
+}
+
+bool GraphEditorPanel::event(QEvent* event)
+{
+    if (event->type() == QEvent::ShortcutOverride && isFrameAllKey(*static_cast<QKeyEvent*>(event))) {
+        event->accept(); // comes as a key press instead of the window's shortcut
+        return true;
+    }
+    return QWidget::event(event);
+}
+
+void GraphEditorPanel::keyPressEvent(QKeyEvent* event)
+{
+    if (isFrameAllKey(*event))
+        frameAll();
+    else
+        QWidget::keyPressEvent(event);
+}
+
+void GraphEditorPanel::setUpPlot()
+{
+    plot_->setFocusPolicy(Qt::ClickFocus);
+    plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    plot_->xAxis->setLabel(tr("time (s)"));
+    plot_->legend->setVisible(true);
+    plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+    for (std::size_t c = 0; c < model::kChannelCount; ++c) {
+        const auto channel = static_cast<Channel>(c);
+        QCPGraph* graph = plot_->addGraph();
+        graph->setPen(channelPen(channel));
+        graphs_[c] = graph;
+        QCPGraph* keys = plot_->addGraph();
+        keys->setLineStyle(QCPGraph::lsNone);
+        keys->removeFromLegend();
+        keyGraphs_[c] = keys;
+        showChannel(channel, channels_.isShown(channel));
+    }
+    connect(plot_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, &GraphEditorPanel::showKeyMarkers);
+    showKeyMarkers();
+    connect(plot_, &QCustomPlot::mousePress, this, &GraphEditorPanel::pressPlot);
+    connect(plot_, &QCustomPlot::mouseMove, this, &GraphEditorPanel::movePlot);
+    connect(plot_, &QCustomPlot::mouseRelease, this, &GraphEditorPanel::releasePlot);
+}
+
+model::ChannelSettings GraphEditorPanel::settings() const
+{
+    const model::Scene& scene = document_.scene();
+    return {chosenConvention(*orderChooser_, *frameChooser_),
+            static_cast<model::VelocityFrame>(velocityFrameChooser_->currentData().toInt()), scene.startTime,
+            scene.endTime, kSampleCount};
+}
+
+void GraphEditorPanel::showCurves(const model::ChannelCurves& curves)
+{
+    curves_ = curves;
+    // Another object's curves are framed whole; the same object's keep the artist's view, as a drag
+    // needs.
+    const bool anotherObject = shownObject_ != selection_.object();
+    shownObject_ = selection_.object();
+    const QVector<double> times(curves.times.begin(), curves.times.end());
+    for (std::size_t c = 0; c < model::kChannelCount; ++c) {
+        const auto channel = static_cast<Channel>(c);
+        graphs_[c]->setName(channels_.name(channel));
+        const std::vector<double>& values = curves.values[c];
+        graphs_[c]->setData(times, QVector<double>(values.begin(), values.end()), true);
+        QVector<double> keyTimes;
+        QVector<double> keyValues;
+        for (std::size_t k = 0; k < curves.keySamples.size(); ++k) {
+            const std::size_t sample = curves.keySamples[k].first;
+            keyTimes.push_back(curves.times[sample]);
+            // The quaternion channels show each key as stored, which the Euler filter may flip.
+            const bool quaternion = channel >= Channel::QuaternionW && channel <= Channel::QuaternionZ;
+            keyValues.push_back(quaternion ? curves.keyQuaternions[k][c - static_cast<std::size_t>(Channel::QuaternionW)]
+                                           : values[sample]);
+        }
+        keyGraphs_[c]->setData(keyTimes, keyValues, true);
+    }
+    keyTimes_.clear();
+    for (const auto& [sample, key] : curves.keySamples)
+        keyTimes_.push_back(curves.times[sample]);
+    showKeyMarkers();
+    showGimbalZones(curves.gimbalZones);
+    if (anotherObject)
+        frameAll();
+    plot_->replot();
+    emit curvesUpdated();
+}
+
+void GraphEditorPanel::showKeyMarkers()
+{
+    const QCPRange shown = plot_->xAxis->range();
+    const auto first = std::lower_bound(keyTimes_.begin(), keyTimes_.end(), shown.lower);
+    const auto last = std::upper_bound(first, keyTimes_.end(), shown.upper);
+    // The widget's width rather than the axis rect's, which is laid out only at the first replot.
+    const bool apart = static_cast<double>(last - first) * kKeyMarkerPixels <= plot_->width();
+    if (apart == keyMarkersShown_)
+        return;
+    keyMarkersShown_ = apart;
+    for (std::size_t c = 0; c < model::kChannelCount; ++c) {
+        keyGraphs_[c]->setScatterStyle(apart ? QCPScatterStyle(QCPScatterStyle::ssDiamond,
+                                                               channelPen(static_cast<Channel>(c)).color(), Qt::white,
+                                                               kKeyMarkerPixels)
+                                             : QCPScatterStyle(QCPScatterStyle::ssNone));
+    }
+}
+
+void GraphEditorPanel::showGimbalZones(const std::vector<std::pair<double, double>>& zones)
+{
+    for (QCPItemRect* zone : gimbalZones_)
+        plot_->removeItem(zone);
+    gimbalZones_.clear();
+    for (const auto& [from, to] : zones) {
+        auto* zone = new QCPItemRect(plot_);
+        zone->setLayer(QStringLiteral("grid")); // under the curves
+        zone->setPen(Qt::NoPen);
+        zone->setBrush(QColor(255, 140, 0, 50));
+        // The whole height of the plot, over the zone's time.
+        for (QCPItemPosition* corner : {zone->topLeft, zone->bottomRight}) {
+            corner->setTypeX(QCPItemPosition::ptPlotCoords);
+            corner->setTypeY(QCPItemPosition::ptAxisRectRatio);
+        }
+        zone->topLeft->setCoords(from, 0.0);
+        zone->bottomRight->setCoords(to, 1.0);
+        gimbalZones_.push_back(zone);
+    }
+}
+
+void GraphEditorPanel::showChannel(Channel channel, bool shown)
+{
+    QCPGraph* graph = graphs_[static_cast<std::size_t>(channel)];
+    graph->setVisible(shown);
+    keyGraphs_[static_cast<std::size_t>(channel)]->setVisible(shown);
+    if (shown)
+        graph->addToLegend();
+    else
+        graph->removeFromLegend();
+    plot_->replot();
+}
+
+void GraphEditorPanel::rescaleValues(bool inTimeRange)
+{
+    bool first = true;
+    for (QCPGraph* graph : graphs_) {
+        if (!graph->visible() || graph->dataCount() == 0)
+            continue;
+        graph->rescaleValueAxis(!first, inTimeRange);
+        first = false;
+    }
+    if (!first)
+        plot_->yAxis->scaleRange(kFrameMargin);
+}
+
+void GraphEditorPanel::frameAll()
+{
+    const model::Scene& scene = document_.scene();
+    plot_->xAxis->setRange(scene.startTime, scene.endTime);
+    rescaleValues(false);
+    plot_->replot();
+}
+
+void GraphEditorPanel::frameSelectedKey()
+{
+    const model::SceneObject* object = selection_.selectedObject();
+    if (object == nullptr || !selection_.key() || curves_.keySamples.empty())
+        return;
+    const auto& keys = object->track.keys;
+    const std::size_t key = *selection_.key();
+    const model::Scene& scene = document_.scene();
+    const double from = key > 0 ? keys[key - 1].time : std::min(scene.startTime, keys[key].time);
+    const double to = key + 1 < keys.size() ? keys[key + 1].time : std::max(scene.endTime, keys[key].time);
+    plot_->xAxis->setRange(from, to);
+    rescaleValues(true);
+    plot_->replot();
+}
+
+std::optional<std::pair<Channel, std::size_t>> GraphEditorPanel::keyAt(const QPointF& position) const
+{
+    std::optional<std::pair<Channel, std::size_t>> nearest;
+    double nearestDistance = kKeyGrabPixels;
+    for (const Channel channel : {Channel::EulerFirst, Channel::EulerSecond, Channel::EulerThird}) {
+        const QCPGraph* keys = keyGraph(channel);
+        if (!keys->visible() || !keyMarkersShown_)
+            continue;
+        for (int k = 0; k < keys->dataCount(); ++k) {
+            const QPointF drawn(plot_->xAxis->coordToPixel(keys->data()->at(k)->key),
+                                plot_->yAxis->coordToPixel(keys->data()->at(k)->value));
+            const double distance = QLineF(drawn, position).length();
+            if (distance <= nearestDistance) {
+                nearestDistance = distance;
+                nearest = {channel, curves_.keySamples[static_cast<std::size_t>(k)].second};
+            }
+        }
+    }
+    return nearest;
+}
+
+void GraphEditorPanel::pressPlot(QMouseEvent* event)
+{
+    if (event->button() != Qt::LeftButton || shownObject_ != selection_.object())
+        return;
+    const auto held = keyAt(event->position());
+    const model::SceneObject* object = selection_.selectedObject();
+    if (!held || object == nullptr || held->second >= object->track.keys.size())
+        return;
+    const auto [channel, key] = *held;
+    const auto sample = std::find_if(curves_.keySamples.begin(), curves_.keySamples.end(),
+                                     [key](const auto& keySample) { return keySample.second == key; });
+    KeyDrag drag;
+    drag.object = object->id;
+    drag.key = key;
+    drag.angle = model::eulerIndex(channel);
+    for (int angle = 0; angle < 3; ++angle)
+        drag.pressAngles[angle] = curves_.values[static_cast<std::size_t>(angle)][sample->first];
+    drag.pressOrientation = object->track.keys[key].pose.orientation;
+    drag.pressValue = plot_->yAxis->pixelToCoord(event->position().y());
+    drag.gesture = std::make_unique<model::Gesture>(document_);
+    drag_ = std::move(drag);
+    // The plot pans on a drag that begins off a key; this one moves the key.
+    plot_->setInteraction(QCP::iRangeDrag, false);
+    selection_.selectKey(drag_->object, key);
+}
+
+void GraphEditorPanel::movePlot(QMouseEvent* event)
+{
+    if (!drag_ || !(event->buttons() & Qt::LeftButton))
+        return;
+    Eigen::Vector3d angles = drag_->pressAngles;
+    angles[drag_->angle] += plot_->yAxis->pixelToCoord(event->position().y()) - drag_->pressValue;
+    const EulerConvention convention = chosenConvention(*orderChooser_, *frameChooser_);
+    // Kept in the stored key's hemisphere: the drag turns the key, it does not flip its sign.
+    const Eigen::Quaterniond orientation =
+        alignedWith(quaternionFromEulerAngles(angles * kRadiansPerDegree, convention), drag_->pressOrientation);
+    drag_->gesture->push(
+        new model::SetKeyframeOrientationCommand(document_, drag_->object, drag_->key, orientation));
+}
+
+void GraphEditorPanel::releasePlot()
+{
+    if (!drag_)
+        return;
+    drag_.reset(); // finishes the gesture
+    plot_->setInteraction(QCP::iRangeDrag, true);
+}
+
+} // namespace gyre::app

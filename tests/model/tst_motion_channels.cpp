@@ -1,0 +1,95 @@
+// The graph editor's channels (model/motion_channels.h) and the Euler filter's command on tracks
+// whose answers are known without Gyre: a spin of 450° about z keyed every 90°, whose z angle must
+// be a ramp past ±180° (unwrapped), whose quaternion keeps one sign through a full turn, and whose
+// stored keys, flipped to −q at random, the filter puts back in one hemisphere without moving the
+// motion at any time.
+
+#include "model/commands/apply_euler_filter_command.h"
+#include "model/document.h"
+#include "model/motion_channels.h"
+#include "model/commands/import_objects_command.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace gyre;
+using namespace gyre::model;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr int kKeys = 6; // 0°, 90°, ..., 450° at 0, 1, ..., 5 s
+
+Eigen::Quaterniond aboutZ(double degrees)
+{
+    return Eigen::Quaterniond(Eigen::AngleAxisd(degrees * kPi / 180.0, Eigen::Vector3d::UnitZ()));
+}
+
+SceneObject spin(bool flipOddKeys)
+{
+    SceneObject object;
+    object.id = 1;
+    object.track.interpolation = InterpolationMethod::Slerp;
+    for (int k = 0; k < kKeys; ++k) {
+        Eigen::Quaterniond q = aboutZ(90.0 * k);
+        if (flipOddKeys && k % 2 == 1)
+            q.coeffs() = -q.coeffs();
+        object.track.keys.push_back(Keyframe{double(k), Pose{q, Eigen::Vector3d::Zero()}, true});
+    }
+    return object;
+}
+
+} // namespace
+
+class TstMotionChannels : public QObject {
+    Q_OBJECT
+
+private slots:
+    void aSpinIsARampAndTheQuaternionKeepsItsSign()
+    {
+        const SceneObject object = spin(false);
+        const TrackMotion motion(object.track);
+        const ChannelCurves curves = sampleChannels(motion, object.track.keys, {{}, VelocityFrame::World, 0.0, 5.0, 501});
+        QCOMPARE(curves.times.size(), std::size_t(501));
+        for (std::size_t i = 0; i < curves.times.size(); ++i) {
+            const double t = curves.times[i];
+            QVERIFY(std::abs(curves.value(Channel::EulerThird, i) - 90.0 * t) < 1e-6);
+            // q(t) = (cos(45°·t), 0, 0, sin(45°·t)) continuous: w passes −1 at 4 s, not jumping back.
+            QVERIFY(std::abs(curves.value(Channel::QuaternionW, i) - std::cos(kPi / 4.0 * t)) < 1e-9);
+            QVERIFY(std::abs(curves.value(Channel::QuaternionZ, i) - std::sin(kPi / 4.0 * t)) < 1e-9);
+        }
+        QCOMPARE(curves.keySamples.size(), std::size_t(kKeys));
+        QCOMPARE(curves.times[curves.keySamples[3].first], 3.0);
+        // e2 stays 0, 90° from the xyz order's lock.
+        QVERIFY(curves.gimbalZones.empty());
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, sampleChannels(motion, object.track.keys, {{}, VelocityFrame::World, 1.0, 1.0, 10}));
+    }
+
+    void theFilterFlipsSignsAndKeepsTheMotion()
+    {
+        Document document;
+        auto* import = new ImportObjectsCommand(document, {spin(true)});
+        document.push(import);
+        const ObjectId id = import->ids().front();
+        const MotionTrack before = document.object(id)->track;
+        QVERIFY(ApplyEulerFilterCommand::changes(before));
+        document.push(new ApplyEulerFilterCommand(document, id));
+        const MotionTrack& after = document.object(id)->track;
+        QVERIFY(!ApplyEulerFilterCommand::changes(after));
+        QCOMPARE(after.keys[0].pose.orientation.coeffs(), before.keys[0].pose.orientation.coeffs());
+        for (int k = 1; k < kKeys; ++k)
+            QVERIFY(after.keys[k].pose.orientation.coeffs().dot(after.keys[k - 1].pose.orientation.coeffs()) >= 0.0);
+        const TrackMotion was(before);
+        const TrackMotion is(after);
+        for (double t = -0.5; t <= 5.5; t += 0.05)
+            QVERIFY(std::abs(std::abs(was.at(t).orientation.dot(is.at(t).orientation)) - 1.0) < 1e-12);
+        document.undoStack().undo();
+        for (int k = 0; k < kKeys; ++k)
+            QCOMPARE(document.object(id)->track.keys[k].pose.orientation.coeffs(), before.keys[k].pose.orientation.coeffs());
+    }
+};
+
+QTEST_MAIN(TstMotionChannels)
+#include "tst_motion_channels.moc"
