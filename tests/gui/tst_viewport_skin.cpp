@@ -120,6 +120,13 @@ struct Session {
     {
         return image.pixelColor((onScreen(world) * image.devicePixelRatio()).toPoint());
     }
+
+    // Whether a new frame shows a mesh at `world`.
+    bool drawsMeshAt(const Eigen::Vector3d& world)
+    {
+        settle();
+        return isMesh(colourAt(viewport->grabFramebuffer(), world));
+    }
 };
 
 } // namespace
@@ -151,7 +158,8 @@ private slots:
         const QColor boxBefore = session.colourAt(image, kBoxPosition);
 
         document.push(new model::SetKeyframeOrientationCommand(document, kTip, 0, turn));
-        session.settle();
+        // The changed track's motion is built off the UI thread: frames until the drawn one has it.
+        QTRY_VERIFY_WITH_TIMEOUT(session.drawsMeshAt(farEndTurned), 30'000);
         image = session.viewport->grabFramebuffer();
         QVERIFY2(!isMesh(session.colourAt(image, farEnd)), qPrintable(session.colourAt(image, farEnd).name()));
         QVERIFY2(isMesh(session.colourAt(image, farEndTurned)), qPrintable(session.colourAt(image, farEndTurned).name()));
@@ -169,7 +177,7 @@ private slots:
 
         // Undone, the bar is back in its bind pose.
         document.undoStack().undo();
-        session.settle();
+        QTRY_VERIFY_WITH_TIMEOUT(session.drawsMeshAt(farEnd), 30'000);
         image = session.viewport->grabFramebuffer();
         QVERIFY(isMesh(session.colourAt(image, farEnd)));
         QVERIFY(!isMesh(session.colourAt(image, farEndTurned)));
