@@ -387,407 +387,417 @@
         <translation>Bedien&amp;felder</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="52"/>
+        <location filename="../ui/main_window.ui" line="64"/>
         <source>&amp;Motion</source>
         <translation>Be&amp;wegung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="65"/>
+        <location filename="../ui/main_window.ui" line="77"/>
+        <source>&amp;Object</source>
+        <translation>&amp;Objekt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="78"/>
+        <source>&amp;Add</source>
+        <translation>&amp;Hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="82"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="75"/>
+        <location filename="../ui/main_window.ui" line="93"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="83"/>
+        <location filename="../ui/main_window.ui" line="101"/>
         <source>Edit</source>
         <translation>Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="88"/>
+        <location filename="../ui/main_window.ui" line="106"/>
         <source>Playback</source>
         <translation>Wiedergabe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="100"/>
+        <location filename="../ui/main_window.ui" line="118"/>
         <source>Inspector</source>
         <translation>Inspektor</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="112"/>
+        <location filename="../ui/main_window.ui" line="130"/>
         <source>ScrewBender</source>
         <translation>ScrewBender</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="124"/>
+        <location filename="../ui/main_window.ui" line="142"/>
         <source>Undo History</source>
         <translation>Rückgängig-Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="136"/>
+        <location filename="../ui/main_window.ui" line="154"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="148"/>
+        <location filename="../ui/main_window.ui" line="166"/>
         <source>Smoothness</source>
         <translation>Glätte</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="160"/>
+        <location filename="../ui/main_window.ui" line="178"/>
         <source>Angular Velocity Direction</source>
         <translation>Richtung der Winkelgeschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="172"/>
+        <location filename="../ui/main_window.ui" line="190"/>
         <source>Fit</source>
         <translation>Anpassung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="184"/>
+        <location filename="../ui/main_window.ui" line="202"/>
         <source>Angular Speed</source>
         <translation>Betrag der Winkelgeschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="196"/>
+        <location filename="../ui/main_window.ui" line="214"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="197"/>
+        <location filename="../ui/main_window.ui" line="215"/>
         <source>Start a new, empty project</source>
         <translation>Ein neues, leeres Projekt beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="200"/>
+        <location filename="../ui/main_window.ui" line="218"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="201"/>
+        <location filename="../ui/main_window.ui" line="219"/>
         <source>Open a Gyre project</source>
         <translation>Ein Gyre-Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="204"/>
+        <location filename="../ui/main_window.ui" line="222"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="205"/>
+        <location filename="../ui/main_window.ui" line="223"/>
         <source>Save the project</source>
         <translation>Das Projekt speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="208"/>
+        <location filename="../ui/main_window.ui" line="226"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="209"/>
+        <location filename="../ui/main_window.ui" line="227"/>
         <source>Save the project under a new name</source>
         <translation>Das Projekt unter einem neuen Namen speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="212"/>
+        <location filename="../ui/main_window.ui" line="230"/>
         <source>&amp;Import Scene…</source>
         <translation>Szene &amp;importieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="213"/>
+        <location filename="../ui/main_window.ui" line="231"/>
         <source>Add the objects and motion of an FBX, glTF, Collada, OBJ, BVH or other scene file</source>
         <translation>Die Objekte und die Bewegung einer FBX-, glTF-, Collada-, OBJ-, BVH- oder anderen Szenendatei hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="217"/>
+        <location filename="../ui/main_window.ui" line="235"/>
         <source>&amp;Export Scene…</source>
         <translation>Szene &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="218"/>
+        <location filename="../ui/main_window.ui" line="236"/>
         <source>Write the scene with its motion baked to glTF, Collada, FBX or OBJ</source>
         <translation>Die Szene mit gebackener Bewegung als glTF, Collada, FBX oder OBJ schreiben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="222"/>
+        <location filename="../ui/main_window.ui" line="240"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="223"/>
+        <location filename="../ui/main_window.ui" line="241"/>
         <source>Quit Gyre</source>
         <translation>Gyre beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="227"/>
+        <location filename="../ui/main_window.ui" line="245"/>
         <source>Undo &amp;History</source>
         <translation>Rückgängig-&amp;Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="228"/>
+        <location filename="../ui/main_window.ui" line="246"/>
         <source>Show every step of the undo history</source>
         <translation>Jeden Schritt des Rückgängig-Verlaufs zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="232"/>
+        <location filename="../ui/main_window.ui" line="250"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Einstellungen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="233"/>
+        <location filename="../ui/main_window.ui" line="251"/>
         <source>Choose the language Gyre speaks</source>
         <translation>Die Sprache wählen, die Gyre spricht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="239"/>
+        <location filename="../ui/main_window.ui" line="257"/>
         <source>Original Motion as &amp;Ghost</source>
         <translation>Ursprüngliche Bewegung als &amp;Geisterbild</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="240"/>
+        <location filename="../ui/main_window.ui" line="258"/>
         <source>Show the motion as it was when the project was opened or saved, faintly</source>
         <translation>Die Bewegung blass zeigen, wie sie beim Öffnen oder Speichern des Projekts war</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="245"/>
+        <location filename="../ui/main_window.ui" line="263"/>
         <source>Centre &amp;Trajectory</source>
         <translation>&amp;Bahn des Mittelpunkts</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="246"/>
+        <location filename="../ui/main_window.ui" line="264"/>
         <source>Show the path of the selected object&apos;s centre</source>
         <translation>Die Bahn des Mittelpunkts des gewählten Objekts zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="251"/>
+        <location filename="../ui/main_window.ui" line="269"/>
         <source>&amp;Control Poses</source>
         <translation>&amp;Kontrollposen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="252"/>
+        <location filename="../ui/main_window.ui" line="270"/>
         <source>Show the keyframe poses of the selected object in place</source>
         <translation>Die Posen der Schlüsselbilder des gewählten Objekts an Ort und Stelle zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="257"/>
+        <location filename="../ui/main_window.ui" line="275"/>
         <source>&amp;Stroboscopic Trail</source>
         <translation>&amp;Stroboskopspur</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="258"/>
+        <location filename="../ui/main_window.ui" line="276"/>
         <source>Show many copies of the selected object along its subdivided motion</source>
         <translation>Viele Kopien des gewählten Objekts entlang seiner unterteilten Bewegung zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="261"/>
+        <location filename="../ui/main_window.ui" line="279"/>
         <source>&amp;Frame Scene</source>
         <translation>Szene ein&amp;passen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="262"/>
+        <location filename="../ui/main_window.ui" line="280"/>
         <source>Point the camera at the whole scene</source>
         <translation>Die Kamera auf die ganze Szene richten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="284"/>
         <source>Frame &amp;Selected</source>
         <translation>&amp;Auswahl einpassen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="285"/>
         <source>Point the camera at the selected object</source>
         <translation>Die Kamera auf das ausgewählte Objekt richten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="289"/>
         <source>&amp;Front View</source>
         <translation>&amp;Vorderansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="290"/>
         <source>Look along +Y, Z up</source>
         <translation>Entlang +Y blicken, Z oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="294"/>
         <source>&amp;Back View</source>
         <translation>&amp;Rückansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="295"/>
         <source>Look along −Y, Z up</source>
         <translation>Entlang −Y blicken, Z oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="299"/>
         <source>&amp;Right View</source>
         <translation>Ansicht von r&amp;echts</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="300"/>
         <source>Look along −X, Z up</source>
         <translation>Entlang −X blicken, Z oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="304"/>
         <source>&amp;Left View</source>
         <translation>Ansicht von &amp;links</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="305"/>
         <source>Look along +X, Z up</source>
         <translation>Entlang +X blicken, Z oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="309"/>
         <source>&amp;Top View</source>
         <translation>Ansicht von &amp;oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="310"/>
         <source>Look down −Z, Y up</source>
         <translation>Entlang −Z nach unten blicken, Y oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="314"/>
         <source>Botto&amp;m View</source>
         <translation>Ansicht von &amp;unten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="315"/>
         <source>Look up +Z</source>
         <translation>Entlang +Z nach oben blicken</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="320"/>
         <source>&amp;Orthographic</source>
         <translation>&amp;Orthografisch</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="321"/>
         <source>Parallel projection instead of perspective</source>
         <translation>Parallelprojektion statt Perspektive</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="326"/>
         <source>&amp;Wireframe</source>
         <translation>&amp;Drahtgitter</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="327"/>
         <source>Draw the objects as the edges of their triangles</source>
         <translation>Die Objekte als Kanten ihrer Dreiecke zeichnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="332"/>
         <source>&amp;X-Ray</source>
         <translation>&amp;Röntgen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="333"/>
         <source>Draw the objects see-through</source>
         <translation>Die Objekte durchsichtig zeichnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="267"/>
+        <location filename="../ui/main_window.ui" line="338"/>
         <source>&amp;Play</source>
         <translation>&amp;Abspielen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="268"/>
+        <location filename="../ui/main_window.ui" line="339"/>
         <source>Play or pause the animation</source>
         <translation>Die Animation abspielen oder anhalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="272"/>
+        <location filename="../ui/main_window.ui" line="343"/>
         <source>Step &amp;Forward</source>
         <translation>Einen Schritt &amp;vor</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="273"/>
+        <location filename="../ui/main_window.ui" line="344"/>
         <source>One frame later</source>
         <translation>Ein Frame später</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="277"/>
+        <location filename="../ui/main_window.ui" line="348"/>
         <source>Step &amp;Backward</source>
         <translation>Einen Schritt &amp;zurück</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="278"/>
+        <location filename="../ui/main_window.ui" line="349"/>
         <source>One frame earlier</source>
         <translation>Ein Frame früher</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="282"/>
+        <location filename="../ui/main_window.ui" line="353"/>
         <source>Go to &amp;Start</source>
         <translation>Zum A&amp;nfang</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="283"/>
+        <location filename="../ui/main_window.ui" line="354"/>
         <source>Go to the first frame</source>
         <translation>Zum ersten Frame gehen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="287"/>
+        <location filename="../ui/main_window.ui" line="358"/>
         <source>Go to &amp;End</source>
         <translation>Zum &amp;Ende</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="288"/>
+        <location filename="../ui/main_window.ui" line="359"/>
         <source>Go to the last frame</source>
         <translation>Zum letzten Frame gehen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="294"/>
+        <location filename="../ui/main_window.ui" line="365"/>
         <source>&amp;Loop</source>
         <translation>&amp;Schleife</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="295"/>
+        <location filename="../ui/main_window.ui" line="366"/>
         <source>Start again from the beginning at the end</source>
         <translation>Am Ende wieder von vorn beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="298"/>
+        <location filename="../ui/main_window.ui" line="369"/>
         <source>&amp;Add Keyframe</source>
         <translation>Schlüsselbild &amp;hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="299"/>
+        <location filename="../ui/main_window.ui" line="370"/>
         <source>Key the selected object&apos;s pose at the current time</source>
         <translation>Die Pose des gewählten Objekts zur aktuellen Zeit als Schlüsselbild setzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="303"/>
+        <location filename="../ui/main_window.ui" line="374"/>
         <source>&amp;Delete Keyframe</source>
         <translation>Schlüsselbild &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="304"/>
+        <location filename="../ui/main_window.ui" line="375"/>
         <source>Delete the selected keyframe</source>
         <translation>Das gewählte Schlüsselbild löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="310"/>
+        <location filename="../ui/main_window.ui" line="381"/>
         <source>&amp;Constrain Keyframe</source>
         <translation>Schlüsselbild &amp;fixieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="311"/>
+        <location filename="../ui/main_window.ui" line="382"/>
         <source>Keep the selected keyframe exactly when fitting, or free it</source>
         <translation>Das gewählte Schlüsselbild bei der Anpassung exakt halten oder freigeben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="315"/>
+        <location filename="../ui/main_window.ui" line="386"/>
         <source>&amp;About Gyre</source>
         <translation>&amp;Über Gyre</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="316"/>
+        <location filename="../ui/main_window.ui" line="387"/>
         <source>Version, licence and the libraries Gyre is built on</source>
         <translation>Version, Lizenz und die Bibliotheken, auf denen Gyre aufbaut</translation>
     </message>
@@ -911,363 +921,409 @@
 <context>
     <name>gyre::FileError</name>
     <message>
-        <location filename="../src/model/project_file.cpp"/>
+        <location filename="../src/model/project_file.cpp" line="366"/>
         <source>these %1 keys bring the file past the %2 keys a project may hold</source>
         <translation>mit diesen %1 Schlüsseln hat die Datei mehr als die %2 Schlüssel, die ein Projekt haben darf</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp"/>
+        <location filename="../src/model/project_file.cpp" line="595"/>
         <source>these %1 times bring the file past the %2 times a project may hold</source>
         <translation>mit diesen %1 Zeiten hat die Datei mehr als die %2 Zeiten, die ein Projekt haben darf</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp"/>
+        <location filename="../src/model/project_file.cpp" line="369"/>
         <source>the file has no time lists</source>
         <translation>die Datei hat keine Zeitlisten</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp"/>
-        <source>time list %1 holds %2 times for %3 keys</source>
-        <translation>Zeitliste %1 enthält %2 Zeiten für %3 Schlüssel</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp"/>
-        <source>a version %1 file starts with &quot;%2&quot; and its version in binary, not with JSON text</source>
-        <translation>eine Datei der Version %1 beginnt mit „%2“ und ihrer Version in Binärform, nicht mit JSON-Text</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp"/>
-        <source>the file ends inside its first %1 bytes</source>
-        <translation>die Datei endet innerhalb ihrer ersten %1 Bytes</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp"/>
-        <source>a version %1 file is JSON text, not binary</source>
-        <translation>eine Datei der Version %1 ist JSON-Text, nicht binär</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp"/>
-        <source>%1 bytes; a header may hold at most %2</source>
-        <translation>%1 Bytes; ein Kopf darf höchstens %2 haben</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_blocks.cpp"/>
-        <source>%1 is neither 0 nor 1</source>
-        <translation>%1 ist weder 0 noch 1</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_blocks.cpp"/>
-        <source>its block needs %1 bytes; the file has %2 left</source>
-        <translation>sein Block braucht %1 Bytes; die Datei hat noch %2</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_blocks.cpp"/>
-        <source>the file ends %1 bytes into its block of %2</source>
-        <translation>die Datei endet nach %1 Bytes seines Blocks von %2</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_blocks.cpp"/>
-        <source>the file goes on after its last block</source>
-        <translation>die Datei geht nach ihrem letzten Block weiter</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_blocks.cpp"/>
-        <source>the writer has no block for it</source>
-        <translation>der Schreiber hat keinen Block dafür</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_blocks.cpp"/>
-        <source>its block holds %1 bytes, not %2</source>
-        <translation>sein Block hat %1 Bytes, nicht %2</translation>
-    </message>
-    <message>
-        <location filename="../src/model/autosave.cpp" line="36"/>
-        <location filename="../src/model/project_file.cpp" line="483"/>
-        <location filename="../src/model/project_file.cpp" line="485"/>
-        <location filename="../src/io/file_contents.cpp" line="13"/>
-        <location filename="../src/io/scene_export.cpp" line="303"/>
-        <location filename="../src/io/scene_export.cpp" line="306"/>
-        <source>cannot write: %1</source>
-        <translation>kann nicht geschrieben werden: %1</translation>
-    </message>
-    <message>
-        <location filename="../src/model/autosave.cpp" line="68"/>
-        <source>cannot create the autosave directory</source>
-        <translation>das Verzeichnis für die automatische Sicherung kann nicht angelegt werden</translation>
-    </message>
-    <message>
-        <location filename="../src/model/autosave.cpp" line="76"/>
-        <source>cannot take the autosave lock</source>
-        <translation>die Sperre der automatischen Sicherung kann nicht übernommen werden</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="171"/>
-        <source>unknown value &quot;%1&quot;; expected one of %2</source>
-        <translation>unbekannter Wert „%1“; erwartet wird einer von %2</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="209"/>
-        <source>%1 bytes are not a whole number of %2-byte items</source>
-        <translation>%1 Bytes sind keine ganze Zahl von %2-Byte-Einträgen</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="266"/>
-        <location filename="../src/model/value_checks.cpp" line="116"/>
-        <source>a stroke needs at least one point</source>
-        <translation>ein Strich braucht mindestens einen Punkt</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="268"/>
-        <source>%1 times for %2 points; give none or one per point</source>
-        <translation>%1 Zeiten für %2 Punkte; geben Sie keine oder eine je Punkt an</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="333"/>
-        <source>the file has no meshes</source>
-        <translation>die Datei hat keine Meshes</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="352"/>
-        <source>%1 is also the id of objects[%2]</source>
-        <translation>%1 ist auch die ID von objects[%2]</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="355"/>
-        <source>no object has id %1</source>
-        <translation>kein Objekt hat die ID %1</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="364"/>
-        <source>object %1 is its own ancestor</source>
-        <translation>Objekt %1 ist sein eigener Vorfahr</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="377"/>
-        <source>object %1 comes after it in the file; parents come before their children</source>
-        <translation>Objekt %1 steht in der Datei nach ihm; Eltern stehen vor ihren Kindern</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="385"/>
-        <source>expected &quot;%1&quot;, found &quot;%2&quot;; this is not a Gyre project</source>
-        <translation>erwartet „%1“, gefunden „%2“; dies ist kein Gyre-Projekt</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="390"/>
-        <source>the file has version %1, newer than this build of Gyre reads (%2 and older); open it with a newer Gyre</source>
-        <translation>die Datei hat Version %1, neuer als diese Gyre-Version lesen kann (%2 und älter); öffnen Sie sie mit einem neueren Gyre</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="422"/>
-        <source>is a directory, not a file</source>
-        <translation>ist ein Verzeichnis, keine Datei</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="425"/>
-        <source>cannot open: %1</source>
-        <translation>kann nicht geöffnet werden: %1</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="427"/>
+        <location filename="../src/model/project_file.cpp" line="242"/>
         <source>is larger than 1 GiB, the most a project file may hold</source>
         <translation>ist größer als 1 GiB, das Höchstmaß für eine Projektdatei</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="440"/>
+        <location filename="../src/model/project_file.cpp" line="373"/>
+        <source>time list %1 holds %2 times for %3 keys</source>
+        <translation>Zeitliste %1 enthält %2 Zeiten für %3 Schlüssel</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="572"/>
+        <source>a version %1 file starts with &quot;%2&quot; and its version in binary, not with JSON text</source>
+        <translation>eine Datei der Version %1 beginnt mit „%2“ und ihrer Version in Binärform, nicht mit JSON-Text</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="654"/>
+        <source>the file ends inside its first %1 bytes</source>
+        <translation>die Datei endet innerhalb ihrer ersten %1 Bytes</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="659"/>
+        <source>a version %1 file is JSON text, not binary</source>
+        <translation>eine Datei der Version %1 ist JSON-Text, nicht binär</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="663"/>
+        <source>%1 bytes; a header may hold at most %2</source>
+        <translation>%1 Bytes; ein Kopf darf höchstens %2 haben</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp" line="129"/>
+        <source>%1 is neither 0 nor 1</source>
+        <translation>%1 ist weder 0 noch 1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp" line="233"/>
+        <source>its block needs %1 bytes; the file has %2 left</source>
+        <translation>sein Block braucht %1 Bytes; die Datei hat noch %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp" line="239"/>
+        <source>the file ends %1 bytes into its block of %2</source>
+        <translation>die Datei endet nach %1 Bytes seines Blocks von %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp" line="249"/>
+        <source>the file goes on after its last block</source>
+        <translation>die Datei geht nach ihrem letzten Block weiter</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp" line="255"/>
+        <source>the writer has no block for it</source>
+        <translation>der Schreiber hat keinen Block dafür</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp" line="258"/>
+        <source>its block holds %1 bytes, not %2</source>
+        <translation>sein Block hat %1 Bytes, nicht %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/output_target.cpp" line="34"/>
+        <source>cannot write to standard output: %1</source>
+        <translation>in die Standardausgabe kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/output_target.cpp" line="73"/>
+        <location filename="../src/jobs/autosave.cpp" line="38"/>
+        <source>cannot write: %1</source>
+        <translation>kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/jobs/autosave.cpp" line="83"/>
+        <source>cannot create the autosave directory</source>
+        <translation>das Verzeichnis für die automatische Sicherung kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location filename="../src/jobs/autosave.cpp" line="91"/>
+        <source>cannot take the autosave lock</source>
+        <translation>die Sperre der automatischen Sicherung kann nicht übernommen werden</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="254"/>
+        <source>unknown value &quot;%1&quot;; expected one of %2</source>
+        <translation>unbekannter Wert „%1“; erwartet wird einer von %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="291"/>
+        <source>%1 bytes are not a whole number of %2-byte items</source>
+        <translation>%1 Bytes sind keine ganze Zahl von %2-Byte-Einträgen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="402"/>
+        <location filename="../src/model/value_checks.cpp" line="155"/>
+        <source>a stroke needs at least one point</source>
+        <translation>ein Strich braucht mindestens einen Punkt</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="404"/>
+        <source>%1 times for %2 points; give none or one per point</source>
+        <translation>%1 Zeiten für %2 Punkte; geben Sie keine oder eine je Punkt an</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="431"/>
+        <source>these %1 control points bring the file past the %2 keys a project may hold</source>
+        <translation>mit diesen %1 Kontrollpunkten hat die Datei mehr als die %2 Schlüssel, die ein Projekt haben darf</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="471"/>
+        <location filename="../src/model/value_checks.cpp" line="206"/>
+        <source>keys to restore without an applied fit</source>
+        <translation>wiederherzustellende Schlüssel ohne angewendete Anpassung</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="492"/>
+        <source>the file has no meshes</source>
+        <translation>die Datei hat keine Meshes</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="520"/>
+        <source>%1 is also the id of objects[%2]</source>
+        <translation>%1 ist auch die ID von objects[%2]</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="523"/>
+        <source>no object has id %1</source>
+        <translation>kein Objekt hat die ID %1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="532"/>
+        <source>object %1 is its own ancestor</source>
+        <translation>Objekt %1 ist sein eigener Vorfahr</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="545"/>
+        <source>object %1 comes after it in the file; parents come before their children</source>
+        <translation>Objekt %1 steht in der Datei nach ihm; Eltern stehen vor ihren Kindern</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="566"/>
+        <source>expected &quot;%1&quot;, found &quot;%2&quot;; this is not a Gyre project</source>
+        <translation>erwartet „%1“, gefunden „%2“; dies ist kein Gyre-Projekt</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="739"/>
+        <source>not saved, because its header (the objects&apos; names and settings, the sketches&apos; strokes) would hold %1 bytes, more than the %2 a project may hold</source>
+        <translation>nicht gespeichert, weil ihr Kopf (die Namen und Einstellungen der Objekte, die Striche der Skizzen) %1 Bytes hätte, mehr als die %2, die ein Projekt haben darf</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="556"/>
+        <source>the file has version %1, newer than this build of Gyre reads (%2 and older); open it with a newer Gyre</source>
+        <translation>die Datei hat Version %1, neuer als diese Gyre-Version lesen kann (%2 und älter); öffnen Sie sie mit einem neueren Gyre</translation>
+    </message>
+    <message>
+        <location filename="../src/model/output_target.cpp" line="42"/>
+        <location filename="../src/model/project_file.cpp" line="714"/>
+        <source>is a directory, not a file</source>
+        <translation>ist ein Verzeichnis, keine Datei</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="717"/>
+        <source>cannot open: %1</source>
+        <translation>kann nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="621"/>
         <source>cannot read: %1</source>
         <translation>kann nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="451"/>
+        <location filename="../src/model/project_file.cpp" line="634"/>
         <source>is empty; a project file holds a JSON object</source>
         <translation>ist leer; eine Projektdatei enthält ein JSON-Objekt</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="456"/>
+        <location filename="../src/model/project_file.cpp" line="627"/>
         <source>not valid JSON: %1 at byte %2</source>
         <translation>kein gültiges JSON: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="476"/>
+        <location filename="../src/model/project_file.cpp" line="732"/>
         <source>not saved, because the file would not read back: %1</source>
         <translation>nicht gespeichert, weil sich die Datei nicht wieder lesen ließe: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="74"/>
+        <location filename="../src/io/scene_export.cpp" line="79"/>
         <source>object %1 &apos;%2&apos; is written as &apos;%3&apos; so that its name is unique</source>
         <translation>Objekt %1 „%2“ wird als „%3“ geschrieben, damit sein Name eindeutig ist</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="364"/>
+        <location filename="../src/io/scene_export.cpp" line="420"/>
         <source>cannot be written as FBX: %1</source>
         <translation>kann nicht als FBX geschrieben werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="89"/>
-        <source>the mesh of &apos;%1&apos; has an index past its vertices</source>
-        <translation>das Mesh von „%1“ hat einen Index jenseits seiner Vertices</translation>
-    </message>
-    <message>
-        <location filename="../src/io/scene_export.cpp" line="195"/>
+        <location filename="../src/io/scene_export.cpp" line="170"/>
         <source>baking at %1 fps gives more than %2 samples</source>
         <translation>Backen mit %1 fps ergibt mehr als %2 Abtastwerte</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="202"/>
+        <location filename="../src/io/scene_export.cpp" line="177"/>
         <source>the motion of &apos;%1&apos; cannot be baked: %2</source>
         <translation>die Bewegung von „%1“ kann nicht gebacken werden: %2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="214"/>
+        <location filename="../src/io/scene_export.cpp" line="149"/>
         <source>the motion of &apos;%1&apos; cannot be evaluated: %2</source>
         <translation>die Bewegung von „%1“ kann nicht ausgewertet werden: %2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="249"/>
+        <location filename="../src/io/scene_export.cpp" line="137"/>
         <source>object %1 names parent %2, which does not come before it; it is written at the top level</source>
         <translation>Objekt %1 nennt das Elternobjekt %2, das nicht vor ihm steht; es wird auf oberster Ebene geschrieben</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="319"/>
+        <location filename="../src/io/scene_export.cpp" line="159"/>
+        <source>the mesh of &apos;%1&apos; has an index past its vertices</source>
+        <translation>das Mesh von „%1“ hat einen Index jenseits seiner Eckpunkte</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="350"/>
         <source>Assimp cannot write it</source>
         <translation>Assimp kann sie nicht schreiben</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="320"/>
+        <location filename="../src/io/scene_export.cpp" line="351"/>
         <source>Assimp cannot write it: %1</source>
         <translation>Assimp kann sie nicht schreiben: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="326"/>
+        <location filename="../src/io/scene_export.cpp" line="357"/>
         <source>Assimp wrote nothing</source>
         <translation>Assimp hat nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="349"/>
+        <location filename="../src/io/scene_export.cpp" line="376"/>
+        <source>cannot be written as glTF: %1</source>
+        <translation>kann nicht als glTF geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="400"/>
         <source>the frame rate must be a finite number above zero</source>
         <translation>die Bildrate muss eine endliche Zahl über null sein</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="351"/>
+        <location filename="../src/io/scene_export.cpp" line="402"/>
         <source>the scene&apos;s time range is empty or not finite</source>
         <translation>der Zeitbereich der Szene ist leer oder nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="354"/>
+        <location filename="../src/io/scene_export.cpp" line="405"/>
         <source>the scene has no meshes, and OBJ holds nothing else</source>
         <translation>die Szene hat keine Meshes, und OBJ enthält nichts anderes</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="356"/>
+        <location filename="../src/io/scene_export.cpp" line="407"/>
         <source>OBJ holds no motion: the meshes are written as posed at the start time</source>
         <translation>OBJ enthält keine Bewegung: die Meshes werden so geschrieben, wie sie zur Startzeit stehen</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="51"/>
+        <location filename="../src/io/scene_import.cpp" line="55"/>
         <source>no such file</source>
         <translation>Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="53"/>
+        <location filename="../src/io/scene_import.cpp" line="57"/>
         <source>is a directory, not a scene file</source>
         <translation>ist ein Verzeichnis, keine Szenendatei</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="55"/>
+        <location filename="../src/io/scene_import.cpp" line="59"/>
         <source>cannot be read (permission denied)</source>
         <translation>kann nicht gelesen werden (keine Berechtigung)</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="57"/>
+        <location filename="../src/io/scene_import.cpp" line="61"/>
         <source>the file is empty</source>
         <translation>die Datei ist leer</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="68"/>
+        <location filename="../src/io/scene_import.cpp" line="74"/>
         <source>the file holds no meshes and no animation</source>
         <translation>die Datei enthält weder Meshes noch Animation</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="77"/>
+        <location filename="../src/io/scene_import.cpp" line="83"/>
         <source>not a scene Gyre can read: %1</source>
         <translation>keine Szene, die Gyre lesen kann: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="81"/>
+        <location filename="../src/io/scene_import.cpp" line="87"/>
         <source>the file holds no scene nodes</source>
         <translation>die Datei enthält keine Szenenknoten</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="120"/>
+        <location filename="../src/io/scene_import.cpp" line="129"/>
         <source>%1 key %2 is not finite</source>
         <translation>%1schlüssel %2 ist nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="123"/>
+        <location filename="../src/io/scene_import.cpp" line="132"/>
         <source>%1 key %2 is not a rotation (a zero quaternion)</source>
         <translation>%1schlüssel %2 ist keine Rotation (ein Null-Quaternion)</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="126"/>
+        <location filename="../src/io/scene_import.cpp" line="135"/>
         <source>%1 key %2 is not after the key before it</source>
         <translation>%1schlüssel %2 liegt nicht nach dem Schlüssel davor</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="134"/>
+        <location filename="../src/io/scene_import.cpp" line="144"/>
         <source>node &apos;%1&apos;: %2</source>
         <translation>Knoten „%1“: %2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="245"/>
+        <location filename="../src/io/scene_import.cpp" line="259"/>
         <source>mesh &apos;%1&apos; is skinned; skinning is not imported, so it shows in its bind pose</source>
         <translation>Mesh „%1“ ist geskinnt; Skinning wird nicht importiert, daher erscheint es in seiner Bindungspose</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="331"/>
-        <source>node &apos;%1&apos; has more than one channel; the first is used</source>
-        <translation>Knoten „%1“ hat mehr als einen Kanal; der erste wird verwendet</translation>
+        <location filename="../src/io/scene_import.cpp" line="361"/>
+        <source>node &apos;%1&apos; has more than one channel in animation &apos;%2&apos;; the first is used</source>
+        <translation>Knoten „%1“ hat mehr als einen Kanal in der Animation „%2“; der erste wird verwendet</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="369"/>
+        <location filename="../src/io/scene_import.cpp" line="367"/>
+        <source>node &apos;%1&apos; is moved by more than one of the chosen animations; the later one, &apos;%2&apos;, is used</source>
+        <translation>Knoten „%1“ wird von mehr als einer der gewählten Animationen bewegt; die spätere, „%2“, wird verwendet</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="470"/>
+        <source>animation &apos;%1&apos; moves &apos;%2&apos;, which is not in the scene</source>
+        <translation>Animation „%1“ bewegt den Knoten „%2“, den es in der Szene nicht gibt</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/io/scene_import.cpp" line="500"/>
+        <source>the file has %n animation(s); there is no animation %1</source>
+        <translation>
+            <numerusform>die Datei hat %n Animation; es gibt keine Animation %1</numerusform>
+            <numerusform>die Datei hat %n Animationen; es gibt keine Animation %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="524"/>
+        <source>the frame rate %1 is not in (0, %2]</source>
+        <translation>die Bildrate %1 liegt nicht in (0, %2]</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="531"/>
+        <source>the unit %1 m is not a positive length</source>
+        <translation>die Einheit %1 m ist keine positive Länge</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="635"/>
+        <source>Assimp reads %1 animations and TinyGLTF %2</source>
+        <translation>Assimp liest %1 Animationen und TinyGLTF %2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="416"/>
         <source>node &apos;%1&apos; has a non-uniform scale; its children get the mean scale</source>
         <translation>Knoten „%1“ hat eine ungleichmäßige Skalierung; seine Kinder erhalten die mittlere Skalierung</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="380"/>
+        <location filename="../src/io/scene_import.cpp" line="434"/>
         <source>rotation</source>
         <translation>Rotations</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="383"/>
+        <location filename="../src/io/scene_import.cpp" line="437"/>
         <source>position</source>
         <translation>Positions</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="395"/>
+        <location filename="../src/io/scene_import.cpp" line="452"/>
         <source>scaling</source>
         <translation>Skalierungs</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="401"/>
+        <location filename="../src/io/scene_import.cpp" line="458"/>
         <source>node &apos;%1&apos;: its scale changes over time; Gyre&apos;s motion is rigid, so the scale of its first key is kept</source>
         <translation>Knoten „%1“: seine Skalierung ändert sich mit der Zeit; Gyres Bewegung ist starr, daher wird die Skalierung seines ersten Animationsschlüssels beibehalten</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="413"/>
-        <source>the animation moves &apos;%1&apos;, which is not in the scene</source>
-        <translation>die Animation bewegt „%1“, das nicht in der Szene ist</translation>
-    </message>
-    <message>
-        <location filename="../src/io/scene_import.cpp" line="430"/>
-        <source>the file has %1 animations; there is no animation %2</source>
-        <translation>die Datei hat %1 Animationen; Animation %2 gibt es nicht</translation>
-    </message>
-    <message>
-        <location filename="../src/io/scene_import.cpp" line="440"/>
+        <location filename="../src/io/scene_import.cpp" line="513"/>
         <source>mesh and morph animation is not imported; only node motion is</source>
         <translation>Mesh- und Morph-Animation wird nicht importiert, nur die Bewegung der Knoten</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="442"/>
+        <location filename="../src/io/scene_import.cpp" line="515"/>
         <source>cameras and lights are not imported</source>
         <translation>Kameras und Lichter werden nicht importiert</translation>
     </message>
@@ -1331,7 +1387,7 @@
     </message>
     <message>
         <location filename="../src/model/json_field.cpp" line="116"/>
-        <location filename="../src/model/value_checks.cpp" line="60"/>
+        <location filename="../src/model/value_checks.cpp" line="65"/>
         <source>%1 is not a finite number</source>
         <translation>%1 ist keine endliche Zahl</translation>
     </message>
@@ -1356,187 +1412,438 @@
         <translation>erwartet: %1 Zahlen, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="24"/>
+        <location filename="../src/model/value_checks.cpp" line="29"/>
         <source>not all components are finite</source>
         <translation>nicht alle Komponenten sind endlich</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="34"/>
+        <location filename="../src/model/value_checks.cpp" line="39"/>
         <source>the %1 is zero</source>
         <translation>%1 ist null</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="36"/>
+        <location filename="../src/model/value_checks.cpp" line="41"/>
         <source>the %1 has length %2; it must have length 1</source>
         <translation>%1 hat die Länge %2; die Länge muss 1 sein</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="67"/>
+        <location filename="../src/model/value_checks.cpp" line="72"/>
         <source>%1 is negative</source>
         <translation>%1 ist negativ</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="74"/>
+        <location filename="../src/model/value_checks.cpp" line="79"/>
         <source>%1 is not positive</source>
         <translation>%1 ist nicht positiv</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="80"/>
+        <location filename="../src/model/value_checks.cpp" line="85"/>
         <source>direction</source>
         <translation>die Richtung</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="84"/>
+        <location filename="../src/model/value_checks.cpp" line="89"/>
         <source>quaternion</source>
         <translation>das Quaternion</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="95"/>
+        <location filename="../src/model/value_checks.cpp" line="100"/>
+        <source>position coordinate %1 is beyond ±%2</source>
+        <translation>die Positionskoordinate %1 liegt außerhalb von ±%2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="108"/>
+        <source>time %1 is beyond ±%2 s</source>
+        <translation>die Zeit %1 liegt außerhalb von ±%2 s</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="115"/>
         <source>time %1 does not come after the time before it, %2</source>
         <translation>die Zeit %1 liegt nicht nach der Zeit davor, %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="120"/>
+        <location filename="../src/model/value_checks.cpp" line="124"/>
+        <source>the value has length %1; a fitted value needs length at least %2</source>
+        <translation>der Wert hat die Länge %1; ein angepasster Wert braucht mindestens die Länge %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="133"/>
+        <source>the derivative has length %1 per second; the most it may have is %2</source>
+        <translation>die Ableitung hat die Länge %1 pro Sekunde; höchstens zulässig ist %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="159"/>
         <source>a stroke has no times or one per point</source>
         <translation>ein Strich hat keine Zeiten oder eine je Punkt</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="136"/>
+        <location filename="../src/model/value_checks.cpp" line="175"/>
         <source>the pattern&apos;s repeat count %1 is negative</source>
         <translation>die Wiederholungszahl %1 des Musters ist negativ</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="170"/>
+        <location filename="../src/model/value_checks.cpp" line="212"/>
         <source>subdivision levels %1 are outside 0 to %2</source>
         <translation>die Unterteilungsstufen %1 liegen außerhalb von 0 bis %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="183"/>
+        <location filename="../src/model/value_checks.cpp" line="223"/>
+        <source>%1 keys at %2 levels make %3 poses; the budget is %4</source>
+        <translation>%1 Schlüssel ergeben bei %2 Stufen %3 Posen; erlaubt sind höchstens %4</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="240"/>
         <source>a frame rate of %1 is above %2</source>
         <translation>eine Bildrate von %1 liegt über %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="191"/>
+        <location filename="../src/model/value_checks.cpp" line="248"/>
         <source>the end time %1 does not come after the start time %2</source>
         <translation>die Endzeit %1 liegt nicht nach der Startzeit %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="199"/>
+        <location filename="../src/model/value_checks.cpp" line="253"/>
+        <source>%1 s at %2 fps make %3 frames; the budget is %4</source>
+        <translation>%1 s bei %2 fps ergeben %3 Frames; erlaubt sind höchstens %4</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="262"/>
         <source>a mesh position is not finite</source>
         <translation>eine Mesh-Position ist nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="202"/>
+        <location filename="../src/model/value_checks.cpp" line="265"/>
         <source>a mesh normal is not finite</source>
         <translation>eine Mesh-Normale ist nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="204"/>
+        <location filename="../src/model/value_checks.cpp" line="267"/>
         <source>the mesh has %1 normals for %2 positions</source>
         <translation>das Mesh hat %1 Normalen für %2 Positionen</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="206"/>
+        <location filename="../src/model/value_checks.cpp" line="269"/>
         <source>the mesh&apos;s %1 indices do not make whole triangles</source>
         <translation>die %1 Indizes des Meshes ergeben keine ganzen Dreiecke</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="209"/>
+        <location filename="../src/model/value_checks.cpp" line="272"/>
         <source>mesh index %1 is beyond its %2 positions</source>
         <translation>der Mesh-Index %1 liegt jenseits seiner %2 Positionen</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="33"/>
+        <location filename="../src/io/scene_worker.cpp" line="28"/>
         <source>%1 GiB</source>
         <translation>%1 GiB</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="34"/>
+        <location filename="../src/io/scene_worker.cpp" line="29"/>
         <source>%1 MiB</source>
         <translation>%1 MiB</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="80"/>
+        <location filename="../src/io/scene_worker.cpp" line="154"/>
         <source>the scene reader %1 is not installed beside %2</source>
         <translation>das Szenen-Leseprogramm %1 ist nicht neben %2 installiert</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="84"/>
+        <location filename="../src/io/scene_worker.cpp" line="158"/>
         <source>the scene reader %1 is missing or not executable</source>
         <translation>das Szenen-Leseprogramm %1 fehlt oder ist nicht ausführbar</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="91"/>
+        <location filename="../src/io/scene_worker.cpp" line="174"/>
         <source>the scene reader %1 cannot be started: %2</source>
         <translation>das Szenen-Leseprogramm %1 lässt sich nicht starten: %2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="109"/>
+        <location filename="../src/io/scene_worker.cpp" line="119"/>
         <source>the scene reader took longer than %1 s and was stopped; the file may be damaged or too large</source>
         <translation>das Szenen-Leseprogramm brauchte länger als %1 s und wurde angehalten; die Datei ist vielleicht beschädigt oder zu groß</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="118"/>
+        <location filename="../src/io/scene_worker.cpp" line="123"/>
         <source>the scene reader&apos;s reply is larger than %1</source>
         <translation>die Antwort des Szenen-Leseprogramms ist größer als %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="125"/>
+        <location filename="../src/io/scene_worker.cpp" line="133"/>
         <source>the scene reader crashed on this file (signal %1, %2)%3</source>
         <translation>das Szenen-Leseprogramm ist an dieser Datei abgestürzt (Signal %1, %2)%3</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="129"/>
+        <location filename="../src/io/scene_worker.cpp" line="191"/>
         <source>the scene reader needed more than %1 of memory for this file and was stopped</source>
         <translation>das Szenen-Leseprogramm brauchte für diese Datei mehr als %1 Speicher und wurde angehalten</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="132"/>
+        <location filename="../src/io/scene_worker.cpp" line="137"/>
         <source>the scene reader failed (exit status %1)%2</source>
         <translation>das Szenen-Leseprogramm ist gescheitert (Exit-Status %1)%2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="138"/>
+        <location filename="../src/io/scene_worker.cpp" line="102"/>
         <source>the scene reader&apos;s reply is malformed: %1</source>
         <translation>die Antwort des Szenen-Leseprogramms ist fehlerhaft: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="161"/>
+        <location filename="../src/io/scene_worker.cpp" line="106"/>
         <source>the scene reader&apos;s reply is malformed: the wrong kind of reply</source>
         <translation>die Antwort des Szenen-Leseprogramms ist fehlerhaft: eine Antwort der falschen Art</translation>
+    </message>
+    <message>
+        <location filename="../src/io/baked_scene.cpp" line="167"/>
+        <source>glTF times cannot be negative: the motion is written %1 s later, from 0 s</source>
+        <translation>glTF-Zeiten können nicht negativ sein: die Bewegung wird %1 s später geschrieben, ab 0 s</translation>
+    </message>
+    <message>
+        <location filename="../src/io/baked_scene.cpp" line="186"/>
+        <source>&apos;%1&apos;: two of its keys are within a float32 step; its rotation and translation are written as baked samples, not as its splines</source>
+        <translation>„%1“: zwei seiner Schlüssel liegen innerhalb eines float32-Schritts; seine Rotation und Translation werden als gebackene Abtastwerte geschrieben, nicht als seine Splines</translation>
+    </message>
+    <message>
+        <location filename="../src/io/baked_scene.cpp" line="193"/>
+        <source>&apos;%1&apos;: %2 baked samples are left out, each within a float32 step of the one kept (glTF stores times as float32)</source>
+        <translation>„%1“: %2 gebackene Abtastwerte werden ausgelassen, jeder innerhalb eines float32-Schritts vom beibehaltenen (glTF speichert Zeiten als float32)</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="28"/>
+        <source>%1 is %2 bytes, over the %3 bytes a glTF buffer may have</source>
+        <translation>%1 hat %2 Bytes, mehr als die %3 Bytes, die ein glTF-Buffer haben darf</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="62"/>
+        <source>there is no accessor %1</source>
+        <translation>es gibt keinen Accessor %1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="66"/>
+        <source>count %1 is over the %2 elements Gyre reads</source>
+        <translation>die Anzahl %1 ist größer als die %2 Elemente, die Gyre liest</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="74"/>
+        <source>there is no buffer view %1</source>
+        <translation>es gibt keine Buffer-View %1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="77"/>
+        <source>its buffer view names no buffer</source>
+        <translation>seine Buffer-View nennt keinen Buffer</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="83"/>
+        <source>%1 elements from byte %2 run past its buffer view&apos;s %3 bytes</source>
+        <translation>%1 Elemente ab Byte %2 reichen über die %3 Bytes seiner Buffer-View hinaus</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="88"/>
+        <source>its buffer view runs past the buffer&apos;s %1 bytes</source>
+        <translation>seine Buffer-View reicht über die %1 Bytes des Buffers hinaus</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="101"/>
+        <source>there is no such sampler</source>
+        <translation>einen solchen Sampler gibt es nicht</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="112"/>
+        <source>&apos;%1&apos; is not an interpolation</source>
+        <translation>„%1“ ist keine Interpolation</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="121"/>
+        <source>%1 times need %2 output elements; the output has %3</source>
+        <translation>%1 Zeiten brauchen %2 Ausgabeelemente; die Ausgabe hat %3</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="129"/>
+        <source>time %1 is not finite or not after the one before it</source>
+        <translation>Zeit %1 ist nicht endlich oder liegt nicht nach der vorherigen</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="137"/>
+        <source>element %1 is not finite</source>
+        <translation>Element %1 ist nicht endlich</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="148"/>
+        <source>rotation %1 is a zero quaternion</source>
+        <translation>Rotation %1 ist ein Null-Quaternion</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="219"/>
+        <source>not a glTF file Gyre can read: %1</source>
+        <translation>keine glTF-Datei, die Gyre lesen kann: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="327"/>
+        <source>node &apos;%1&apos;: its motion at %2 fps needs more than %3 keys</source>
+        <translation>Knoten „%1“: seine Bewegung braucht bei %2 fps mehr als %3 Schlüssel</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="164"/>
+        <source>the FBX time mode</source>
+        <translation>der FBX-Zeitmodus</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="171"/>
+        <source>the BVH frame time</source>
+        <translation>die Frame Time der BVH-Datei</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="176"/>
+        <source>every key is on a frame of %1 fps</source>
+        <translation>jeder Schlüssel liegt auf einem Frame von %1 fps</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="180"/>
+        <source>no animation; Gyre&apos;s default</source>
+        <translation>keine Animation; Gyres Standardwert</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="181"/>
+        <source>the keys are on the frames of no common rate; Gyre&apos;s default</source>
+        <translation>die Schlüssel liegen auf den Frames keiner gemeinsamen Rate; Gyres Standardwert</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="188"/>
+        <source>written by Assimp, whose FBX unit says nothing; metres assumed</source>
+        <translation>von Assimp geschrieben, dessen FBX-Einheit nichts aussagt; Meter angenommen</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="195"/>
+        <source>the FBX UnitScaleFactor, %1 cm</source>
+        <translation>der FBX-UnitScaleFactor, %1 cm</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="198"/>
+        <source>FBX&apos;s default, 1 cm</source>
+        <translation>der FBX-Standardwert, 1 cm</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="205"/>
+        <source>the Collada &lt;unit&gt;</source>
+        <translation>das Collada-Element &lt;unit&gt;</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="208"/>
+        <source>Collada&apos;s default, 1 m</source>
+        <translation>der Collada-Standardwert, 1 m</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="211"/>
+        <source>glTF is in metres</source>
+        <translation>glTF rechnet in Metern</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="212"/>
+        <source>the format has no unit; metres assumed</source>
+        <translation>das Format hat keine Einheit; Meter angenommen</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="229"/>
+        <source>the file says its up axis is %1; Gyre converts Y-up and Z-up scenes only, so it is read as Y-up</source>
+        <translation>laut der Datei ist ihre Hochachse %1; Gyre wandelt nur Szenen mit Y oben oder Z oben um, daher wird sie mit Y oben gelesen</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="237"/>
+        <source>the FBX UpAxis</source>
+        <translation>die FBX-Angabe UpAxis</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="246"/>
+        <source>the Collada &lt;up_axis&gt;</source>
+        <translation>das Collada-Element &lt;up_axis&gt;</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="250"/>
+        <source>Collada&apos;s default, Y</source>
+        <translation>der Collada-Standardwert, Y</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="255"/>
+        <source>glTF is Y-up</source>
+        <translation>glTF hat Y oben</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="255"/>
+        <source>Y-up assumed</source>
+        <translation>Y oben angenommen</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_takes.cpp" line="90"/>
+        <source>&apos;%1&apos; plays take %2 &apos;%3&apos;</source>
+        <translation>„%1“ spielt Take %2 „%3“</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_takes.cpp" line="92"/>
+        <source>the file&apos;s %1 takes are Blender&apos;s, one for every object and action; each object gets its own action: %2</source>
+        <translation>die %1 Takes der Datei stammen von Blender, einer für jedes Objekt und jede Aktion; jedes Objekt erhält seine eigene Aktion: %2</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::AddObjectActions</name>
+    <message>
+        <location filename="../src/app/add_object_actions.cpp" line="49"/>
+        <source>Add %1</source>
+        <translation>%1 hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::DrawnMotion</name>
+    <message>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="41"/>
+        <source>The motion could not be rebuilt: %1</source>
+        <translation>Die Bewegung konnte nicht neu aufgebaut werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="55"/>
+        <source>The trail could not be built: %1</source>
+        <translation>Die Stroboskopspur konnte nicht aufgebaut werden: %1</translation>
     </message>
 </context>
 <context>
     <name>gyre::app::FitController</name>
     <message>
-        <location filename="../src/app/sketch/fit_controller.cpp" line="16"/>
-        <source>Fit converged</source>
-        <translation>Anpassung konvergiert</translation>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="21"/>
+        <source>Against what was drawn: %1 rad²/s before, %2 after.</source>
+        <translation>Gegenüber dem Gezeichneten: vorher %1 rad²/s, nachher %2.</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_controller.cpp" line="17"/>
-        <source>Fit stopped (%1)</source>
-        <translation>Anpassung angehalten (%1)</translation>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="27"/>
+        <source>Fit applied: the motion now follows the sketch within δ = %1 (largest relative error %2, %3 rounds, %4 s).</source>
+        <translation>Anpassung angewendet: Die Bewegung folgt der Skizze jetzt innerhalb von δ = %1 (größter relativer Fehler %2, %3 Runden, %4 s).</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_controller.cpp" line="18"/>
-        <source>%1: %2 rounds, %3 iterations, largest fragment error %4 rad²/s, %5 s.</source>
-        <translation>%1: %2 Runden, %3 Iterationen, größter Abschnittsfehler %4 rad²/s, %5 s.</translation>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="34"/>
+        <source>Fit stopped at its limit of added control points, still off the sketch by a relative error of up to %1 (δ = %2); its last result was applied.</source>
+        <translation>Die Anpassung hat an ihrer Grenze für hinzugefügte Kontrollpunkte angehalten und weicht noch mit einem relativen Fehler von bis zu %1 von der Skizze ab (δ = %2); ihr letztes Ergebnis wurde angewendet.</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_controller.cpp" line="45"/>
-        <source>Fit failed: %1</source>
-        <translation>Anpassung fehlgeschlagen: %1</translation>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="39"/>
+        <source>Fit could not meet δ = %1: where it is furthest off (relative error %2) it has no room for another control point, often because constrained keys there disagree with the sketch; its result was applied.</source>
+        <translation>Die Anpassung konnte δ = %1 nicht einhalten: Wo sie am weitesten abweicht (relativer Fehler %2), hat sie keinen Platz für einen weiteren Kontrollpunkt, oft weil fixierte Schlüsselbilder dort der Skizze widersprechen; ihr Ergebnis wurde angewendet.</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_controller.cpp" line="47"/>
-        <source>Fit cancelled.</source>
-        <translation>Anpassung abgebrochen.</translation>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="48"/>
+        <source>Fit stopped after %1 rounds, still off the sketch by a relative error of up to %2 (δ = %3); its last result was applied.</source>
+        <translation>Die Anpassung hat nach %1 Runden angehalten und weicht noch mit einem relativen Fehler von bis zu %2 von der Skizze ab (δ = %3); ihr letztes Ergebnis wurde angewendet.</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_controller.cpp" line="118"/>
-        <source>Fit dropped: the track changed while it ran.</source>
-        <translation>Anpassung verworfen: die Spur hat sich währenddessen geändert.</translation>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="67"/>
+        <source>Fit failed, nothing was applied: %1</source>
+        <translation>Anpassung fehlgeschlagen, nichts wurde angewendet: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="69"/>
+        <source>Fit cancelled; nothing was applied.</source>
+        <translation>Anpassung abgebrochen; nichts wurde angewendet.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="138"/>
+        <source>Fit not applied: the track changed while it ran.</source>
+        <translation>Anpassung nicht angewendet: Die Spur hat sich während der Anpassung geändert.</translation>
     </message>
 </context>
 <context>
@@ -1547,7 +1854,7 @@
         <translation>Anpassung läuft…</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_panel.cpp" line="235"/>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="226"/>
         <source>Not changed: %1.</source>
         <translation>Nicht geändert: %1.</translation>
     </message>
@@ -1581,119 +1888,232 @@
     </message>
 </context>
 <context>
+    <name>gyre::app::ImportDialog</name>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="28"/>
+        <source>The file has no animation.</source>
+        <translation>Die Datei hat keine Animation.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="30"/>
+        <source>The file has one animation.</source>
+        <translation>Die Datei hat eine Animation.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="32"/>
+        <source>Each animation moves nodes no other moves, so all are imported together.</source>
+        <translation>Jede Animation bewegt Knoten, die keine andere bewegt, daher werden alle zusammen importiert.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="34"/>
+        <source>These are Blender&apos;s takes, one for every object and action: each object gets its own action.</source>
+        <translation>Dies sind Takes von Blender, einer für jedes Objekt und jede Aktion: Jedes Objekt erhält seine eigene Aktion.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="37"/>
+        <source>These animations move the same nodes: choose which to import. Checked ones are merged; a node that several move takes the keys of the last one in the list.</source>
+        <translation>Diese Animationen bewegen dieselben Knoten: Wählen Sie, welche importiert werden. Angehakte werden zusammengeführt; ein Knoten, den mehrere bewegen, erhält die Schlüsselbilder der letzten in der Liste.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="45"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="68"/>
+        <source>Import %1</source>
+        <translation>%1 importieren</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="74"/>
+        <source>Animation</source>
+        <translation>Animation</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="74"/>
+        <source>Length</source>
+        <translation>Dauer</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="74"/>
+        <source>Moves</source>
+        <translation>Bewegte Knoten</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="77"/>
+        <source>(unnamed %1)</source>
+        <translation>(unbenannt %1)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="102"/>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="105"/>
+        <source>Frame rate:</source>
+        <translation>Bildrate:</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="109"/>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="112"/>
+        <source>One unit of the file:</source>
+        <translation>Eine Einheit der Datei:</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="114"/>
+        <source>Y up (turned to Z up)</source>
+        <translation>Y oben (gedreht zu Z oben)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="115"/>
+        <source>Z up</source>
+        <translation>Z oben</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="118"/>
+        <source>Up axis:</source>
+        <translation>Hochachse:</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="120"/>
+        <source>First key at 0 s</source>
+        <translation>Erstes Schlüsselbild bei 0 s</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="121"/>
+        <source>As in the file</source>
+        <translation>Wie in der Datei</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="122"/>
+        <source>Time:</source>
+        <translation>Zeit:</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="124"/>
+        <source>From the file: %1; %2; %3.</source>
+        <translation>Aus der Datei: %1; %2; %3.</translation>
+    </message>
+</context>
+<context>
     <name>gyre::app::InspectorWidget</name>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="75"/>
+        <location filename="../src/app/inspector_widget.cpp" line="76"/>
         <source>time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="77"/>
+        <location filename="../src/app/inspector_widget.cpp" line="78"/>
         <source>position x</source>
         <translation>Position x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="77"/>
+        <location filename="../src/app/inspector_widget.cpp" line="78"/>
         <source>position y</source>
         <translation>Position y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="77"/>
+        <location filename="../src/app/inspector_widget.cpp" line="78"/>
         <source>position z</source>
         <translation>Position z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <location filename="../src/app/inspector_widget.cpp" line="81"/>
         <source>quaternion w</source>
         <translation>Quaternion w</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <location filename="../src/app/inspector_widget.cpp" line="81"/>
         <source>quaternion x</source>
         <translation>Quaternion x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <location filename="../src/app/inspector_widget.cpp" line="81"/>
         <source>quaternion y</source>
         <translation>Quaternion y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <location filename="../src/app/inspector_widget.cpp" line="81"/>
         <source>quaternion z</source>
         <translation>Quaternion z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="87"/>
+        <location filename="../src/app/inspector_widget.cpp" line="88"/>
         <source>matrix row %1, column %2</source>
         <translation>Matrix Zeile %1, Spalte %2</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <location filename="../src/app/inspector_widget.cpp" line="91"/>
         <source>axis x</source>
         <translation>Achse x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <location filename="../src/app/inspector_widget.cpp" line="91"/>
         <source>axis y</source>
         <translation>Achse y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <location filename="../src/app/inspector_widget.cpp" line="91"/>
         <source>axis z</source>
         <translation>Achse z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <location filename="../src/app/inspector_widget.cpp" line="91"/>
         <source>angle</source>
         <translation>Winkel</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <location filename="../src/app/inspector_widget.cpp" line="93"/>
         <source>first angle</source>
         <translation>erster Winkel</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <location filename="../src/app/inspector_widget.cpp" line="93"/>
         <source>second angle</source>
         <translation>zweiter Winkel</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <location filename="../src/app/inspector_widget.cpp" line="93"/>
         <source>third angle</source>
         <translation>dritter Winkel</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="134"/>
+        <location filename="../src/app/inspector_widget.cpp" line="135"/>
         <source>extrinsic (fixed axes)</source>
         <translation>extrinsisch (feste Achsen)</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="135"/>
+        <location filename="../src/app/inspector_widget.cpp" line="136"/>
         <source>intrinsic (moving axes)</source>
         <translation>intrinsisch (mitbewegte Achsen)</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="157"/>
+        <location filename="../src/app/inspector_widget.cpp" line="158"/>
         <source>about %1 (°)</source>
         <translation>um %1 (°)</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="171"/>
+        <location filename="../src/app/inspector_widget.cpp" line="172"/>
         <source>%1, keyframe %2 of %3</source>
         <translation>%1, Schlüsselbild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="205"/>
+        <location filename="../src/app/inspector_widget.cpp" line="206"/>
         <source>Near gimbal lock (%1° from it): the first and third angles turn about almost the same axis, so only their sum (or difference) is determined. Small changes of the rotation can swing them widely.</source>
         <translation>Nahe am Gimbal Lock (kardanische Blockade, %1° entfernt): Der erste und der dritte Winkel drehen fast um dieselbe Achse, daher ist nur ihre Summe (oder Differenz) bestimmt. Kleine Änderungen der Rotation können sie stark ausschlagen lassen.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="240"/>
+        <location filename="../src/app/inspector_widget.cpp" line="241"/>
         <source>The keyframe was not moved: %1.</source>
         <translation>Das Schlüsselbild wurde nicht verschoben: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="251"/>
+        <location filename="../src/app/inspector_widget.cpp" line="252"/>
         <source>The constraint was not changed: %1.</source>
         <translation>Die Fixierung wurde nicht geändert: %1.</translation>
     </message>
@@ -1703,40 +2123,40 @@
         <translation>Die Position wurde nicht geändert: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="273"/>
-        <location filename="../src/app/inspector_widget.cpp" line="296"/>
-        <location filename="../src/app/inspector_widget.cpp" line="322"/>
-        <location filename="../src/app/inspector_widget.cpp" line="345"/>
+        <location filename="../src/app/inspector_widget.cpp" line="272"/>
+        <location filename="../src/app/inspector_widget.cpp" line="295"/>
+        <location filename="../src/app/inspector_widget.cpp" line="321"/>
+        <location filename="../src/app/inspector_widget.cpp" line="344"/>
         <source>The rotation was not changed: %1.</source>
         <translation>Die Rotation wurde nicht geändert: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="278"/>
+        <location filename="../src/app/inspector_widget.cpp" line="277"/>
         <source>The rotation was not changed: the zero quaternion is no rotation.</source>
         <translation>Die Rotation wurde nicht geändert: Das Null-Quaternion ist keine Rotation.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="286"/>
+        <location filename="../src/app/inspector_widget.cpp" line="285"/>
         <source>The quaternion had length %1; it was scaled to length 1.</source>
         <translation>Das Quaternion hatte die Länge %1; es wurde auf Länge 1 skaliert.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="303"/>
+        <location filename="../src/app/inspector_widget.cpp" line="302"/>
         <source>The rotation was not changed: the matrix has determinant %1, so it flattens or mirrors space and is not a rotation.</source>
         <translation>Die Rotation wurde nicht geändert: Die Matrix hat die Determinante %1, sie staucht oder spiegelt also den Raum und ist keine Rotation.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="311"/>
+        <location filename="../src/app/inspector_widget.cpp" line="310"/>
         <source>The matrix was not a rotation (its rows were up to %1 from orthonormal); the nearest rotation was used.</source>
         <translation>Die Matrix war keine Rotation (ihre Zeilen wichen um bis zu %1 von orthonormal ab); die nächstgelegene Rotation wurde verwendet.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="328"/>
+        <location filename="../src/app/inspector_widget.cpp" line="327"/>
         <source>The rotation was not changed: a zero axis names no direction to turn about.</source>
         <translation>Die Rotation wurde nicht geändert: Eine Nullachse gibt keine Drehrichtung an.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="333"/>
+        <location filename="../src/app/inspector_widget.cpp" line="332"/>
         <source>The axis had length %1; it was scaled to length 1.</source>
         <translation>Die Achse hatte die Länge %1; sie wurde auf Länge 1 skaliert.</translation>
     </message>
@@ -1744,7 +2164,7 @@
 <context>
     <name>gyre::app::KeyframeActions</name>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="54"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="56"/>
         <source>Cannot add a keyframe: %1</source>
         <translation>Schlüsselbild kann nicht hinzugefügt werden: %1</translation>
     </message>
@@ -1752,97 +2172,97 @@
 <context>
     <name>gyre::app::MagnitudePlot</name>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="138"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="151"/>
         <source>Select an object to see and sketch the speed of its rotation.</source>
         <translation>Wählen Sie ein Objekt, um die Geschwindigkeit seiner Rotation zu sehen und zu skizzieren.</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="210"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="225"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="215"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="230"/>
         <source>Draw</source>
         <translation>Zeichnen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="216"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="231"/>
         <source>Left-drag draws the magnitude |ω| over time; going back erases</source>
         <translation>Ziehen mit der linken Maustaste zeichnet den Betrag |ω| über der Zeit; zurückziehen radiert</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="217"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="232"/>
         <source>Pan</source>
         <translation>Verschieben</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="217"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="232"/>
         <source>Left-drag pans the view</source>
         <translation>Ziehen mit der linken Maustaste verschiebt die Ansicht</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="226"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="241"/>
         <source>Fit View</source>
         <translation>Ansicht einpassen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="227"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="242"/>
         <source>Show the scene&apos;s time range and the curves&apos; height; double-click does too</source>
         <translation>Den Zeitbereich der Szene und die Höhe der Kurven zeigen; ein Doppelklick tut das auch</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="229"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="244"/>
         <source>Clear Magnitude</source>
         <translation>Betrag löschen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="230"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="245"/>
         <source>Remove the sketched magnitude curve</source>
         <translation>Die skizzierte Betragskurve entfernen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="244"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="259"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="245"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="260"/>
         <source>|ω| (rad/s)</source>
         <translation>|ω| (rad/s)</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="248"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="263"/>
         <source>|ω| (°/s)</source>
         <translation>|ω| (°/s)</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="261"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="276"/>
         <source>before fit</source>
         <translation>vor der Anpassung</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="262"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="277"/>
         <source>current</source>
         <translation>aktuell</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="263"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="278"/>
         <source>fitted</source>
         <translation>angepasst</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="264"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="279"/>
         <source>sketched</source>
         <translation>skizziert</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="265"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="280"/>
         <source>constrained keys</source>
         <translation>fixierte Schlüsselbilder</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="267"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="282"/>
         <source>free keys</source>
         <translation>freie Schlüsselbilder</translation>
     </message>
@@ -1850,172 +2270,177 @@
 <context>
     <name>gyre::app::MainWindow</name>
     <message>
-        <location filename="../src/app/main_window.cpp" line="65"/>
+        <location filename="../src/app/main_window.cpp" line="67"/>
         <source>Gyre projects (*.gyre)</source>
         <translation>Gyre-Projekte (*.gyre)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="126"/>
+        <location filename="../src/app/main_window.cpp" line="167"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="130"/>
+        <location filename="../src/app/main_window.cpp" line="171"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="154"/>
+        <location filename="../src/app/main_window.cpp" line="195"/>
         <source>&lt;opened&gt;</source>
         <translation>&lt;geöffnet&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="195"/>
+        <location filename="../src/app/main_window.cpp" line="258"/>
         <source>Drawing the direction on the sphere needs OpenGL 3.3, which this display does not offer. The speed plot and the fit work without it.</source>
         <translation>Das Zeichnen der Richtung auf der Kugel braucht OpenGL 3.3, das diese Anzeige nicht bietet. Das Geschwindigkeitsdiagramm und die Anpassung funktionieren ohne.</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="218"/>
+        <location filename="../src/app/main_window.cpp" line="277"/>
         <source>The 3D viewport needs OpenGL 3.3, which this display does not offer. Editing, the panels and the timeline work without it.</source>
         <translation>Das 3D-Ansichtsfenster braucht OpenGL 3.3, das diese Anzeige nicht bietet. Bearbeiten, die Bedienfelder und die Zeitleiste funktionieren ohne.</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="244"/>
-        <source>Viewport frame rate while drawing, and the time to subdivide the trail: on the worker, and from the request to its arrival</source>
-        <translation>Bildrate des Ansichtsfensters beim Zeichnen und die Zeit für die Unterteilung der Spur: im Hintergrund-Thread und von der Anforderung bis zur Ankunft</translation>
+        <location filename="../src/app/main_window.cpp" line="327"/>
+        <source>Viewport frame rate while something moves, and the time to subdivide the trail: on the worker, and from the request to its arrival</source>
+        <translation>Bildrate des Ansichtsfensters, während sich etwas bewegt, und die Zeit zum Unterteilen der Stroboskopspur: im Hintergrund-Thread und von der Anforderung bis zum Eintreffen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="249"/>
+        <location filename="../src/app/main_window.cpp" line="337"/>
         <source>%1 fps · subdivision %2 ms (%3 ms to arrive)</source>
         <translation>%1 fps · Unterteilung %2 ms (%3 ms bis zur Ankunft)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="283"/>
+        <location filename="../src/app/main_window.cpp" line="381"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="285"/>
+        <location filename="../src/app/main_window.cpp" line="383"/>
         <source>%1[*] — Gyre</source>
         <translation>%1[*] — Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="300"/>
+        <location filename="../src/app/main_window.cpp" line="398"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="318"/>
+        <location filename="../src/app/main_window.cpp" line="416"/>
         <source>Cannot open the project</source>
         <translation>Das Projekt kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="341"/>
+        <location filename="../src/app/main_window.cpp" line="439"/>
         <source>L-shaped cycle (ScrewBender)</source>
         <translation>L-förmiger Zyklus (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="342"/>
+        <location filename="../src/app/main_window.cpp" line="440"/>
         <source>Spinning top (sketched angular velocity)</source>
         <translation>Kreisel (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="343"/>
+        <location filename="../src/app/main_window.cpp" line="441"/>
         <source>Letter M (sketched angular velocity)</source>
         <translation>Buchstabe M (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="344"/>
+        <location filename="../src/app/main_window.cpp" line="442"/>
         <source>Hat (sketched angular velocity)</source>
         <translation>Hut (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="345"/>
+        <location filename="../src/app/main_window.cpp" line="443"/>
         <source>Falling leaf (sketched angular velocity)</source>
         <translation>Fallendes Blatt (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="346"/>
+        <location filename="../src/app/main_window.cpp" line="444"/>
         <source>Pen (sketched angular speed)</source>
         <translation>Stift (skizzierter Betrag der Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="347"/>
+        <location filename="../src/app/main_window.cpp" line="445"/>
         <source>Pendulum (ScrewBender)</source>
         <translation>Pendel (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="348"/>
+        <location filename="../src/app/main_window.cpp" line="446"/>
         <source>Spinning block (ScrewBender)</source>
         <translation>Rotierender Block (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="349"/>
+        <location filename="../src/app/main_window.cpp" line="447"/>
         <source>Critter&apos;s non-planar cycle (ScrewBender)</source>
         <translation>Nicht-ebener Zyklus eines Tierchens (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="368"/>
+        <location filename="../src/app/main_window.cpp" line="466"/>
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="381"/>
+        <location filename="../src/app/main_window.cpp" line="479"/>
         <source>Cannot save the project</source>
         <translation>Das Projekt kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="385"/>
+        <location filename="../src/app/main_window.cpp" line="483"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="394"/>
+        <location filename="../src/app/main_window.cpp" line="492"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="394"/>
+        <location filename="../src/app/main_window.cpp" line="492"/>
         <source>The project has unsaved changes. Save them first?</source>
         <translation>Das Projekt hat ungespeicherte Änderungen. Zuerst speichern?</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="433"/>
+        <location filename="../src/app/main_window.cpp" line="531"/>
         <source>About Gyre</source>
         <translation>Über Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="434"/>
+        <location filename="../src/app/main_window.cpp" line="532"/>
         <source>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Edit the rotations of animated rigid objects: every way of writing an orientation, interpolation that behaves, sketched angular velocity, and ScrewBender motions.&lt;/p&gt;&lt;p&gt;Built on Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 and QCustomPlot %8.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Rotationen animierter starrer Objekte bearbeiten: jede Schreibweise einer Orientierung, Interpolation, die sich gut verhält, skizzierte Winkelgeschwindigkeit und ScrewBender-Bewegungen.&lt;/p&gt;&lt;p&gt;Aufgebaut auf Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 und QCustomPlot %8.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="454"/>
+        <location filename="../src/app/main_window.cpp" line="552"/>
+        <source>Autosave failed: %1</source>
+        <translation>Automatische Sicherung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="561"/>
         <source>an untitled project</source>
         <translation>ein unbenanntes Projekt</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="457"/>
+        <location filename="../src/app/main_window.cpp" line="564"/>
         <source>Recover unsaved work</source>
         <translation>Ungesicherte Arbeit wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="458"/>
+        <location filename="../src/app/main_window.cpp" line="565"/>
         <source>Gyre ended without saving changes to %1 (last copy %2). Recover them?</source>
         <translation>Gyre wurde beendet, ohne Änderungen an %1 zu speichern (letzte Kopie %2). Wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="466"/>
+        <location filename="../src/app/main_window.cpp" line="580"/>
         <source>Cannot recover</source>
         <translation>Wiederherstellen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="475"/>
+        <location filename="../src/app/main_window.cpp" line="555"/>
         <source>Autosave is off: %1</source>
         <translation>Automatische Sicherung ist aus: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="167"/>
+        <location filename="../src/app/main_window.cpp" line="199"/>
         <source>Outliner</source>
         <translation>Gliederung</translation>
     </message>
@@ -2029,14 +2454,6 @@
     </message>
 </context>
 <context>
-    <name>gyre::app::PatternCanvas</name>
-    <message>
-        <location filename="../src/app/sketch/pattern_pad.cpp" line="34"/>
-        <source>Draw the pattern once, left to right: x along the strokes, y across them</source>
-        <translation>Das Muster einmal von links nach rechts zeichnen: x entlang der Striche, y quer dazu</translation>
-    </message>
-</context>
-<context>
     <name>gyre::app::OutlinerPanel</name>
     <message>
         <location filename="../src/app/outliner/outliner_panel.cpp" line="28"/>
@@ -2044,7 +2461,7 @@
         <translation>Nach Namen filtern</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/app/outliner/outliner_panel.cpp" line="130"/>
+        <location filename="../src/app/outliner/outliner_panel.cpp" line="131"/>
         <source>Delete %n Objects</source>
         <translation>
             <numerusform>%n Objekt löschen</numerusform>
@@ -2053,29 +2470,37 @@
     </message>
 </context>
 <context>
+    <name>gyre::app::PatternCanvas</name>
+    <message>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="34"/>
+        <source>Draw the pattern once, left to right: x along the strokes, y across them</source>
+        <translation>Das Muster einmal von links nach rechts zeichnen: x entlang der Striche, y quer dazu</translation>
+    </message>
+</context>
+<context>
     <name>gyre::app::PatternPad</name>
     <message>
-        <location filename="../src/app/sketch/pattern_pad.cpp" line="145"/>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="146"/>
         <source>Clear Pattern</source>
         <translation>Muster löschen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/pattern_pad.cpp" line="148"/>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="150"/>
         <source>off</source>
         <translation>aus</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/pattern_pad.cpp" line="149"/>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="151"/>
         <source>How many times the pattern repeats along the direction curve; off: not applied</source>
         <translation>Wie oft sich das Muster entlang der Richtungskurve wiederholt; aus: nicht angewendet</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/pattern_pad.cpp" line="150"/>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="152"/>
         <source>Take the pattern away</source>
         <translation>Das Muster entfernen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/pattern_pad.cpp" line="151"/>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="153"/>
         <source>&amp;Repeat:</source>
         <translation>&amp;Wiederholen:</translation>
     </message>
@@ -2091,73 +2516,75 @@
 <context>
     <name>gyre::app::SceneFileActions</name>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="27"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="28"/>
         <source>Scenes (*.fbx *.gltf *.glb *.dae *.obj *.bvh *.3ds *.x *.ase *.ply *.stl);;All files (*)</source>
         <translation>Szenen (*.fbx *.gltf *.glb *.dae *.obj *.bvh *.3ds *.x *.ase *.ply *.stl);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="33"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="34"/>
         <source>glTF 2.0 (*.gltf);;glTF 2.0 binary (*.glb);;Collada (*.dae);;FBX (*.fbx);;OBJ, meshes only (*.obj)</source>
         <translation>glTF 2.0 (*.gltf);;glTF 2.0 binär (*.glb);;Collada (*.dae);;FBX (*.fbx);;OBJ, nur Meshes (*.obj)</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="58"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="61"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="75"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="78"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="144"/>
         <source>Import of %1 cancelled</source>
         <translation>Import von %1 abgebrochen</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="81"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="84"/>
         <source>Import Scene</source>
         <translation>Szene importieren</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="89"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="92"/>
         <source>Export Scene</source>
         <translation>Szene exportieren</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="103"/>
-        <location filename="../src/app/scene_file_actions.cpp" line="121"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="106"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="117"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="162"/>
         <source>Wait for the scene file being read or written first</source>
         <translation>Warten Sie zuerst, bis die Szenendatei gelesen oder geschrieben ist</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="106"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="120"/>
         <source>Importing %1…</source>
         <translation>%1 wird importiert…</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="113"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="154"/>
         <source>Cannot export</source>
         <translation>Export nicht möglich</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="114"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="155"/>
         <source>%1: Gyre writes .gltf, .glb, .dae, .fbx and .obj scenes; the file name&apos;s extension says which.</source>
         <translation>%1: Gyre schreibt Szenen als .gltf, .glb, .dae, .fbx und .obj; die Endung des Dateinamens bestimmt das Format.</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="124"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="165"/>
         <source>Exporting %1…</source>
         <translation>%1 wird exportiert…</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="132"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="172"/>
         <source>%1: the file holds no objects.</source>
         <translation>%1: Die Datei enthält keine Objekte.</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="135"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="175"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/app/scene_file_actions.cpp" line="149"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="190"/>
         <source>Objects imported from %1: %n</source>
         <translation>
             <numerusform>%n Objekt aus %1 importiert</numerusform>
@@ -2165,23 +2592,23 @@
         </translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="152"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="193"/>
         <source>Imported %1</source>
         <translation>%1 importiert</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="158"/>
-        <location filename="../src/app/scene_file_actions.cpp" line="159"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="199"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="200"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="165"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="206"/>
         <source>Scene file</source>
         <translation>Szenendatei</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/app/scene_file_actions.cpp" line="174"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="215"/>
         <source>Done. Warnings about what the file could not keep: %n.</source>
         <translation>
             <numerusform>Fertig, mit %n Warnung dazu, was die Datei nicht aufnehmen konnte.</numerusform>
@@ -2191,8 +2618,18 @@
 </context>
 <context>
     <name>gyre::app::SceneTreeModel</name>
+    <message>
+        <location filename="../src/app/outliner/scene_tree_model.cpp" line="135"/>
+        <source>Shown in the viewport: uncheck to hide it</source>
+        <translation>Im Ansichtsfenster sichtbar: abwählen, um es auszublenden</translation>
+    </message>
+    <message>
+        <location filename="../src/app/outliner/scene_tree_model.cpp" line="135"/>
+        <source>Hidden in the viewport: check to show it</source>
+        <translation>Im Ansichtsfenster ausgeblendet: anhaken, um es einzublenden</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../src/app/outliner/scene_tree_model.cpp" line="284"/>
+        <location filename="../src/app/outliner/scene_tree_model.cpp" line="309"/>
         <source>Reparent %n Objects in Place</source>
         <translation>
             <numerusform>%n Objekt an Ort und Stelle umhängen</numerusform>
@@ -2203,72 +2640,77 @@
 <context>
     <name>gyre::app::ScrewBenderPanel</name>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="24"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="25"/>
         <source>Slerp (great arcs)</source>
         <translation>Slerp (Großkreisbögen)</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="26"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="27"/>
         <source>Nlerp (normalised straight lines)</source>
         <translation>Nlerp (normierte Geraden)</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="28"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="29"/>
         <source>Squad (smooth quaternion curve)</source>
         <translation>Squad (glatte Quaternion-Kurve)</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="30"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="31"/>
         <source>Hermite quaternion spline</source>
         <translation>Hermite-Quaternion-Spline</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="32"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="33"/>
         <source>Euler angles, linearly</source>
         <translation>Euler-Winkel, linear</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="34"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="35"/>
         <source>Screw motion (ScrewBender)</source>
         <translation>Schraubbewegung (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="44"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="45"/>
         <source>Four-point</source>
         <translation>Vierpunkt</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="46"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="47"/>
         <source>Four-point B</source>
         <translation>Vierpunkt B</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="48"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="49"/>
         <source>Cubic B-spline</source>
         <translation>Kubischer B-Spline</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="50"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="51"/>
         <source>Jarek</source>
         <translation>Jarek</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="127"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="135"/>
         <source>%1 from %2 keyframes</source>
         <translation>%1 aus %2 Schlüsselbildern</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="128"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="136"/>
         <source>too many to hold, from %1 keyframes</source>
         <translation>zu viele zum Speichern, aus %1 Schlüsselbildern</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="140"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="148"/>
         <source>The interpolation was not changed: %1.</source>
         <translation>Die Interpolation wurde nicht geändert: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="159"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="161"/>
+        <source>Interpolate by Screws</source>
+        <translation>Per Schraubbewegung interpolieren</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="185"/>
         <source>The subdivision was not changed: %1.</source>
         <translation>Die Unterteilung wurde nicht geändert: %1.</translation>
     </message>
@@ -2298,19 +2740,19 @@
     </message>
     <message>
         <location filename="../src/app/smoothness_panel.cpp" line="42"/>
-        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="108"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
         <location filename="../src/app/smoothness_panel.cpp" line="44"/>
-        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="108"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
         <location filename="../src/app/smoothness_panel.cpp" line="46"/>
-        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="108"/>
         <source>z</source>
         <translation>z</translation>
     </message>
@@ -2320,22 +2762,22 @@
         <translation>Betrag</translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="105"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="106"/>
         <source>Point of the object (local):</source>
         <translation>Punkt des Objekts (lokal):</translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="112"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="113"/>
         <source>%1 </source>
         <translation>%1 </translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="115"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="116"/>
         <source>The %1 coordinate of the plotted point, in the object&apos;s frame</source>
         <translation>Die %1-Koordinate des dargestellten Punkts im Koordinatensystem des Objekts</translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="175"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="164"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
@@ -2343,82 +2785,82 @@
 <context>
     <name>gyre::app::SphereView</name>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="184"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="190"/>
         <source>Draw</source>
         <translation>Zeichnen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="185"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="191"/>
         <source>Draw the direction of the angular velocity on the front of the sphere</source>
         <translation>Die Richtung der Winkelgeschwindigkeit auf die Vorderseite der Kugel zeichnen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="186"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="192"/>
         <source>Erase</source>
         <translation>Radieren</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="186"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="192"/>
         <source>Erase the strokes&apos; points under the pointer</source>
         <translation>Die Punkte der Striche unter dem Zeiger radieren</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="187"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="193"/>
         <source>Pattern</source>
         <translation>Muster</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="188"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="194"/>
         <source>Draw a pattern to repeat along the strokes, on the pad</source>
         <translation>Auf dem Feld ein Muster zeichnen, das sich entlang der Striche wiederholt</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="191"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="197"/>
         <source>Reset View</source>
         <translation>Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="194"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="200"/>
         <source>Turn the sphere back to its first view, z up (R)</source>
         <translation>Die Kugel in ihre erste Ansicht zurückdrehen, z oben (R)</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="238"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="244"/>
         <source>Select an object to sketch the direction of its angular velocity.</source>
         <translation>Wählen Sie ein Objekt, um die Richtung seiner Winkelgeschwindigkeit zu skizzieren.</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="240"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="246"/>
         <source>%1 does not turn: key it in two orientations to give it an angular velocity to sketch.</source>
         <translation>%1 dreht sich nicht: Setzen Sie Schlüsselbilder in zwei Orientierungen, damit es eine Winkelgeschwindigkeit zum Skizzieren hat.</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="560"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="621"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="595"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="654"/>
         <source>motion: ω/|ω|</source>
         <translation>Bewegung: ω/|ω|</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="597"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="656"/>
         <source>fitted</source>
         <translation>angepasst</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="598"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="657"/>
         <source>before the fit</source>
         <translation>vor der Anpassung</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="600"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="659"/>
         <source>sketch as drawn</source>
         <translation>Skizze wie gezeichnet</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="601"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="660"/>
         <source>sketch as fitted, pattern applied</source>
         <translation>Skizze wie angepasst, mit Muster</translation>
     </message>
@@ -2426,54 +2868,54 @@
 <context>
     <name>gyre::app::TimeBar</name>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="26"/>
+        <location filename="../src/app/time_bar.cpp" line="25"/>
         <source> s</source>
         <translation> s</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="45"/>
+        <location filename="../src/app/time_bar.cpp" line="44"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="52"/>
+        <location filename="../src/app/time_bar.cpp" line="51"/>
         <source>Frames per second</source>
         <translation>Frames pro Sekunde</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="53"/>
+        <location filename="../src/app/time_bar.cpp" line="52"/>
         <source>Where the scene starts</source>
         <translation>Wo die Szene beginnt</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="54"/>
+        <location filename="../src/app/time_bar.cpp" line="53"/>
         <source>Where the scene ends</source>
         <translation>Wo die Szene endet</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="56"/>
-        <location filename="../src/app/time_bar.cpp" line="94"/>
+        <location filename="../src/app/time_bar.cpp" line="55"/>
+        <location filename="../src/app/time_bar.cpp" line="91"/>
         <source>Time %1 s</source>
         <translation>Zeit %1 s</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="57"/>
-        <location filename="../src/app/time_bar.cpp" line="96"/>
+        <location filename="../src/app/time_bar.cpp" line="56"/>
+        <location filename="../src/app/time_bar.cpp" line="93"/>
         <source>Frame %1</source>
         <translation>Frame %1</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="64"/>
+        <location filename="../src/app/time_bar.cpp" line="63"/>
         <source>Rate</source>
         <translation>Bildrate</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="64"/>
+        <location filename="../src/app/time_bar.cpp" line="63"/>
         <source>Start</source>
         <translation>Anfang</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="64"/>
+        <location filename="../src/app/time_bar.cpp" line="63"/>
         <source>End</source>
         <translation>Ende</translation>
     </message>
@@ -2481,13 +2923,13 @@
 <context>
     <name>gyre::app::TimelineWidget</name>
     <message>
-        <location filename="../src/app/timeline_widget.cpp" line="88"/>
-        <location filename="../src/app/timeline_widget.cpp" line="191"/>
+        <location filename="../src/app/timeline_widget.cpp" line="89"/>
+        <location filename="../src/app/timeline_widget.cpp" line="235"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../src/app/timeline_widget.cpp" line="93"/>
+        <location filename="../src/app/timeline_widget.cpp" line="94"/>
         <source>%1 f</source>
         <translation>%1 f</translation>
     </message>
@@ -2501,32 +2943,9 @@
     </message>
 </context>
 <context>
-    <name>gyre::model::SketchFitError</name>
-    <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="89"/>
-        <source>Direction stroke %1 cannot be followed: %2</source>
-        <translation>Dem Richtungsstrich %1 kann nicht gefolgt werden: %2</translation>
-    </message>
-    <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="194"/>
-        <source>The fit needs at least two keyframes on the selected object.</source>
-        <translation>Die Anpassung braucht mindestens zwei Schlüsselbilder am gewählten Objekt.</translation>
-    </message>
-    <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="201"/>
-        <source>Nothing is sketched yet: draw the direction of the angular velocity on the sphere, or its magnitude on the plot.</source>
-        <translation>Noch ist nichts skizziert: Zeichnen Sie die Richtung der Winkelgeschwindigkeit auf die Kugel oder ihren Betrag in das Diagramm.</translation>
-    </message>
-    <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="206"/>
-        <source>The edit window has no length inside the keys&apos; span: widen it, or sketch between the first and the last key.</source>
-        <translation>Das Bearbeitungsfenster hat innerhalb des Bereichs der Schlüsselbilder keine Länge: Erweitern Sie es oder skizzieren Sie zwischen dem ersten und dem letzten Schlüsselbild.</translation>
-    </message>
-</context>
-<context>
     <name>gyre::model::Command</name>
     <message>
-        <location filename="../src/model/commands/add_keyframe_command.cpp" line="38"/>
+        <location filename="../src/model/commands/add_keyframe_command.cpp" line="40"/>
         <source>Add Keyframe</source>
         <translation>Schlüsselbild hinzufügen</translation>
     </message>
@@ -2581,7 +3000,7 @@
         <translation>Objekt umbenennen</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/reparent_object_command.cpp" line="39"/>
+        <location filename="../src/model/commands/reparent_object_command.cpp" line="34"/>
         <source>Reparent Object</source>
         <translation>Objekt umhängen</translation>
     </message>
@@ -2601,7 +3020,7 @@
         <translation>Anpassungsfenster setzen</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/set_interpolation_command.cpp" line="10"/>
+        <location filename="../src/model/commands/set_interpolation_command.cpp" line="23"/>
         <source>Set Interpolation</source>
         <translation>Interpolation setzen</translation>
     </message>
@@ -2626,7 +3045,7 @@
         <translation>Muster zeichnen</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/set_subdivision_command.cpp" line="11"/>
+        <location filename="../src/model/commands/set_subdivision_command.cpp" line="24"/>
         <source>Set Subdivision</source>
         <translation>Unterteilung setzen</translation>
     </message>
@@ -2644,6 +3063,77 @@
         <location filename="../src/model/commands/reparent_object_in_place_command.cpp" line="30"/>
         <source>Reparent Object in Place</source>
         <translation>Objekt an Ort und Stelle umhängen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_object_visibility_command.cpp" line="10"/>
+        <source>Show Object</source>
+        <translation>Objekt einblenden</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_object_visibility_command.cpp" line="11"/>
+        <source>Hide Object</source>
+        <translation>Objekt ausblenden</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::model::Primitive</name>
+    <message>
+        <location filename="../src/model/primitive_meshes.cpp" line="166"/>
+        <source>Block</source>
+        <translation>Block</translation>
+    </message>
+    <message>
+        <location filename="../src/model/primitive_meshes.cpp" line="168"/>
+        <source>Box</source>
+        <translation>Würfel</translation>
+    </message>
+    <message>
+        <location filename="../src/model/primitive_meshes.cpp" line="170"/>
+        <source>Disc</source>
+        <translation>Scheibe</translation>
+    </message>
+    <message>
+        <location filename="../src/model/primitive_meshes.cpp" line="172"/>
+        <source>Cone</source>
+        <translation>Kegel</translation>
+    </message>
+    <message>
+        <location filename="../src/model/primitive_meshes.cpp" line="174"/>
+        <source>Arrow</source>
+        <translation>Pfeil</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::model::SketchFitError</name>
+    <message>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="94"/>
+        <source>Direction stroke %1 cannot be followed: %2</source>
+        <translation>Dem Richtungsstrich %1 kann nicht gefolgt werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="248"/>
+        <source>The fit needs at least two keyframes on the selected object.</source>
+        <translation>Die Anpassung braucht mindestens zwei Schlüsselbilder am gewählten Objekt.</translation>
+    </message>
+    <message>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="251"/>
+        <source>Nothing is sketched yet: draw the direction of the angular velocity on the sphere, or its magnitude on the plot.</source>
+        <translation>Noch ist nichts skizziert: Zeichnen Sie die Richtung der Winkelgeschwindigkeit auf die Kugel oder ihren Betrag in das Diagramm.</translation>
+    </message>
+    <message>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="256"/>
+        <source>The edit window has no length inside the keys&apos; span: widen it, or sketch between the first and the last key.</source>
+        <translation>Das Bearbeitungsfenster hat innerhalb des Bereichs der Schlüsselbilder keine Länge: Erweitern Sie es oder skizzieren Sie zwischen dem ersten und dem letzten Schlüsselbild.</translation>
+    </message>
+    <message>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="262"/>
+        <source>The edit window of %1 s needs %2 target samples at %3 a second; the budget is %4: narrow the window.</source>
+        <translation>Das Bearbeitungsfenster von %1 s braucht bei %3 pro Sekunde %2 Zielabtastwerte; erlaubt sind höchstens %4: Verkleinern Sie das Fenster.</translation>
+    </message>
+    <message>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="273"/>
+        <source>The pattern cannot be repeated: %1</source>
+        <translation>Das Muster kann nicht wiederholt werden: %1</translation>
     </message>
 </context>
 <context>

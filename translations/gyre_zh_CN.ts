@@ -387,407 +387,417 @@
         <translation>面板(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="52"/>
+        <location filename="../ui/main_window.ui" line="64"/>
         <source>&amp;Motion</source>
         <translation>运动(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="65"/>
+        <location filename="../ui/main_window.ui" line="77"/>
+        <source>&amp;Object</source>
+        <translation>对象(&amp;O)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="78"/>
+        <source>&amp;Add</source>
+        <translation>添加(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="82"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="75"/>
+        <location filename="../ui/main_window.ui" line="93"/>
         <source>File</source>
         <translation>文件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="83"/>
+        <location filename="../ui/main_window.ui" line="101"/>
         <source>Edit</source>
         <translation>编辑</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="88"/>
+        <location filename="../ui/main_window.ui" line="106"/>
         <source>Playback</source>
         <translation>播放</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="100"/>
+        <location filename="../ui/main_window.ui" line="118"/>
         <source>Inspector</source>
         <translation>检查器</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="112"/>
+        <location filename="../ui/main_window.ui" line="130"/>
         <source>ScrewBender</source>
         <translation>ScrewBender</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="124"/>
+        <location filename="../ui/main_window.ui" line="142"/>
         <source>Undo History</source>
         <translation>撤销历史</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="136"/>
+        <location filename="../ui/main_window.ui" line="154"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="148"/>
+        <location filename="../ui/main_window.ui" line="166"/>
         <source>Smoothness</source>
         <translation>平滑度</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="160"/>
+        <location filename="../ui/main_window.ui" line="178"/>
         <source>Angular Velocity Direction</source>
         <translation>角速度方向</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="172"/>
+        <location filename="../ui/main_window.ui" line="190"/>
         <source>Fit</source>
         <translation>拟合</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="184"/>
+        <location filename="../ui/main_window.ui" line="202"/>
         <source>Angular Speed</source>
         <translation>角速度大小</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="196"/>
+        <location filename="../ui/main_window.ui" line="214"/>
         <source>&amp;New</source>
         <translation>新建(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="197"/>
+        <location filename="../ui/main_window.ui" line="215"/>
         <source>Start a new, empty project</source>
         <translation>新建一个空项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="200"/>
+        <location filename="../ui/main_window.ui" line="218"/>
         <source>&amp;Open…</source>
         <translation>打开(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="201"/>
+        <location filename="../ui/main_window.ui" line="219"/>
         <source>Open a Gyre project</source>
         <translation>打开 Gyre 项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="204"/>
+        <location filename="../ui/main_window.ui" line="222"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="205"/>
+        <location filename="../ui/main_window.ui" line="223"/>
         <source>Save the project</source>
         <translation>保存项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="208"/>
+        <location filename="../ui/main_window.ui" line="226"/>
         <source>Save &amp;As…</source>
         <translation>另存为(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="209"/>
+        <location filename="../ui/main_window.ui" line="227"/>
         <source>Save the project under a new name</source>
         <translation>以新名称保存项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="212"/>
+        <location filename="../ui/main_window.ui" line="230"/>
         <source>&amp;Import Scene…</source>
         <translation>导入场景(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="213"/>
+        <location filename="../ui/main_window.ui" line="231"/>
         <source>Add the objects and motion of an FBX, glTF, Collada, OBJ, BVH or other scene file</source>
         <translation>添加 FBX、glTF、Collada、OBJ、BVH 或其他场景文件中的对象和运动</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="217"/>
+        <location filename="../ui/main_window.ui" line="235"/>
         <source>&amp;Export Scene…</source>
         <translation>导出场景(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="218"/>
+        <location filename="../ui/main_window.ui" line="236"/>
         <source>Write the scene with its motion baked to glTF, Collada, FBX or OBJ</source>
         <translation>将场景及其烘焙后的运动写出为 glTF、Collada、FBX 或 OBJ</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="222"/>
+        <location filename="../ui/main_window.ui" line="240"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="223"/>
+        <location filename="../ui/main_window.ui" line="241"/>
         <source>Quit Gyre</source>
         <translation>退出 Gyre</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="227"/>
+        <location filename="../ui/main_window.ui" line="245"/>
         <source>Undo &amp;History</source>
         <translation>撤销历史(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="228"/>
+        <location filename="../ui/main_window.ui" line="246"/>
         <source>Show every step of the undo history</source>
         <translation>显示撤销历史中的每一步</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="232"/>
+        <location filename="../ui/main_window.ui" line="250"/>
         <source>&amp;Preferences…</source>
         <translation>首选项(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="233"/>
+        <location filename="../ui/main_window.ui" line="251"/>
         <source>Choose the language Gyre speaks</source>
         <translation>选择 Gyre 使用的语言</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="239"/>
+        <location filename="../ui/main_window.ui" line="257"/>
         <source>Original Motion as &amp;Ghost</source>
         <translation>以虚影显示原始运动(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="240"/>
+        <location filename="../ui/main_window.ui" line="258"/>
         <source>Show the motion as it was when the project was opened or saved, faintly</source>
         <translation>淡淡地显示项目打开或保存时的运动</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="245"/>
+        <location filename="../ui/main_window.ui" line="263"/>
         <source>Centre &amp;Trajectory</source>
         <translation>中心轨迹(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="246"/>
+        <location filename="../ui/main_window.ui" line="264"/>
         <source>Show the path of the selected object&apos;s centre</source>
         <translation>显示所选对象中心的路径</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="251"/>
+        <location filename="../ui/main_window.ui" line="269"/>
         <source>&amp;Control Poses</source>
         <translation>控制姿态(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="252"/>
+        <location filename="../ui/main_window.ui" line="270"/>
         <source>Show the keyframe poses of the selected object in place</source>
         <translation>在原位显示所选对象的关键帧姿态</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="257"/>
+        <location filename="../ui/main_window.ui" line="275"/>
         <source>&amp;Stroboscopic Trail</source>
         <translation>频闪轨迹(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="258"/>
+        <location filename="../ui/main_window.ui" line="276"/>
         <source>Show many copies of the selected object along its subdivided motion</source>
         <translation>沿细分后的运动显示所选对象的多个副本</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="261"/>
+        <location filename="../ui/main_window.ui" line="279"/>
         <source>&amp;Frame Scene</source>
         <translation>显示整个场景(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="262"/>
+        <location filename="../ui/main_window.ui" line="280"/>
         <source>Point the camera at the whole scene</source>
         <translation>将相机对准整个场景</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="284"/>
         <source>Frame &amp;Selected</source>
         <translation>显示所选对象(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="285"/>
         <source>Point the camera at the selected object</source>
         <translation>将相机对准所选对象</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="289"/>
         <source>&amp;Front View</source>
         <translation>前视图(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="290"/>
         <source>Look along +Y, Z up</source>
         <translation>沿 +Y 方向看,Z 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="294"/>
         <source>&amp;Back View</source>
         <translation>后视图(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="295"/>
         <source>Look along −Y, Z up</source>
         <translation>沿 −Y 方向看,Z 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="299"/>
         <source>&amp;Right View</source>
         <translation>右视图(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="300"/>
         <source>Look along −X, Z up</source>
         <translation>沿 −X 方向看,Z 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="304"/>
         <source>&amp;Left View</source>
         <translation>左视图(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="305"/>
         <source>Look along +X, Z up</source>
         <translation>沿 +X 方向看,Z 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="309"/>
         <source>&amp;Top View</source>
         <translation>顶视图(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="310"/>
         <source>Look down −Z, Y up</source>
         <translation>沿 −Z 向下看,Y 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="314"/>
         <source>Botto&amp;m View</source>
         <translation>底视图(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="315"/>
         <source>Look up +Z</source>
         <translation>沿 +Z 向上看</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="320"/>
         <source>&amp;Orthographic</source>
         <translation>正交投影(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="321"/>
         <source>Parallel projection instead of perspective</source>
         <translation>使用平行投影而非透视投影</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="326"/>
         <source>&amp;Wireframe</source>
         <translation>线框(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="327"/>
         <source>Draw the objects as the edges of their triangles</source>
         <translation>将对象绘制为其三角形的边</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="332"/>
         <source>&amp;X-Ray</source>
         <translation>X 射线(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui"/>
+        <location filename="../ui/main_window.ui" line="333"/>
         <source>Draw the objects see-through</source>
         <translation>将对象绘制为半透明</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="267"/>
+        <location filename="../ui/main_window.ui" line="338"/>
         <source>&amp;Play</source>
         <translation>播放(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="268"/>
+        <location filename="../ui/main_window.ui" line="339"/>
         <source>Play or pause the animation</source>
         <translation>播放或暂停动画</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="272"/>
+        <location filename="../ui/main_window.ui" line="343"/>
         <source>Step &amp;Forward</source>
         <translation>前进一帧(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="273"/>
+        <location filename="../ui/main_window.ui" line="344"/>
         <source>One frame later</source>
         <translation>后一帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="277"/>
+        <location filename="../ui/main_window.ui" line="348"/>
         <source>Step &amp;Backward</source>
         <translation>后退一帧(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="278"/>
+        <location filename="../ui/main_window.ui" line="349"/>
         <source>One frame earlier</source>
         <translation>前一帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="282"/>
+        <location filename="../ui/main_window.ui" line="353"/>
         <source>Go to &amp;Start</source>
         <translation>转到开头(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="283"/>
+        <location filename="../ui/main_window.ui" line="354"/>
         <source>Go to the first frame</source>
         <translation>转到第一帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="287"/>
+        <location filename="../ui/main_window.ui" line="358"/>
         <source>Go to &amp;End</source>
         <translation>转到结尾(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="288"/>
+        <location filename="../ui/main_window.ui" line="359"/>
         <source>Go to the last frame</source>
         <translation>转到最后一帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="294"/>
+        <location filename="../ui/main_window.ui" line="365"/>
         <source>&amp;Loop</source>
         <translation>循环(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="295"/>
+        <location filename="../ui/main_window.ui" line="366"/>
         <source>Start again from the beginning at the end</source>
         <translation>到结尾时从头重新开始</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="298"/>
+        <location filename="../ui/main_window.ui" line="369"/>
         <source>&amp;Add Keyframe</source>
         <translation>添加关键帧(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="299"/>
+        <location filename="../ui/main_window.ui" line="370"/>
         <source>Key the selected object&apos;s pose at the current time</source>
         <translation>在当前时间为所选对象的姿态设置关键帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="303"/>
+        <location filename="../ui/main_window.ui" line="374"/>
         <source>&amp;Delete Keyframe</source>
         <translation>删除关键帧(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="304"/>
+        <location filename="../ui/main_window.ui" line="375"/>
         <source>Delete the selected keyframe</source>
         <translation>删除所选关键帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="310"/>
+        <location filename="../ui/main_window.ui" line="381"/>
         <source>&amp;Constrain Keyframe</source>
         <translation>约束关键帧(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="311"/>
+        <location filename="../ui/main_window.ui" line="382"/>
         <source>Keep the selected keyframe exactly when fitting, or free it</source>
         <translation>拟合时精确保持所选关键帧，或将其释放</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="315"/>
+        <location filename="../ui/main_window.ui" line="386"/>
         <source>&amp;About Gyre</source>
         <translation>关于 Gyre(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="316"/>
+        <location filename="../ui/main_window.ui" line="387"/>
         <source>Version, licence and the libraries Gyre is built on</source>
         <translation>版本、许可证以及 Gyre 所基于的库</translation>
     </message>
@@ -911,363 +921,408 @@
 <context>
     <name>gyre::FileError</name>
     <message>
-        <location filename="../src/model/project_file.cpp"/>
+        <location filename="../src/model/project_file.cpp" line="366"/>
         <source>these %1 keys bring the file past the %2 keys a project may hold</source>
         <translation>加上这 %1 个关键帧，文件超出项目可容纳的 %2 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp"/>
+        <location filename="../src/model/project_file.cpp" line="595"/>
         <source>these %1 times bring the file past the %2 times a project may hold</source>
         <translation>加上这 %1 个时间，文件超出项目可容纳的 %2 个时间</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp"/>
+        <location filename="../src/model/project_file.cpp" line="369"/>
         <source>the file has no time lists</source>
         <translation>文件没有时间列表</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp"/>
-        <source>time list %1 holds %2 times for %3 keys</source>
-        <translation>时间列表 %1 有 %2 个时间，却对应 %3 个关键帧</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp"/>
-        <source>a version %1 file starts with &quot;%2&quot; and its version in binary, not with JSON text</source>
-        <translation>版本 %1 的文件以“%2”及二进制的版本号开头，而不是 JSON 文本</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp"/>
-        <source>the file ends inside its first %1 bytes</source>
-        <translation>文件在其前 %1 个字节内就结束了</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp"/>
-        <source>a version %1 file is JSON text, not binary</source>
-        <translation>版本 %1 的文件是 JSON 文本，不是二进制</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp"/>
-        <source>%1 bytes; a header may hold at most %2</source>
-        <translation>%1 字节；文件头最多 %2 字节</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_blocks.cpp"/>
-        <source>%1 is neither 0 nor 1</source>
-        <translation>%1 既不是 0 也不是 1</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_blocks.cpp"/>
-        <source>its block needs %1 bytes; the file has %2 left</source>
-        <translation>其数据块需要 %1 字节；文件只剩 %2 字节</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_blocks.cpp"/>
-        <source>the file ends %1 bytes into its block of %2</source>
-        <translation>文件在其 %2 字节的数据块中第 %1 字节处结束</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_blocks.cpp"/>
-        <source>the file goes on after its last block</source>
-        <translation>文件在最后一个数据块之后仍有内容</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_blocks.cpp"/>
-        <source>the writer has no block for it</source>
-        <translation>写入程序没有它的数据块</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_blocks.cpp"/>
-        <source>its block holds %1 bytes, not %2</source>
-        <translation>其数据块有 %1 字节，而不是 %2</translation>
-    </message>
-    <message>
-        <location filename="../src/model/autosave.cpp" line="36"/>
-        <location filename="../src/model/project_file.cpp" line="483"/>
-        <location filename="../src/model/project_file.cpp" line="485"/>
-        <location filename="../src/io/file_contents.cpp" line="13"/>
-        <location filename="../src/io/scene_export.cpp" line="303"/>
-        <location filename="../src/io/scene_export.cpp" line="306"/>
-        <source>cannot write: %1</source>
-        <translation>无法写入：%1</translation>
-    </message>
-    <message>
-        <location filename="../src/model/autosave.cpp" line="68"/>
-        <source>cannot create the autosave directory</source>
-        <translation>无法创建自动保存目录</translation>
-    </message>
-    <message>
-        <location filename="../src/model/autosave.cpp" line="76"/>
-        <source>cannot take the autosave lock</source>
-        <translation>无法获取自动保存锁</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="171"/>
-        <source>unknown value &quot;%1&quot;; expected one of %2</source>
-        <translation>未知的值“%1”；应为以下之一：%2</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="209"/>
-        <source>%1 bytes are not a whole number of %2-byte items</source>
-        <translation>%1 字节不是 %2 字节条目的整数倍</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="266"/>
-        <location filename="../src/model/value_checks.cpp" line="116"/>
-        <source>a stroke needs at least one point</source>
-        <translation>笔画至少需要一个点</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="268"/>
-        <source>%1 times for %2 points; give none or one per point</source>
-        <translation>%1 个时间对应 %2 个点；请不给时间或每个点给一个</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="333"/>
-        <source>the file has no meshes</source>
-        <translation>文件中没有网格</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="352"/>
-        <source>%1 is also the id of objects[%2]</source>
-        <translation>%1 也是 objects[%2] 的 ID</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="355"/>
-        <source>no object has id %1</source>
-        <translation>没有 ID 为 %1 的对象</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="364"/>
-        <source>object %1 is its own ancestor</source>
-        <translation>对象 %1 是它自己的祖先</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="377"/>
-        <source>object %1 comes after it in the file; parents come before their children</source>
-        <translation>对象 %1 在文件中位于它之后；父对象须在子对象之前</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="385"/>
-        <source>expected &quot;%1&quot;, found &quot;%2&quot;; this is not a Gyre project</source>
-        <translation>应为“%1”，实际为“%2”；这不是 Gyre 项目</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="390"/>
-        <source>the file has version %1, newer than this build of Gyre reads (%2 and older); open it with a newer Gyre</source>
-        <translation>文件版本为 %1，比此 Gyre 版本可读取的版本（%2 及更早）更新；请用更新的 Gyre 打开</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="422"/>
-        <source>is a directory, not a file</source>
-        <translation>是目录，不是文件</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="425"/>
-        <source>cannot open: %1</source>
-        <translation>无法打开：%1</translation>
-    </message>
-    <message>
-        <location filename="../src/model/project_file.cpp" line="427"/>
+        <location filename="../src/model/project_file.cpp" line="242"/>
         <source>is larger than 1 GiB, the most a project file may hold</source>
         <translation>大于 1 GiB，超出项目文件的上限</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="440"/>
+        <location filename="../src/model/project_file.cpp" line="373"/>
+        <source>time list %1 holds %2 times for %3 keys</source>
+        <translation>时间列表 %1 有 %2 个时间，却对应 %3 个关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="572"/>
+        <source>a version %1 file starts with &quot;%2&quot; and its version in binary, not with JSON text</source>
+        <translation>版本 %1 的文件以“%2”及二进制的版本号开头，而不是 JSON 文本</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="654"/>
+        <source>the file ends inside its first %1 bytes</source>
+        <translation>文件在其前 %1 个字节内就结束了</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="659"/>
+        <source>a version %1 file is JSON text, not binary</source>
+        <translation>版本 %1 的文件是 JSON 文本，不是二进制</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="663"/>
+        <source>%1 bytes; a header may hold at most %2</source>
+        <translation>%1 字节；文件头最多 %2 字节</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp" line="129"/>
+        <source>%1 is neither 0 nor 1</source>
+        <translation>%1 既不是 0 也不是 1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp" line="233"/>
+        <source>its block needs %1 bytes; the file has %2 left</source>
+        <translation>其数据块需要 %1 字节；文件只剩 %2 字节</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp" line="239"/>
+        <source>the file ends %1 bytes into its block of %2</source>
+        <translation>文件在其 %2 字节的数据块中第 %1 字节处结束</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp" line="249"/>
+        <source>the file goes on after its last block</source>
+        <translation>文件在最后一个数据块之后仍有内容</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp" line="255"/>
+        <source>the writer has no block for it</source>
+        <translation>写入程序没有它的数据块</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_blocks.cpp" line="258"/>
+        <source>its block holds %1 bytes, not %2</source>
+        <translation>其数据块有 %1 字节，而不是 %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/output_target.cpp" line="34"/>
+        <source>cannot write to standard output: %1</source>
+        <translation>无法写入标准输出：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/output_target.cpp" line="73"/>
+        <location filename="../src/jobs/autosave.cpp" line="38"/>
+        <source>cannot write: %1</source>
+        <translation>无法写入：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/jobs/autosave.cpp" line="83"/>
+        <source>cannot create the autosave directory</source>
+        <translation>无法创建自动保存目录</translation>
+    </message>
+    <message>
+        <location filename="../src/jobs/autosave.cpp" line="91"/>
+        <source>cannot take the autosave lock</source>
+        <translation>无法获取自动保存锁</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="254"/>
+        <source>unknown value &quot;%1&quot;; expected one of %2</source>
+        <translation>未知的值“%1”；应为以下之一：%2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="291"/>
+        <source>%1 bytes are not a whole number of %2-byte items</source>
+        <translation>%1 字节不是 %2 字节条目的整数倍</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="402"/>
+        <location filename="../src/model/value_checks.cpp" line="155"/>
+        <source>a stroke needs at least one point</source>
+        <translation>笔画至少需要一个点</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="404"/>
+        <source>%1 times for %2 points; give none or one per point</source>
+        <translation>%1 个时间对应 %2 个点；请不给时间或每个点给一个</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="431"/>
+        <source>these %1 control points bring the file past the %2 keys a project may hold</source>
+        <translation>加上这 %1 个控制点，文件超出项目可容纳的 %2 个关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="471"/>
+        <location filename="../src/model/value_checks.cpp" line="206"/>
+        <source>keys to restore without an applied fit</source>
+        <translation>有待恢复的关键帧，却没有已应用的拟合</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="492"/>
+        <source>the file has no meshes</source>
+        <translation>文件中没有网格</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="520"/>
+        <source>%1 is also the id of objects[%2]</source>
+        <translation>%1 也是 objects[%2] 的 ID</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="523"/>
+        <source>no object has id %1</source>
+        <translation>没有 ID 为 %1 的对象</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="532"/>
+        <source>object %1 is its own ancestor</source>
+        <translation>对象 %1 是它自己的祖先</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="545"/>
+        <source>object %1 comes after it in the file; parents come before their children</source>
+        <translation>对象 %1 在文件中位于它之后；父对象须在子对象之前</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="566"/>
+        <source>expected &quot;%1&quot;, found &quot;%2&quot;; this is not a Gyre project</source>
+        <translation>应为“%1”，实际为“%2”；这不是 Gyre 项目</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="739"/>
+        <source>not saved, because its header (the objects&apos; names and settings, the sketches&apos; strokes) would hold %1 bytes, more than the %2 a project may hold</source>
+        <translation>未保存，因为其文件头（对象的名称和设置、草图的笔画）将有 %1 字节，超过项目可容纳的 %2 字节</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="556"/>
+        <source>the file has version %1, newer than this build of Gyre reads (%2 and older); open it with a newer Gyre</source>
+        <translation>文件版本为 %1，比此 Gyre 版本可读取的版本（%2 及更早）更新；请用更新的 Gyre 打开</translation>
+    </message>
+    <message>
+        <location filename="../src/model/output_target.cpp" line="42"/>
+        <location filename="../src/model/project_file.cpp" line="714"/>
+        <source>is a directory, not a file</source>
+        <translation>是目录，不是文件</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="717"/>
+        <source>cannot open: %1</source>
+        <translation>无法打开：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="621"/>
         <source>cannot read: %1</source>
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="451"/>
+        <location filename="../src/model/project_file.cpp" line="634"/>
         <source>is empty; a project file holds a JSON object</source>
         <translation>为空；项目文件应包含一个 JSON 对象</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="456"/>
+        <location filename="../src/model/project_file.cpp" line="627"/>
         <source>not valid JSON: %1 at byte %2</source>
         <translation>不是有效的 JSON：%1（位于第 %2 字节）</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="476"/>
+        <location filename="../src/model/project_file.cpp" line="732"/>
         <source>not saved, because the file would not read back: %1</source>
         <translation>未保存，因为该文件无法被重新读取：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="74"/>
+        <location filename="../src/io/scene_export.cpp" line="79"/>
         <source>object %1 &apos;%2&apos; is written as &apos;%3&apos; so that its name is unique</source>
         <translation>对象 %1“%2”写为“%3”，以使其名称唯一</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="364"/>
+        <location filename="../src/io/scene_export.cpp" line="420"/>
         <source>cannot be written as FBX: %1</source>
         <translation>无法写成 FBX：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="89"/>
-        <source>the mesh of &apos;%1&apos; has an index past its vertices</source>
-        <translation>“%1”的网格有超出其顶点范围的索引</translation>
-    </message>
-    <message>
-        <location filename="../src/io/scene_export.cpp" line="195"/>
+        <location filename="../src/io/scene_export.cpp" line="170"/>
         <source>baking at %1 fps gives more than %2 samples</source>
         <translation>以 %1 fps 烘焙会产生超过 %2 个采样</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="202"/>
+        <location filename="../src/io/scene_export.cpp" line="177"/>
         <source>the motion of &apos;%1&apos; cannot be baked: %2</source>
         <translation>无法烘焙“%1”的运动：%2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="214"/>
+        <location filename="../src/io/scene_export.cpp" line="149"/>
         <source>the motion of &apos;%1&apos; cannot be evaluated: %2</source>
         <translation>无法计算“%1”的运动：%2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="249"/>
+        <location filename="../src/io/scene_export.cpp" line="137"/>
         <source>object %1 names parent %2, which does not come before it; it is written at the top level</source>
         <translation>对象 %1 指定的父对象 %2 不在它之前；它被写在顶层</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="319"/>
+        <location filename="../src/io/scene_export.cpp" line="159"/>
+        <source>the mesh of &apos;%1&apos; has an index past its vertices</source>
+        <translation>“%1”的网格有超出其顶点范围的索引</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="350"/>
         <source>Assimp cannot write it</source>
         <translation>Assimp 无法写入</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="320"/>
+        <location filename="../src/io/scene_export.cpp" line="351"/>
         <source>Assimp cannot write it: %1</source>
         <translation>Assimp 无法写入：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="326"/>
+        <location filename="../src/io/scene_export.cpp" line="357"/>
         <source>Assimp wrote nothing</source>
         <translation>Assimp 没有写出任何内容</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="349"/>
+        <location filename="../src/io/scene_export.cpp" line="376"/>
+        <source>cannot be written as glTF: %1</source>
+        <translation>无法写成 glTF：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="400"/>
         <source>the frame rate must be a finite number above zero</source>
         <translation>帧率必须是大于零的有限数</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="351"/>
+        <location filename="../src/io/scene_export.cpp" line="402"/>
         <source>the scene&apos;s time range is empty or not finite</source>
         <translation>场景的时间范围为空或不是有限值</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="354"/>
+        <location filename="../src/io/scene_export.cpp" line="405"/>
         <source>the scene has no meshes, and OBJ holds nothing else</source>
         <translation>场景没有网格，而 OBJ 不能保存其他内容</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="356"/>
+        <location filename="../src/io/scene_export.cpp" line="407"/>
         <source>OBJ holds no motion: the meshes are written as posed at the start time</source>
         <translation>OBJ 不包含运动：网格按起始时间的姿态写出</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="51"/>
+        <location filename="../src/io/scene_import.cpp" line="55"/>
         <source>no such file</source>
         <translation>文件不存在</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="53"/>
+        <location filename="../src/io/scene_import.cpp" line="57"/>
         <source>is a directory, not a scene file</source>
         <translation>是目录，不是场景文件</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="55"/>
+        <location filename="../src/io/scene_import.cpp" line="59"/>
         <source>cannot be read (permission denied)</source>
         <translation>无法读取（权限不足）</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="57"/>
+        <location filename="../src/io/scene_import.cpp" line="61"/>
         <source>the file is empty</source>
         <translation>文件为空</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="68"/>
+        <location filename="../src/io/scene_import.cpp" line="74"/>
         <source>the file holds no meshes and no animation</source>
         <translation>文件既没有网格也没有动画</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="77"/>
+        <location filename="../src/io/scene_import.cpp" line="83"/>
         <source>not a scene Gyre can read: %1</source>
         <translation>不是 Gyre 能读取的场景：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="81"/>
+        <location filename="../src/io/scene_import.cpp" line="87"/>
         <source>the file holds no scene nodes</source>
         <translation>文件不含场景节点</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="120"/>
+        <location filename="../src/io/scene_import.cpp" line="129"/>
         <source>%1 key %2 is not finite</source>
         <translation>%1关键帧 %2 不是有限值</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="123"/>
+        <location filename="../src/io/scene_import.cpp" line="132"/>
         <source>%1 key %2 is not a rotation (a zero quaternion)</source>
         <translation>%1关键帧 %2 不是旋转（零四元数）</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="126"/>
+        <location filename="../src/io/scene_import.cpp" line="135"/>
         <source>%1 key %2 is not after the key before it</source>
         <translation>%1关键帧 %2 不在前一个关键帧之后</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="134"/>
+        <location filename="../src/io/scene_import.cpp" line="144"/>
         <source>node &apos;%1&apos;: %2</source>
         <translation>节点“%1”：%2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="245"/>
+        <location filename="../src/io/scene_import.cpp" line="259"/>
         <source>mesh &apos;%1&apos; is skinned; skinning is not imported, so it shows in its bind pose</source>
         <translation>网格“%1”带有蒙皮；蒙皮不会被导入，因此它以绑定姿态显示</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="331"/>
-        <source>node &apos;%1&apos; has more than one channel; the first is used</source>
-        <translation>节点“%1”有多个通道；使用第一个</translation>
+        <location filename="../src/io/scene_import.cpp" line="361"/>
+        <source>node &apos;%1&apos; has more than one channel in animation &apos;%2&apos;; the first is used</source>
+        <translation>节点“%1”在动画“%2”中有多个通道；使用第一个</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="369"/>
+        <location filename="../src/io/scene_import.cpp" line="367"/>
+        <source>node &apos;%1&apos; is moved by more than one of the chosen animations; the later one, &apos;%2&apos;, is used</source>
+        <translation>节点“%1”被多个所选动画移动；使用较后的“%2”</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="470"/>
+        <source>animation &apos;%1&apos; moves &apos;%2&apos;, which is not in the scene</source>
+        <translation>动画“%1”移动“%2”，但场景中没有它</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/io/scene_import.cpp" line="500"/>
+        <source>the file has %n animation(s); there is no animation %1</source>
+        <translation>
+            <numerusform>文件有 %n 个动画；没有动画 %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="524"/>
+        <source>the frame rate %1 is not in (0, %2]</source>
+        <translation>帧率 %1 不在 (0, %2] 范围内</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="531"/>
+        <source>the unit %1 m is not a positive length</source>
+        <translation>单位 %1 m 不是正的长度</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="635"/>
+        <source>Assimp reads %1 animations and TinyGLTF %2</source>
+        <translation>Assimp 读到 %1 个动画，而 TinyGLTF 读到 %2 个</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="416"/>
         <source>node &apos;%1&apos; has a non-uniform scale; its children get the mean scale</source>
         <translation>节点“%1”的缩放不均匀；其子节点使用平均缩放</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="380"/>
+        <location filename="../src/io/scene_import.cpp" line="434"/>
         <source>rotation</source>
         <translation>旋转</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="383"/>
+        <location filename="../src/io/scene_import.cpp" line="437"/>
         <source>position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="395"/>
+        <location filename="../src/io/scene_import.cpp" line="452"/>
         <source>scaling</source>
         <translation>缩放</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="401"/>
+        <location filename="../src/io/scene_import.cpp" line="458"/>
         <source>node &apos;%1&apos;: its scale changes over time; Gyre&apos;s motion is rigid, so the scale of its first key is kept</source>
         <translation>节点“%1”：其缩放随时间变化；Gyre 的运动是刚体运动，因此保留其第一个关键帧的缩放</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="413"/>
-        <source>the animation moves &apos;%1&apos;, which is not in the scene</source>
-        <translation>动画移动了“%1”，但它不在场景中</translation>
-    </message>
-    <message>
-        <location filename="../src/io/scene_import.cpp" line="430"/>
-        <source>the file has %1 animations; there is no animation %2</source>
-        <translation>文件有 %1 个动画；不存在动画 %2</translation>
-    </message>
-    <message>
-        <location filename="../src/io/scene_import.cpp" line="440"/>
+        <location filename="../src/io/scene_import.cpp" line="513"/>
         <source>mesh and morph animation is not imported; only node motion is</source>
         <translation>网格动画和变形动画不会被导入；只导入节点运动</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="442"/>
+        <location filename="../src/io/scene_import.cpp" line="515"/>
         <source>cameras and lights are not imported</source>
         <translation>摄像机和灯光不会被导入</translation>
     </message>
@@ -1331,7 +1386,7 @@
     </message>
     <message>
         <location filename="../src/model/json_field.cpp" line="116"/>
-        <location filename="../src/model/value_checks.cpp" line="60"/>
+        <location filename="../src/model/value_checks.cpp" line="65"/>
         <source>%1 is not a finite number</source>
         <translation>%1 不是有限数</translation>
     </message>
@@ -1356,187 +1411,438 @@
         <translation>应为 %1 个数字，实际为 %2 个</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="24"/>
+        <location filename="../src/model/value_checks.cpp" line="29"/>
         <source>not all components are finite</source>
         <translation>并非所有分量都是有限值</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="34"/>
+        <location filename="../src/model/value_checks.cpp" line="39"/>
         <source>the %1 is zero</source>
         <translation>%1为零</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="36"/>
+        <location filename="../src/model/value_checks.cpp" line="41"/>
         <source>the %1 has length %2; it must have length 1</source>
         <translation>%1的长度为 %2；长度必须为 1</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="67"/>
+        <location filename="../src/model/value_checks.cpp" line="72"/>
         <source>%1 is negative</source>
         <translation>%1 为负数</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="74"/>
+        <location filename="../src/model/value_checks.cpp" line="79"/>
         <source>%1 is not positive</source>
         <translation>%1 不是正数</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="80"/>
+        <location filename="../src/model/value_checks.cpp" line="85"/>
         <source>direction</source>
         <translation>方向</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="84"/>
+        <location filename="../src/model/value_checks.cpp" line="89"/>
         <source>quaternion</source>
         <translation>四元数</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="95"/>
+        <location filename="../src/model/value_checks.cpp" line="100"/>
+        <source>position coordinate %1 is beyond ±%2</source>
+        <translation>位置坐标 %1 超出 ±%2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="108"/>
+        <source>time %1 is beyond ±%2 s</source>
+        <translation>时间 %1 超出 ±%2 秒</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="115"/>
         <source>time %1 does not come after the time before it, %2</source>
         <translation>时间 %1 不在前一个时间 %2 之后</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="120"/>
+        <location filename="../src/model/value_checks.cpp" line="124"/>
+        <source>the value has length %1; a fitted value needs length at least %2</source>
+        <translation>该值的长度为 %1；拟合值的长度至少须为 %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="133"/>
+        <source>the derivative has length %1 per second; the most it may have is %2</source>
+        <translation>导数的长度为每秒 %1；最大允许为 %2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="159"/>
         <source>a stroke has no times or one per point</source>
         <translation>笔画要么没有时间，要么每个点有一个时间</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="136"/>
+        <location filename="../src/model/value_checks.cpp" line="175"/>
         <source>the pattern&apos;s repeat count %1 is negative</source>
         <translation>图案的重复次数 %1 为负数</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="170"/>
+        <location filename="../src/model/value_checks.cpp" line="212"/>
         <source>subdivision levels %1 are outside 0 to %2</source>
         <translation>细分层级 %1 超出 0 到 %2 的范围</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="183"/>
+        <location filename="../src/model/value_checks.cpp" line="223"/>
+        <source>%1 keys at %2 levels make %3 poses; the budget is %4</source>
+        <translation>%1 个关键帧经 %2 层细分得到 %3 个姿态；上限为 %4</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="240"/>
         <source>a frame rate of %1 is above %2</source>
         <translation>帧率 %1 高于 %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="191"/>
+        <location filename="../src/model/value_checks.cpp" line="248"/>
         <source>the end time %1 does not come after the start time %2</source>
         <translation>结束时间 %1 不在开始时间 %2 之后</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="199"/>
+        <location filename="../src/model/value_checks.cpp" line="253"/>
+        <source>%1 s at %2 fps make %3 frames; the budget is %4</source>
+        <translation>%1 秒以 %2 fps 计为 %3 帧；上限为 %4</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="262"/>
         <source>a mesh position is not finite</source>
         <translation>网格的某个位置不是有限值</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="202"/>
+        <location filename="../src/model/value_checks.cpp" line="265"/>
         <source>a mesh normal is not finite</source>
         <translation>网格的某个法线不是有限值</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="204"/>
+        <location filename="../src/model/value_checks.cpp" line="267"/>
         <source>the mesh has %1 normals for %2 positions</source>
         <translation>网格有 %1 个法线，却有 %2 个位置</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="206"/>
+        <location filename="../src/model/value_checks.cpp" line="269"/>
         <source>the mesh&apos;s %1 indices do not make whole triangles</source>
         <translation>网格的 %1 个索引不能组成完整的三角形</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="209"/>
+        <location filename="../src/model/value_checks.cpp" line="272"/>
         <source>mesh index %1 is beyond its %2 positions</source>
         <translation>网格索引 %1 超出其 %2 个位置</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="33"/>
+        <location filename="../src/io/scene_worker.cpp" line="28"/>
         <source>%1 GiB</source>
         <translation>%1 GiB</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="34"/>
+        <location filename="../src/io/scene_worker.cpp" line="29"/>
         <source>%1 MiB</source>
         <translation>%1 MiB</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="80"/>
+        <location filename="../src/io/scene_worker.cpp" line="154"/>
         <source>the scene reader %1 is not installed beside %2</source>
         <translation>场景读取程序 %1 未安装在 %2 中</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="84"/>
+        <location filename="../src/io/scene_worker.cpp" line="158"/>
         <source>the scene reader %1 is missing or not executable</source>
         <translation>场景读取程序 %1 不存在或不可执行</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="91"/>
+        <location filename="../src/io/scene_worker.cpp" line="174"/>
         <source>the scene reader %1 cannot be started: %2</source>
         <translation>无法启动场景读取程序 %1：%2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="109"/>
+        <location filename="../src/io/scene_worker.cpp" line="119"/>
         <source>the scene reader took longer than %1 s and was stopped; the file may be damaged or too large</source>
         <translation>场景读取程序运行超过 %1 秒，已被停止；文件可能已损坏或过大</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="118"/>
+        <location filename="../src/io/scene_worker.cpp" line="123"/>
         <source>the scene reader&apos;s reply is larger than %1</source>
         <translation>场景读取程序的回复大于 %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="125"/>
+        <location filename="../src/io/scene_worker.cpp" line="133"/>
         <source>the scene reader crashed on this file (signal %1, %2)%3</source>
         <translation>场景读取程序读取此文件时崩溃（信号 %1，%2）%3</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="129"/>
+        <location filename="../src/io/scene_worker.cpp" line="191"/>
         <source>the scene reader needed more than %1 of memory for this file and was stopped</source>
         <translation>场景读取程序读取此文件需要超过 %1 的内存，已被停止</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="132"/>
+        <location filename="../src/io/scene_worker.cpp" line="137"/>
         <source>the scene reader failed (exit status %1)%2</source>
         <translation>场景读取程序失败（退出状态 %1）%2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="138"/>
+        <location filename="../src/io/scene_worker.cpp" line="102"/>
         <source>the scene reader&apos;s reply is malformed: %1</source>
         <translation>场景读取程序的回复格式错误：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_worker.cpp" line="161"/>
+        <location filename="../src/io/scene_worker.cpp" line="106"/>
         <source>the scene reader&apos;s reply is malformed: the wrong kind of reply</source>
         <translation>场景读取程序的回复格式错误：回复类型不对</translation>
+    </message>
+    <message>
+        <location filename="../src/io/baked_scene.cpp" line="167"/>
+        <source>glTF times cannot be negative: the motion is written %1 s later, from 0 s</source>
+        <translation>glTF 的时间不能为负：运动推后 %1 秒写出，从 0 秒开始</translation>
+    </message>
+    <message>
+        <location filename="../src/io/baked_scene.cpp" line="186"/>
+        <source>&apos;%1&apos;: two of its keys are within a float32 step; its rotation and translation are written as baked samples, not as its splines</source>
+        <translation>“%1”：它有两个关键帧相距不到一个 float32 步长；其旋转和平移以烘焙采样写出，而不是以其样条写出</translation>
+    </message>
+    <message>
+        <location filename="../src/io/baked_scene.cpp" line="193"/>
+        <source>&apos;%1&apos;: %2 baked samples are left out, each within a float32 step of the one kept (glTF stores times as float32)</source>
+        <translation>“%1”：省略了 %2 个烘焙采样，每个都与保留的采样相距不到一个 float32 步长（glTF 以 float32 存储时间）</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="28"/>
+        <source>%1 is %2 bytes, over the %3 bytes a glTF buffer may have</source>
+        <translation>%1 有 %2 字节，超过 glTF 缓冲区允许的 %3 字节</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="62"/>
+        <source>there is no accessor %1</source>
+        <translation>不存在访问器（accessor）%1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="66"/>
+        <source>count %1 is over the %2 elements Gyre reads</source>
+        <translation>数量 %1 超过 Gyre 读取的 %2 个元素</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="74"/>
+        <source>there is no buffer view %1</source>
+        <translation>不存在缓冲区视图（buffer view）%1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="77"/>
+        <source>its buffer view names no buffer</source>
+        <translation>其缓冲区视图未指定缓冲区</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="83"/>
+        <source>%1 elements from byte %2 run past its buffer view&apos;s %3 bytes</source>
+        <translation>从第 %2 字节起的 %1 个元素超出其缓冲区视图的 %3 字节</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="88"/>
+        <source>its buffer view runs past the buffer&apos;s %1 bytes</source>
+        <translation>其缓冲区视图超出缓冲区的 %1 字节</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="101"/>
+        <source>there is no such sampler</source>
+        <translation>不存在该采样器</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="112"/>
+        <source>&apos;%1&apos; is not an interpolation</source>
+        <translation>“%1”不是插值方式</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="121"/>
+        <source>%1 times need %2 output elements; the output has %3</source>
+        <translation>%1 个时间需要 %2 个输出元素；输出只有 %3 个</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="129"/>
+        <source>time %1 is not finite or not after the one before it</source>
+        <translation>时间 %1 不是有限值，或不在前一个时间之后</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="137"/>
+        <source>element %1 is not finite</source>
+        <translation>元素 %1 不是有限值</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="148"/>
+        <source>rotation %1 is a zero quaternion</source>
+        <translation>旋转 %1 是零四元数</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="219"/>
+        <source>not a glTF file Gyre can read: %1</source>
+        <translation>不是 Gyre 能读取的 glTF 文件：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/io/gltf_animation.cpp" line="327"/>
+        <source>node &apos;%1&apos;: its motion at %2 fps needs more than %3 keys</source>
+        <translation>节点“%1”：其运动在 %2 fps 下需要超过 %3 个关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="164"/>
+        <source>the FBX time mode</source>
+        <translation>FBX 的时间模式</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="171"/>
+        <source>the BVH frame time</source>
+        <translation>BVH 的帧时间（Frame Time）</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="176"/>
+        <source>every key is on a frame of %1 fps</source>
+        <translation>每个关键帧都落在 %1 fps 的帧上</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="180"/>
+        <source>no animation; Gyre&apos;s default</source>
+        <translation>没有动画；Gyre 的默认值</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="181"/>
+        <source>the keys are on the frames of no common rate; Gyre&apos;s default</source>
+        <translation>关键帧不在任何共同帧率的帧上；Gyre 的默认值</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="188"/>
+        <source>written by Assimp, whose FBX unit says nothing; metres assumed</source>
+        <translation>由 Assimp 写出，其 FBX 单位不可作准；假定为米</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="195"/>
+        <source>the FBX UnitScaleFactor, %1 cm</source>
+        <translation>FBX 的 UnitScaleFactor，%1 cm</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="198"/>
+        <source>FBX&apos;s default, 1 cm</source>
+        <translation>FBX 的默认值，1 cm</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="205"/>
+        <source>the Collada &lt;unit&gt;</source>
+        <translation>Collada 的 &lt;unit&gt;</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="208"/>
+        <source>Collada&apos;s default, 1 m</source>
+        <translation>Collada 的默认值，1 m</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="211"/>
+        <source>glTF is in metres</source>
+        <translation>glTF 以米为单位</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="212"/>
+        <source>the format has no unit; metres assumed</source>
+        <translation>该格式没有单位；假定为米</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="229"/>
+        <source>the file says its up axis is %1; Gyre converts Y-up and Z-up scenes only, so it is read as Y-up</source>
+        <translation>文件声明其向上轴为 %1；Gyre 只转换 Y 朝上和 Z 朝上的场景，因此按 Y 朝上读取</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="237"/>
+        <source>the FBX UpAxis</source>
+        <translation>FBX 的 UpAxis</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="246"/>
+        <source>the Collada &lt;up_axis&gt;</source>
+        <translation>Collada 的 &lt;up_axis&gt;</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="250"/>
+        <source>Collada&apos;s default, Y</source>
+        <translation>Collada 的默认值，Y</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="255"/>
+        <source>glTF is Y-up</source>
+        <translation>glTF 为 Y 朝上</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_settings.cpp" line="255"/>
+        <source>Y-up assumed</source>
+        <translation>假定 Y 朝上</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_takes.cpp" line="90"/>
+        <source>&apos;%1&apos; plays take %2 &apos;%3&apos;</source>
+        <translation>“%1”播放 take %2“%3”</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_takes.cpp" line="92"/>
+        <source>the file&apos;s %1 takes are Blender&apos;s, one for every object and action; each object gets its own action: %2</source>
+        <translation>文件的 %1 个 take 来自 Blender，每个对象与动作的组合各一个；每个对象各取自己的动作：%2</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::AddObjectActions</name>
+    <message>
+        <location filename="../src/app/add_object_actions.cpp" line="49"/>
+        <source>Add %1</source>
+        <translation>添加%1</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::DrawnMotion</name>
+    <message>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="41"/>
+        <source>The motion could not be rebuilt: %1</source>
+        <translation>无法重建运动：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="55"/>
+        <source>The trail could not be built: %1</source>
+        <translation>无法生成频闪轨迹：%1</translation>
     </message>
 </context>
 <context>
     <name>gyre::app::FitController</name>
     <message>
-        <location filename="../src/app/sketch/fit_controller.cpp" line="16"/>
-        <source>Fit converged</source>
-        <translation>拟合已收敛</translation>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="21"/>
+        <source>Against what was drawn: %1 rad²/s before, %2 after.</source>
+        <translation>与所绘草图相比：拟合前 %1 rad²/s，拟合后 %2。</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_controller.cpp" line="17"/>
-        <source>Fit stopped (%1)</source>
-        <translation>拟合已停止（%1）</translation>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="27"/>
+        <source>Fit applied: the motion now follows the sketch within δ = %1 (largest relative error %2, %3 rounds, %4 s).</source>
+        <translation>已应用拟合：运动现在在 δ = %1 以内贴合草图（最大相对误差 %2，%3 轮，%4 秒）。</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_controller.cpp" line="18"/>
-        <source>%1: %2 rounds, %3 iterations, largest fragment error %4 rad²/s, %5 s.</source>
-        <translation>%1：%2 轮，%3 次迭代，最大片段误差 %4 rad²/s，%5 秒。</translation>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="34"/>
+        <source>Fit stopped at its limit of added control points, still off the sketch by a relative error of up to %1 (δ = %2); its last result was applied.</source>
+        <translation>拟合已达到新增控制点的上限而停止，与草图仍有最多 %1 的相对误差（δ = %2）；已应用其最后结果。</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_controller.cpp" line="45"/>
-        <source>Fit failed: %1</source>
-        <translation>拟合失败：%1</translation>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="39"/>
+        <source>Fit could not meet δ = %1: where it is furthest off (relative error %2) it has no room for another control point, often because constrained keys there disagree with the sketch; its result was applied.</source>
+        <translation>拟合未能达到 δ = %1：在偏差最大处（相对误差 %2）已无空间再加入控制点，通常是因为该处的约束关键帧与草图不一致；已应用其结果。</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_controller.cpp" line="47"/>
-        <source>Fit cancelled.</source>
-        <translation>拟合已取消。</translation>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="48"/>
+        <source>Fit stopped after %1 rounds, still off the sketch by a relative error of up to %2 (δ = %3); its last result was applied.</source>
+        <translation>拟合在 %1 轮后停止，与草图仍有最多 %2 的相对误差（δ = %3）；已应用其最后结果。</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_controller.cpp" line="118"/>
-        <source>Fit dropped: the track changed while it ran.</source>
-        <translation>拟合已丢弃：运行期间轨道发生了变化。</translation>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="67"/>
+        <source>Fit failed, nothing was applied: %1</source>
+        <translation>拟合失败，未应用任何内容：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="69"/>
+        <source>Fit cancelled; nothing was applied.</source>
+        <translation>已取消拟合；未应用任何内容。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="138"/>
+        <source>Fit not applied: the track changed while it ran.</source>
+        <translation>未应用拟合：拟合运行期间轨道已更改。</translation>
     </message>
 </context>
 <context>
@@ -1547,7 +1853,7 @@
         <translation>正在拟合…</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_panel.cpp" line="235"/>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="226"/>
         <source>Not changed: %1.</source>
         <translation>未更改：%1。</translation>
     </message>
@@ -1581,119 +1887,232 @@
     </message>
 </context>
 <context>
+    <name>gyre::app::ImportDialog</name>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="28"/>
+        <source>The file has no animation.</source>
+        <translation>文件没有动画。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="30"/>
+        <source>The file has one animation.</source>
+        <translation>文件有一个动画。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="32"/>
+        <source>Each animation moves nodes no other moves, so all are imported together.</source>
+        <translation>每个动画移动的节点都不被其他动画移动，因此全部一起导入。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="34"/>
+        <source>These are Blender&apos;s takes, one for every object and action: each object gets its own action.</source>
+        <translation>这些是 Blender 的 take，每个对象与动作的组合各一个：每个对象各取自己的动作。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="37"/>
+        <source>These animations move the same nodes: choose which to import. Checked ones are merged; a node that several move takes the keys of the last one in the list.</source>
+        <translation>这些动画移动相同的节点：请选择要导入哪些。勾选的动画会被合并；被多个动画移动的节点采用列表中最后一个动画的关键帧。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="45"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="68"/>
+        <source>Import %1</source>
+        <translation>导入 %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="74"/>
+        <source>Animation</source>
+        <translation>动画</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="74"/>
+        <source>Length</source>
+        <translation>时长</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="74"/>
+        <source>Moves</source>
+        <translation>移动的节点</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="77"/>
+        <source>(unnamed %1)</source>
+        <translation>（未命名 %1）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="102"/>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="105"/>
+        <source>Frame rate:</source>
+        <translation>帧率：</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="109"/>
+        <source> m</source>
+        <translation> 米</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="112"/>
+        <source>One unit of the file:</source>
+        <translation>文件中的一个单位：</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="114"/>
+        <source>Y up (turned to Z up)</source>
+        <translation>Y 朝上（转为 Z 朝上）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="115"/>
+        <source>Z up</source>
+        <translation>Z 朝上</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="118"/>
+        <source>Up axis:</source>
+        <translation>向上轴：</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="120"/>
+        <source>First key at 0 s</source>
+        <translation>第一个关键帧位于 0 秒</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="121"/>
+        <source>As in the file</source>
+        <translation>与文件中相同</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="122"/>
+        <source>Time:</source>
+        <translation>时间：</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="124"/>
+        <source>From the file: %1; %2; %3.</source>
+        <translation>来自文件：%1；%2；%3。</translation>
+    </message>
+</context>
+<context>
     <name>gyre::app::InspectorWidget</name>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="75"/>
+        <location filename="../src/app/inspector_widget.cpp" line="76"/>
         <source>time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="77"/>
+        <location filename="../src/app/inspector_widget.cpp" line="78"/>
         <source>position x</source>
         <translation>位置 x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="77"/>
+        <location filename="../src/app/inspector_widget.cpp" line="78"/>
         <source>position y</source>
         <translation>位置 y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="77"/>
+        <location filename="../src/app/inspector_widget.cpp" line="78"/>
         <source>position z</source>
         <translation>位置 z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <location filename="../src/app/inspector_widget.cpp" line="81"/>
         <source>quaternion w</source>
         <translation>四元数 w</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <location filename="../src/app/inspector_widget.cpp" line="81"/>
         <source>quaternion x</source>
         <translation>四元数 x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <location filename="../src/app/inspector_widget.cpp" line="81"/>
         <source>quaternion y</source>
         <translation>四元数 y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <location filename="../src/app/inspector_widget.cpp" line="81"/>
         <source>quaternion z</source>
         <translation>四元数 z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="87"/>
+        <location filename="../src/app/inspector_widget.cpp" line="88"/>
         <source>matrix row %1, column %2</source>
         <translation>矩阵第 %1 行第 %2 列</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <location filename="../src/app/inspector_widget.cpp" line="91"/>
         <source>axis x</source>
         <translation>轴 x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <location filename="../src/app/inspector_widget.cpp" line="91"/>
         <source>axis y</source>
         <translation>轴 y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <location filename="../src/app/inspector_widget.cpp" line="91"/>
         <source>axis z</source>
         <translation>轴 z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <location filename="../src/app/inspector_widget.cpp" line="91"/>
         <source>angle</source>
         <translation>角度</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <location filename="../src/app/inspector_widget.cpp" line="93"/>
         <source>first angle</source>
         <translation>第一个角</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <location filename="../src/app/inspector_widget.cpp" line="93"/>
         <source>second angle</source>
         <translation>第二个角</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <location filename="../src/app/inspector_widget.cpp" line="93"/>
         <source>third angle</source>
         <translation>第三个角</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="134"/>
+        <location filename="../src/app/inspector_widget.cpp" line="135"/>
         <source>extrinsic (fixed axes)</source>
         <translation>外旋（固定轴）</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="135"/>
+        <location filename="../src/app/inspector_widget.cpp" line="136"/>
         <source>intrinsic (moving axes)</source>
         <translation>内旋（随动轴）</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="157"/>
+        <location filename="../src/app/inspector_widget.cpp" line="158"/>
         <source>about %1 (°)</source>
         <translation>绕 %1（°）</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="171"/>
+        <location filename="../src/app/inspector_widget.cpp" line="172"/>
         <source>%1, keyframe %2 of %3</source>
         <translation>%1，第 %2 个关键帧，共 %3 个</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="205"/>
+        <location filename="../src/app/inspector_widget.cpp" line="206"/>
         <source>Near gimbal lock (%1° from it): the first and third angles turn about almost the same axis, so only their sum (or difference) is determined. Small changes of the rotation can swing them widely.</source>
         <translation>接近万向节锁（相差 %1°）：第一个角和第三个角几乎绕同一根轴旋转，因此只有它们的和（或差）是确定的。旋转的微小变化可能使它们大幅摆动。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="240"/>
+        <location filename="../src/app/inspector_widget.cpp" line="241"/>
         <source>The keyframe was not moved: %1.</source>
         <translation>关键帧未移动：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="251"/>
+        <location filename="../src/app/inspector_widget.cpp" line="252"/>
         <source>The constraint was not changed: %1.</source>
         <translation>约束未更改：%1。</translation>
     </message>
@@ -1703,40 +2122,40 @@
         <translation>位置未更改：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="273"/>
-        <location filename="../src/app/inspector_widget.cpp" line="296"/>
-        <location filename="../src/app/inspector_widget.cpp" line="322"/>
-        <location filename="../src/app/inspector_widget.cpp" line="345"/>
+        <location filename="../src/app/inspector_widget.cpp" line="272"/>
+        <location filename="../src/app/inspector_widget.cpp" line="295"/>
+        <location filename="../src/app/inspector_widget.cpp" line="321"/>
+        <location filename="../src/app/inspector_widget.cpp" line="344"/>
         <source>The rotation was not changed: %1.</source>
         <translation>旋转未更改：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="278"/>
+        <location filename="../src/app/inspector_widget.cpp" line="277"/>
         <source>The rotation was not changed: the zero quaternion is no rotation.</source>
         <translation>旋转未更改：零四元数不表示旋转。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="286"/>
+        <location filename="../src/app/inspector_widget.cpp" line="285"/>
         <source>The quaternion had length %1; it was scaled to length 1.</source>
         <translation>四元数的长度为 %1；已缩放为长度 1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="303"/>
+        <location filename="../src/app/inspector_widget.cpp" line="302"/>
         <source>The rotation was not changed: the matrix has determinant %1, so it flattens or mirrors space and is not a rotation.</source>
         <translation>旋转未更改：矩阵的行列式为 %1，它会压扁或镜像空间，不是旋转。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="311"/>
+        <location filename="../src/app/inspector_widget.cpp" line="310"/>
         <source>The matrix was not a rotation (its rows were up to %1 from orthonormal); the nearest rotation was used.</source>
         <translation>该矩阵不是旋转（其各行与正交归一最多相差 %1）；已改用最接近的旋转。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="328"/>
+        <location filename="../src/app/inspector_widget.cpp" line="327"/>
         <source>The rotation was not changed: a zero axis names no direction to turn about.</source>
         <translation>旋转未更改：零轴没有给出旋转方向。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="333"/>
+        <location filename="../src/app/inspector_widget.cpp" line="332"/>
         <source>The axis had length %1; it was scaled to length 1.</source>
         <translation>轴的长度为 %1；已缩放为长度 1。</translation>
     </message>
@@ -1744,7 +2163,7 @@
 <context>
     <name>gyre::app::KeyframeActions</name>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="54"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="56"/>
         <source>Cannot add a keyframe: %1</source>
         <translation>无法添加关键帧：%1</translation>
     </message>
@@ -1752,97 +2171,97 @@
 <context>
     <name>gyre::app::MagnitudePlot</name>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="138"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="151"/>
         <source>Select an object to see and sketch the speed of its rotation.</source>
         <translation>选择一个对象以查看并绘制其旋转速度的草图。</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="210"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="225"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="215"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="230"/>
         <source>Draw</source>
         <translation>绘制</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="216"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="231"/>
         <source>Left-drag draws the magnitude |ω| over time; going back erases</source>
         <translation>按住左键拖动可绘制 |ω| 随时间的大小；往回拖动则擦除</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="217"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="232"/>
         <source>Pan</source>
         <translation>平移</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="217"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="232"/>
         <source>Left-drag pans the view</source>
         <translation>按住左键拖动可平移视图</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="226"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="241"/>
         <source>Fit View</source>
         <translation>适应视图</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="227"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="242"/>
         <source>Show the scene&apos;s time range and the curves&apos; height; double-click does too</source>
         <translation>显示场景的时间范围和曲线的高度；双击也可以</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="229"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="244"/>
         <source>Clear Magnitude</source>
         <translation>清除大小</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="230"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="245"/>
         <source>Remove the sketched magnitude curve</source>
         <translation>移除草图绘制的大小曲线</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="244"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="259"/>
         <source>time (s)</source>
         <translation>时间（秒）</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="245"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="260"/>
         <source>|ω| (rad/s)</source>
         <translation>|ω|（rad/s）</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="248"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="263"/>
         <source>|ω| (°/s)</source>
         <translation>|ω|（°/s）</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="261"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="276"/>
         <source>before fit</source>
         <translation>拟合前</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="262"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="277"/>
         <source>current</source>
         <translation>当前</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="263"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="278"/>
         <source>fitted</source>
         <translation>拟合后</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="264"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="279"/>
         <source>sketched</source>
         <translation>草图</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="265"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="280"/>
         <source>constrained keys</source>
         <translation>约束的关键帧</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/magnitude_plot.cpp" line="267"/>
+        <location filename="../src/app/sketch/magnitude_plot.cpp" line="282"/>
         <source>free keys</source>
         <translation>自由的关键帧</translation>
     </message>
@@ -1850,172 +2269,177 @@
 <context>
     <name>gyre::app::MainWindow</name>
     <message>
-        <location filename="../src/app/main_window.cpp" line="65"/>
+        <location filename="../src/app/main_window.cpp" line="67"/>
         <source>Gyre projects (*.gyre)</source>
         <translation>Gyre 项目 (*.gyre)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="126"/>
+        <location filename="../src/app/main_window.cpp" line="167"/>
         <source>&amp;Undo</source>
         <translation>撤销(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="130"/>
+        <location filename="../src/app/main_window.cpp" line="171"/>
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="154"/>
+        <location filename="../src/app/main_window.cpp" line="195"/>
         <source>&lt;opened&gt;</source>
         <translation>&lt;已打开&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="195"/>
+        <location filename="../src/app/main_window.cpp" line="258"/>
         <source>Drawing the direction on the sphere needs OpenGL 3.3, which this display does not offer. The speed plot and the fit work without it.</source>
         <translation>在球面上绘制方向需要 OpenGL 3.3，而此显示环境不支持。速度图和拟合无需它也能工作。</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="218"/>
+        <location filename="../src/app/main_window.cpp" line="277"/>
         <source>The 3D viewport needs OpenGL 3.3, which this display does not offer. Editing, the panels and the timeline work without it.</source>
         <translation>3D 视口需要 OpenGL 3.3，而此显示环境不支持。编辑、面板和时间轴无需它也能工作。</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="244"/>
-        <source>Viewport frame rate while drawing, and the time to subdivide the trail: on the worker, and from the request to its arrival</source>
-        <translation>绘制时视口的帧率，以及细分轨迹所需的时间：在工作线程上的耗时，和从请求到结果到达的耗时</translation>
+        <location filename="../src/app/main_window.cpp" line="327"/>
+        <source>Viewport frame rate while something moves, and the time to subdivide the trail: on the worker, and from the request to its arrival</source>
+        <translation>有物体运动时视口的帧率，以及细分频闪轨迹所用的时间：在后台线程中的用时，以及从请求到送达的用时</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="249"/>
+        <location filename="../src/app/main_window.cpp" line="337"/>
         <source>%1 fps · subdivision %2 ms (%3 ms to arrive)</source>
         <translation>%1 fps · 细分 %2 毫秒（%3 毫秒后到达）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="283"/>
+        <location filename="../src/app/main_window.cpp" line="381"/>
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="285"/>
+        <location filename="../src/app/main_window.cpp" line="383"/>
         <source>%1[*] — Gyre</source>
         <translation>%1[*] — Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="300"/>
+        <location filename="../src/app/main_window.cpp" line="398"/>
         <source>Open Project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="318"/>
+        <location filename="../src/app/main_window.cpp" line="416"/>
         <source>Cannot open the project</source>
         <translation>无法打开项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="341"/>
+        <location filename="../src/app/main_window.cpp" line="439"/>
         <source>L-shaped cycle (ScrewBender)</source>
         <translation>L 形循环（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="342"/>
+        <location filename="../src/app/main_window.cpp" line="440"/>
         <source>Spinning top (sketched angular velocity)</source>
         <translation>陀螺（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="343"/>
+        <location filename="../src/app/main_window.cpp" line="441"/>
         <source>Letter M (sketched angular velocity)</source>
         <translation>字母 M（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="344"/>
+        <location filename="../src/app/main_window.cpp" line="442"/>
         <source>Hat (sketched angular velocity)</source>
         <translation>帽子（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="345"/>
+        <location filename="../src/app/main_window.cpp" line="443"/>
         <source>Falling leaf (sketched angular velocity)</source>
         <translation>飘落的树叶（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="346"/>
+        <location filename="../src/app/main_window.cpp" line="444"/>
         <source>Pen (sketched angular speed)</source>
         <translation>笔（草图绘制的角速度大小）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="347"/>
+        <location filename="../src/app/main_window.cpp" line="445"/>
         <source>Pendulum (ScrewBender)</source>
         <translation>摆（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="348"/>
+        <location filename="../src/app/main_window.cpp" line="446"/>
         <source>Spinning block (ScrewBender)</source>
         <translation>旋转的方块（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="349"/>
+        <location filename="../src/app/main_window.cpp" line="447"/>
         <source>Critter&apos;s non-planar cycle (ScrewBender)</source>
         <translation>小动物的非平面循环（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="368"/>
+        <location filename="../src/app/main_window.cpp" line="466"/>
         <source>Save Project As</source>
         <translation>项目另存为</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="381"/>
+        <location filename="../src/app/main_window.cpp" line="479"/>
         <source>Cannot save the project</source>
         <translation>无法保存项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="385"/>
+        <location filename="../src/app/main_window.cpp" line="483"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="394"/>
+        <location filename="../src/app/main_window.cpp" line="492"/>
         <source>Unsaved changes</source>
         <translation>未保存的更改</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="394"/>
+        <location filename="../src/app/main_window.cpp" line="492"/>
         <source>The project has unsaved changes. Save them first?</source>
         <translation>项目有未保存的更改。要先保存吗？</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="433"/>
+        <location filename="../src/app/main_window.cpp" line="531"/>
         <source>About Gyre</source>
         <translation>关于 Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="434"/>
+        <location filename="../src/app/main_window.cpp" line="532"/>
         <source>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Edit the rotations of animated rigid objects: every way of writing an orientation, interpolation that behaves, sketched angular velocity, and ScrewBender motions.&lt;/p&gt;&lt;p&gt;Built on Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 and QCustomPlot %8.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;编辑动画刚体的旋转：各种朝向表示方式、表现良好的插值、草图绘制的角速度，以及 ScrewBender 运动。&lt;/p&gt;&lt;p&gt;基于 Qt %2、Eigen %3.%4.%5、Ceres Solver %6、Assimp %7 和 QCustomPlot %8 构建。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="454"/>
+        <location filename="../src/app/main_window.cpp" line="552"/>
+        <source>Autosave failed: %1</source>
+        <translation>自动保存失败：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="561"/>
         <source>an untitled project</source>
         <translation>一个未命名项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="457"/>
+        <location filename="../src/app/main_window.cpp" line="564"/>
         <source>Recover unsaved work</source>
         <translation>恢复未保存的工作</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="458"/>
+        <location filename="../src/app/main_window.cpp" line="565"/>
         <source>Gyre ended without saving changes to %1 (last copy %2). Recover them?</source>
         <translation>Gyre 结束时未保存对 %1 的更改（最后一次副本 %2）。要恢复吗？</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="466"/>
+        <location filename="../src/app/main_window.cpp" line="580"/>
         <source>Cannot recover</source>
         <translation>无法恢复</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="475"/>
+        <location filename="../src/app/main_window.cpp" line="555"/>
         <source>Autosave is off: %1</source>
         <translation>自动保存已关闭：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="167"/>
+        <location filename="../src/app/main_window.cpp" line="199"/>
         <source>Outliner</source>
         <translation>大纲</translation>
     </message>
@@ -2029,6 +2453,21 @@
     </message>
 </context>
 <context>
+    <name>gyre::app::OutlinerPanel</name>
+    <message>
+        <location filename="../src/app/outliner/outliner_panel.cpp" line="28"/>
+        <source>Filter by name</source>
+        <translation>按名称筛选</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/app/outliner/outliner_panel.cpp" line="131"/>
+        <source>Delete %n Objects</source>
+        <translation>
+            <numerusform>删除 %n 个对象</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>gyre::app::PatternCanvas</name>
     <message>
         <location filename="../src/app/sketch/pattern_pad.cpp" line="34"/>
@@ -2037,44 +2476,29 @@
     </message>
 </context>
 <context>
-    <name>gyre::app::OutlinerPanel</name>
-    <message>
-        <location filename="../src/app/outliner/outliner_panel.cpp" line="28"/>
-        <source>Filter by name</source>
-        <translation>按名称筛选</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../src/app/outliner/outliner_panel.cpp" line="130"/>
-        <source>Delete %n Objects</source>
-        <translation>
-            <numerusform>删除 %n 个对象</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
     <name>gyre::app::PatternPad</name>
     <message>
-        <location filename="../src/app/sketch/pattern_pad.cpp" line="145"/>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="146"/>
         <source>Clear Pattern</source>
         <translation>清除图案</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/pattern_pad.cpp" line="148"/>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="150"/>
         <source>off</source>
         <translation>关</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/pattern_pad.cpp" line="149"/>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="151"/>
         <source>How many times the pattern repeats along the direction curve; off: not applied</source>
         <translation>图案沿方向曲线重复的次数；关：不应用</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/pattern_pad.cpp" line="150"/>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="152"/>
         <source>Take the pattern away</source>
         <translation>移除图案</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/pattern_pad.cpp" line="151"/>
+        <location filename="../src/app/sketch/pattern_pad.cpp" line="153"/>
         <source>&amp;Repeat:</source>
         <translation>重复(&amp;R)：</translation>
     </message>
@@ -2090,96 +2514,98 @@
 <context>
     <name>gyre::app::SceneFileActions</name>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="27"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="28"/>
         <source>Scenes (*.fbx *.gltf *.glb *.dae *.obj *.bvh *.3ds *.x *.ase *.ply *.stl);;All files (*)</source>
         <translation>场景 (*.fbx *.gltf *.glb *.dae *.obj *.bvh *.3ds *.x *.ase *.ply *.stl);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="33"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="34"/>
         <source>glTF 2.0 (*.gltf);;glTF 2.0 binary (*.glb);;Collada (*.dae);;FBX (*.fbx);;OBJ, meshes only (*.obj)</source>
         <translation>glTF 2.0 (*.gltf);;glTF 2.0 二进制 (*.glb);;Collada (*.dae);;FBX (*.fbx);;OBJ，仅网格 (*.obj)</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="58"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="61"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="75"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="78"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="144"/>
         <source>Import of %1 cancelled</source>
         <translation>已取消导入 %1</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="81"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="84"/>
         <source>Import Scene</source>
         <translation>导入场景</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="89"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="92"/>
         <source>Export Scene</source>
         <translation>导出场景</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="103"/>
-        <location filename="../src/app/scene_file_actions.cpp" line="121"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="106"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="117"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="162"/>
         <source>Wait for the scene file being read or written first</source>
         <translation>请先等待正在读取或写入的场景文件完成</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="106"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="120"/>
         <source>Importing %1…</source>
         <translation>正在导入 %1…</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="113"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="154"/>
         <source>Cannot export</source>
         <translation>无法导出</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="114"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="155"/>
         <source>%1: Gyre writes .gltf, .glb, .dae, .fbx and .obj scenes; the file name&apos;s extension says which.</source>
         <translation>%1：Gyre 可写出 .gltf、.glb、.dae、.fbx 和 .obj 场景；由文件扩展名决定格式。</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="124"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="165"/>
         <source>Exporting %1…</source>
         <translation>正在导出 %1…</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="132"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="172"/>
         <source>%1: the file holds no objects.</source>
         <translation>%1：文件不含任何对象。</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="135"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="175"/>
         <source>Import %1</source>
         <translation>导入 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/app/scene_file_actions.cpp" line="149"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="190"/>
         <source>Objects imported from %1: %n</source>
         <translation>
             <numerusform>已从 %1 导入 %n 个对象</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="152"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="193"/>
         <source>Imported %1</source>
         <translation>已导入 %1</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="158"/>
-        <location filename="../src/app/scene_file_actions.cpp" line="159"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="199"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="200"/>
         <source>Exported %1</source>
         <translation>已导出 %1</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="165"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="206"/>
         <source>Scene file</source>
         <translation>场景文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/app/scene_file_actions.cpp" line="174"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="215"/>
         <source>Done. Warnings about what the file could not keep: %n.</source>
         <translation>
             <numerusform>已完成，有 %n 条关于文件无法保留内容的警告。</numerusform>
@@ -2188,8 +2614,18 @@
 </context>
 <context>
     <name>gyre::app::SceneTreeModel</name>
+    <message>
+        <location filename="../src/app/outliner/scene_tree_model.cpp" line="135"/>
+        <source>Shown in the viewport: uncheck to hide it</source>
+        <translation>在视口中显示：取消勾选以隐藏</translation>
+    </message>
+    <message>
+        <location filename="../src/app/outliner/scene_tree_model.cpp" line="135"/>
+        <source>Hidden in the viewport: check to show it</source>
+        <translation>在视口中隐藏：勾选以显示</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../src/app/outliner/scene_tree_model.cpp" line="284"/>
+        <location filename="../src/app/outliner/scene_tree_model.cpp" line="309"/>
         <source>Reparent %n Objects in Place</source>
         <translation>
             <numerusform>原位更改 %n 个对象的父级</numerusform>
@@ -2199,72 +2635,77 @@
 <context>
     <name>gyre::app::ScrewBenderPanel</name>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="24"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="25"/>
         <source>Slerp (great arcs)</source>
         <translation>Slerp（大圆弧）</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="26"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="27"/>
         <source>Nlerp (normalised straight lines)</source>
         <translation>Nlerp（归一化直线）</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="28"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="29"/>
         <source>Squad (smooth quaternion curve)</source>
         <translation>Squad（平滑四元数曲线）</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="30"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="31"/>
         <source>Hermite quaternion spline</source>
         <translation>Hermite 四元数样条</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="32"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="33"/>
         <source>Euler angles, linearly</source>
         <translation>欧拉角，线性</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="34"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="35"/>
         <source>Screw motion (ScrewBender)</source>
         <translation>螺旋运动（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="44"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="45"/>
         <source>Four-point</source>
         <translation>四点</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="46"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="47"/>
         <source>Four-point B</source>
         <translation>四点 B</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="48"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="49"/>
         <source>Cubic B-spline</source>
         <translation>三次 B 样条</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="50"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="51"/>
         <source>Jarek</source>
         <translation>Jarek</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="127"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="135"/>
         <source>%1 from %2 keyframes</source>
         <translation>%1，来自 %2 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="128"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="136"/>
         <source>too many to hold, from %1 keyframes</source>
         <translation>过多无法容纳，来自 %1 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="140"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="148"/>
         <source>The interpolation was not changed: %1.</source>
         <translation>插值未更改：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="159"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="161"/>
+        <source>Interpolate by Screws</source>
+        <translation>以螺旋运动插值</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="185"/>
         <source>The subdivision was not changed: %1.</source>
         <translation>细分未更改：%1。</translation>
     </message>
@@ -2294,19 +2735,19 @@
     </message>
     <message>
         <location filename="../src/app/smoothness_panel.cpp" line="42"/>
-        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="108"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
         <location filename="../src/app/smoothness_panel.cpp" line="44"/>
-        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="108"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
         <location filename="../src/app/smoothness_panel.cpp" line="46"/>
-        <location filename="../src/app/smoothness_panel.cpp" line="107"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="108"/>
         <source>z</source>
         <translation>z</translation>
     </message>
@@ -2316,22 +2757,22 @@
         <translation>大小</translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="105"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="106"/>
         <source>Point of the object (local):</source>
         <translation>对象上的点（局部）：</translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="112"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="113"/>
         <source>%1 </source>
         <translation>%1 </translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="115"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="116"/>
         <source>The %1 coordinate of the plotted point, in the object&apos;s frame</source>
         <translation>所绘制点在对象坐标系中的 %1 坐标</translation>
     </message>
     <message>
-        <location filename="../src/app/smoothness_panel.cpp" line="175"/>
+        <location filename="../src/app/smoothness_panel.cpp" line="164"/>
         <source>time (s)</source>
         <translation>时间（秒）</translation>
     </message>
@@ -2339,82 +2780,82 @@
 <context>
     <name>gyre::app::SphereView</name>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="184"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="190"/>
         <source>Draw</source>
         <translation>绘制</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="185"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="191"/>
         <source>Draw the direction of the angular velocity on the front of the sphere</source>
         <translation>在球的正面绘制角速度的方向</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="186"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="192"/>
         <source>Erase</source>
         <translation>擦除</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="186"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="192"/>
         <source>Erase the strokes&apos; points under the pointer</source>
         <translation>擦除指针下的笔画点</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="187"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="193"/>
         <source>Pattern</source>
         <translation>图案</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="188"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="194"/>
         <source>Draw a pattern to repeat along the strokes, on the pad</source>
         <translation>在画板上绘制沿笔画重复的图案</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="191"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="197"/>
         <source>Reset View</source>
         <translation>重置视图</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="194"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="200"/>
         <source>Turn the sphere back to its first view, z up (R)</source>
         <translation>将球转回初始视图，z 朝上（R）</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="238"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="244"/>
         <source>Select an object to sketch the direction of its angular velocity.</source>
         <translation>选择一个对象以绘制其角速度方向的草图。</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="240"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="246"/>
         <source>%1 does not turn: key it in two orientations to give it an angular velocity to sketch.</source>
         <translation>%1 没有转动：请在两个朝向上设置关键帧，使其具有可绘制的角速度。</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="560"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="621"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="595"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="654"/>
         <source>motion: ω/|ω|</source>
         <translation>运动：ω/|ω|</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="597"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="656"/>
         <source>fitted</source>
         <translation>拟合后</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="598"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="657"/>
         <source>before the fit</source>
         <translation>拟合前</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="600"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="659"/>
         <source>sketch as drawn</source>
         <translation>绘制的草图</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="601"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="660"/>
         <source>sketch as fitted, pattern applied</source>
         <translation>拟合后的草图，已应用图案</translation>
     </message>
@@ -2422,54 +2863,54 @@
 <context>
     <name>gyre::app::TimeBar</name>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="26"/>
+        <location filename="../src/app/time_bar.cpp" line="25"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="45"/>
+        <location filename="../src/app/time_bar.cpp" line="44"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="52"/>
+        <location filename="../src/app/time_bar.cpp" line="51"/>
         <source>Frames per second</source>
         <translation>每秒帧数</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="53"/>
+        <location filename="../src/app/time_bar.cpp" line="52"/>
         <source>Where the scene starts</source>
         <translation>场景的开始时间</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="54"/>
+        <location filename="../src/app/time_bar.cpp" line="53"/>
         <source>Where the scene ends</source>
         <translation>场景的结束时间</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="56"/>
-        <location filename="../src/app/time_bar.cpp" line="94"/>
+        <location filename="../src/app/time_bar.cpp" line="55"/>
+        <location filename="../src/app/time_bar.cpp" line="91"/>
         <source>Time %1 s</source>
         <translation>时间 %1 秒</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="57"/>
-        <location filename="../src/app/time_bar.cpp" line="96"/>
+        <location filename="../src/app/time_bar.cpp" line="56"/>
+        <location filename="../src/app/time_bar.cpp" line="93"/>
         <source>Frame %1</source>
         <translation>第 %1 帧</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="64"/>
+        <location filename="../src/app/time_bar.cpp" line="63"/>
         <source>Rate</source>
         <translation>帧率</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="64"/>
+        <location filename="../src/app/time_bar.cpp" line="63"/>
         <source>Start</source>
         <translation>开始</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="64"/>
+        <location filename="../src/app/time_bar.cpp" line="63"/>
         <source>End</source>
         <translation>结束</translation>
     </message>
@@ -2477,13 +2918,13 @@
 <context>
     <name>gyre::app::TimelineWidget</name>
     <message>
-        <location filename="../src/app/timeline_widget.cpp" line="88"/>
-        <location filename="../src/app/timeline_widget.cpp" line="191"/>
+        <location filename="../src/app/timeline_widget.cpp" line="89"/>
+        <location filename="../src/app/timeline_widget.cpp" line="235"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../src/app/timeline_widget.cpp" line="93"/>
+        <location filename="../src/app/timeline_widget.cpp" line="94"/>
         <source>%1 f</source>
         <translation>%1 帧</translation>
     </message>
@@ -2497,32 +2938,9 @@
     </message>
 </context>
 <context>
-    <name>gyre::model::SketchFitError</name>
-    <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="89"/>
-        <source>Direction stroke %1 cannot be followed: %2</source>
-        <translation>无法沿方向笔画 %1 拟合：%2</translation>
-    </message>
-    <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="194"/>
-        <source>The fit needs at least two keyframes on the selected object.</source>
-        <translation>拟合需要所选对象至少有两个关键帧。</translation>
-    </message>
-    <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="201"/>
-        <source>Nothing is sketched yet: draw the direction of the angular velocity on the sphere, or its magnitude on the plot.</source>
-        <translation>尚未绘制草图：请在球面上绘制角速度的方向，或在图中绘制其大小。</translation>
-    </message>
-    <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="206"/>
-        <source>The edit window has no length inside the keys&apos; span: widen it, or sketch between the first and the last key.</source>
-        <translation>编辑窗口在关键帧范围内的长度为零：请扩大它，或在第一个和最后一个关键帧之间绘制草图。</translation>
-    </message>
-</context>
-<context>
     <name>gyre::model::Command</name>
     <message>
-        <location filename="../src/model/commands/add_keyframe_command.cpp" line="38"/>
+        <location filename="../src/model/commands/add_keyframe_command.cpp" line="40"/>
         <source>Add Keyframe</source>
         <translation>添加关键帧</translation>
     </message>
@@ -2577,7 +2995,7 @@
         <translation>重命名对象</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/reparent_object_command.cpp" line="39"/>
+        <location filename="../src/model/commands/reparent_object_command.cpp" line="34"/>
         <source>Reparent Object</source>
         <translation>更改对象的父级</translation>
     </message>
@@ -2597,7 +3015,7 @@
         <translation>设置拟合窗口</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/set_interpolation_command.cpp" line="10"/>
+        <location filename="../src/model/commands/set_interpolation_command.cpp" line="23"/>
         <source>Set Interpolation</source>
         <translation>设置插值</translation>
     </message>
@@ -2622,7 +3040,7 @@
         <translation>绘制图案</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/set_subdivision_command.cpp" line="11"/>
+        <location filename="../src/model/commands/set_subdivision_command.cpp" line="24"/>
         <source>Set Subdivision</source>
         <translation>设置细分</translation>
     </message>
@@ -2640,6 +3058,77 @@
         <location filename="../src/model/commands/reparent_object_in_place_command.cpp" line="30"/>
         <source>Reparent Object in Place</source>
         <translation>原位更改对象的父级</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_object_visibility_command.cpp" line="10"/>
+        <source>Show Object</source>
+        <translation>显示对象</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_object_visibility_command.cpp" line="11"/>
+        <source>Hide Object</source>
+        <translation>隐藏对象</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::model::Primitive</name>
+    <message>
+        <location filename="../src/model/primitive_meshes.cpp" line="166"/>
+        <source>Block</source>
+        <translation>方块</translation>
+    </message>
+    <message>
+        <location filename="../src/model/primitive_meshes.cpp" line="168"/>
+        <source>Box</source>
+        <translation>立方体</translation>
+    </message>
+    <message>
+        <location filename="../src/model/primitive_meshes.cpp" line="170"/>
+        <source>Disc</source>
+        <translation>圆盘</translation>
+    </message>
+    <message>
+        <location filename="../src/model/primitive_meshes.cpp" line="172"/>
+        <source>Cone</source>
+        <translation>圆锥</translation>
+    </message>
+    <message>
+        <location filename="../src/model/primitive_meshes.cpp" line="174"/>
+        <source>Arrow</source>
+        <translation>箭头</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::model::SketchFitError</name>
+    <message>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="94"/>
+        <source>Direction stroke %1 cannot be followed: %2</source>
+        <translation>无法沿方向笔画 %1 拟合：%2</translation>
+    </message>
+    <message>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="248"/>
+        <source>The fit needs at least two keyframes on the selected object.</source>
+        <translation>拟合需要所选对象至少有两个关键帧。</translation>
+    </message>
+    <message>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="251"/>
+        <source>Nothing is sketched yet: draw the direction of the angular velocity on the sphere, or its magnitude on the plot.</source>
+        <translation>尚未绘制草图：请在球面上绘制角速度的方向，或在图中绘制其大小。</translation>
+    </message>
+    <message>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="256"/>
+        <source>The edit window has no length inside the keys&apos; span: widen it, or sketch between the first and the last key.</source>
+        <translation>编辑窗口在关键帧范围内的长度为零：请扩大它，或在第一个和最后一个关键帧之间绘制草图。</translation>
+    </message>
+    <message>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="262"/>
+        <source>The edit window of %1 s needs %2 target samples at %3 a second; the budget is %4: narrow the window.</source>
+        <translation>%1 秒的编辑窗口在每秒 %3 个采样时需要 %2 个目标采样；上限为 %4：请缩小窗口。</translation>
+    </message>
+    <message>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="273"/>
+        <source>The pattern cannot be repeated: %1</source>
+        <translation>图案无法重复：%1</translation>
     </message>
 </context>
 <context>

@@ -12,23 +12,6 @@ namespace gyre::app {
 
 namespace {
 
-QString primitiveName(model::Primitive primitive)
-{
-    switch (primitive) {
-    case model::Primitive::Block:
-        return AddObjectActions::tr("Block");
-    case model::Primitive::Box:
-        return AddObjectActions::tr("Box");
-    case model::Primitive::Disc:
-        return AddObjectActions::tr("Disc");
-    case model::Primitive::Cone:
-        return AddObjectActions::tr("Cone");
-    case model::Primitive::Arrow:
-        return AddObjectActions::tr("Arrow");
-    }
-    return {};
-}
-
 // `base`, or the first of base.001, base.002, … that no object of `scene` is named.
 QString unusedName(const model::Scene& scene, const QString& base)
 {
@@ -50,7 +33,7 @@ AddObjectActions::AddObjectActions(model::Document& document, Selection& selecti
     , selection_(selection)
 {
     for (const auto& [primitive, key] : model::kPrimitiveNames) {
-        QAction* action = menu.addAction(primitiveName(primitive));
+        QAction* action = menu.addAction(model::primitiveName(primitive));
         action->setObjectName(QStringLiteral("actionAdd-") + QLatin1String(key.data(), static_cast<qsizetype>(key.size())));
         connect(action, &QAction::triggered, this, [this, primitive = primitive] { add(primitive); });
     }
@@ -60,12 +43,10 @@ void AddObjectActions::add(model::Primitive primitive)
 {
     model::SceneObject object;
     object.id = 1; // the batch's own id; the command gives the scene's
-    object.name = unusedName(document_.scene(), primitiveName(primitive));
-    // The block is the shape an object without a mesh is drawn with: it needs no mesh of its own.
-    if (primitive != model::Primitive::Block)
-        object.mesh = std::make_shared<const model::Mesh>(model::primitiveMesh(primitive));
+    object.name = unusedName(document_.scene(), model::primitiveName(primitive));
+    object.mesh = std::make_shared<const model::Mesh>(model::primitiveMesh(primitive));
     auto* command = new model::ImportObjectsCommand(document_, {std::move(object)});
-    command->setText(tr("Add %1").arg(primitiveName(primitive)));
+    command->setText(tr("Add %1").arg(model::primitiveName(primitive)));
     const model::ObjectId added = command->ids().front();
     document_.push(command);
     selection_.selectObject(added);

@@ -78,6 +78,22 @@ void addScrolled(QLayout* dockLayout, QWidget* panel)
     dockLayout->addWidget(scroll);
 }
 
+// With NumLock off, the number pad sends its other keys (End for 1, Delete for the period, ...), still
+// with Qt::KeypadModifier: each number-pad shortcut gets its twin, so that the views work either way,
+// as Blender's do.
+void addNumLockOffTwin(QAction* action)
+{
+    static const std::pair<Qt::Key, Qt::Key> kTwins[] = {{Qt::Key_1, Qt::Key_End}, {Qt::Key_3, Qt::Key_PageDown},
+                                                         {Qt::Key_5, Qt::Key_Clear}, {Qt::Key_7, Qt::Key_Home},
+                                                         {Qt::Key_Period, Qt::Key_Delete}};
+    const QKeyCombination numLockOn = action->shortcut()[0];
+    if (!(numLockOn.keyboardModifiers() & Qt::KeypadModifier))
+        return;
+    for (const auto& [on, off] : kTwins)
+        if (numLockOn.key() == on)
+            action->setShortcuts({action->shortcut(), QKeySequence(QKeyCombination(numLockOn.keyboardModifiers(), off))});
+}
+
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -291,6 +307,9 @@ void MainWindow::createViewport()
                                         std::pair{ui_->actionViewTop, ViewPoint::Top}, std::pair{ui_->actionViewBottom, ViewPoint::Bottom}})
         connect(action, &QAction::triggered, viewport_, [this, view = point] { viewport_->viewFrom(view); });
     connect(ui_->actionOrthographic, &QAction::toggled, viewport_, &Viewport::setOrthographic);
+    for (QAction* action : {ui_->actionFrameSelected, ui_->actionViewFront, ui_->actionViewBack, ui_->actionViewRight,
+                            ui_->actionViewLeft, ui_->actionViewTop, ui_->actionViewBottom, ui_->actionOrthographic})
+        addNumLockOffTwin(action);
     for (QAction* action : {ui_->actionWireframe, ui_->actionXray})
         connect(action, &QAction::toggled, viewport_, [this] {
             viewport_->setShading({ui_->actionWireframe->isChecked(), ui_->actionXray->isChecked()});

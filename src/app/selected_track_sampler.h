@@ -25,7 +25,9 @@ public:
     // Called on the UI thread with the selected track's shared motion (Document::motion) and the
     // scene; returns the sampling to run on the job, holding copies of what it reads. The sampling may
     // throw std::invalid_argument for a track too large to evaluate (track_evaluation.h): the view then
-    // shows no curves, as it does for any other failure rather than the curves of an older track.
+    // shows no curves, as it does for any other failure rather than the curves of an older track. The
+    // message is not repeated here: the same shared motion fails the viewport's drawing the same way,
+    // and the viewport puts it in the status bar (DrawnMotion::failed).
     using Motion = std::shared_ptr<const model::SharedTrackMotion>;
     using MakeSampling = std::function<std::function<Curves()>(const Motion&, const model::Scene&)>;
     using Show = std::function<void(const Curves&)>;

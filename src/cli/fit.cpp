@@ -264,7 +264,7 @@ model::SketchFitProblem fitProblem(const VerbCommandLine& commandLine, model::Mo
     std::vector<fit::FitKey> keys;
     for (const model::Keyframe& key : track.keys)
         keys.push_back({key.time, key.pose.orientation, key.constrained});
-    return {std::move(keys), target, settings, {}};
+    return {std::move(keys), target, settings, {}, {}};
 }
 
 QJsonObject energyJson(const fit::EnergyTerms& terms, const FitSettings& settings)
@@ -337,7 +337,8 @@ void fitAndWrite(const VerbCommandLine& commandLine, const model::MotionTrack& t
     }
     const bool sketched = !track.sketch.directionStrokes.empty() || !track.sketch.magnitude.empty();
     const QByteArray report = reportJson(result, problem.settings,
-                                         sketched ? std::optional(model::drawnErrors(track, applied)) : std::nullopt);
+                                         sketched ? std::optional(model::drawnErrors(track, *problem.motionWithoutFit, applied))
+                                                  : std::nullopt);
     OutputTarget framesFile(commandLine.outputPath());
     OutputTarget reportFile(commandLine.requiredValue(kReport));
     framesFile.open();

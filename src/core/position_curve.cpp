@@ -46,4 +46,19 @@ Eigen::Vector3d PositionCurve::at(double time) const
     return h[0] * start.position + h[1] * duration * slopes_[i] + h[2] * end.position + h[3] * duration * slopes_[i + 1];
 }
 
+Eigen::Vector3d PositionCurve::velocity(double time) const
+{
+    if (time < keys_.front().time || time > keys_.back().time || keys_.size() < 2)
+        return Eigen::Vector3d::Zero();
+    const std::size_t i = segmentAt(keys_, time);
+    const PositionKey& start = keys_[i];
+    const PositionKey& end = keys_[i + 1];
+    const double duration = end.time - start.time;
+    if (slopes_.empty())
+        return (end.position - start.position) / duration;
+    // dp/dt = (dp/du)/duration, with the basis' first derivatives in u.
+    const std::array<double, 4>& h = hermiteBasis((time - start.time) / duration).first;
+    return (h[0] * start.position + h[2] * end.position) / duration + h[1] * slopes_[i] + h[3] * slopes_[i + 1];
+}
+
 } // namespace gyre

@@ -36,6 +36,8 @@ public:
 
     // Held at the end positions outside the key span.
     Eigen::Vector3d at(double time) const;
+    // d/dt of at(): zero outside the key span; at a key of a linear curve, the slope of the span after it.
+    Eigen::Vector3d velocity(double time) const;
 
 private:
     std::vector<PositionKey> keys_;

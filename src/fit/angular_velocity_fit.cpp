@@ -12,6 +12,9 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <numeric>
+#include <ranges>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -124,16 +127,49 @@ double relativeFragmentError(double fragmentError, double targetMeanSquare)
     return fragmentError / std::max(targetMeanSquare, kSlowestTargetSpeed * kSlowestTargetSpeed);
 }
 
+namespace {
+
+// ∫ f(t) dt over [from, to] by `quadrature` on each piece between the times in `cuts` (increasing;
+// where the integrand's derivatives jump, as a spline's do at its control points).
+template <class Cuts, class Integrand>
+double integrateInPieces(const QuadratureRule& quadrature, double from, double to, const Cuts& cuts,
+                         const Integrand& integrand)
+{
+    double sum = 0.0;
+    double start = from;
+    auto next = std::ranges::upper_bound(cuts, from);
+    while (start < to) {
+        const double end = next != std::ranges::end(cuts) ? std::min(*next, to) : to;
+        for (std::size_t j = 0; j < quadrature.nodes.size(); ++j)
+            sum += quadrature.weights[j] * (end - start) * integrand(start + quadrature.nodes[j] * (end - start));
+        start = end;
+        if (next != std::ranges::end(cuts))
+            ++next;
+    }
+    return sum;
+}
+
+// ∫ f(t) dt over each fragment of the window, fragmentSeconds long from its start (the last may be
+// shorter): the paper's Eq. 2 pieces, each by integrateInPieces.
+template <class Cuts, class Integrand>
+std::vector<double> fragmentIntegrals(const QuadratureRule& quadrature, const TimeWindow& window,
+                                      double fragmentSeconds, const Cuts& cuts, const Integrand& integrand)
+{
+    std::vector<double> integrals;
+    for (double start = window.start; start < window.end; start += fragmentSeconds)
+        integrals.push_back(
+            integrateInPieces(quadrature, start, std::min(start + fragmentSeconds, window.end), cuts, integrand));
+    return integrals;
+}
+
+} // namespace
+
 double targetMeanSquare(const AngularVelocityTarget& target, const TimeWindow& window, double fragmentSeconds)
 {
-    const QuadratureRule quadrature = gaussLegendre(kMeasureNodes);
-    double sum = 0.0;
-    for (double start = window.start; start < window.end; start += fragmentSeconds) {
-        const double length = std::min(start + fragmentSeconds, window.end) - start;
-        for (std::size_t j = 0; j < quadrature.nodes.size(); ++j)
-            sum += quadrature.weights[j] * length * target.at(start + quadrature.nodes[j] * length).squaredNorm();
-    }
-    return sum / (window.end - window.start);
+    const std::vector<double> fragments =
+        fragmentIntegrals(gaussLegendre(kMeasureNodes), window, fragmentSeconds, std::span<const double>{},
+                          [&target](double t) { return target.at(t).squaredNorm(); });
+    return std::accumulate(fragments.begin(), fragments.end(), 0.0) / (window.end - window.start);
 }
 
 namespace {
@@ -193,11 +229,11 @@ private:
     const QuadratureRule& rule(int nodes) const;
     HermiteQuaternionSpline spline() const { return HermiteQuaternionSpline(hermitePoints(points_)); }
     double largestNormDeviation(const HermiteQuaternionSpline& curve) const;
-    template <class Integrand>
-    double integrate(double from, double to, const Integrand& integrand) const;
+    // The control points' times, where integrals are cut: the spline's second derivative jumps there.
+    auto controlPointTimes() const { return std::views::transform(points_, &ControlPoint::time); }
     EnergyTerms energyTerms(const HermiteQuaternionSpline& curve) const;
     struct FragmentErrors {
-        std::vector<double> relative;  // F_n/(ΔTₙ·S̄) of each fragment
+        std::vector<double> relative;  // F_n/S̄ of each fragment, in seconds (relativeFragmentError)
         double largest = 0.0;          // the largest F_n
     };
     FragmentErrors fragmentErrors(const HermiteQuaternionSpline& curve) const;
@@ -394,33 +430,14 @@ double FitRun::largestNormDeviation(const HermiteQuaternionSpline& curve) const
     return largest;
 }
 
-// ∫ f(t) dt over [from, to], cut at the control points (where the spline's second derivative jumps).
-template <class Integrand>
-double FitRun::integrate(double from, double to, const Integrand& integrand) const
-{
-    const QuadratureRule& quadrature = rule(kMeasureNodes);
-    double sum = 0.0;
-    double start = from;
-    auto next = std::upper_bound(points_.begin(), points_.end(), from,
-                                 [](double time, const ControlPoint& point) { return time < point.time; });
-    while (start < to) {
-        const double end = next != points_.end() ? std::min(next->time, to) : to;
-        for (std::size_t j = 0; j < quadrature.nodes.size(); ++j)
-            sum += quadrature.weights[j] * (end - start) * integrand(start + quadrature.nodes[j] * (end - start));
-        start = end;
-        if (next != points_.end())
-            ++next;
-    }
-    return sum;
-}
-
 EnergyTerms FitRun::energyTerms(const HermiteQuaternionSpline& curve) const
 {
+    const QuadratureRule& quadrature = rule(kMeasureNodes);
     EnergyTerms terms;
-    terms.angular = integrate(window_.start, window_.end, [&](double t) {
+    terms.angular = integrateInPieces(quadrature, window_.start, window_.end, controlPointTimes(), [&](double t) {
         return (curve.sample(t).angularVelocity - target_.at(t)).squaredNorm();
     });
-    terms.tangential = integrate(window_.start, window_.end, [&](double t) {
+    terms.tangential = integrateInPieces(quadrature, window_.start, window_.end, controlPointTimes(), [&](double t) {
         const HermiteQuaternionSpline::RawSample raw = curve.raw(t);
         const double along = raw.value.coeffs().dot(raw.secondDerivative.coeffs());
         return raw.secondDerivative.squaredNorm() - along * along / raw.value.squaredNorm();
@@ -433,11 +450,10 @@ EnergyTerms FitRun::energyTerms(const HermiteQuaternionSpline& curve) const
 FitRun::FragmentErrors FitRun::fragmentErrors(const HermiteQuaternionSpline& curve) const
 {
     FragmentErrors errors;
-    for (double start = window_.start; start < window_.end; start += settings_.fragmentSeconds) {
-        const double end = std::min(start + settings_.fragmentSeconds, window_.end);
-        const double error = integrate(start, end, [&](double t) {
-            return (curve.sample(t).angularVelocity - target_.at(t)).squaredNorm();
-        });
+    const std::vector<double> fragments =
+        fragmentIntegrals(rule(kMeasureNodes), window_, settings_.fragmentSeconds, controlPointTimes(),
+                          [&](double t) { return (curve.sample(t).angularVelocity - target_.at(t)).squaredNorm(); });
+    for (const double error : fragments) {
         errors.relative.push_back(relativeFragmentError(error, targetMeanSquare_));
         errors.largest = std::max(errors.largest, error);
     }

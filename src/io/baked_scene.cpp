@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <optional>
 #include <ranges>
 
 namespace gyre::io {
@@ -41,36 +42,122 @@ std::vector<model::TimedPose> mergedSamples(const std::vector<model::TimedPose>&
     return result;
 }
 
-bool hasDistinctReadTimes(const std::vector<HermiteControlPoint>& points)
+template <class Key>
+bool hasDistinctReadTimes(const std::vector<Key>& points)
 {
-    return std::ranges::adjacent_find(points, [](const HermiteControlPoint& a, const HermiteControlPoint& b) {
+    return std::ranges::adjacent_find(points, [](const Key& a, const Key& b) {
                return readTime({a.time, {}}) == readTime({b.time, {}});
            }) == points.end();
 }
 
+// The factor s with a = s·b when the quaternions are parallel, to 1e-9 of a's length (the same rotation,
+// s < 0 on the other hemisphere), else none.
+std::optional<double> parallelFactor(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b)
+{
+    const double factor = a.coeffs().dot(b.coeffs()) / b.coeffs().squaredNorm();
+    if (!((a.coeffs() - factor * b.coeffs()).norm() <= 1e-9 * a.coeffs().norm()))
+        return std::nullopt;
+    return factor;
+}
+
+// A piece of the spline a track plays: `spline`'s raw cubic times `factor`, over [from, to].
+struct SplinePiece {
+    const HermiteQuaternionSpline* spline = nullptr;
+    double from = 0.0;
+    double to = 0.0;
+    double factor = 1.0;
+    HermiteQuaternionSpline::RawSample raw(double time) const
+    {
+        HermiteQuaternionSpline::RawSample sample = spline->raw(time);
+        sample.value.coeffs() *= factor;
+        sample.derivative.coeffs() *= factor;
+        return sample;
+    }
+};
+
 } // namespace
 
-std::vector<HermiteControlPoint> rotationSplineOf(const model::MotionTrack& track, const std::vector<double>& times)
+std::vector<SplineKey> rotationSplineOf(const model::MotionTrack& track, const std::vector<double>& times)
 {
     if (track.interpolation != InterpolationMethod::Hermite || track.keys.size() < 2)
         return {};
-    std::vector<HermiteControlPoint> points = track.sketch.fittedCurve;
-    if (points.empty()) {
-        std::vector<OrientationKey> keys;
-        for (const model::Keyframe& key : track.keys)
-            keys.push_back({key.time, key.pose.orientation});
-        points = HermiteQuaternionSpline::throughKeys(std::move(keys)).controlPoints();
-    } else if (points.front().time != track.keys.front().time || points.back().time != track.keys.back().time) {
-        return {};
+    std::vector<OrientationKey> keys;
+    for (const model::Keyframe& key : track.keys)
+        keys.push_back({key.time, key.pose.orientation});
+    const HermiteQuaternionSpline throughKeys = HermiteQuaternionSpline::throughKeys(std::move(keys));
+    const double first = track.keys.front().time;
+    const double last = track.keys.back().time;
+    std::vector<SplinePiece> pieces;
+    std::optional<HermiteQuaternionSpline> fitted;
+    if (track.sketch.fittedCurve.empty()) {
+        pieces.push_back({&throughKeys, first, last, 1.0});
+    } else {
+        fitted.emplace(track.sketch.fittedCurve);
+        const double fitStart = fitted->startTime();
+        const double fitEnd = fitted->endTime();
+        if (fitStart < first || fitEnd > last)
+            return {};
+        // The keys' spline on one side of the fit, scaled to meet the fit's raw value where they join.
+        const auto addOutside = [&](double from, double to, double join) {
+            if (from == to)
+                return true;
+            const std::optional<double> factor = parallelFactor(fitted->raw(join).value, throughKeys.raw(join).value);
+            if (factor)
+                pieces.push_back({&throughKeys, from, to, *factor});
+            return factor.has_value();
+        };
+        if (!addOutside(first, fitStart, fitStart))
+            return {};
+        pieces.push_back({&*fitted, fitStart, fitEnd, 1.0});
+        if (!addOutside(fitEnd, last, fitEnd))
+            return {};
     }
-    const HermiteQuaternionSpline spline(points);
-    std::vector<HermiteControlPoint> cut;
-    for (const double time : times)
-        if (time >= points.front().time && time <= points.back().time) {
-            const HermiteQuaternionSpline::RawSample raw = spline.raw(time);
-            cut.push_back({time, raw.value, raw.derivative});
-        }
-    return cut;
+
+    std::vector<double> cuts = times;
+    for (const SplinePiece& piece : pieces)
+        cuts.insert(cuts.end(), {piece.from, piece.to});
+    std::ranges::sort(cuts);
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+
+    const auto pieceWhere = [&pieces](auto contains) -> const SplinePiece* {
+        const auto found = std::ranges::find_if(pieces, contains);
+        return found != pieces.end() ? &*found : nullptr;
+    };
+    std::vector<SplineKey> result;
+    result.reserve(cuts.size());
+    for (const double time : cuts) {
+        const SplinePiece* before = pieceWhere([time](const SplinePiece& p) { return p.from < time && time <= p.to; });
+        const SplinePiece* after = pieceWhere([time](const SplinePiece& p) { return p.from <= time && time < p.to; });
+        // The fit plays on its closed span (model::TrackMotion::at), so at its ends the value is the fit's;
+        // before the first key and after the last the end pieces hold their end values.
+        const bool inFit = fitted && time >= fitted->startTime() && time <= fitted->endTime();
+        const SplinePiece* played = inFit ? pieceWhere([&](const SplinePiece& p) { return p.spline == &*fitted; })
+                                    : after != nullptr  ? after
+                                    : before != nullptr ? before
+                                    : time < first      ? &pieces.front()
+                                                        : &pieces.back();
+        const Eigen::Quaterniond held(0.0, 0.0, 0.0, 0.0);
+        result.push_back({time, played->raw(time).value, before != nullptr ? before->raw(time).derivative : held,
+                          after != nullptr ? after->raw(time).derivative : held});
+    }
+    return result;
+}
+
+std::vector<PositionSplineKey> positionSplineOf(const model::MotionTrack& track, const std::vector<double>& times)
+{
+    const std::optional<PositionCurve> curve = model::cubicPositionCurve(track);
+    if (!curve)
+        return {};
+    const double first = track.keys.front().time;
+    const double last = track.keys.back().time;
+    std::vector<PositionSplineKey> result;
+    for (const double time : times) {
+        // Held outside the keys: no slope on that side.
+        const Eigen::Vector3d velocity = curve->velocity(time);
+        result.push_back({time, curve->at(time), time > first ? velocity : Eigen::Vector3d::Zero(),
+                          time < last ? velocity : Eigen::Vector3d::Zero()});
+    }
+    return result;
 }
 
 QStringList prepareGltfTimes(BakedScene& baked, const model::Scene& scene)
@@ -93,12 +180,15 @@ QStringList prepareGltfTimes(BakedScene& baked, const model::Scene& scene)
             time += shift;
         for (model::TimedPose& sample : object.samples)
             sample.time += shift;
-        for (HermiteControlPoint& point : object.rotationSpline)
-            point.time += shift;
-        if (!hasDistinctReadTimes(object.rotationSpline)) {
+        for (SplineKey& key : object.rotationSpline)
+            key.time += shift;
+        for (PositionSplineKey& key : object.positionSpline)
+            key.time += shift;
+        if (!hasDistinctReadTimes(object.rotationSpline) || !hasDistinctReadTimes(object.positionSpline)) {
             object.rotationSpline.clear();
-            warnings << FileError::tr("'%1': two of its keys are within a float32 step; its rotation is written "
-                                      "as baked samples, not as its spline")
+            object.positionSpline.clear();
+            warnings << FileError::tr("'%1': two of its keys are within a float32 step; its rotation and translation "
+                                      "are written as baked samples, not as its splines")
                             .arg(QString::fromStdString(object.name));
         }
         const std::size_t before = object.samples.size();

@@ -17,6 +17,19 @@
 
 namespace gyre::io {
 
+// A key of a glTF CUBICSPLINE sampler: the cubic's value and its time derivative on either side, equal
+// but at a corner: where a fit's window meets the track's own spline, and at the first and last key,
+// outside which the pose is held.
+template <class Value>
+struct SplineKeyOf {
+    double time = 0.0;
+    Value value;
+    Value inDerivative;
+    Value outDerivative;
+};
+using SplineKey = SplineKeyOf<Eigen::Quaterniond>;      // a rotation's raw cubic
+using PositionSplineKey = SplineKeyOf<Eigen::Vector3d>; // a translation
+
 struct BakedObject {
     std::string name;                      // UTF-8, unique within the file, not empty
     std::optional<std::size_t> parent;     // the index of an earlier object; none at the top level
@@ -25,7 +38,10 @@ struct BakedObject {
     std::vector<model::TimedPose> samples; // the baked motion; empty when the object does not move
     // The orientation as the Hermite spline the track plays, cut at the samples' times
     // (rotationSplineOf), for glTF's CUBICSPLINE; empty when the track plays no such spline.
-    std::vector<HermiteControlPoint> rotationSpline;
+    std::vector<SplineKey> rotationSpline;
+    // The positions as the cubic the track plays (positionSplineOf), for glTF's CUBICSPLINE; empty when
+    // they are no such curve.
+    std::vector<PositionSplineKey> positionSpline;
 };
 
 struct BakedScene {
@@ -33,15 +49,28 @@ struct BakedScene {
     model::BakeRange range; // the scene's start and end time and the frame rate of the bake
 };
 
-// The Hermite spline whose normalised curve is the track's orientation at every time, when there is one
-// (a hermite track with two keys or more, without a fit: HermiteQuaternionSpline::throughKeys of its
-// keys; or with a fit that spans exactly its keys: the fit's control points), cut at each of `times`
-// inside its span: a control point at each such time with the raw cubic's value and derivative there
+// The piecewise Hermite spline whose normalised curve is the track's orientation from its first key to
+// its last, when there is one: a hermite track with two keys or more plays HermiteQuaternionSpline::
+// throughKeys of its keys, and an applied fit's control points over the fit's span inside them. Where
+// the fit meets the keys' spline, at a key the fit kept, the two raw cubics pass through the same
+// rotation but may differ by a factor (the fit's values are not unit, or on the other hemisphere); the
+// keys' spline on that side is multiplied by it, which leaves its normalised curve as it is, so the
+// pieces join, with a corner (in- and out-derivative differ). The spline is cut at each of `times` in
+// its span and at the fit's ends: a key at each with the raw cubic's value and derivatives there
 // (HermiteQuaternionSpline::raw). A cubic cut at any point is the same cubic, so the pieces make the
 // same curve; and a reader that ignores the tangents (Blender 3.4's glTF importer) still has the exact
-// orientation, normalised, at every one of `times`. Empty when the track plays no such spline.
+// orientation, normalised, at every one of `times`. At the times before the first key and after the
+// last the pose is held: keys of the end value with no slope, so the sampler spans every sample, as
+// the clip does. Empty when the track plays no such spline: another interpolation, or a fit that
+// reaches past the keys or meets their spline at another rotation.
 // `times` increase and include the key times (the baked samples' times).
-std::vector<HermiteControlPoint> rotationSplineOf(const model::MotionTrack& track, const std::vector<double>& times);
+std::vector<SplineKey> rotationSplineOf(const model::MotionTrack& track, const std::vector<double>& times);
+
+// The cubic the track's positions follow (model::cubicPositionCurve: squad and hermite tracks), cut at
+// each of `times`, with its value and velocity there, held outside the keys as the rotation is; empty
+// for other tracks, whose positions are linear between keys (the baked samples, which include the key
+// times, are exact) or a screw's.
+std::vector<PositionSplineKey> positionSplineOf(const model::MotionTrack& track, const std::vector<double>& times);
 
 // Makes `baked`, the bake of `scene` (its objects in the scene's order), hold the times glTF asks of an
 // animation sampler's input: float32 seconds, the first not below 0, strictly increasing.
@@ -52,8 +81,8 @@ std::vector<HermiteControlPoint> rotationSplineOf(const model::MotionTrack& trac
 //   run of an object's samples that read back as the same milliseconds, one is kept: the last at one of
 //   the object's key times (the artist's pose), else the last of the run. Rounding is monotonic, so the
 //   kept times strictly increase as float32 seconds and as Assimp's milliseconds.
-// - The rotation spline's times move with the samples; a spline two of whose times read back as the
-//   same milliseconds is dropped, and the object's rotation is written from its samples.
+// - The splines' times move with the samples; a spline two of whose times read back as the same
+//   milliseconds is dropped, and the object's rotation or translation is written from its samples.
 // Returns a warning for each of these that changed something.
 QStringList prepareGltfTimes(BakedScene& baked, const model::Scene& scene);
 

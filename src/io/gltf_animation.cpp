@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <map>
 #include <set>
 
@@ -283,25 +284,36 @@ public:
     {
     }
 
-    void add(double time) { times_.insert(time); }
+    // The sampler's own key times.
+    void addKeys(const GltfSampler& sampler)
+    {
+        makeRoom(static_cast<double>(sampler.times.size()));
+        times_.insert(sampler.times.begin(), sampler.times.end());
+    }
 
-    // Every frame k/fps inside the sampler's span.
+    // Every frame k/fps inside the sampler's span but those the file's float32 times already hold: a
+    // frame that rounds to the same float32 as one of the sampler's keys is that key (Gyre's own exports
+    // key every frame), not another a float32 step away.
     void addFrames(const GltfSampler& sampler)
     {
         const double first = std::ceil(sampler.times.front() * fps_);
         const double last = std::floor(sampler.times.back() * fps_);
-        if (last - first + 1.0 + static_cast<double>(times_.size()) > static_cast<double>(kMaxGltfTrackKeys))
-            throw InputError(path_, FileError::tr("node '%1': its motion at %2 fps needs more than %3 keys")
-                                        .arg(node_, FileError::number(fps_))
-                                        .arg(kMaxGltfTrackKeys)
-                                        .toStdString());
-        for (double frame = first; frame <= last; ++frame)
-            times_.insert(frame / fps_);
+        makeRoom(last - first + 1.0);
+        for (double frame = first; frame <= last; ++frame) {
+            const double time = frame / fps_;
+            const auto after = std::ranges::lower_bound(sampler.times, time);
+            const auto sameFloat = [time](double key) { return static_cast<float>(key) == static_cast<float>(time); };
+            if ((after != sampler.times.end() && sameFloat(*after)) ||
+                (after != sampler.times.begin() && sameFloat(*std::prev(after))))
+                continue;
+            times_.insert(time);
+        }
     }
 
     // A STEP sampler's hold keys: key k's value at the frame before key k+1.
     void addHolds(const GltfSampler& sampler)
     {
+        makeRoom(static_cast<double>(sampler.times.size()));
         for (std::size_t k = 0; k + 1 < sampler.times.size(); ++k)
             if (const double hold = sampler.times[k + 1] - 1.0 / fps_; hold > sampler.times[k] + model::kKeyMergeSeconds)
                 times_.insert(hold);
@@ -318,6 +330,16 @@ public:
     }
 
 private:
+    // Refuses, before they are added, `more` times that could take the track past kMaxGltfTrackKeys.
+    void makeRoom(double more) const
+    {
+        if (static_cast<double>(times_.size()) + more > static_cast<double>(kMaxGltfTrackKeys))
+            throw InputError(path_, FileError::tr("node '%1': its motion at %2 fps needs more than %3 keys")
+                                        .arg(node_, FileError::number(fps_))
+                                        .arg(kMaxGltfTrackKeys)
+                                        .toStdString());
+    }
+
     std::set<double> times_;
     double fps_;
     const QString& path_;
@@ -348,16 +370,14 @@ model::MotionTrack gltfTrack(const GltfNodeMotion& motion, const Pose& nodePose,
     const std::size_t translations = translation ? translation->times.size() : 0;
     KeyTimes times(fps, path, nodeName);
     if (rotation && !(rotations == 1 && translations > 1)) {
-        for (const double time : rotation->times)
-            times.add(time);
+        times.addKeys(*rotation);
         if (rotation->interpolation == GltfInterpolation::Step)
             times.addHolds(*rotation);
         else if (cubicRotation && track.sketch.fittedCurve.empty())
             times.addFrames(*rotation);
     }
     if (translation && !(translations == 1 && rotations > 1)) {
-        for (const double time : translation->times)
-            times.add(time);
+        times.addKeys(*translation);
         if (translation->interpolation == GltfInterpolation::Step && track.interpolation == InterpolationMethod::Slerp)
             times.addHolds(*translation);
         else if (!isConstant(*translation) && (translation->interpolation == GltfInterpolation::CubicSpline ||

@@ -22,7 +22,9 @@ namespace {
 constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
 
-std::vector<double> xyzw(const Eigen::Quaterniond& q) { return {q.x(), q.y(), q.z(), q.w()}; }
+// As glTF orders them: a quaternion x, y, z, w; a vector x, y, z.
+std::vector<double> components(const Eigen::Quaterniond& q) { return {q.x(), q.y(), q.z(), q.w()}; }
+std::vector<double> components(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 // The model under construction: one buffer, one buffer view per accessor.
 class GltfModelBuilder {
@@ -130,7 +132,27 @@ void addChannel(tinygltf::Animation& animation, int input, int output, const cha
     animation.channels.push_back(std::move(channel));
 }
 
-// The object's motion as samplers and channels of `animation`.
+// A CUBICSPLINE channel through `keys`: their times, and for each key its in-tangent, value and
+// out-tangent, `count` components each (TINYGLTF_TYPE_* in `type`).
+template <class Value>
+void addSplineChannel(GltfModelBuilder& builder, tinygltf::Animation& animation,
+                      const std::vector<SplineKeyOf<Value>>& keys, int count, int type, int node, const char* path)
+{
+    std::vector<float> times;
+    std::vector<float> values;
+    for (const SplineKeyOf<Value>& key : keys) {
+        times.push_back(static_cast<float>(key.time));
+        for (const Value* part : {&key.inDerivative, &key.value, &key.outDerivative})
+            for (const double c : components(*part))
+                values.push_back(static_cast<float>(c));
+    }
+    const int input = builder.floatAccessor(times, 1, TINYGLTF_TYPE_SCALAR, true);
+    const int output = builder.floatAccessor(values, count, type, false);
+    addChannel(animation, input, output, "CUBICSPLINE", node, path);
+}
+
+// The object's motion as samplers and channels of `animation`: each of translation and rotation as its
+// spline where the object has one, else LINEAR at the baked samples.
 void addMotion(GltfModelBuilder& builder, tinygltf::Animation& animation, const BakedObject& object, int node)
 {
     std::vector<float> times;
@@ -139,34 +161,27 @@ void addMotion(GltfModelBuilder& builder, tinygltf::Animation& animation, const 
     Eigen::Quaterniond previous = object.samples.front().pose.orientation;
     for (const model::TimedPose& sample : object.samples) {
         times.push_back(static_cast<float>(sample.time));
-        const Eigen::Vector3d& p = sample.pose.position;
-        positions.insert(positions.end(), {static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())});
+        for (const double c : components(sample.pose.position))
+            positions.push_back(static_cast<float>(c));
         Eigen::Quaterniond q = sample.pose.orientation.normalized();
         if (q.coeffs().dot(previous.coeffs()) < 0.0)
             q.coeffs() = -q.coeffs();
         previous = q;
-        for (const double c : xyzw(q))
+        for (const double c : components(q))
             rotations.push_back(static_cast<float>(c));
     }
-    const int input = builder.floatAccessor(times, 1, TINYGLTF_TYPE_SCALAR, true);
-    const int translation = builder.floatAccessor(positions, 3, TINYGLTF_TYPE_VEC3, false);
-    addChannel(animation, input, translation, "LINEAR", node, "translation");
-    if (object.rotationSpline.empty()) {
-        const int rotation = builder.floatAccessor(rotations, 4, TINYGLTF_TYPE_VEC4, false);
-        addChannel(animation, input, rotation, "LINEAR", node, "rotation");
-        return;
-    }
-    std::vector<float> splineTimes;
-    std::vector<float> splineValues; // in-tangent, value, out-tangent for each key
-    for (const HermiteControlPoint& point : object.rotationSpline) {
-        splineTimes.push_back(static_cast<float>(point.time));
-        for (const Eigen::Quaterniond* part : {&point.derivative, &point.value, &point.derivative})
-            for (const double c : xyzw(*part))
-                splineValues.push_back(static_cast<float>(c));
-    }
-    const int splineInput = builder.floatAccessor(splineTimes, 1, TINYGLTF_TYPE_SCALAR, true);
-    const int spline = builder.floatAccessor(splineValues, 4, TINYGLTF_TYPE_VEC4, false);
-    addChannel(animation, splineInput, spline, "CUBICSPLINE", node, "rotation");
+    const bool sampled = object.positionSpline.empty() || object.rotationSpline.empty();
+    const int input = sampled ? builder.floatAccessor(times, 1, TINYGLTF_TYPE_SCALAR, true) : -1;
+    if (object.positionSpline.empty())
+        addChannel(animation, input, builder.floatAccessor(positions, 3, TINYGLTF_TYPE_VEC3, false), "LINEAR", node,
+                   "translation");
+    else
+        addSplineChannel(builder, animation, object.positionSpline, 3, TINYGLTF_TYPE_VEC3, node, "translation");
+    if (object.rotationSpline.empty())
+        addChannel(animation, input, builder.floatAccessor(rotations, 4, TINYGLTF_TYPE_VEC4, false), "LINEAR", node,
+                   "rotation");
+    else
+        addSplineChannel(builder, animation, object.rotationSpline, 4, TINYGLTF_TYPE_VEC4, node, "rotation");
 }
 
 tinygltf::Model modelOf(const BakedScene& baked)
@@ -186,7 +201,7 @@ tinygltf::Model modelOf(const BakedScene& baked)
         tinygltf::Node node;
         node.name = object.name;
         node.translation = {object.startPose.position.x(), object.startPose.position.y(), object.startPose.position.z()};
-        node.rotation = xyzw(object.startPose.orientation.normalized());
+        node.rotation = components(object.startPose.orientation.normalized());
         if (object.mesh) {
             const auto [entry, isNew] = meshes.try_emplace(object.mesh, 0);
             if (isNew)

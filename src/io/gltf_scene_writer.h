@@ -4,12 +4,13 @@
 // - One node "GyreScene" holding the objects' nodes, each with its parent kept, its mesh and its pose at
 //   the start time (translation, rotation); one mesh per distinct Mesh (POSITION with its bounds,
 //   NORMAL when every vertex has one, UNSIGNED_INT indices, triangles) and one grey material.
-// - One animation "Gyre": for every moving object a translation sampler (LINEAR, at the baked
-//   samples) and a rotation sampler: CUBICSPLINE through BakedObject::rotationSpline (the track's
-//   spline cut at the baked times) when it has one (in- and out-tangent both the raw cubic's time
-//   derivative, which glTF, like HermiteQuaternionSpline, multiplies by the span's duration, and both
-//   normalise the cubic), else LINEAR at the baked
-//   samples, each quaternion on the side of the one before so that slerp takes the short arc.
+// - One animation "Gyre": for every moving object a translation and a rotation sampler. A squad or
+//   hermite track's translation is CUBICSPLINE through BakedObject::positionSpline (its cubic cut at the
+//   baked times), a hermite track's rotation CUBICSPLINE through BakedObject::rotationSpline (its
+//   spline cut at the baked times), in- and out-tangent the raw cubic's time derivative on either
+//   side, which glTF, like HermiteQuaternionSpline and PositionCurve, multiplies by the span's
+//   duration (and normalises, for a rotation). Anything else is LINEAR at the baked samples, each
+//   quaternion on the side of the one before so that slerp takes the short arc.
 // - Values, times and tangents are float32, which is what the glTF format stores.
 //
 // A .glb holds its buffer in its BIN chunk; a .gltf refers to a .bin beside it, `binName`.

@@ -117,6 +117,7 @@ public:
                 for (const model::TimedPose& sample : baked.samples)
                     times.push_back(sample.time);
                 baked.rotationSpline = rotationSplineOf(object.track, times);
+                baked.positionSpline = positionSplineOf(object.track, times);
             }
             indexOfId.emplace(object.id, result_.objects.size());
             result_.objects.push_back(std::move(baked));
@@ -155,7 +156,7 @@ private:
     {
         for (const std::uint32_t index : mesh.indices)
             if (index >= mesh.positions.size())
-                throw OutputError(path_, FileError::tr("the mesh of '%1' has an index past its vertices")
+                throw OutputError(path_, gyre::FileError::tr("the mesh of '%1' has an index past its vertices")
                                              .arg(objectName)
                                              .toStdString());
         return mesh;
@@ -265,9 +266,11 @@ void turnZUpToYUp(BakedScene& baked)
         object.startPose = turned(object.startPose);
         for (model::TimedPose& sample : object.samples)
             sample.pose = turned(sample.pose);
-        // The spline is linear in its control points, so turning them turns the curve.
-        for (HermiteControlPoint& point : object.rotationSpline)
-            point = {point.time, turn * point.value, turn * point.derivative};
+        // The splines are linear in their keys, so turning the keys turns the curves.
+        for (SplineKey& key : object.rotationSpline)
+            key = {key.time, turn * key.value, turn * key.inDerivative, turn * key.outDerivative};
+        for (PositionSplineKey& key : object.positionSpline)
+            key = {key.time, turn * key.value, turn * key.inDerivative, turn * key.outDerivative};
     }
 }
 
@@ -329,9 +332,9 @@ std::unique_ptr<aiScene> assimpScene(const BakedScene& baked)
     return result;
 }
 
-void writeWhole(const QString& path, const aiExportDataBlob& blob)
+QByteArray bytesOf(const aiExportDataBlob& blob)
 {
-    saveFileContents(path, QByteArray::fromRawData(static_cast<const char*>(blob.data), static_cast<qsizetype>(blob.size)));
+    return QByteArray::fromRawData(static_cast<const char*>(blob.data), static_cast<qsizetype>(blob.size));
 }
 
 // Assimp writes into memory (a BlobIOSystem named after the destination, so that the files a format
@@ -352,13 +355,13 @@ ExportReport writeWithAssimp(const aiScene& scene, const QString& path, SceneFor
     const std::unique_ptr<aiExportDataBlob> main(memory->GetBlobChain());
     if (!main)
         throw OutputError(path, FileError::tr("Assimp wrote nothing").toStdString());
-    for (const aiExportDataBlob* other = main->next; other; other = other->next) {
-        const QString otherPath = QFile::decodeName(other->name.C_Str());
-        writeWhole(otherPath, *other);
-        report.files << otherPath;
-    }
-    writeWhole(path, *main);
-    report.files << path;
+    std::vector<FileContents> files;
+    for (const aiExportDataBlob* other = main->next; other; other = other->next)
+        files.push_back({QFile::decodeName(other->name.C_Str()), bytesOf(*other)});
+    files.push_back({path, bytesOf(*main)});
+    saveFilesTogether(files);
+    for (const FileContents& file : files)
+        report.files << file.path;
     return report;
 }
 
@@ -372,13 +375,13 @@ ExportReport writeGltf(const BakedScene& baked, const QString& path, bool binary
     } catch (const std::runtime_error& error) {
         throw OutputError(path, FileError::tr("cannot be written as glTF: %1").arg(QString::fromUtf8(error.what())).toStdString());
     }
-    if (!files.bin.isEmpty()) {
-        const QString binPath = info.dir().filePath(binName);
-        saveFileContents(binPath, files.bin);
-        report.files << binPath;
-    }
-    saveFileContents(path, files.main);
-    report.files << path;
+    std::vector<FileContents> written;
+    if (!files.bin.isEmpty())
+        written.push_back({info.dir().filePath(binName), files.bin});
+    written.push_back({path, files.main});
+    saveFilesTogether(written);
+    for (const FileContents& file : written)
+        report.files << file.path;
     return report;
 }
 

@@ -63,7 +63,7 @@ void FitJob::request(model::ObjectId object, model::MotionTrack track)
         // A fit stopped early answers nothing: its request is cancelled or superseded.
         run.throwIfStopped();
         model::FitResult applied = model::appliedFitResult(input, result);
-        const model::DrawnErrors drawnErrors = model::drawnErrors(input, applied);
+        const model::DrawnErrors drawnErrors = model::drawnErrors(input, *problem.motionWithoutFit, applied);
         const FitSummary summary = summaryOf(result, drawnErrors, static_cast<double>(clock.nsecsElapsed()) * 1e-9);
         return Answer{input, std::move(applied), summary};
     });

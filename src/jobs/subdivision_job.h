@@ -2,7 +2,8 @@
 // ScrewBender's subdivision off the UI thread, for the stroboscopic trail that follows a dragged
 // control pose. Every request gets a generation, increasing; a burst of requests while the worker is
 // busy costs one run (a newest-wins Job), and only the result of the newest request is emitted, so a
-// result never arrives after a newer one and the UI never waits. The job keeps one PolyscrewSubdivider,
+// result never arrives after a newer one and the UI never waits. The generation names the request an
+// answer belongs to; the trail needs no more than "the newest", which tst_subdivision_job checks by it. The job keeps one PolyscrewSubdivider,
 // whose buffers grow once and are reused by every later request (one request runs at a time).
 
 #include "core/pose.h"

@@ -1,6 +1,7 @@
 #include "model/document.h"
 
 #include "model/commands/perform_gesture_command.h"
+#include "model/primitive_meshes.h"
 #include "model/project_file.h"
 #include "model/scene_queries.h"
 
@@ -86,7 +87,8 @@ void Document::startNewProject()
     Scene scene;
     SceneObject block;
     block.id = scene.nextObjectId++;
-    block.name = tr("Block");
+    block.name = primitiveName(Primitive::Block);
+    block.mesh = std::make_shared<const Mesh>(primitiveMesh(Primitive::Block));
     scene.objects.push_back(std::move(block));
     replaceScene(std::move(scene), QString(), false);
 }

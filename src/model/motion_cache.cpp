@@ -1,5 +1,7 @@
 #include "model/motion_cache.h"
 
+#include "model/fit_input.h"
+
 #include <utility>
 
 namespace gyre::model {
@@ -10,26 +12,27 @@ SharedTrackMotion::SharedTrackMotion(MotionTrack track, std::shared_ptr<std::ato
 {
 }
 
-const TrackMotion& SharedTrackMotion::motion() const { return build(motion_, track_); }
+const TrackMotion& SharedTrackMotion::motion() const
+{
+    return build(motion_, [this] { return TrackMotion(track_); });
+}
 
 const TrackMotion& SharedTrackMotion::motionWithoutFit() const
 {
     if (track_.sketch.fittedCurve.empty())
         return motion();
-    MotionTrack keyed = track_;
-    keyed.sketch.fittedCurve.clear();
-    return build(withoutFit_, keyed);
+    return build(withoutFit_, [this] { return TrackMotion(withoutFit(track_)); });
 }
 
-const TrackMotion& SharedTrackMotion::build(Lazy& lazy, const MotionTrack& track) const
+const TrackMotion& SharedTrackMotion::build(Lazy& lazy, const std::function<TrackMotion()>& make) const
 {
     // call_once runs the build once even when threads ask together; a build that throws is kept as
     // its exception, so a refused track is not built again at every call.
-    std::call_once(lazy.built, [this, &lazy, &track] {
+    std::call_once(lazy.built, [this, &lazy, &make] {
         if (builds_)
             ++*builds_;
         try {
-            lazy.motion.emplace(track);
+            lazy.motion.emplace(make());
         } catch (...) {
             lazy.error = std::current_exception();
         }

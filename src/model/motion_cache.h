@@ -15,6 +15,7 @@
 #include <atomic>
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -32,8 +33,8 @@ public:
     // The track's TrackMotion, built by the first call. Throws std::invalid_argument where
     // TrackMotion does (a subdivision too large to hold), at every call, building only once.
     const TrackMotion& motion() const;
-    // The motion its keys give without the applied fit (the views' "before the fit"), built by the
-    // first call as motion() is; motion() itself for a track without a fit.
+    // The motion of the track without its applied fit (withoutFit, fit_input.h: the views' "before
+    // the fit"), built by the first call as motion() is; motion() itself for a track without a fit.
     const TrackMotion& motionWithoutFit() const;
 
 private:
@@ -44,7 +45,8 @@ private:
         std::exception_ptr error;
     };
 
-    const TrackMotion& build(Lazy& lazy, const MotionTrack& track) const;
+    // `make` builds the motion, within the one build: a call after it copies nothing.
+    const TrackMotion& build(Lazy& lazy, const std::function<TrackMotion()>& make) const;
 
     MotionTrack track_;
     std::shared_ptr<std::atomic<std::size_t>> builds_;

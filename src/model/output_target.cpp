@@ -81,4 +81,16 @@ void saveFileContents(const QString& path, const QByteArray& contents)
     target.commit();
 }
 
+void saveFilesTogether(const std::vector<FileContents>& files)
+{
+    std::vector<std::unique_ptr<OutputTarget>> targets;
+    for (const FileContents& file : files) {
+        targets.push_back(std::make_unique<OutputTarget>(file.path));
+        targets.back()->open();
+        targets.back()->write(file.contents);
+    }
+    for (const std::unique_ptr<OutputTarget>& target : targets)
+        target->commit();
+}
+
 } // namespace gyre

@@ -16,6 +16,7 @@
 #include <QString>
 
 #include <memory>
+#include <vector>
 
 namespace gyre {
 
@@ -52,5 +53,16 @@ private:
 // Writes `contents` as the whole of the file at `path` through an OutputTarget. Throws OutputError
 // naming the file if it cannot be written.
 void saveFileContents(const QString& path, const QByteArray& contents);
+
+struct FileContents {
+    QString path;
+    QByteArray contents;
+};
+
+// Writes files that belong together (a .gltf and its .bin, an .obj and its .mtl): every one is written
+// whole before any replaces what is on disk, so that a failure leaves all of them as they were (but for
+// a failed rename in the commits themselves); the last is committed last. Throws OutputError naming the
+// file that failed.
+void saveFilesTogether(const std::vector<FileContents>& files);
 
 } // namespace gyre

@@ -1,5 +1,7 @@
 #include "model/primitive_meshes.h"
 
+#include <QCoreApplication>
+
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -152,6 +154,24 @@ Mesh primitiveMesh(Primitive primitive)
         return cone();
     case Primitive::Arrow:
         return arrow();
+    }
+    return {};
+}
+
+QString primitiveName(Primitive primitive)
+{
+    const auto translated = [](const char* name) { return QCoreApplication::translate("gyre::model::Primitive", name); };
+    switch (primitive) {
+    case Primitive::Block:
+        return translated(QT_TRANSLATE_NOOP("gyre::model::Primitive", "Block"));
+    case Primitive::Box:
+        return translated(QT_TRANSLATE_NOOP("gyre::model::Primitive", "Box"));
+    case Primitive::Disc:
+        return translated(QT_TRANSLATE_NOOP("gyre::model::Primitive", "Disc"));
+    case Primitive::Cone:
+        return translated(QT_TRANSLATE_NOOP("gyre::model::Primitive", "Cone"));
+    case Primitive::Arrow:
+        return translated(QT_TRANSLATE_NOOP("gyre::model::Primitive", "Arrow"));
     }
     return {};
 }

@@ -159,6 +159,48 @@ std::vector<double> timesFromBlock(const QByteArray& block, const JsonField& fie
     return times;
 }
 
+QByteArray controlPointBlock(const std::vector<HermiteControlPoint>& points)
+{
+    QByteArray block;
+    block.reserve(static_cast<qsizetype>(points.size()) * kControlPointBytes);
+    for (const HermiteControlPoint& point : points) {
+        const Eigen::Quaterniond& v = point.value;
+        const Eigen::Quaterniond& d = point.derivative;
+        const double values[9] = {point.time, v.w(), v.x(), v.y(), v.z(), d.w(), d.x(), d.y(), d.z()};
+        appendValues(block, values, 9);
+    }
+    return block;
+}
+
+std::vector<HermiteControlPoint> controlPointsFromBlock(const QByteArray& block, const JsonField& field)
+{
+    std::vector<HermiteControlPoint> points(static_cast<std::size_t>(block.size() / kControlPointBytes));
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const char* bytes = block.constData() + static_cast<qint64>(i) * kControlPointBytes;
+        const auto quaternionAt = [bytes](std::size_t first) {
+            return Eigen::Quaterniond(doubleAt(bytes, first), doubleAt(bytes, first + 1), doubleAt(bytes, first + 2),
+                                      doubleAt(bytes, first + 3));
+        };
+        HermiteControlPoint& point = points[i];
+        try {
+            point.time = i == 0 ? timeValue(doubleAt(bytes, 0)) : timeAfter(doubleAt(bytes, 0), points[i - 1].time);
+        } catch (const std::invalid_argument& problem) {
+            failAtKey(field, i, "time", problem.what());
+        }
+        try {
+            point.value = controlValue(quaternionAt(1));
+        } catch (const std::invalid_argument& problem) {
+            failAtKey(field, i, "value", problem.what());
+        }
+        try {
+            point.derivative = controlDerivative(quaternionAt(5));
+        } catch (const std::invalid_argument& problem) {
+            failAtKey(field, i, "derivative", problem.what());
+        }
+    }
+    return points;
+}
+
 qint64 MeshCounts::blockBytes() const
 {
     const qint64 skinBytes = skinJoints.empty() ? 0

@@ -52,6 +52,13 @@ std::vector<Keyframe> keysFromBlock(const QByteArray& block, const KeyLayout& la
 QByteArray timeBlock(const std::vector<Keyframe>& keys);
 std::vector<double> timesFromBlock(const QByteArray& block, const JsonField& field);
 
+// An applied fit's Hermite control points: time, value w, x, y, z and derivative w, x, y, z, float64 each,
+// kControlPointBytes a point; read back, checked as the JSON reader checks them (times within the
+// budget and increasing, values and derivatives as controlValue and controlDerivative ask).
+inline constexpr qint64 kControlPointBytes = 9 * sizeof(double);
+QByteArray controlPointBlock(const std::vector<HermiteControlPoint>& points);
+std::vector<HermiteControlPoint> controlPointsFromBlock(const QByteArray& block, const JsonField& field);
+
 // A mesh: positions and normals as float32 x, y, z, then indices as uint32; for a skinned mesh then
 // its joints' inverse bind matrices (16 float32 each, column-major), four joint indices per position
 // as uint16, and four weights per position as float32. The header lists the skin's joints by id.

@@ -50,7 +50,6 @@ QJsonArray numbersJson(std::initializer_list<double> values)
     return array;
 }
 
-QJsonArray json(const Eigen::Quaterniond& q) { return numbersJson({q.w(), q.x(), q.y(), q.z()}); }
 QJsonArray json(const Eigen::Vector3d& v) { return numbersJson({v.x(), v.y(), v.z()}); }
 QJsonArray json(const Eigen::Vector2d& v) { return numbersJson({v.x(), v.y()}); }
 
@@ -90,7 +89,7 @@ QJsonValue windowJson(const std::optional<std::pair<double, double>>& window)
     return window ? QJsonValue(numbersJson({window->first, window->second})) : QJsonValue(QJsonValue::Null);
 }
 
-QJsonObject sketchJson(const SketchState& sketch, const QJsonObject& keysBeforeFit)
+QJsonObject sketchJson(const SketchState& sketch, const QJsonObject& fittedCurve, const QJsonObject& keysBeforeFit)
 {
     return {
         {"directionStrokes", arrayJson(sketch.directionStrokes, strokeJson)},
@@ -104,12 +103,7 @@ QJsonObject sketchJson(const SketchState& sketch, const QJsonObject& keysBeforeF
         {"alpha", sketch.alpha},
         {"beta", sketch.beta},
         {"relativeDelta", sketch.delta},
-        {"fittedCurve", arrayJson(sketch.fittedCurve,
-                                  [](const HermiteControlPoint& point) {
-                                      return QJsonObject{{"time", point.time},
-                                                         {"value", json(point.value)},
-                                                         {"derivative", json(point.derivative)}};
-                                  })},
+        {"fittedCurve", fittedCurve},
         {"keysBeforeFit", keysBeforeFit},
     };
 }
@@ -150,6 +144,8 @@ public:
 private:
     // The layout of `keys`, their block queued.
     QJsonObject keysJson(const std::vector<Keyframe>& keys);
+    // How many control points `points` holds, their block queued.
+    QJsonObject controlPointsJson(const std::vector<HermiteControlPoint>& points);
     // The index of the time list `keys` use, added if it is new.
     std::size_t timeListOf(const std::vector<Keyframe>& keys);
 
@@ -179,17 +175,20 @@ ProjectLayout::ProjectLayout(const Scene& scene)
         }
     QJsonArray objects;
     for (const SceneObject& object : scene.objects) {
+        // In the order sceneObjectIn reads their blocks.
         const QJsonObject keyframes = keysJson(object.track.keys);
+        const QJsonObject fittedCurve = controlPointsJson(object.track.sketch.fittedCurve);
         const QJsonObject keysBeforeFit = keysJson(object.track.sketch.keysBeforeFit);
         objects.append(QJsonObject{
             {"id", idJson(object.id)},
             {"name", object.name},
             {"parent", idJson(object.parent)},
+            {"visible", object.visible},
             {"mesh", object.mesh ? QJsonValue(meshIndex.at(object.mesh.get())) : QJsonValue()},
             {"interpolation", QString::fromLatin1(interpolationMethodName(object.track.interpolation))},
             {"subdivision", subdivisionJson(object.track.subdivision)},
             {"keyframes", keyframes},
-            {"sketch", sketchJson(object.track.sketch, keysBeforeFit)}});
+            {"sketch", sketchJson(object.track.sketch, fittedCurve, keysBeforeFit)}});
     }
     QJsonArray times;
     for (const std::vector<Keyframe>* keys : timeLists_) {
@@ -211,6 +210,12 @@ QJsonObject ProjectLayout::keysJson(const std::vector<Keyframe>& keys)
     const KeyLayout layout = keyLayoutOf(keys, timeListOf(keys));
     keyBlocks_.push_back([&keys, layout] { return keyBlock(keys, layout); });
     return keyLayoutJson(layout);
+}
+
+QJsonObject ProjectLayout::controlPointsJson(const std::vector<HermiteControlPoint>& points)
+{
+    keyBlocks_.push_back([&points] { return controlPointBlock(points); });
+    return {{"count", static_cast<qint64>(points.size())}};
 }
 
 std::size_t ProjectLayout::timeListOf(const std::vector<Keyframe>& keys)
@@ -241,7 +246,7 @@ QByteArray headerBytes(const QJsonObject& header)
 
 std::string tooLargeMessage()
 {
-    return FileError::tr("is larger than 1 GiB, the most a project file may hold").toStdString();
+    return gyre::FileError::tr("is larger than 1 GiB, the most a project file may hold").toStdString();
 }
 
 template <class Enum, std::size_t N>
@@ -308,7 +313,7 @@ std::vector<Eigen::Vector3f> vectorsIn(const JsonField& field)
 
 // What reading a version 3 file keeps between its parts: where its blocks come from, the time lists
 // read so far, and how many keys and times the budget has left. Versions 1 and 2 have no blocks.
-// A check before saving keeps no keys: each track's are dropped once they passed.
+// A check before saving keeps no keys: each track's, and its fitted curve, are dropped once they passed.
 struct BlockReading {
     BlockReading(BlockSource& source, bool keep) : blocks(source), keepsKeys(keep) {}
 
@@ -430,6 +435,17 @@ HermiteControlPoint controlPointIn(const JsonField& field)
             derivative.checked([&] { return controlDerivative(quaternionIn(derivative)); })};
 }
 
+// An applied fit's control points: in versions 1 and 2 an array, in version 3 the count of its block.
+std::vector<HermiteControlPoint> controlPointsIn(const JsonField& field, BlockReading* binary)
+{
+    if (!binary)
+        return timedItems<HermiteControlPoint>(field, "time", controlPointIn,
+                                               [](const HermiteControlPoint& point) { return point.time; });
+    const std::size_t count = budgetedCount(field.member("count"), binary->keysLeft,
+                                            FileError::tr("these %1 control points bring the file past the %2 keys a project may hold"));
+    return controlPointsFromBlock(binary->blocks.next(static_cast<qint64>(count) * kControlPointBytes, field), field);
+}
+
 std::optional<std::pair<double, double>> windowIn(const JsonField& field)
 {
     if (field.isNull())
@@ -460,8 +476,7 @@ SketchState sketchIn(const JsonField& field, BlockReading* binary)
     sketch.beta = numberIn(field.member("beta"), nonNegativeNumber);
     // Files written before δ became relative hold `delta` in rad²/s; sceneObjectIn converts it.
     sketch.delta = numberIn(field.member(field.has("relativeDelta") ? "relativeDelta" : "delta"), positiveNumber);
-    sketch.fittedCurve = timedItems<HermiteControlPoint>(field.member("fittedCurve"), "time", controlPointIn,
-                                                         [](const HermiteControlPoint& point) { return point.time; });
+    sketch.fittedCurve = controlPointsIn(field.member("fittedCurve"), binary);
     // Files written before Gyre kept the keys a fit moved have no keysBeforeFit: nothing to restore.
     if (binary || field.has("keysBeforeFit")) {
         const JsonField before = field.member("keysBeforeFit");
@@ -484,6 +499,8 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
     object.id = static_cast<ObjectId>(field.member("id").integer(1, kMaxId));
     object.name = field.member("name").string();
     object.parent = optionalId(field.member("parent"));
+    // Files written before objects could be hidden show every object.
+    object.visible = !field.has("visible") || field.member("visible").boolean();
     if (const JsonField mesh = field.member("mesh"); !mesh.isNull()) {
         if (meshes.empty())
             mesh.fail(FileError::tr("the file has no meshes"));
@@ -503,6 +520,7 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
         object.track.sketch.delta = relativeDelta(object.track, object.track.sketch.delta);
     if (binary && !binary->keepsKeys) {
         object.track.keys.clear();
+        object.track.sketch.fittedCurve.clear();
         object.track.sketch.keysBeforeFit.clear();
     }
     return object;
@@ -735,9 +753,17 @@ void writeProject(const QString& path, const Scene& scene)
                                     .arg(QString::fromUtf8(problem.what()))
                                     .toStdString());
     }
+    // What the blocks do not hold (names, strokes) must fit the header a reader accepts.
+    const QByteArray header = headerBytes(layout.header);
+    if (header.size() - kPreambleBytes > kMaxHeaderBytes)
+        throw OutputError(path, FileError::tr("not saved, because its header (the objects' names and settings, the "
+                                              "sketches' strokes) would hold %1 bytes, more than the %2 a project may hold")
+                                    .arg(header.size() - kPreambleBytes)
+                                    .arg(kMaxHeaderBytes)
+                                    .toStdString());
     OutputTarget target(path);
     target.open();
-    target.write(headerBytes(layout.header));
+    target.write(header);
     for (const std::function<QByteArray()>& block : layout.blocks)
         target.write(block());
     target.commit();

@@ -100,6 +100,9 @@ struct SceneObject {
     std::shared_ptr<const Mesh> mesh;  // null: the viewport draws a default shape
     ObjectId parent = kNoObject;
     MotionTrack track;
+    // Drawn and pickable in the viewport (Blender's eye in the outliner). It hides the object alone, not
+    // its children, and changes no motion: exports and fits still see it.
+    bool visible = true;
 };
 
 struct Scene {

@@ -1,5 +1,6 @@
 #include "model/sketch_fit_problem.h"
 
+#include "model/fit_input.h"
 #include "model/track_evaluation.h"
 
 #include <algorithm>
@@ -187,12 +188,6 @@ private:
     std::vector<MagnitudePoint> magnitude_;
 };
 
-MotionTrack withoutFit(MotionTrack track)
-{
-    track.sketch.fittedCurve.clear();
-    return track;
-}
-
 // The drawn ω completed by the motion through the keys, at the target's sample times.
 fit::AngularVelocityTarget sketchTarget(const MotionTrack& track, const TrackMotion& keyed, const fit::TimeWindow& window)
 {
@@ -241,7 +236,7 @@ std::vector<std::vector<fit::TimedVector>> timedStrokes(const MotionTrack& track
     return strokes;
 }
 
-SketchFitProblem sketchFitProblem(const MotionTrack& track)
+void checkSketchFittable(const MotionTrack& track)
 {
     if (track.keys.size() < 2)
         throw SketchFitError(
@@ -273,21 +268,30 @@ SketchFitProblem sketchFitProblem(const MotionTrack& track)
             throw SketchFitError(SketchFitError::tr("The pattern cannot be repeated: %1").arg(QString::fromUtf8(problem.what())).toStdString());
         }
     }
+}
 
-    const auto keyed = std::make_shared<const TrackMotion>(withoutFit(track));
+SketchFitProblem sketchFitProblem(const MotionTrack& track)
+{
+    checkSketchFittable(track);
+    const SketchState& sketch = track.sketch;
+    // Checked: the edit window is there.
+    const fit::TimeWindow window = *editWindow(track);
+    const MotionTrack unfitted = withoutFit(track);
+    const auto keyed = std::make_shared<const TrackMotion>(unfitted);
     const bool screw = track.interpolation == InterpolationMethod::Screw;
     std::vector<fit::FitKey> keys;
-    keys.reserve(track.keys.size());
-    for (const Keyframe& key : track.keys)
+    keys.reserve(unfitted.keys.size());
+    for (const Keyframe& key : unfitted.keys)
         keys.push_back({key.time, screw ? keyed->at(key.time).orientation : key.pose.orientation, key.constrained});
     fit::FitSettings settings;
     settings.alpha = sketch.alpha;
     settings.beta = sketch.beta;
     settings.delta = sketch.delta;
     settings.window = window;
-    fit::AngularVelocityTarget target = sketchTarget(track, *keyed, *window);
+    fit::AngularVelocityTarget target = sketchTarget(track, *keyed, window);
     const bool hermite = track.interpolation == InterpolationMethod::Hermite;
-    return {std::move(keys), std::move(target), settings, hermite ? fit::InitialMotion{} : initialMotionOf(keyed)};
+    fit::InitialMotion initialMotion = hermite ? fit::InitialMotion{} : initialMotionOf(keyed);
+    return {std::move(keys), std::move(target), settings, std::move(initialMotion), keyed};
 }
 
 fit::FitResult fitSketch(const SketchFitProblem& problem, const fit::FitHooks& hooks)
@@ -300,7 +304,7 @@ FitResult appliedFitResult(const MotionTrack& track, const fit::FitResult& resul
     if (result.keys.size() != track.keys.size())
         throw std::invalid_argument("the fit's keys are not the track's: " + std::to_string(result.keys.size()) +
                                     " for " + std::to_string(track.keys.size()));
-    FitResult applied{result.controlPoints, track.keys};
+    FitResult applied{result.controlPoints, withoutFit(track).keys};
     if (track.interpolation == InterpolationMethod::Screw)
         return applied;
     for (std::size_t i = 0; i < applied.keys.size(); ++i)
@@ -327,9 +331,9 @@ double drawnError(const MotionTrack& track, const TrackMotion& motion)
     return sum;
 }
 
-DrawnErrors drawnErrors(const MotionTrack& track, const FitResult& applied)
+DrawnErrors drawnErrors(const MotionTrack& track, const TrackMotion& motionWithoutFit, const FitResult& applied)
 {
-    return {drawnError(track, TrackMotion(withoutFit(track))), drawnError(track, TrackMotion(withFitApplied(track, applied)))};
+    return {drawnError(track, motionWithoutFit), drawnError(track, TrackMotion(withFitApplied(track, applied)))};
 }
 
 double relativeDelta(const MotionTrack& track, double absoluteDelta)

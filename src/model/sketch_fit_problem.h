@@ -9,10 +9,12 @@
 //   Elsewhere the direction of the motion through the keys, so an undrawn part keeps its spin axis.
 // - m(t), the magnitude: the sketched magnitude curve where it covers t, else |ω| of the motion
 //   through the keys.
-// "The motion through the keys" is the track without its fit, the paper's InitCurve, for any
-// interpolation (a screw track's subdivided, retimed polyscrew too): fitting again starts from the
-// keys, not from the previous fit, so the same sketch always gives the same result. The fit starts
-// from that motion and keeps it outside the window.
+// "The motion through the keys" is the track without its fit (withoutFit, fit_input.h: no fitted
+// curve, and the keys an earlier fit moved as they were before it), the paper's InitCurve, for any
+// interpolation (a screw track's subdivided, retimed polyscrew too). The fit reads the keys of that
+// track, not the track's own, so fitting again starts from the keys the artist set, not from the
+// previous fit's curve or orientations, and the same sketch on the same keys gives the same result.
+// The fit starts from that motion and keeps it outside the window.
 //
 // A stroke with times keeps them; one without is spread by arc length over the whole edit window.
 //
@@ -30,6 +32,7 @@
 
 #include <QCoreApplication>
 
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -52,6 +55,9 @@ struct SketchFitProblem {
     // The motion through the keys, for every interpolation but Hermite, whose motion is the fit's own
     // default (the Hermite spline through the keys).
     fit::InitialMotion initialMotion;
+    // The motion of the track without its fit, which the target and the initial motion read; for
+    // drawnErrors. Null in a problem not made by sketchFitProblem.
+    std::shared_ptr<const TrackMotion> motionWithoutFit;
 };
 
 // The fit of `problem`, run as the app and gyre-cli run it.
@@ -66,12 +72,18 @@ std::optional<fit::TimeWindow> editWindow(const MotionTrack& track);
 std::vector<std::vector<fit::TimedVector>> timedStrokes(const MotionTrack& track);
 
 // Throws SketchFitError for fewer than two keys, nothing sketched, a window of no length or a
-// sketch beyond its budgets.
+// sketch beyond its budgets: the checks that read no motion, quick enough for the UI thread at every
+// edit (the fit panel's Fit button). sketchFitProblem makes them first.
+void checkSketchFittable(const MotionTrack& track);
+
+// The fit of the track's sketch, from withoutFit(track). Throws SketchFitError where
+// checkSketchFittable does, and for a direction stroke the fit cannot follow.
 SketchFitProblem sketchFitProblem(const MotionTrack& track);
 
 // What ApplyFitResultCommand applies for `result`, a fit of sketchFitProblem(track): the fitted
-// control points, and the track's keys, the freed ones turned to their fitted orientation unless the
-// track is a screw track. Variable frames stay control points of the curve; they do not become keyframes.
+// control points, and the keys the fit read (withoutFit(track)'s), the freed ones turned to their
+// fitted orientation unless the track is a screw track. Variable frames stay control points of the
+// curve; they do not become keyframes.
 FitResult appliedFitResult(const MotionTrack& track, const fit::FitResult& result);
 
 // How far `motion` is from what the artist drew on `track`, rad²/s: ∫|ω − ω̂ˢ|² dt over the edit
@@ -84,13 +96,14 @@ FitResult appliedFitResult(const MotionTrack& track, const fit::FitResult& resul
 // Integrated by the trapezoid rule over the target's sample times. Zero without an edit window.
 double drawnError(const MotionTrack& track, const TrackMotion& motion);
 
-// drawnError of the motion through the keys (the track without its fit) and of the track with
-// `applied`, appliedFitResult(track, ...), applied: the fit's report against what was drawn.
+// drawnError of `motionWithoutFit`, the motion through the keys (sketchFitProblem(track)'s, built
+// once for the fit), and of the track with `applied`, appliedFitResult(track, ...), applied: the
+// fit's report against what was drawn.
 struct DrawnErrors {
     double before = 0.0;
     double after = 0.0;
 };
-DrawnErrors drawnErrors(const MotionTrack& track, const FitResult& applied);
+DrawnErrors drawnErrors(const MotionTrack& track, const TrackMotion& motionWithoutFit, const FitResult& applied);
 
 // The relative δ (fit::FitSettings::delta) that puts the fit's threshold for `track` where an
 // absolute δ in rad²/s, as project files stored it before they stored a relative one, put it:

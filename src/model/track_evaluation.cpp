@@ -38,6 +38,15 @@ bool hasCubicPositions(InterpolationMethod method)
     return method == InterpolationMethod::Squad || method == InterpolationMethod::Hermite;
 }
 
+std::vector<PositionKey> positionKeys(const MotionTrack& track)
+{
+    std::vector<PositionKey> keys;
+    keys.reserve(track.keys.size());
+    for (const Keyframe& key : track.keys)
+        keys.push_back({key.time, key.pose.position});
+    return keys;
+}
+
 // An orientation curve with positions to go with it.
 class CurveMotion final : public detail::KeyedMotion {
 public:
@@ -57,15 +66,6 @@ private:
         keys.reserve(track.keys.size());
         for (const Keyframe& key : track.keys)
             keys.push_back({key.time, key.pose.orientation});
-        return keys;
-    }
-
-    static std::vector<PositionKey> positionKeys(const MotionTrack& track)
-    {
-        std::vector<PositionKey> keys;
-        keys.reserve(track.keys.size());
-        for (const Keyframe& key : track.keys)
-            keys.push_back({key.time, key.pose.position});
         return keys;
     }
 
@@ -214,6 +214,13 @@ std::vector<double> keyTimes(const MotionTrack& track)
     for (const Keyframe& key : track.keys)
         times.push_back(key.time);
     return times;
+}
+
+std::optional<PositionCurve> cubicPositionCurve(const MotionTrack& track)
+{
+    if (!hasCubicPositions(track.interpolation) || track.keys.size() < 2)
+        return std::nullopt;
+    return PositionCurve(positionKeys(track), PositionCurve::Shape::Cubic);
 }
 
 std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range,

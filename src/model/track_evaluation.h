@@ -18,6 +18,7 @@
 #include "core/euler_angles.h"
 #include "core/orientation_curves.h"
 #include "core/pose.h"
+#include "core/position_curve.h"
 #include "model/scene.h"
 
 #include <cstddef>
@@ -97,5 +98,9 @@ std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& rang
                                  const EulerConvention& eulerConvention = {});
 
 std::vector<double> keyTimes(const MotionTrack& track);
+
+// The track's positions as TrackMotion plays them, when they are a cubic curve through the keys (squad
+// and hermite tracks with two keys or more); none for the other interpolations.
+std::optional<PositionCurve> cubicPositionCurve(const MotionTrack& track);
 
 } // namespace gyre::model

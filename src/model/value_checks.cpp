@@ -98,7 +98,7 @@ Eigen::Quaterniond finiteQuaternion(const Eigen::Quaterniond& value)
 Eigen::Vector3d positionValue(const Eigen::Vector3d& position)
 {
     if (!(finiteVector(position).cwiseAbs().maxCoeff() <= kMaxPositionCoordinate))
-        refuse(FileError::tr("position coordinate %1 is beyond ±%2")
+        refuse(gyre::FileError::tr("position coordinate %1 is beyond ±%2")
                    .arg(FileError::number(position.cwiseAbs().maxCoeff()), FileError::number(kMaxPositionCoordinate)));
     return position;
 }
@@ -122,7 +122,7 @@ Eigen::Quaterniond controlValue(const Eigen::Quaterniond& value)
     // stableNorm: a denormal or a huge component would under- or overflow the squares of norm().
     const double length = Eigen::Vector4d(finiteQuaternion(value).coeffs()).stableNorm();
     if (!(length >= kMinControlValueNorm))
-        refuse(FileError::tr("the value has length %1; a fitted value needs length at least %2")
+        refuse(gyre::FileError::tr("the value has length %1; a fitted value needs length at least %2")
                    .arg(FileError::number(length), FileError::number(kMinControlValueNorm)));
     return value;
 }
@@ -131,7 +131,7 @@ Eigen::Quaterniond controlDerivative(const Eigen::Quaterniond& derivative)
 {
     const double length = Eigen::Vector4d(finiteQuaternion(derivative).coeffs()).stableNorm();
     if (!(length <= kMaxControlDerivativeNorm))
-        refuse(FileError::tr("the derivative has length %1 per second; the most it may have is %2")
+        refuse(gyre::FileError::tr("the derivative has length %1 per second; the most it may have is %2")
                    .arg(FileError::number(length), FileError::number(kMaxControlDerivativeNorm)));
     return derivative;
 }

@@ -367,7 +367,7 @@ void BM_JointMatrices31(benchmark::State& state)
     gyre::model::Skin skin;
     for (int j = 0; j < kJoints; ++j) {
         const auto id = static_cast<gyre::model::ObjectId>(j + 1);
-        gyre::model::SceneObject joint{id, QStringLiteral("Joint"), nullptr, j == 0 ? gyre::model::kNoObject : id - 1, {}};
+        gyre::model::SceneObject joint{id, QStringLiteral("Joint"), nullptr, j == 0 ? gyre::model::kNoObject : id - 1, {}, true};
         // Two keys, so that evaluating interpolates as playback does.
         joint.track.keys = {gyre::model::Keyframe{0.0, gyre::Pose{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.1, 0, 0)}, true},
                             gyre::model::Keyframe{1.0, gyre::Pose{Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ())),

@@ -39,6 +39,7 @@ private slots:
     void cubicCurvePassesThroughKeysWithCentralSlopes();
     void cubicCurveReproducesStraightMotion();
     void holdsOutsideTheKeys();
+    void velocityIsTheDerivativeOfThePosition();
     void rejectsBadKeys();
 };
 
@@ -129,6 +130,30 @@ void TestPositionCurve::holdsOutsideTheKeys()
         QCOMPARE(curve.at(-5.0), keys.front().position);
         QCOMPARE(curve.at(7.0), keys.back().position);
     }
+}
+
+// velocity() against central differences of at() inside the spans, both shapes; zero outside the keys.
+void TestPositionCurve::velocityIsTheDerivativeOfThePosition()
+{
+    Random random(11);
+    const std::vector<PositionKey> keys = randomKeys(random, 7);
+    for (auto shape : {PositionCurve::Shape::Linear, PositionCurve::Shape::Cubic}) {
+        const PositionCurve curve(keys, shape);
+        for (std::size_t i = 0; i + 1 < keys.size(); ++i)
+            for (const double u : {0.01, 0.3, 0.5, 0.77, 0.99}) {
+                const double t = keys[i].time + u * (keys[i + 1].time - keys[i].time);
+                const double h = 1e-6;
+                const Eigen::Vector3d difference = (curve.at(t + h) - curve.at(t - h)) / (2 * h);
+                GYRE_CHECK((curve.velocity(t) - difference).norm() < 1e-6 * (1 + difference.norm()),
+                           QStringLiteral("span %1, u = %2").arg(i).arg(u));
+            }
+        QCOMPARE(curve.velocity(keys.front().time - 1.0), Eigen::Vector3d::Zero());
+        QCOMPARE(curve.velocity(keys.back().time + 1.0), Eigen::Vector3d::Zero());
+    }
+    // At a key the cubic's velocity is its central slope (pᵢ₊₁ − pᵢ₋₁)/(tᵢ₊₁ − tᵢ₋₁), from either span.
+    const PositionCurve cubic(keys, PositionCurve::Shape::Cubic);
+    const Eigen::Vector3d slope = (keys[3].position - keys[1].position) / (keys[3].time - keys[1].time);
+    QVERIFY((cubic.velocity(keys[2].time) - slope).norm() < 1e-12 * (1 + slope.norm()));
 }
 
 void TestPositionCurve::rejectsBadKeys()

@@ -11,6 +11,8 @@
 #include <QTest>
 #include <QTimer>
 
+#include <ctime>
+
 namespace gyre::test {
 
 namespace {
@@ -65,6 +67,13 @@ void answerMessageBox(int standardButton, QString* text)
             qFatal("The message box has no such button");
         button->click();
     });
+}
+
+double threadMilliseconds()
+{
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) / 1e6;
 }
 
 void sendMove(QWidget* widget, const QPointF& position, Qt::MouseButtons buttons)

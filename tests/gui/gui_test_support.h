@@ -32,6 +32,10 @@ void answerFileDialog(const QString& path);
 // its text in `text` if given.
 void answerMessageBox(int standardButton, QString* text = nullptr);
 
+// CPU time of the calling thread, ms: what the UI thread spends itself, not the job threads or
+// llvmpipe's rasterising threads.
+double threadMilliseconds();
+
 // Sends a mouse move to `widget` with `buttons` held: QTest::mouseMove does not say which buttons are
 // held, and a drag needs them.
 void sendMove(QWidget* widget, const QPointF& position, Qt::MouseButtons buttons);

@@ -16,7 +16,7 @@ namespace gyre::test {
 inline model::SceneObject sceneObject(model::ObjectId id, const char* name, model::ObjectId parent, const Eigen::Vector3d& position,
                                       std::shared_ptr<const model::Mesh> mesh)
 {
-    model::SceneObject result{id, QString::fromLatin1(name), std::move(mesh), parent, {}};
+    model::SceneObject result{id, QString::fromLatin1(name), std::move(mesh), parent, {}, true};
     result.track.keys = {model::Keyframe{0.0, Pose{Eigen::Quaterniond::Identity(), position}, true}};
     return result;
 }

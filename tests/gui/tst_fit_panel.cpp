@@ -11,13 +11,18 @@
 #include "app/viewport/viewport.h"
 #include "gui_test_support.h"
 #include "model/sketch_fit_problem.h"
+#include "model/commands/add_keyframe_command.h"
 #include "model/commands/add_stroke_command.h"
 #include "model/commands/edit_stroke_command.h"
 #include "model/commands/import_objects_command.h"
+#include "model/commands/remove_keyframe_command.h"
 #include "model/commands/set_fit_parameter_command.h"
 #include "model/commands/set_fit_window_command.h"
 #include "model/commands/set_interpolation_command.h"
+#include "model/commands/set_keyframe_orientation_command.h"
+#include "model/commands/set_keyframe_time_command.h"
 #include "model/commands/set_magnitude_curve_command.h"
+#include "model/commands/toggle_keyframe_constraint_command.h"
 #include "model/document.h"
 #include "model/gesture.h"
 #include "model/scene_motion.h"
@@ -391,6 +396,79 @@ private slots:
         QVERIFY(track().sketch.fittedCurve.empty());
     }
 
+    // A free key the artist turns while the fit runs is part of what the fit read: the result is
+    // dropped, as for any other change, and the key keeps the turn.
+    void aResultForATrackWithATurnedFreeKeyIsDropped()
+    {
+        QUndoStack& stack = document_->undoStack();
+        document_->push(new model::ToggleKeyframeConstraintCommand(*document_, object_, 2));
+        QVERIFY(!track().keys[2].constrained);
+        QTest::mouseClick(button("fitButton"), Qt::LeftButton);
+        const Eigen::Quaterniond turned =
+            track().keys[2].pose.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()));
+        document_->push(new model::SetKeyframeOrientationCommand(*document_, object_, 2, turned));
+        const int stepsAfterTurn = stack.count();
+        auto* status = panel_->findChild<QLabel*>(QStringLiteral("fitStatusLabel"));
+        QTRY_VERIFY_WITH_TIMEOUT(!controller_->isFitting(), kFitTimeoutMilliseconds);
+        QCOMPARE(status->text(), QStringLiteral("Fit not applied: the track changed while it ran."));
+        QCOMPARE(stack.count(), stepsAfterTurn);
+        QVERIFY(track().sketch.fittedCurve.empty());
+        QVERIFY(track().keys[2].pose.orientation.isApprox(turned, 1e-15));
+    }
+
+    // The key table changes its rows in place: a key turned, as at every move of a drag, changes no
+    // item; a key's constraint or time changes its own row's item; a key added adds a row.
+    void theKeyTableChangesItsRowsInPlace()
+    {
+        auto* keys = panel_->findChild<QTableWidget*>(QStringLiteral("keyTable"));
+        QCOMPARE(keys->rowCount(), 5);
+        QTableWidgetItem* time = keys->item(1, 0);
+        QTableWidgetItem* constrained = keys->item(1, 1);
+        QCOMPARE(time->text(), QStringLiteral("1.000"));
+        QCOMPARE(constrained->checkState(), Qt::Checked);
+
+        const Eigen::Quaterniond turned = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()));
+        document_->push(new model::SetKeyframeOrientationCommand(*document_, object_, 1, turned));
+        QCOMPARE(keys->item(1, 0), time);
+        QCOMPARE(keys->item(1, 1), constrained);
+
+        document_->push(new model::ToggleKeyframeConstraintCommand(*document_, object_, 1));
+        QCOMPARE(keys->item(1, 1), constrained);
+        QCOMPARE(constrained->checkState(), Qt::Unchecked);
+        document_->push(new model::SetKeyframeTimeCommand(*document_, object_, 1, 1.25));
+        QCOMPARE(keys->item(1, 0), time);
+        QCOMPARE(time->text(), QStringLiteral("1.250"));
+
+        model::Keyframe added = track().keys.back();
+        added.time = 5.0;
+        document_->push(new model::AddKeyframeCommand(*document_, object_, added));
+        QCOMPARE(keys->rowCount(), 6);
+        QCOMPARE(keys->item(5, 0)->text(), QStringLiteral("5.000"));
+        QCOMPARE(keys->item(5, 1)->checkState(), Qt::Checked);
+        QCOMPARE(keys->item(1, 0), time);
+    }
+
+    // Off screen the key table waits, and catches up once the panel is shown again; the fields and the
+    // Fit button follow at once, so that Fit is right the moment the panel is raised.
+    void theKeyTableWaitsToBeOnScreenTheFitButtonDoesNot()
+    {
+        auto* keys = panel_->findChild<QTableWidget*>(QStringLiteral("keyTable"));
+        QCOMPARE(keys->rowCount(), 5);
+        window_->hide();
+        document_->push(new model::RemoveKeyframeCommand(*document_, object_, 4));
+        document_->push(new model::SetFitWindowCommand(*document_, object_, std::pair(3.5, 4.0)));
+        QCoreApplication::processEvents();
+        QCOMPARE(keys->rowCount(), 5);
+        QVERIFY(!button("fitButton")->isEnabled()); // the window lies beyond the last key now
+        QVERIFY(panel_->findChild<QFrame*>(QStringLiteral("fitProblemFrame"))->isVisibleTo(panel_));
+
+        window_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+        QTRY_COMPARE(keys->rowCount(), 4);
+        document_->undoStack().undo();
+        QVERIFY(button("fitButton")->isEnabled());
+    }
+
     // A screw track is fitted as any other (its own subdivided, retimed polyscrew the motion the fit
     // starts from): Fit is on, one undo step applies the fit, the keys stay as they were, and the
     // scene's motion, which the viewport plays, follows the fitted curve inside the window, leaning
@@ -449,6 +527,42 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(stack.count() == stepsBefore + 1, kFitTimeoutMilliseconds);
         qInfo("Fit from click to applied step: %lld ms (%s)", static_cast<long long>(clock.elapsed()),
               qPrintable(statusBar_->currentMessage()));
+    }
+
+    // Not a check: the UI thread's CPU time per move of a drag that turns a key of a sketched
+    // 2,000-key track with the Fit panel shown (docs/fit.md), printed for the record. Each move is
+    // one command of the gesture, as the viewport's rotate handle pushes it, and the events it posts
+    // are processed before the next.
+    void measuresTheUiThreadPerDragMoveOnALongTrack()
+    {
+        constexpr int kKeys = 2000;
+        constexpr double kSpacing = 1.0 / 24.0;
+        auto* import = new model::ImportObjectsCommand(*document_, {spinningObject((kKeys - 1) * kSpacing, kSpacing)});
+        document_->undoStack().push(import);
+        const model::ObjectId longTrack = import->ids().front();
+        QCOMPARE(document_->object(longTrack)->track.keys.size(), std::size_t{kKeys});
+        document_->push(new model::AddStrokeCommand(*document_, longTrack, tiltingStroke(1.0, 80.0, kTilt)));
+        document_->push(new model::SetMagnitudeCurveCommand(*document_, longTrack, {{1.0, kSpinRate}, {80.0, 2 * kSpinRate}}));
+        selection_->selectObject(longTrack);
+        QCoreApplication::processEvents();
+
+        constexpr int kWarmUpMoves = 5;
+        constexpr int kMoves = 40;
+        constexpr std::size_t kDraggedKey = kKeys / 2;
+        const Eigen::Quaterniond start = document_->object(longTrack)->track.keys[kDraggedKey].pose.orientation;
+        double uiStart = 0.0;
+        model::Gesture gesture(*document_);
+        for (int move = 1; move <= kWarmUpMoves + kMoves; ++move) {
+            if (move == kWarmUpMoves + 1)
+                uiStart = test::threadMilliseconds();
+            const Eigen::Quaterniond turned = start * Eigen::Quaterniond(Eigen::AngleAxisd(0.01 * move, Eigen::Vector3d::UnitX()));
+            gesture.push(new model::SetKeyframeOrientationCommand(*document_, longTrack, kDraggedKey, turned));
+            QCoreApplication::processEvents();
+        }
+        const double perMove = (test::threadMilliseconds() - uiStart) / kMoves;
+        gesture.finish();
+        QVERIFY(!document_->object(longTrack)->track.keys[kDraggedKey].pose.orientation.isApprox(start));
+        qInfo("Fit panel shown, %d keys, per drag move of a key: UI thread %.2f ms of CPU", kKeys, perMove);
     }
 
 private:

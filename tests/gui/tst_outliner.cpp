@@ -1,7 +1,8 @@
 // The Outliner dock in the real main window: the tree against the document's hierarchy, selection in
-// step with the app's (and so the viewport's) both ways, rename in place, Delete, reparenting by drag
-// and drop with the world pose kept at every key, and the filter. QAbstractItemModelTester checks
-// the model's consistency through every change, and no change but a new scene resets it.
+// step with the app's (and so the viewport's) both ways, rename in place, the visibility check box,
+// Delete, reparenting by drag and drop with the world pose kept at every key, and the filter.
+// QAbstractItemModelTester checks the model's consistency through every change, and no change but a
+// new scene resets it.
 
 #include "app/main_window.h"
 #include "app/outliner/outliner_panel.h"
@@ -19,6 +20,7 @@
 #include <QMenu>
 #include <QMimeData>
 #include <QSignalSpy>
+#include <QStyle>
 #include <QTest>
 #include <QTreeView>
 #include <QUndoStack>
@@ -109,6 +111,16 @@ struct Session {
     void clickOn(model::ObjectId id)
     {
         QTest::mouseClick(tree().viewport(), Qt::LeftButton, Qt::NoModifier, tree().visualRect(shown(id)).center());
+    }
+    // A click on the check box at the start of the row, where the style puts it: a frame margin in.
+    void clickCheckBoxOf(model::ObjectId id)
+    {
+        const QRect row = tree().visualRect(shown(id));
+        QStyle* style = tree().style();
+        const int margin = style->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, &tree()) + 1;
+        const int indicator = style->pixelMetric(QStyle::PM_IndicatorWidth, nullptr, &tree());
+        QTest::mouseClick(tree().viewport(), Qt::LeftButton, Qt::NoModifier,
+                          QPoint(row.left() + margin + indicator / 2, row.center().y()));
     }
 };
 
@@ -216,6 +228,38 @@ private slots:
         session.stack().undo();
         QCOMPARE(session.document().object(session.rig[1])->name, QStringLiteral("Spine"));
         QCOMPARE(session.shown(session.rig[1]).data().toString(), QStringLiteral("Spine"));
+        QCOMPARE(session.resets->count(), 0);
+    }
+
+    void theCheckBoxHidesAnObjectFromTheViewportInOneUndoStep()
+    {
+        Session session;
+        session.window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&session.window));
+        session.stack().undo(); // the rig's import: the sample's block alone, in front of the camera
+        auto* viewport = session.window.findChild<app::Viewport*>();
+        const model::ObjectId block = session.document().scene().objects.front().id;
+        session.document().setCurrentTime(0.0);
+        // Where the block is on screen now: the camera follows the scene, so asked before each click.
+        const auto onBlock = [&] { return viewport->objectScreenPosition(block)->toPoint(); };
+        session.clickOn(block);
+        QCOMPARE(session.shown(block).data(Qt::CheckStateRole).value<Qt::CheckState>(), Qt::Checked);
+        const int steps = session.stack().index(); // the rig's import, undone, goes when a step is pushed
+        session.clickCheckBoxOf(block);
+        QVERIFY(!session.document().object(block)->visible);
+        QCOMPARE(session.shown(block).data(Qt::CheckStateRole).value<Qt::CheckState>(), Qt::Unchecked);
+        QCOMPARE(session.stack().index(), steps + 1);
+        QCOMPARE(session.stack().count(), steps + 1);
+        QCOMPARE(session.stack().undoText(), QStringLiteral("Hide Object"));
+        // Hidden, the block is not picked: a click where it stands selects nothing.
+        session.window.selection().clear();
+        QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, onBlock());
+        QCOMPARE(session.window.selection().object(), model::kNoObject);
+        session.stack().undo();
+        QVERIFY(session.document().object(block)->visible);
+        QCOMPARE(session.shown(block).data(Qt::CheckStateRole).value<Qt::CheckState>(), Qt::Checked);
+        QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, onBlock());
+        QCOMPARE(session.window.selection().object(), block);
         QCOMPARE(session.resets->count(), 0);
     }
 

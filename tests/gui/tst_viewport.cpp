@@ -18,7 +18,6 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
-#include <ctime>
 #include <memory>
 #include <numbers>
 
@@ -83,15 +82,6 @@ QPointF pastTheXArrow(const app::Viewport& viewport)
     return grab + (grab - base);
 }
 
-// CPU time of the calling thread: what the UI thread spends itself, not the job threads or
-// llvmpipe's rasterising threads.
-double threadMilliseconds()
-{
-    timespec now{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) / 1e6;
-}
-
 // The UI thread's CPU time inside one widget's paint events: each paint event is sent on to the
 // widget from within the filter, so that the filter sees where it ends.
 class PaintClock : public QObject {
@@ -112,9 +102,9 @@ protected:
         if (watched != &widget_ || event->type() != QEvent::Paint || painting_)
             return false;
         painting_ = true;
-        const double start = threadMilliseconds();
+        const double start = test::threadMilliseconds();
         QCoreApplication::sendEvent(&widget_, event);
-        milliseconds_ += threadMilliseconds() - start;
+        milliseconds_ += test::threadMilliseconds() - start;
         painting_ = false;
         return true;
     }
@@ -337,9 +327,9 @@ private slots:
 
         PaintClock viewportPaint(*session.viewport);
         double composeMilliseconds = 0, composeStart = 0;
-        connect(session.viewport, &QOpenGLWidget::aboutToCompose, this, [&] { composeStart = threadMilliseconds(); });
+        connect(session.viewport, &QOpenGLWidget::aboutToCompose, this, [&] { composeStart = test::threadMilliseconds(); });
         connect(session.viewport, &QOpenGLWidget::frameSwapped, this,
-                [&] { composeMilliseconds += threadMilliseconds() - composeStart; });
+                [&] { composeMilliseconds += test::threadMilliseconds() - composeStart; });
 
         constexpr int kWarmUpMoves = 10;
         constexpr int kMoves = 60;
@@ -352,7 +342,7 @@ private slots:
             if (move == kWarmUpMoves + 1) {
                 viewportPaint.reset();
                 composeMilliseconds = 0;
-                uiStart = threadMilliseconds();
+                uiStart = test::threadMilliseconds();
                 clock.start();
             }
             // Back and forth along the arrow, each move waiting for its frame, as fast as it goes.
@@ -362,7 +352,7 @@ private slots:
             while (session.viewport->framesDrawn() == drawn)
                 QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
         }
-        const double uiMilliseconds = threadMilliseconds() - uiStart;
+        const double uiMilliseconds = test::threadMilliseconds() - uiStart;
         const double wallMilliseconds = double(clock.nsecsElapsed()) / 1e6;
         QTest::mouseRelease(session.viewport, Qt::LeftButton, Qt::NoModifier, grab.toPoint());
         QTRY_COMPARE(session.viewport->trailInstanceCount(), instances);

@@ -254,6 +254,13 @@ private slots:
         const Eigen::Vector3d head = session.viewport->camera().project(bone.head());
         const Eigen::Vector3d tail = session.viewport->camera().project(bone.tail());
         QVERIFY((head - tail).head<2>().norm() > session.viewport->height() / 3.0);
+        // With NumLock off, the pad's period sends Delete: it frames the joint too and deletes nothing.
+        const Eigen::Vector3d middle = 0.5 * (bone.head() + bone.tail()); // framing rebuilds the bones
+        session.trigger("actionFrameAll");
+        const std::size_t objects = session.window.document().scene().objects.size();
+        QTest::keyClick(session.viewport, Qt::Key_Delete, Qt::KeypadModifier);
+        QVERIFY((session.viewport->camera().target() - middle).norm() < 1e-6);
+        QCOMPARE(session.window.document().scene().objects.size(), objects);
     }
 
     void numberPadViewsLookAlongTheWorldAxes()
@@ -273,6 +280,15 @@ private slots:
             {Qt::Key_7, Qt::KeypadModifier, {0, 0, -1}, {1, 0, 0}},
             {Qt::Key_7, Qt::KeypadModifier | Qt::ControlModifier, {0, 0, 1}, {1, 0, 0}},
         };
+        // With NumLock off the pad sends End for 1, PageDown for 3, Home for 7: the same views.
+        const std::map<Qt::Key, Qt::Key> numLockOff{{Qt::Key_1, Qt::Key_End}, {Qt::Key_3, Qt::Key_PageDown},
+                                                    {Qt::Key_7, Qt::Key_Home}};
+        for (const auto& view : views)
+            for (const Qt::Key key : {view.key, numLockOff.at(view.key)}) {
+                camera.lookFrom(0.3, 0.2); // away from every view
+                QTest::keyClick(session.viewport, key, view.modifiers);
+                QVERIFY((camera.viewDirection() - view.direction).norm() < 1e-9);
+            }
         for (const auto& view : views) {
             QTest::keyClick(session.viewport, view.key, view.modifiers);
             QVERIFY((camera.viewDirection() - view.direction).norm() < 1e-9);

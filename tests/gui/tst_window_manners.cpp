@@ -8,9 +8,12 @@
 #include "app/sketch/fit_controller.h"
 #include "app/sketch/magnitude_plot.h"
 #include "app/sketch/sphere_view.h"
+#include "app/viewport/skeleton.h"
 #include "app/viewport/viewport.h"
 #include "gui_test_support.h"
 #include "inspected_window.h"
+#include "model/commands/reparent_object_command.h"
+#include "model/primitive_meshes.h"
 
 #include <QAbstractSpinBox>
 #include <QAction>
@@ -210,14 +213,25 @@ private slots:
         QCOMPARE(document.undoStack().count(), steps + 1);
         QCOMPARE(document.undoStack().text(steps), QStringLiteral("Add Box"));
 
-        // A second box is named apart; the block needs no mesh of its own.
+        // A second box is named apart. The block has its mesh, as every added shape: it exports as one,
+        // and a block put under another is no joint of a skeleton.
         sample.child<QAction>("actionAdd-box")->trigger();
         QCOMPARE(document.scene().objects.back().name, QStringLiteral("Box.001"));
         sample.child<QAction>("actionAdd-block")->trigger();
         QCOMPARE(document.scene().objects.back().name, QStringLiteral("Block"));
-        QVERIFY(document.scene().objects.back().mesh == nullptr);
+        QVERIFY(document.scene().objects.back().mesh != nullptr);
+        QCOMPARE(document.scene().objects.back().mesh->positions.size(),
+                 model::primitiveMesh(model::Primitive::Block).positions.size());
+        const model::ObjectId firstBlock = document.scene().objects.back().id;
+        sample.child<QAction>("actionAdd-block")->trigger();
+        document.push(new model::ReparentObjectCommand(document, document.scene().objects.back().id, firstBlock));
+        const std::vector<bool> joints = app::findJoints(document.scene());
+        QVERIFY(std::none_of(joints.begin(), joints.end(), [](bool joint) { return joint; }));
+        document.undoStack().undo();
+        document.undoStack().undo();
 
         // K keys the new object where it stands.
+        sample.window().selection().selectObject(firstBlock); // the second block, selected, is gone
         sample.child<QAction>("actionAddKeyframe")->trigger();
         QCOMPARE(document.scene().objects.back().track.keys.size(), std::size_t(1));
 
@@ -234,7 +248,7 @@ private slots:
         QCOMPARE(document.scene().objects.size(), std::size_t(1));
         const model::SceneObject& block = document.scene().objects.front();
         QCOMPARE(block.name, QStringLiteral("Block"));
-        QVERIFY(block.mesh == nullptr);
+        QVERIFY(block.mesh != nullptr);
         QVERIFY(block.track.keys.empty());
         QVERIFY(!document.isModified());
         QVERIFY(document.filePath().isEmpty());

@@ -34,8 +34,9 @@
 # linearly, each baked matrix as location, rotation_quaternion and scale keys.
 #
 # glb-spline: glb again, from a copy of the project whose fits are removed, so that every hermite
-# track is Gyre's spline through its keys, which Gyre writes as a CUBICSPLINE rotation sampler
-# (src/io/gltf_scene_writer.h); the file must hold one per moving hermite object. Blender 3.4 makes
+# track is Gyre's spline through its keys, which Gyre writes as a CUBICSPLINE rotation sampler, and
+# its positions, cubic as a squad track's are, as a CUBICSPLINE translation sampler
+# (src/io/gltf_scene_writer.h); the file must hold those. Blender 3.4 makes
 # each CUBICSPLINE key a Bézier key with handles a third of the span along the tangents, the same
 # cubic, and normalises the quaternion: the baked times between the spline's keys check that.
 #
@@ -211,8 +212,9 @@ def read_project(path):
 
 def write_without_fits(path, document, out):
     """The version 3 project at `path`, whose header is `document`, with every fit taken off: the
-    fitted curve emptied and the block of keys the fit moved dropped (docs/file-format.md: the mesh
-    blocks, the time lists, then each object's keys and its keys before the fit)."""
+    fitted curve and the keys the fit moved emptied, their blocks dropped (docs/file-format.md: the
+    mesh blocks, the time lists, then each object's keys, its fitted curve and its keys before the
+    fit)."""
     with open(path, "rb") as f:
         data = f.read()
     at = 24 + struct.unpack_from("<Q", data, 16)[0]
@@ -230,8 +232,8 @@ def write_without_fits(path, document, out):
     for o in document["objects"]:
         keys = key_bytes(o["keyframes"])
         blocks.append(data[at:at + keys])
-        at += keys + key_bytes(o["sketch"]["keysBeforeFit"])
-        o["sketch"]["fittedCurve"] = []
+        at += keys + 72 * o["sketch"]["fittedCurve"]["count"] + key_bytes(o["sketch"]["keysBeforeFit"])
+        o["sketch"]["fittedCurve"] = {"count": 0}
         o["sketch"]["keysBeforeFit"] = {"count": 0, "times": len(document["times"]) - 1, "position": None,
                                         "constrained": None}
     if at != len(data):
@@ -279,9 +281,13 @@ def check_project(kind, gyre_cli, project, folder):
     path = os.path.join(folder, "scene." + kind.name.split("-")[0])
     subprocess.run([gyre_cli, "export", project, "-o", path], check=True)
     if getattr(kind, "without_fits", False):
-        splines = sum(o["interpolation"] == "hermite" and o["keyframes"]["count"] > 1 for o in document["objects"])
-        if splines == 0 or cubic_spline_samplers(path) != splines:
-            problems.append("%d CUBICSPLINE samplers for %d hermite tracks" % (cubic_spline_samplers(path), splines))
+        moving = [o for o in document["objects"] if o["keyframes"]["count"] > 1]
+        hermite = sum(o["interpolation"] == "hermite" for o in moving)
+        squad = sum(o["interpolation"] == "squad" for o in moving)
+        splines = 2 * hermite + squad  # a hermite track's rotation and translation, a squad track's translation
+        if hermite == 0 or cubic_spline_samplers(path) != splines:
+            problems.append("%d CUBICSPLINE samplers for %d hermite and %d squad tracks"
+                            % (cubic_spline_samplers(path), hermite, squad))
     bpy.ops.wm.read_factory_settings(use_empty=True)
     kind.load(path)
     scene = bpy.context.scene

@@ -1,11 +1,13 @@
 // glTF animation samplers as the file means them (io/gltf_animation.h): STEP stays a step, CUBICSPLINE
 // keeps its tangents, checked against the specification's Hermite formula written here; and a hermite
-// track written as a CUBICSPLINE sampler reads back as the same motion between the keys too.
+// track written as a CUBICSPLINE sampler reads back as the same motion between the keys too, a fit over
+// some of its keys included.
 
 #include "core/core_test_support.h"
 #include "io/gltf_animation.h"
 #include "io/scene_export.h"
 #include "io/scene_import.h"
+#include "io/up_axis.h"
 #include "model/track_evaluation.h"
 
 #include <QFile>
@@ -16,7 +18,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <cstring>
 #include <vector>
 
@@ -90,27 +94,52 @@ void appendQuaternion(std::vector<float>& out, const Eigen::Quaterniond& q)
 
 Eigen::Vector4d vec4(const float* xyzw) { return {xyzw[0], xyzw[1], xyzw[2], xyzw[3]}; }
 
-// The glTF specification's CUBICSPLINE (Appendix C), normalised as for a rotation:
+// The glTF specification's CUBICSPLINE (Appendix C) of elements of N floats:
 // p(s) = (2s³−3s²+1)vₖ + tₔ(s³−2s²+s)bₖ + (−2s³+3s²)vₖ₊₁ + tₔ(s³−s²)aₖ₊₁, output laid out as aₖ, vₖ, bₖ.
-Eigen::Quaterniond specCubicSpline(const std::vector<float>& inputs, const std::vector<float>& output, double t)
+template <int N>
+Eigen::Matrix<double, N, 1> specCubic(const std::vector<float>& inputs, const std::vector<float>& output, double t)
 {
     const std::vector<double> times(inputs.begin(), inputs.end());
     std::size_t k = 0;
     while (k + 2 < times.size() && t >= times[k + 1])
         ++k;
     const auto element = [&](std::size_t key, int part) {
-        return vec4(&output[(3 * key + static_cast<std::size_t>(part)) * 4]);
+        return Eigen::Map<const Eigen::Matrix<float, N, 1>>(&output[(3 * key + static_cast<std::size_t>(part)) * N])
+            .template cast<double>()
+            .eval();
     };
     const double td = times[k + 1] - times[k];
     const double s = std::clamp((t - times[k]) / td, 0.0, 1.0);
     const double s2 = s * s;
     const double s3 = s2 * s;
-    const Eigen::Vector4d p = (2 * s3 - 3 * s2 + 1) * element(k, 1) + td * (s3 - 2 * s2 + s) * element(k, 2) +
-                              (-2 * s3 + 3 * s2) * element(k + 1, 1) + td * (s3 - s2) * element(k + 1, 0);
+    return (2 * s3 - 3 * s2 + 1) * element(k, 1) + td * (s3 - 2 * s2 + s) * element(k, 2) +
+           (-2 * s3 + 3 * s2) * element(k + 1, 1) + td * (s3 - s2) * element(k + 1, 0);
+}
+
+// A rotation sampler's, normalised.
+Eigen::Quaterniond specCubicSpline(const std::vector<float>& inputs, const std::vector<float>& output, double t)
+{
+    const Eigen::Vector4d p = specCubic<4>(inputs, output, t);
     return Eigen::Quaterniond(p[3], p[0], p[1], p[2]).normalized();
 }
 
 Eigen::Quaterniond aboutZ(double angle) { return Eigen::Quaterniond(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ())); }
+
+// The floats of accessor `index` of a .gltf (`gltf`) whose one buffer is `bin`, read as the specification
+// lays them out: the accessor's view's bytes from its offset, tightly packed.
+std::vector<float> accessorFloats(const QJsonObject& gltf, const QByteArray& bin, int index)
+{
+    const QJsonObject accessor = gltf["accessors"].toArray()[index].toObject();
+    const QJsonObject view = gltf["bufferViews"].toArray()[accessor["bufferView"].toInt()].toObject();
+    const QString type = accessor["type"].toString();
+    const int components = type == QLatin1String("VEC4") ? 4 : type == QLatin1String("VEC3") ? 3 : 1;
+    std::vector<float> floats(static_cast<std::size_t>(accessor["count"].toInt() * components));
+    const int offset = view["byteOffset"].toInt() + accessor["byteOffset"].toInt();
+    if (offset + static_cast<qsizetype>(floats.size() * sizeof(float)) > bin.size())
+        qFatal("accessor %d lies past its buffer", index);
+    std::memcpy(floats.data(), bin.constData() + offset, floats.size() * sizeof(float));
+    return floats;
+}
 
 } // namespace
 
@@ -123,7 +152,9 @@ private slots:
     void cubicSplineKeepsItsTangents();
     void cubicSplineWithACornerIsBakedAtTheFrames();
     void hermiteTrackIsWrittenAsCubicSpline();
+    void aFitOverSomeKeysIsWrittenAsOneSplineWithCorners();
     void accessorPastItsBufferIsRefusedNamingTheField();
+    void aTrackPastTheKeyBudgetIsRefusedBeforeItIsBuilt();
 
 private:
     QString path(const QString& name) const { return directory_.filePath(name); }
@@ -264,7 +295,7 @@ void TstGltfSamplers::hermiteTrackIsWrittenAsCubicSpline()
         exportScene(scene, file, format, 24.0);
         QFile written(file);
         QVERIFY(written.open(QIODevice::ReadOnly));
-        QCOMPARE(written.readAll().count("CUBICSPLINE"), 2);
+        QCOMPARE(written.readAll().count("CUBICSPLINE"), 4); // rotation and translation of each
         ImportOptions options;
         options.timeOrigin = TimeOrigin::File;
         const SceneImport imported = importScene(file, options);
@@ -283,6 +314,80 @@ void TstGltfSamplers::hermiteTrackIsWrittenAsCubicSpline()
             GYRE_CHECK(worst < 1e-5, QStringLiteral("%1 is off by %2 rad").arg(scene.objects[i].name, str(worst)));
         }
     }
+}
+
+// A fit over the middle keys only, its control points scaled by −1.4 (the same normalised curve on the
+// other hemisphere) and bent: the keys' spline plays before and after it. Written as one CUBICSPLINE
+// sampler with a corner at each end of the fit, it plays the track at every millisecond, evaluated here
+// by the specification's formula; so does the translation, the hermite track's cubic positions.
+void TstGltfSamplers::aFitOverSomeKeysIsWrittenAsOneSplineWithCorners()
+{
+    model::Scene scene;
+    scene.startTime = 0.0;
+    scene.endTime = 4.0;
+    model::SceneObject object;
+    object.id = scene.nextObjectId++;
+    object.name = QStringLiteral("fitted");
+    object.track.interpolation = InterpolationMethod::Hermite;
+    const std::vector<double> times{0.0, 0.8, 1.7, 2.9, 4.0};
+    std::vector<OrientationKey> middle;
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        const Eigen::Quaterniond q(Eigen::AngleAxisd(0.9 * double(i), Eigen::Vector3d(1.0, double(i), 2.0).normalized()));
+        object.track.keys.push_back({times[i], {q, {double(i), 0, 0}}, true});
+        if (i >= 1 && i <= 3)
+            middle.push_back({times[i], q});
+    }
+    std::vector<HermiteControlPoint> fit = HermiteQuaternionSpline::throughKeys(middle).controlPoints();
+    fit[1].derivative.coeffs() *= 1.8;
+    for (HermiteControlPoint& point : fit) {
+        point.value.coeffs() *= -1.4;
+        point.derivative.coeffs() *= -1.4;
+    }
+    object.track.sketch.fittedCurve = fit;
+    scene.objects.push_back(object);
+
+    const QString file = path(QStringLiteral("partial.gltf"));
+    exportScene(scene, file, SceneFormat::Gltf, 24.0);
+    QFile written(file);
+    QVERIFY(written.open(QIODevice::ReadOnly));
+    const QJsonObject gltf = QJsonDocument::fromJson(written.readAll()).object();
+    QFile binFile(path(gltf["buffers"].toArray()[0].toObject()["uri"].toString()));
+    QVERIFY(binFile.open(QIODevice::ReadOnly));
+    const QByteArray bin = binFile.readAll();
+    const QJsonArray samplers = gltf["animations"].toArray()[0].toObject()["samplers"].toArray();
+    // The sampler of each path, by the channel that names it.
+    std::map<QString, std::pair<std::vector<float>, std::vector<float>>> splines; // input, output
+    for (const QJsonValue& channel : gltf["animations"].toArray()[0].toObject()["channels"].toArray()) {
+        const QJsonObject sampler = samplers[channel["sampler"].toInt()].toObject();
+        QCOMPARE(sampler["interpolation"].toString(), QStringLiteral("CUBICSPLINE"));
+        splines[channel["target"]["path"].toString()] = {accessorFloats(gltf, bin, sampler["input"].toInt()),
+                                                         accessorFloats(gltf, bin, sampler["output"].toInt())};
+    }
+    QCOMPARE(splines.size(), std::size_t{2});
+    const auto& [inputs, output] = splines.at(QStringLiteral("rotation"));
+    const auto& [positionInputs, positionOutput] = splines.at(QStringLiteral("translation"));
+    QCOMPARE(output.size(), 3 * 4 * inputs.size());
+    QCOMPARE(positionOutput.size(), 3 * 3 * positionInputs.size());
+    // The file is Y-up: its rotation and position are Gyre's turned by the inverse of yUpToZUp().
+    const model::TrackMotion motion(object.track);
+    double worst = 0.0;
+    double worstPosition = 0.0;
+    for (int step = 0; step <= 4000; ++step) {
+        const double t = step / 1000.0;
+        const Pose pose = motion.at(t);
+        worst = std::max(worst, angleBetween(pose.orientation, yUpToZUp() * specCubicSpline(inputs, output, t)));
+        worstPosition = std::max(worstPosition,
+                                 (pose.position - yUpToZUp() * specCubic<3>(positionInputs, positionOutput, t)).norm());
+    }
+    qInfo("a fit over keys 1 to 3 of 5, written as CUBICSPLINE: worst %.3g rad (%.3g°), %.3g m at every millisecond",
+          worst, worst * 180.0 / kPi, worstPosition);
+    GYRE_CHECK(worst < 1e-5, QStringLiteral("off by %1 rad").arg(str(worst)));
+    GYRE_CHECK(worstPosition < 1e-5, QStringLiteral("off by %1 m").arg(str(worstPosition)));
+    // The corners are real: at the fit's start the in- and out-tangents differ.
+    const auto start = std::ranges::find(inputs, static_cast<float>(times[1]));
+    QVERIFY(start != inputs.end());
+    const std::size_t key = static_cast<std::size_t>(start - inputs.begin());
+    QVERIFY((vec4(&output[(3 * key) * 4]) - vec4(&output[(3 * key + 2) * 4])).norm() > 0.1);
 }
 
 void TstGltfSamplers::accessorPastItsBufferIsRefusedNamingTheField()
@@ -306,6 +411,36 @@ void TstGltfSamplers::accessorPastItsBufferIsRefusedNamingTheField()
         QVERIFY2(message.contains(file.fileName()), qPrintable(message));
         QVERIFY2(message.contains(QStringLiteral("animations[0].samplers[0].output (accessors[1])")), qPrintable(message));
     }
+}
+
+// kMaxGltfTrackKeys holds however the keys come: a sampler's own keys, and a STEP sampler's hold keys.
+void TstGltfSamplers::aTrackPastTheKeyBudgetIsRefusedBeforeItIsBuilt()
+{
+    const auto sampler = [](GltfInterpolation interpolation, std::size_t keys) {
+        GltfSampler result;
+        result.interpolation = interpolation;
+        for (std::size_t k = 0; k < keys; ++k)
+            result.times.push_back(static_cast<double>(k));
+        result.values.assign(keys, Eigen::Vector4d(0, 0, 0, 1));
+        return result;
+    };
+    const QString file = QStringLiteral("big.glb");
+    const QString node = QStringLiteral("spinner");
+    const auto refusal = [&](const GltfNodeMotion& motion) {
+        try {
+            gltfTrack(motion, Pose{}, 1.0, 24.0, file, node);
+        } catch (const InputError& error) {
+            return QString::fromUtf8(error.what());
+        }
+        return QString();
+    };
+    const QString linear = refusal({sampler(GltfInterpolation::Linear, kMaxGltfTrackKeys + 1), std::nullopt});
+    QVERIFY2(linear.contains(file) && linear.contains(node) && linear.contains(QString::number(kMaxGltfTrackKeys)),
+             qPrintable(linear));
+    // Half the budget of steps and as many holds: over it too.
+    QVERIFY(!refusal({sampler(GltfInterpolation::Step, kMaxGltfTrackKeys / 2 + 1), std::nullopt}).isEmpty());
+    // Within the budget: built.
+    QVERIFY(refusal({sampler(GltfInterpolation::Linear, 1000), std::nullopt}).isEmpty());
 }
 
 QTEST_GUILESS_MAIN(TstGltfSamplers)

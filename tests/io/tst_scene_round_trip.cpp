@@ -6,6 +6,7 @@
 #include "model/track_evaluation.h"
 #include "scene_test_support.h"
 
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QObject>
@@ -260,6 +261,20 @@ void TstSceneRoundTrip::failedExportLeavesTheFileAlone()
     const QString nowhere = path("no-such-folder/scene.dae");
     QVERIFY_THROWS_EXCEPTION(OutputError, exportScene(scene, nowhere, SceneFormat::Collada, 24.0));
     QVERIFY(!QFileInfo::exists(nowhere));
+
+    // A .gltf that cannot be written (a folder has its name) leaves the .bin beside it as it was: the
+    // two files are written before either replaces what is there.
+    QVERIFY(QDir(directory_.path()).mkpath(QStringLiteral("blocked.gltf")));
+    const QString bin = path("blocked.bin");
+    {
+        QFile existing(bin);
+        QVERIFY(existing.open(QIODevice::WriteOnly));
+        existing.write("another export's buffer");
+    }
+    QVERIFY_THROWS_EXCEPTION(OutputError, exportScene(scene, path("blocked.gltf"), SceneFormat::Gltf, 24.0));
+    QFile keptBin(bin);
+    QVERIFY(keptBin.open(QIODevice::ReadOnly));
+    QCOMPARE(keptBin.readAll(), QByteArray("another export's buffer"));
 }
 
 QTEST_GUILESS_MAIN(TstSceneRoundTrip)

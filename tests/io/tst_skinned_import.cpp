@@ -259,7 +259,7 @@ private slots:
         mesh->skin.inverseBinds = {Eigen::Matrix4f::Identity()};
         mesh->skin.vertexJoints.assign(3, {0, 0, 0, 0});
         mesh->skin.vertexWeights.assign(3, Eigen::Vector4f(1, 0, 0, 0));
-        scene.objects.push_back({1, QStringLiteral("held"), mesh, model::kNoObject, {}});
+        scene.objects.push_back({1, QStringLiteral("held"), mesh, model::kNoObject, {}, true});
         scene.objects.back().track.keys = {model::Keyframe{}};
         scene.nextObjectId = 2;
         const auto decoded = [&] {

@@ -137,7 +137,7 @@ private slots:
         QCOMPARE(summary.rounds, direct.rounds);
         QCOMPARE(summary.iterations, direct.iterations);
         QCOMPARE(summary.largestRelativeError, direct.largestRelativeError);
-        const model::DrawnErrors drawn = model::drawnErrors(track, model::appliedFitResult(track, direct));
+        const model::DrawnErrors drawn = model::drawnErrors(track, *problem.motionWithoutFit, model::appliedFitResult(track, direct));
         QCOMPARE(summary.drawnErrors.before, drawn.before);
         QCOMPARE(summary.drawnErrors.after, drawn.after);
         QVERIFY(drawn.after < drawn.before);

@@ -10,6 +10,7 @@
 #include "model/commands/set_keyframe_time_command.h"
 #include "model/commands/remove_keyframe_command.h"
 #include "model/commands/rename_object_command.h"
+#include "model/commands/set_object_visibility_command.h"
 #include "model/commands/reparent_object_command.h"
 #include "model/commands/reparent_object_in_place_command.h"
 #include "model/commands/retime_keyframes_command.h"
@@ -126,6 +127,7 @@ std::vector<SceneObject> RandomEdits::objects(int count)
         object.track.subdivision = {static_cast<SubdivisionScheme>(index(4)), static_cast<int>(index(7)),
                                     number(0, 1) < 0.5, number(0, 1) < 0.5};
         object.track.sketch = sketch();
+        object.visible = number(0, 1) < 0.8;
         batch.push_back(object);
     }
     return batch;
@@ -189,6 +191,8 @@ std::unique_ptr<QUndoCommand> RandomEdits::command(Document& document, EditKind 
         return std::make_unique<DeleteObjectCommand>(document, id);
     case EditKind::RenameObject:
         return std::make_unique<RenameObjectCommand>(document, id, QStringLiteral("renamed %1").arg(index(100)));
+    case EditKind::SetObjectVisibility:
+        return std::make_unique<SetObjectVisibilityCommand>(document, id, number(0, 1) < 0.5);
     case EditKind::ReparentObject:
     case EditKind::ReparentObjectInPlace: {
         const std::vector<SceneObject>& objects = document.scene().objects;

@@ -19,6 +19,7 @@ enum class EditKind {
     ImportObjects,
     DeleteObject,
     RenameObject,
+    SetObjectVisibility,
     ReparentObject,
     ReparentObjectInPlace,
     AddKeyframe,

@@ -16,6 +16,7 @@
 #include "model/commands/set_keyframe_time_command.h"
 #include "model/commands/remove_keyframe_command.h"
 #include "model/commands/rename_object_command.h"
+#include "model/commands/set_object_visibility_command.h"
 #include "model/commands/reparent_object_command.h"
 #include "model/commands/reparent_object_in_place_command.h"
 #include "model/commands/retime_keyframes_command.h"
@@ -648,6 +649,7 @@ void TstCommands::signalsSayWhatChanged_data()
     row("import", [](Document& d) { return new ImportObjectsCommand(d, {objectWithKeys(1, {}), objectWithKeys(2, {}, 1)}); },
         {"Added:4", "Added:5"});
     row("rename", [](Document& d) { return new RenameObjectCommand(d, 2, QStringLiteral("x")); }, {"Object:2"});
+    row("hide", [](Document& d) { return new SetObjectVisibilityCommand(d, 2, false); }, {"Object:2"});
     row("reparent", [](Document& d) { return new ReparentObjectCommand(d, 2, 3); }, {"Object:2"});
     row("reparent in place", [](Document& d) { return new ReparentObjectInPlaceCommand(d, 2, 3); },
         {"Object:2", "Keyframes:2"});

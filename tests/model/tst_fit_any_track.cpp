@@ -128,7 +128,7 @@ void TstFitAnyTrack::everyInterpolationIsFittedFromItsOwnMotion()
         if (key.time > kWindowStart && key.time < kWindowEnd)
             QVERIFY(angle(edited.at(key.time).orientation, keyed.at(key.time).orientation) < 1e-12);
 
-    const DrawnErrors drawn = drawnErrors(track, applied);
+    const DrawnErrors drawn = drawnErrors(track, *problem.motionWithoutFit, applied);
     QVERIFY2(drawn.after < 0.7 * drawn.before, qPrintable(QStringLiteral("%1 → %2").arg(drawn.before).arg(drawn.after)));
 }
 

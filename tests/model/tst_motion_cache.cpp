@@ -167,6 +167,26 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, motion.motion());
         QCOMPARE(builds->load(), std::size_t(1));
     }
+
+    // The motion before the fit is the track without its fit: no fitted curve, and the key the fit
+    // turned as it was before (sketch.keysBeforeFit); built once, as the motion is.
+    void theMotionWithoutFitPutsTheMovedKeysBack()
+    {
+        MotionTrack track = objectTurning(1, 0.5).track;
+        const Keyframe before = track.keys[1];
+        track.keys[1].pose.orientation = aboutZ(1.5);
+        track.sketch.keysBeforeFit = {before};
+        // A fit over [1.5, 2] s: at 1 s both motions play the keys.
+        track.sketch.fittedCurve = {{1.5, aboutZ(1.2), Eigen::Quaterniond(0, 0, 0, 0.25)},
+                                    {2.0, aboutZ(1.0), Eigen::Quaterniond(0, 0, 0, 0.25)}};
+        auto builds = std::make_shared<std::atomic<std::size_t>>(0);
+        const SharedTrackMotion motion(track, builds);
+        const TrackMotion& withoutFit = motion.motionWithoutFit();
+        QVERIFY(withoutFit.at(1.0).orientation.isApprox(before.pose.orientation, 1e-12));
+        QVERIFY(motion.motion().at(1.0).orientation.isApprox(aboutZ(1.5), 1e-12));
+        QCOMPARE(&motion.motionWithoutFit(), &withoutFit);
+        QCOMPARE(builds->load(), std::size_t(2));
+    }
 };
 
 QTEST_GUILESS_MAIN(TstMotionCache)

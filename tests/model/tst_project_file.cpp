@@ -155,10 +155,12 @@ QJsonObject keyLayout(int count, int times, QJsonValue position = QJsonValue(), 
 }
 
 // A valid version 3 header: one object with three keys, at the times of list 0, their positions and
-// flags listed in the block; no keys before a fit, at the empty list 1.
-QJsonObject binaryHeader(QJsonObject keyframes = keyLayout(3, 0))
+// flags listed in the block; `controlPoints` of an applied fit in the block after them; no keys before
+// a fit, at the empty list 1.
+QJsonObject binaryHeader(QJsonObject keyframes = keyLayout(3, 0), int controlPoints = 0)
 {
     QJsonObject sketch = emptySketch();
+    sketch["fittedCurve"] = QJsonObject{{"count", controlPoints}};
     sketch["keysBeforeFit"] = keyLayout(0, 1);
     QJsonObject only = object(1);
     only["keyframes"] = keyframes;
@@ -250,6 +252,22 @@ void damagedBlockRows()
         "meshes[0]: mesh index 5 is beyond its 3 positions");
     row("mesh block cut", binaryProject(withMesh, triangle.left(20)),
         "meshes[0]: its block needs 48 bytes; the file has 20 left");
+    // An applied fit's control points follow the keys: time, value w, x, y, z, derivative w, x, y, z.
+    const QByteArray firstPoint = little<double>({0, 1, 0, 0, 0, 0, 0, 0, 0});
+    row("fitted value zero in its block",
+        binaryProject(binaryHeader(keyLayout(3, 0), 2), valid + firstPoint + little<double>({1, 0, 0, 0, 0, 0, 0, 0, 0})),
+        "objects[0].sketch.fittedCurve[1].value: the value has length 0; a fitted value needs length at least 0.001");
+    row("fitted times out of order",
+        binaryProject(binaryHeader(keyLayout(3, 0), 2), valid + firstPoint + little<double>({0, 1, 0, 0, 0, 0, 0, 0, 0})),
+        "objects[0].sketch.fittedCurve[1].time: time 0 does not come after the time before it, 0");
+    row("fitted derivative too long",
+        binaryProject(binaryHeader(keyLayout(3, 0), 1), valid + little<double>({0, 1, 0, 0, 0, 1e300, 0, 0, 0})),
+        "objects[0].sketch.fittedCurve[0].derivative: the derivative has length 1e+300 per second");
+    row("fitted curve past the budget", binaryProject(binaryHeader(keyLayout(3, 0), 8388606), valid),
+        "objects[0].sketch.fittedCurve.count: these 8388606 control points bring the file past the 8388608 keys a "
+        "project may hold");
+    row("fitted curve cut", binaryProject(binaryHeader(keyLayout(3, 0), 2), valid + firstPoint),
+        "objects[0].sketch.fittedCurve: its block needs 144 bytes; the file has 72 left");
 }
 
 std::uint64_t bitsOf(double value)
@@ -281,6 +299,7 @@ private slots:
     void refusesFilesLargerThanTheCap();
     void neverCrashesOnDamagedFiles();
     void failedSaveKeepsTheOldFile();
+    void aLongFitFitsAndAHeaderPastItsLimitIsNotSaved();
     void refusesToSaveWhatWouldNotReadBack();
 
 private:
@@ -729,6 +748,43 @@ void TstProjectFile::failedSaveKeepsTheOldFile()
         QVERIFY2(QString::fromUtf8(error.what()).startsWith(missingFolder + ": cannot write: "), error.what());
     }
     QVERIFY(!QFileInfo::exists(directory_.filePath("no-such-folder")));
+}
+
+// A glTF spline's fit holds a control point a key: 200,000 of them would be some 86 MB of JSON text, past
+// the header's 16 MiB; in their block they save and open exactly. What the header must hold, a stroke
+// of 150,000 points (some 27 MB of JSON), is refused before anything is written, the old file kept.
+void TstProjectFile::aLongFitFitsAndAHeaderPastItsLimitIsNotSaved()
+{
+    Scene scene = test::RandomEdits(5).scene(1);
+    SketchState& sketch = scene.objects[0].track.sketch;
+    sketch.keysBeforeFit.clear();
+    sketch.fittedCurve.clear();
+    for (int i = 0; i < 200'000; ++i)
+        sketch.fittedCurve.push_back({i * 0.001, Eigen::Quaterniond(1.0, 0.001 * i, 0.5, -0.25),
+                                      Eigen::Quaterniond(0.0, 1.0, -2.0, 1.0 / 3.0)});
+    const QString path = directory_.filePath(QStringLiteral("long-fit.gyre"));
+    writeProject(path, scene);
+    QVERIFY(QFileInfo(path).size() > 200'000 * 72);
+    const Scene loaded = readProject(path);
+    QCOMPARE(loaded.objects[0].track.sketch.fittedCurve.size(), std::size_t{200'000});
+    QCOMPARE(loaded.objects[0].track.sketch.fittedCurve[123'456].value.coeffs(),
+             sketch.fittedCurve[123'456].value.coeffs());
+    QCOMPARE(projectBytes(loaded), projectBytes(scene));
+
+    DirectionStroke stroke;
+    for (int i = 0; i < 150'000; ++i)
+        stroke.points.push_back(Eigen::Vector3d(std::cos(i * 1e-5), std::sin(i * 1e-5), 0.0));
+    sketch.directionStrokes = {stroke};
+    const QString kept = write("kept-header.gyre", "precious\n");
+    try {
+        writeProject(kept, scene);
+        QFAIL("a header past 16 MiB was saved");
+    } catch (const OutputError& error) {
+        QVERIFY2(QString::fromUtf8(error.what()).contains("more than the 16777216 a project may hold"), error.what());
+    }
+    QFile file(kept);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.readAll(), QByteArray("precious\n"));
 }
 
 void TstProjectFile::refusesToSaveWhatWouldNotReadBack()

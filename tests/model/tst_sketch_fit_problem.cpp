@@ -2,6 +2,7 @@
 // them, the target (strokes over the motion's own direction, the sketched magnitude over its own
 // speed), the refusals, and the result as the document applies it.
 
+#include "model/fit_input.h"
 #include "model/sketch_fit_problem.h"
 #include "model/track_evaluation.h"
 
@@ -36,6 +37,21 @@ DirectionStroke timedStroke(const Eigen::Vector3d& from, const Eigen::Vector3d& 
 double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 {
     return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+// steadySpin with its middle key free and a stroke tilting the spin towards x over [1, 3] s.
+MotionTrack tiltedSpinWithAFreeKey()
+{
+    MotionTrack track = steadySpin();
+    track.keys[2].constrained = false;
+    const Eigen::Vector3d tilted = Eigen::Vector3d(1, 0, 1).normalized();
+    track.sketch.directionStrokes.push_back(timedStroke(Eigen::Vector3d::UnitZ(), tilted, 1.0, 3.0));
+    return track;
+}
+
+Eigen::Quaterniond turnedAboutX(const Eigen::Quaterniond& orientation, double angle)
+{
+    return orientation * Eigen::Quaterniond(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitX()));
 }
 
 // ∫ |ω − ωˢ|² dt over the problem's window, by the midpoint rule at 100 samples per second.
@@ -78,6 +94,9 @@ private slots:
     void settingsComeFromTheSketch();
     void refusesWhatCannotBeFitted();
     void appliedResultKeepsConstrainedKeysAndLeansTowardsTheSketch();
+    void cheapChecksRefuseAsTheProblemDoes();
+    void fittingAgainStartsFromTheKeysBeforeTheFit();
+    void aKeyTurnedSinceTheFitReadItDropsItsResult();
 };
 
 void TstSketchFitProblem::editWindowIsTheSketchedSpanWithinTheKeys()
@@ -253,6 +272,85 @@ void TstSketchFitProblem::appliedResultKeepsConstrainedKeysAndLeansTowardsTheSke
     const double before = deviationFromTarget(TrackMotion(track), problem);
     const double after = deviationFromTarget(TrackMotion(fitted), problem);
     QVERIFY2(after < 0.5 * before, qPrintable(QStringLiteral("%1 rad²/s before, %2 after").arg(before).arg(after)));
+}
+
+// checkSketchFittable, which the fit panel runs at every edit, refuses what sketchFitProblem refuses
+// before it builds anything, with the same message, and passes what it builds.
+void TstSketchFitProblem::cheapChecksRefuseAsTheProblemDoes()
+{
+    const auto sameRefusal = [](const MotionTrack& track, const char* words) {
+        return refusesWith([&] { checkSketchFittable(track); }, words)
+               && refusesWith([&] { sketchFitProblem(track); }, words);
+    };
+    MotionTrack track = steadySpin();
+    QVERIFY(sameRefusal(track, "Nothing is sketched"));
+    track.sketch.magnitude = {{1.0, 2.0}, {3.0, 4.0}};
+    checkSketchFittable(track);
+    sketchFitProblem(track);
+    track.sketch.pattern = {{0, 0}, {1, 0}};
+    track.sketch.patternRepeat = 1 << 20;
+    QVERIFY(sameRefusal(track, "pattern"));
+    track.sketch.patternRepeat = 0;
+    track.sketch.window = std::pair(5.0, 6.0);
+    QVERIFY(sameRefusal(track, "window"));
+    track.keys.resize(1);
+    QVERIFY(sameRefusal(track, "two keyframes"));
+}
+
+// The fit reads the track without its fit, the keys the last fit moved put back: fitting a fitted
+// track again reads what the first fit read and gives the same result, to the last bit.
+void TstSketchFitProblem::fittingAgainStartsFromTheKeysBeforeTheFit()
+{
+    const MotionTrack track = tiltedSpinWithAFreeKey();
+    const SketchFitProblem first = sketchFitProblem(track);
+    const FitResult applied = appliedFitResult(track, fitSketch(first));
+    const MotionTrack fitted = withFitApplied(track, applied);
+    QVERIFY(fitted.keys[2].pose.orientation.coeffs() != track.keys[2].pose.orientation.coeffs()); // the fit turned it
+    QCOMPARE(fitted.sketch.keysBeforeFit.size(), std::size_t{1});
+
+    const SketchFitProblem again = sketchFitProblem(fitted);
+    QCOMPARE(again.keys.size(), first.keys.size());
+    for (std::size_t i = 0; i < first.keys.size(); ++i)
+        QVERIFY2(again.keys[i].rotation.coeffs() == first.keys[i].rotation.coeffs(), qPrintable(QString::number(i)));
+    for (double time = 1.0; time <= 3.0; time += 0.125)
+        QCOMPARE(again.target.at(time), first.target.at(time));
+    const FitResult reapplied = appliedFitResult(fitted, fitSketch(again));
+    QCOMPARE(reapplied.curve.size(), applied.curve.size());
+    for (std::size_t i = 0; i < applied.curve.size(); ++i)
+        QVERIFY(reapplied.curve[i].value.coeffs() == applied.curve[i].value.coeffs());
+    for (std::size_t i = 0; i < applied.keys.size(); ++i)
+        QVERIFY(reapplied.keys[i].pose.orientation.coeffs() == applied.keys[i].pose.orientation.coeffs());
+    // Applied again, it leaves the keys as they were before any fit to restore.
+    const MotionTrack refitted = withFitApplied(fitted, reapplied);
+    QCOMPARE(refitted.sketch.keysBeforeFit.size(), std::size_t{1});
+    QVERIFY(withoutFit(refitted).keys[2].pose.orientation.coeffs() == track.keys[2].pose.orientation.coeffs());
+}
+
+// A fit's result is dropped when a key it read or would replace was turned after it read the track,
+// a free key included; the track it was made from, or that track with the result applied, takes it.
+void TstSketchFitProblem::aKeyTurnedSinceTheFitReadItDropsItsResult()
+{
+    const MotionTrack track = tiltedSpinWithAFreeKey();
+    const FitResult applied = appliedFitResult(track, fitSketch(sketchFitProblem(track)));
+    QVERIFY(fitResultApplies(track, track, applied));
+    const MotionTrack fitted = withFitApplied(track, applied);
+    QVERIFY(sameFitInput(track, fitted)); // applying a fit changes nothing the next fit reads
+    QVERIFY(fitResultApplies(track, fitted, applied));
+
+    // The free key turned while the fit ran: the fit read another track.
+    MotionTrack turned = track;
+    turned.keys[2].pose.orientation = turnedAboutX(track.keys[2].pose.orientation, 0.3);
+    QVERIFY(!sameFitInput(track, turned));
+    QVERIFY(!fitResultApplies(track, turned, applied));
+
+    // A refit of the fitted track, whose free key the artist turns while it runs: the fit reads the key
+    // as it was before the first fit, the same either way, but its result would undo the turn.
+    const FitResult reapplied = appliedFitResult(fitted, fitSketch(sketchFitProblem(fitted)));
+    MotionTrack turnedAfterFit = fitted;
+    turnedAfterFit.keys[2].pose.orientation = turnedAboutX(fitted.keys[2].pose.orientation, 0.3);
+    QVERIFY(sameFitInput(fitted, turnedAfterFit));
+    QVERIFY(!fitResultApplies(fitted, turnedAfterFit, reapplied));
+    QVERIFY(fitResultApplies(fitted, fitted, reapplied));
 }
 
 QTEST_GUILESS_MAIN(TstSketchFitProblem)

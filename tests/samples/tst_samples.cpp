@@ -227,8 +227,10 @@ void TstSamples::spinningTopsReportMeasuresWhatWasDrawn()
 {
     const model::MotionTrack track = samples::spinningTop().scene.objects.front().track;
     QVERIFY(track.sketch.magnitude.empty());
-    const fit::FitResult result = model::fitSketch(model::sketchFitProblem(track));
-    const model::DrawnErrors drawn = model::drawnErrors(track, model::appliedFitResult(track, result));
+    const model::SketchFitProblem problem = model::sketchFitProblem(track);
+    const fit::FitResult result = model::fitSketch(problem);
+    const model::DrawnErrors drawn =
+        model::drawnErrors(track, *problem.motionWithoutFit, model::appliedFitResult(track, result));
     qInfo("the spinning top against what was drawn: %.4g rad²/s before the fit, %.4g after", drawn.before, drawn.after);
     QVERIFY2(drawn.after < 0.1 * drawn.before, qPrintable(QStringLiteral("%1 → %2").arg(drawn.before).arg(drawn.after)));
 }

@@ -2,6 +2,7 @@
 
 #include "model/commands/rename_object_command.h"
 #include "model/commands/reparent_object_in_place_command.h"
+#include "model/commands/set_object_visibility_command.h"
 #include "model/scene_queries.h"
 
 #include <QDataStream>
@@ -122,9 +123,19 @@ int SceneTreeModel::columnCount(const QModelIndex&) const
 QVariant SceneTreeModel::data(const QModelIndex& index, int role) const
 {
     const model::SceneObject* object = document_.object(objectAt(index));
-    if (object == nullptr || (role != Qt::DisplayRole && role != Qt::EditRole))
+    if (object == nullptr)
         return {};
-    return object->name;
+    switch (role) {
+    case Qt::DisplayRole:
+    case Qt::EditRole:
+        return object->name;
+    case Qt::CheckStateRole:
+        return object->visible ? Qt::Checked : Qt::Unchecked;
+    case Qt::ToolTipRole:
+        return object->visible ? tr("Shown in the viewport: uncheck to hide it") : tr("Hidden in the viewport: check to show it");
+    default:
+        return {};
+    }
 }
 
 Qt::ItemFlags SceneTreeModel::flags(const QModelIndex& index) const
@@ -132,12 +143,20 @@ Qt::ItemFlags SceneTreeModel::flags(const QModelIndex& index) const
     // Dropping on empty space takes the objects out of their parents.
     if (!index.isValid())
         return Qt::ItemIsDropEnabled;
-    return Qt::ItemIsSelectable | Qt::ItemIsEnabled | Qt::ItemIsEditable | Qt::ItemIsDragEnabled | Qt::ItemIsDropEnabled;
+    return Qt::ItemIsSelectable | Qt::ItemIsEnabled | Qt::ItemIsEditable | Qt::ItemIsUserCheckable | Qt::ItemIsDragEnabled
+           | Qt::ItemIsDropEnabled;
 }
 
 bool SceneTreeModel::setData(const QModelIndex& index, const QVariant& value, int role)
 {
     const model::SceneObject* object = document_.object(objectAt(index));
+    if (object != nullptr && role == Qt::CheckStateRole) {
+        const bool visible = value.value<Qt::CheckState>() == Qt::Checked;
+        if (visible == object->visible)
+            return false;
+        document_.push(new model::SetObjectVisibilityCommand(document_, object->id, visible));
+        return true;
+    }
     const QString name = value.toString().trimmed();
     // A nameless object could not be found in the outliner again; an unchanged name is no edit.
     if (object == nullptr || role != Qt::EditRole || name.isEmpty() || name == object->name)

@@ -1,10 +1,12 @@
 #pragma once
 // The scene's hierarchy as a Qt item model: one row per object under its parent, siblings in scene
-// order, one column, the object's name. It follows the document's signals row by row (an object
-// added, removed, renamed or given another parent inserts, removes, changes or moves its row), and
-// resets only when the whole scene is replaced. Edits go through the document's undo commands:
-// renaming an item is one RenameObjectCommand, dropping items on another is one undo step of
-// ReparentObjectInPlaceCommands, which keep each object where it is in the world.
+// order, one column, the object's name with a check box for whether the viewport shows it. It
+// follows the document's signals row by row (an object added, removed, renamed or given another
+// parent inserts, removes, changes or moves its row), and resets only when the whole scene is
+// replaced. Edits go through the document's undo commands: renaming an item is one
+// RenameObjectCommand, checking or unchecking it one SetObjectVisibilityCommand, dropping items on
+// another one undo step of ReparentObjectInPlaceCommands, which keep each object where it is in the
+// world.
 
 #include "model/document.h"
 

@@ -71,7 +71,8 @@ FitController::FitController(model::Document& document, Selection& selection, QO
     connect(&liveJob_, &jobs::FitJob::finished, this,
             [this](model::ObjectId object, const model::MotionTrack& input, const model::FitResult& result,
                    const jobs::FitSummary&) { onLiveFinished(object, input, result); });
-    // The fit panel says why a track cannot be fitted; the preview of a fit that no longer is goes.
+    // The fit panel says why a track cannot be fitted (model::checkSketchFittable), and an explicit
+    // fit whatever else its build refuses; the preview of a fit that no longer is goes.
     connect(&liveJob_, &jobs::FitJob::failed, this, [this] {
         heldLiveResult_.reset();
         clearPreview();
@@ -196,7 +197,7 @@ bool FitController::applyIfCurrent(model::ObjectId object, const model::MotionTr
                                    const model::FitResult& result)
 {
     const model::SceneObject* current = document_.object(object);
-    if (current == nullptr || !model::sameFitInput(input, current->track))
+    if (current == nullptr || !model::fitResultApplies(input, current->track, result))
         return false;
     try {
         document_.push(new model::ApplyFitResultCommand(document_, object, result));

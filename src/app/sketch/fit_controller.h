@@ -3,15 +3,17 @@
 // share it: one explicit fit at a time (Fit, Cancel), and the live mode, which refits whenever the
 // selected object's fit inputs change.
 //
-// A result is applied as one undo step (ApplyFitResultCommand) only if its input still matches the
-// document (model::sameFitInput); an explicit fit whose track changed while it ran is dropped, and
-// says so. While a gesture is open (Document::isGestureOpen: a stroke being drawn pushes its commands
+// A result is applied as one undo step (ApplyFitResultCommand) only if it still applies to the
+// document (model::fitResultApplies: the fit would read the same, and no key was edited since); an
+// explicit fit whose track changed while it ran, a free key turned included, is dropped, and says so. While a gesture is open (Document::isGestureOpen: a stroke being drawn pushes its commands
 // at every mouse move), nothing is applied: a live result is shown as a preview of the motion
 // (previewChanged, for the viewport), and the newest result is applied when the gesture ends
 // (Document::gestureEnded) and it matches the document.
 // Live fits follow only changes made with nothing to redo, so undo and redo never lose history to a
-// fit; and applying a fit changes none of the inputs, so it starts no other fit. The UI thread never
-// waits: every fit runs on a FitJob.
+// fit. A fit reads the track without its fit (model::withoutFit: the keys a fit moved as they were
+// before it), so applying a fit, which changes the fitted curve and the free keys and keeps what they
+// were in sketch.keysBeforeFit, leaves what the next fit would read as it was (model::sameFitInput)
+// and starts no other fit. The UI thread never waits: every fit runs on a FitJob.
 
 #include "app/selected_track.h"
 #include "app/selection.h"
@@ -69,7 +71,8 @@ private:
     void onSelectionChanged();
     // Posts a live fit of the selected track unless its inputs are those of the newest live fit.
     void requestLiveFit();
-    // Applies `result` as one undo step if `input` is still the object's fit input; whether it did.
+    // Applies `result` as one undo step if it still applies to the object (model::fitResultApplies);
+    // whether it did.
     bool applyIfCurrent(model::ObjectId object, const model::MotionTrack& input, const model::FitResult& result);
     void showPreview(const HeldResult& held);
     void clearPreview();

@@ -36,6 +36,7 @@ FitPanel::FitPanel(model::Document& document, Selection& selection, FitControlle
     , selection_(selection)
     , selectedTrack_(document, selection)
     , controller_(controller)
+    , keysRefresh_(*this, 0, [this] { showKeys(); })
 {
     ui_->setupUi(this);
     const int iconSize = style()->pixelMetric(QStyle::PM_SmallIconSize, nullptr, this);
@@ -81,6 +82,7 @@ FitPanel::FitPanel(model::Document& document, Selection& selection, FitControlle
     });
     ui_->liveCheck->setChecked(controller_.isLive());
     showSelectedTrack();
+    showKeys();
 }
 
 FitPanel::~FitPanel() = default;
@@ -93,9 +95,9 @@ void FitPanel::showSelectedTrack()
     for (QWidget* group : {static_cast<QWidget*>(ui_->weightsGroup), static_cast<QWidget*>(ui_->windowGroup),
                            static_cast<QWidget*>(ui_->keysGroup)})
         group->setEnabled(object != nullptr);
+    keysRefresh_.requestNow();
     if (object == nullptr) {
         ui_->fitProblemFrame->hide();
-        ui_->keyTable->setRowCount(0);
         fittable_ = false;
         updateButtons();
         return;
@@ -108,7 +110,6 @@ void FitPanel::showSelectedTrack()
         spin->setValue(value);
     }
     showWindow(track);
-    showKeys(track);
     showFitProblem(track);
     updateButtons();
 }
@@ -134,27 +135,56 @@ void FitPanel::showWindow(const model::MotionTrack& track)
     ui_->windowEndSpin->setEnabled(!whole);
 }
 
-void FitPanel::showKeys(const model::MotionTrack& track)
+void FitPanel::showKeys()
 {
-    const QSignalBlocker blocker(ui_->keyTable);
-    ui_->keyTable->setRowCount(static_cast<int>(track.keys.size()));
-    for (std::size_t key = 0; key < track.keys.size(); ++key) {
-        const int row = static_cast<int>(key);
-        auto* time = new QTableWidgetItem(QString::number(track.keys[key].time, 'f', 3));
-        time->setFlags(Qt::ItemIsEnabled);
-        ui_->keyTable->setItem(row, kTimeColumn, time);
-        auto* constrained = new QTableWidgetItem;
-        constrained->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
-        constrained->setCheckState(track.keys[key].constrained ? Qt::Checked : Qt::Unchecked);
-        ui_->keyTable->setItem(row, kConstrainedColumn, constrained);
+    const model::SceneObject* object = selection_.selectedObject();
+    std::vector<ShownKey> keys;
+    if (object != nullptr) {
+        keys.reserve(object->track.keys.size());
+        for (const model::Keyframe& key : object->track.keys)
+            keys.push_back({key.time, key.constrained});
     }
-    ui_->keyTable->resizeColumnToContents(kTimeColumn);
+    // A key turned or moved in space, as at every move of a drag, changes no row.
+    if (keys == shownKeys_ && ui_->keyTable->rowCount() == static_cast<int>(keys.size()))
+        return;
+    QTableWidget& table = *ui_->keyTable;
+    const QSignalBlocker blocker(table);
+    table.setRowCount(static_cast<int>(keys.size()));
+    bool timesChanged = false;
+    for (std::size_t key = 0; key < keys.size(); ++key) {
+        const int row = static_cast<int>(key);
+        QTableWidgetItem* time = table.item(row, kTimeColumn);
+        if (time == nullptr) {
+            time = new QTableWidgetItem;
+            time->setFlags(Qt::ItemIsEnabled);
+            table.setItem(row, kTimeColumn, time);
+        }
+        const QString timeText = QString::number(keys[key].time, 'f', 3);
+        if (time->text() != timeText) {
+            time->setText(timeText);
+            timesChanged = true;
+        }
+        const Qt::CheckState check = keys[key].constrained ? Qt::Checked : Qt::Unchecked;
+        QTableWidgetItem* constrained = table.item(row, kConstrainedColumn);
+        if (constrained == nullptr) {
+            constrained = new QTableWidgetItem;
+            constrained->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
+            constrained->setCheckState(check); // an item shows a check box once it has a state
+            table.setItem(row, kConstrainedColumn, constrained);
+        } else if (constrained->checkState() != check) {
+            constrained->setCheckState(check);
+        }
+    }
+    // Measuring the column reads every row: only when a time's text changed.
+    if (timesChanged)
+        table.resizeColumnToContents(kTimeColumn);
+    shownKeys_ = std::move(keys);
 }
 
 void FitPanel::showFitProblem(const model::MotionTrack& track)
 {
     try {
-        model::sketchFitProblem(track);
+        model::checkSketchFittable(track);
         fittable_ = true;
         ui_->fitProblemFrame->hide();
     } catch (const model::SketchFitError& error) {

@@ -1,8 +1,8 @@
 #pragma once
 // The viewport's camera: it looks at a target from a distance, along a direction given by yaw about
-// the world's up axis (z) and pitch above the ground plane, in perspective or orthographic. Orbiting turns about the target, panning
-// slides the target across the view, zooming changes the distance. No OpenGL here: the viewport
-// hands its matrices to the shaders, and tests check the geometry alone.
+// the world's up axis (z) and pitch above the ground plane, in perspective or orthographic. Orbiting
+// turns about the target, panning slides the target across the view, zooming changes the distance. No
+// OpenGL here: the viewport hands its matrices to the shaders, and tests check the geometry alone.
 //
 // Screen points are widget pixels, x to the right and y down from the top-left corner; depth is in
 // [0, 1] from the near to the far plane, as the OpenGL depth buffer holds it.

@@ -312,7 +312,7 @@ void SceneRenderer::drawObjects(const FrameMeshes& meshes)
     const auto draw = [this](GpuMesh& mesh) { drawMesh(mesh, identityInstance_, 1); };
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const model::SceneObject& object = scene.objects[i];
-        if (meshes.skeleton->isJoint(i))
+        if (meshes.skeleton->isJoint(i) || !object.visible)
             continue;
         setColor(&object == meshes.selected);
         meshProgram_->setUniformValue("uFrame", toQMatrix(poseMatrix(meshes.motion->worldPose(object.id, scene.currentTime))));

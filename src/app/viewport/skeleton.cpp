@@ -68,7 +68,7 @@ void Skeleton::update(const model::Scene& scene, const model::SceneMotion& motio
     boneCounts_.assign(count, 0);
     for (std::size_t i = 0; i < count; ++i) {
         const std::size_t parent = parentIndex_[i];
-        if (!joints_[i] || parent == i || !joints_[parent])
+        if (!joints_[i] || parent == i || !joints_[parent] || !scene.objects[parent].visible)
             continue;
         // The child's origin in its parent joint's frame: where the parent's bone points.
         const Pose parentPose = motion.worldPose(scene.objects[parent].id, time);
@@ -76,7 +76,7 @@ void Skeleton::update(const model::Scene& scene, const model::SceneMotion& motio
         boneCounts_[parent] += appendBone(bones_, scene.objects[parent].id, parentPose, offset, offset.norm()) ? 1 : 0;
     }
     for (std::size_t i = 0; i < count; ++i) {
-        if (!joints_[i] || boneCounts_[i] > 0 || parentIndex_[i] == i)
+        if (!joints_[i] || boneCounts_[i] > 0 || parentIndex_[i] == i || !scene.objects[i].visible)
             continue;
         // A leaf (a hand, an end site), or a joint whose child joints all sit at its own place: on
         // along its own offset, the way its parent's bone came in.
@@ -91,7 +91,7 @@ void Skeleton::update(const model::Scene& scene, const model::SceneMotion& motio
         total += bone.length;
     const double stub = kStubFraction * (bones_.empty() ? 1.0 : total / double(bones_.size()));
     for (std::size_t i = 0; i < count; ++i)
-        if (joints_[i] && boneCounts_[i] == 0) {
+        if (joints_[i] && boneCounts_[i] == 0 && scene.objects[i].visible) {
             const Pose pose = motion.worldPose(scene.objects[i].id, time);
             appendBone(bones_, scene.objects[i].id, pose, Eigen::Vector3d::UnitX(), stub);
         }

@@ -40,6 +40,7 @@ public:
     bool isJoint(std::size_t index) const { return index < joints_.size() && joints_[index]; }
     // A bone from each joint to each of its child joints away from its origin; one on from each
     // joint without such, along its offset; one along the x axis of each joint that still has none.
+    // A hidden joint (SceneObject::visible) has none: its bones hide with it.
     const std::vector<Bone>& bones() const { return bones_; }
 
 private:

@@ -151,8 +151,10 @@ void Viewport::frameScene()
     const model::SceneMotion& motion = drawn_.motion();
     updateSkeleton();
     Eigen::AlignedBox3d box;
+    // As Blender's View All: what is hidden is not framed.
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
-        box.extend(objectBox(i));
+        if (scene.objects[i].visible)
+            box.extend(objectBox(i));
     if (const model::SceneObject* selected = selection_.selectedObject()) {
         const Pose frame = motion.parentWorldPose(selected->id, scene.currentTime);
         for (const model::Keyframe& key : selected->track.keys)
@@ -276,7 +278,7 @@ void Viewport::pickAt(const QPointF& position)
     updateSkeleton();
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const model::SceneObject& object = scene.objects[i];
-        if (skeleton_.isJoint(i))
+        if (skeleton_.isJoint(i) || !object.visible)
             continue;
         const std::vector<Eigen::Vector3f>* positions = nullptr;
         if (object.mesh && !object.mesh->skin.empty())

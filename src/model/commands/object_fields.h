@@ -51,6 +51,7 @@ inline constexpr auto keyConstrained = [](auto& object, std::size_t key) -> auto
     return object.track.keys[key].constrained;
 };
 inline constexpr auto objectName = [](auto& object, std::size_t) -> auto& { return object.name; };
+inline constexpr auto objectVisible = [](auto& object, std::size_t) -> auto& { return object.visible; };
 inline constexpr auto trackInterpolation = [](auto& object, std::size_t) -> auto& {
     return object.track.interpolation;
 };
@@ -75,6 +76,7 @@ using KeyframeOrientationField =
 using KeyframePositionField = MemberField<keyPosition, Eigen::Vector3d, Merge::WithinGesture, Change::Keyframes>;
 using KeyframeConstraintField = MemberField<keyConstrained, bool, Merge::Never, Change::Keyframes>;
 using ObjectNameField = MemberField<objectName, QString, Merge::Never, Change::Object>;
+using ObjectVisibilityField = MemberField<objectVisible, bool, Merge::Never, Change::Object>;
 using InterpolationField = MemberField<trackInterpolation, InterpolationMethod, Merge::Never, Change::TrackSettings>;
 using SubdivisionField = MemberField<trackSubdivision, SubdivisionSettings, Merge::WithinGesture, Change::TrackSettings>;
 using StrokeField = MemberField<sketchStroke, DirectionStroke, Merge::WithinGesture, Change::Sketch>;

@@ -1,14 +1,11 @@
 #pragma once
 // Takes the applied angular-velocity fit away, as if it had not been applied: the fitted curve goes,
-// and every key the fit moved gets back the pose it had before (sketch.keysBeforeFit), one undo step.
+// and every key the fit moved gets back the pose it had before (sketch.keysBeforeFit), one undo step:
+// the track becomes model::withoutFit of itself (fit_input.h).
 
 #include "model/commands/object_fields.h"
 
 namespace gyre::model {
-
-// The track without its fit: no fitted curve, and each key in sketch.keysBeforeFit restored onto the
-// key still at its time (a key since removed or moved in time stays as it is).
-MotionTrack withFitRemoved(MotionTrack track);
 
 class RemoveFitCommand final : public ChangeValueCommand<KeyframesAndSketchField> {
 public:
