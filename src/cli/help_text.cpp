@@ -145,7 +145,7 @@ const char* const kImport = R"(Usage: gyre-cli import SCENE -o PROJECT.gyre [--a
 Reads any scene file Assimp reads (FBX, OBJ, glTF 2.0, Collada, BVH, DirectX .x, 3DS, ASE, ...) and
 writes it as a Gyre project: one object per node, named as the node, with its mesh, its parent and
 every key of the chosen animations exactly as the file has them (docs/scene-files.md). What the
-project cannot keep (scale animation, skinning, ...) is reported on standard error, and so are the
+project cannot keep (scale animation, morphs, ...) is reported on standard error, and so are the
 settings applied.
 
 A file may hold several animations (takes; gyre-cli info lists them). Without --animation:

@@ -3,6 +3,7 @@
 #include "io/assimp_math.h"
 #include "io/gltf_animation.h"
 #include "io/scene_import_settings.h"
+#include "io/scene_import_skin.h"
 #include "model/value_checks.h"
 
 #include <assimp/Importer.hpp>
@@ -20,6 +21,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -227,37 +229,54 @@ std::vector<model::Keyframe> keyframesOf(const aiNodeAnim& channel, double ticks
 
 // --- meshes -----------------------------------------------------------------------------------------
 
-// The meshes of a node, merged and scaled: positions by s, normals by the inverse transpose s⁻¹.
+// The meshes of a node, merged and scaled: positions by s, normals by the inverse transpose s⁻¹. A
+// merged mesh with bones is skinned once every node has its object (finishSkins).
 class MeshConverter {
 public:
-    explicit MeshConverter(const aiScene& scene) : scene_(scene) {}
+    MeshConverter(const QString& path, const aiScene& scene) : path_(path), scene_(scene) {}
 
-    std::shared_ptr<const model::Mesh> meshOf(const aiNode& node, const Eigen::Vector3d& scale, QStringList& warnings)
+    std::shared_ptr<const model::Mesh> meshOf(const aiNode& node, const Eigen::Vector3d& scale)
     {
         if (node.mNumMeshes == 0)
             return nullptr;
         Key key{std::vector<unsigned>(node.mMeshes, node.mMeshes + node.mNumMeshes), {scale.x(), scale.y(), scale.z()}};
         auto [entry, isNew] = converted_.try_emplace(std::move(key));
         if (isNew)
-            entry->second = merged(node, scale, warnings);
+            entry->second = merged(node, scale);
         return entry->second;
+    }
+
+    // Gives each skinned mesh its skin, `nodes` naming the objects of the joints, and checks it.
+    void finishSkins(const std::map<std::string, JointNode>& nodes, QStringList& warnings)
+    {
+        for (auto& [mesh, skin] : skins_) {
+            skin.finish(nodes, warnings);
+            try {
+                model::checkSkin(mesh->skin, mesh->positions.size());
+            } catch (const std::invalid_argument& problem) {
+                throw InputError(path_, FileError::tr("mesh '%1': %2").arg(skin.name(), QString::fromUtf8(problem.what())).toStdString());
+            }
+        }
     }
 
 private:
     // Nodes that hold the same meshes at the same scale share one Mesh.
     using Key = std::pair<std::vector<unsigned>, std::array<double, 3>>;
 
-    std::shared_ptr<const model::Mesh> merged(const aiNode& node, const Eigen::Vector3d& scale, QStringList& warnings)
+    std::shared_ptr<const model::Mesh> merged(const aiNode& node, const Eigen::Vector3d& scale)
     {
         auto mesh = std::make_shared<model::Mesh>();
+        std::optional<PendingSkin> skin;
         bool allHaveNormals = true;
         for (unsigned i = 0; i < node.mNumMeshes; ++i) {
             const aiMesh& part = *scene_.mMeshes[node.mMeshes[i]];
             if (!(part.mPrimitiveTypes & aiPrimitiveType_TRIANGLE))
                 continue; // points and lines: nothing to shade
-            if (part.mNumBones > 0 && skinnedWarned_.insert(node.mMeshes[i]).second)
-                warnings << FileError::tr("mesh '%1' is skinned; skinning is not imported, so it shows in its bind pose")
-                                .arg(nameOf(part.mName));
+            if (part.mNumBones > 0) {
+                if (!skin)
+                    skin.emplace(mesh, nameOf(part.mName), scale);
+                skin->addBones(part, static_cast<std::uint32_t>(mesh->positions.size()), path_);
+            }
             allHaveNormals = allHaveNormals && part.mNormals;
             append(part, scale, *mesh);
         }
@@ -265,6 +284,8 @@ private:
             mesh->normals.clear();
         if (mesh->indices.empty())
             return nullptr;
+        if (skin)
+            skins_.emplace_back(mesh.get(), std::move(*skin));
         return mesh;
     }
 
@@ -286,9 +307,10 @@ private:
         }
     }
 
+    const QString& path_;
     const aiScene& scene_;
     std::map<Key, std::shared_ptr<const model::Mesh>> converted_;
-    std::set<unsigned> skinnedWarned_;
+    std::vector<std::pair<const model::Mesh*, PendingSkin>> skins_;
 };
 
 // --- nodes ------------------------------------------------------------------------------------------
@@ -307,7 +329,7 @@ public:
     SceneBuilder(const QString& path, const aiScene& scene, const std::vector<const aiAnimation*>& animations,
                  const std::vector<std::size_t>& indices, const GltfAnimations* gltf, SceneImport& result)
         : path_(path)
-        , meshes_(scene)
+        , meshes_(path, scene)
         , gltf_(gltf)
         , result_(result)
     {
@@ -338,6 +360,7 @@ public:
             const auto [id, childScale] = addObject(*next.node, next.parent, next.inheritedScale);
             pushChildren(*next.node, id, childScale);
         }
+        meshes_.finishSkins(nodes_, result_.warnings);
         reportUnusedChannels();
     }
 
@@ -402,7 +425,8 @@ private:
             object.track.keys = {{0.0, pose, true}};
             object.track.interpolation = InterpolationMethod::Slerp;
         }
-        object.mesh = meshes_.meshOf(node, inheritedScale * scale, result_.warnings);
+        object.mesh = meshes_.meshOf(node, inheritedScale * scale);
+        nodes_.try_emplace(std::string(viewOf(node.mName)), JointNode{object.id, inheritedScale * scale});
         // The rule every document's mesh keeps (value_checks.h), said of the node here: the parent
         // applies it again to the reply, where a breach could only read as a malformed reply.
         if (object.mesh) {
@@ -478,6 +502,7 @@ private:
     std::unordered_map<std::string_view, Channel> channels_;
     std::set<std::string_view> used_;
     std::set<model::ObjectId> animated_;
+    std::map<std::string, JointNode> nodes_; // the first node of each name
 };
 
 // The takes the options name, each checked against the file, or the automatic choice.

@@ -1,10 +1,12 @@
 #include "io/scene_wire.h"
 
+#include "model/skinning.h"
 #include "model/value_checks.h"
 
 #include <QtEndian>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -98,11 +100,22 @@ void writeVectors(Writer& out, const std::vector<Eigen::Vector3f>& vectors)
     out.block(vectors.empty() ? nullptr : vectors.front().data(), vectors.size() * 3);
 }
 
+// A skin: its joints' ids, their inverse binds (16 numbers each, column-major), then four joint
+// indices and four weights per position; all four blocks empty for a rigid mesh.
+void writeSkin(Writer& out, const model::Skin& skin)
+{
+    out.block(std::vector<quint64>(skin.joints.begin(), skin.joints.end()));
+    out.block(skin.inverseBinds.empty() ? nullptr : skin.inverseBinds.front().data(), skin.inverseBinds.size() * 16);
+    out.block(skin.vertexJoints.empty() ? nullptr : skin.vertexJoints.front().data(), skin.vertexJoints.size() * 4);
+    out.block(skin.vertexWeights.empty() ? nullptr : skin.vertexWeights.front().data(), skin.vertexWeights.size() * 4);
+}
+
 void writeMesh(Writer& out, const model::Mesh& mesh)
 {
     writeVectors(out, mesh.positions);
     writeVectors(out, mesh.normals);
     out.block(mesh.indices);
+    writeSkin(out, mesh.skin);
 }
 
 void writeSketch(Writer& out, const model::SketchState& sketch)
@@ -350,21 +363,35 @@ auto checked(const std::string& what, Check check) -> decltype(check())
     }
 }
 
-std::vector<Eigen::Vector3f> vectorsIn(Reader& in, const char* what)
+// `numbers` copied into `items` of `N` numbers each (the block was read in whole items).
+template <class Item, std::size_t N, class Number>
+std::vector<Item> itemsOf(const std::vector<Number>& numbers)
 {
-    const std::vector<float> numbers = in.block<float>(what, 3);
-    std::vector<Eigen::Vector3f> vectors(numbers.size() / 3);
+    static_assert(sizeof(Item) == N * sizeof(Number));
+    std::vector<Item> items(numbers.size() / N);
     if (!numbers.empty()) // memcpy may not be given the null data() of an empty vector
-        std::memcpy(static_cast<void*>(vectors.data()), numbers.data(), numbers.size() * sizeof(float));
-    return vectors;
+        std::memcpy(static_cast<void*>(items.data()), numbers.data(), numbers.size() * sizeof(Number));
+    return items;
+}
+
+model::Skin skinIn(Reader& in)
+{
+    model::Skin skin;
+    const std::vector<quint64> joints = in.block<quint64>("skin joints");
+    skin.joints.assign(joints.begin(), joints.end());
+    skin.inverseBinds = itemsOf<Eigen::Matrix4f, 16>(in.block<float>("skin inverse binds", 16));
+    skin.vertexJoints = itemsOf<std::array<std::uint16_t, 4>, 4>(in.block<quint16>("skin vertex joints", 4));
+    skin.vertexWeights = itemsOf<Eigen::Vector4f, 4>(in.block<float>("skin vertex weights", 4));
+    return skin;
 }
 
 std::shared_ptr<const model::Mesh> meshIn(Reader& in)
 {
     auto mesh = std::make_shared<model::Mesh>();
-    mesh->positions = vectorsIn(in, "mesh positions");
-    mesh->normals = vectorsIn(in, "mesh normals");
+    mesh->positions = itemsOf<Eigen::Vector3f, 3>(in.block<float>("mesh positions", 3));
+    mesh->normals = itemsOf<Eigen::Vector3f, 3>(in.block<float>("mesh normals", 3));
     mesh->indices = in.block<std::uint32_t>("mesh indices");
+    mesh->skin = skinIn(in);
     checked("mesh", [&] { model::checkMesh(*mesh); });
     return mesh;
 }
@@ -441,8 +468,8 @@ model::Scene sceneIn(Reader& in)
         if (!(model::finiteNumber(scene.endTime) >= model::finiteNumber(scene.startTime)))
             throw std::invalid_argument("the end time comes before the start time");
     });
-    // A mesh is at least its three counts.
-    std::vector<std::shared_ptr<const model::Mesh>> meshes(in.count(24, "meshes"));
+    // A mesh is at least its seven counts.
+    std::vector<std::shared_ptr<const model::Mesh>> meshes(in.count(56, "meshes"));
     for (auto& mesh : meshes)
         mesh = meshIn(in);
     // Ids are unique and nonzero; a parent is an object that came before.
@@ -467,6 +494,11 @@ model::Scene sceneIn(Reader& in)
         object.track = trackIn(in, what);
         scene.nextObjectId = std::max(scene.nextObjectId, object.id + 1);
     }
+    // A skin's joints are objects of the scene, anywhere in it.
+    for (const auto& mesh : meshes)
+        checked("mesh skin", [&] {
+            model::skinWithJoints(mesh->skin, [&](model::ObjectId joint) { return seen.contains(joint) ? joint : model::kNoObject; });
+        });
     return scene;
 }
 

@@ -16,6 +16,8 @@ namespace {
 constexpr qint64 kQuaternionBytes = 4 * sizeof(double);
 constexpr qint64 kPositionBytes = 3 * sizeof(double);
 constexpr qint64 kVectorBytes = 3 * sizeof(float);
+constexpr std::size_t kMatrixBytes = 16 * sizeof(float);
+constexpr std::size_t kSkinVertexBytes = 4 * sizeof(std::uint16_t) + 4 * sizeof(float);
 // A block is read in pieces of at most this size, so that a length the device does not deliver
 // costs at most one piece beyond the bytes that came.
 constexpr qint64 kReadPieceBytes = qint64{1} << 20;
@@ -201,7 +203,10 @@ std::vector<HermiteControlPoint> controlPointsFromBlock(const QByteArray& block,
 
 qint64 MeshCounts::blockBytes() const
 {
-    return static_cast<qint64>(positions + normals) * kVectorBytes + static_cast<qint64>(indices * sizeof(std::uint32_t));
+    const qint64 skinBytes = skinJoints.empty() ? 0
+                                                : static_cast<qint64>(skinJoints.size() * kMatrixBytes + positions * kSkinVertexBytes);
+    return static_cast<qint64>(positions + normals) * kVectorBytes + static_cast<qint64>(indices * sizeof(std::uint32_t)) +
+           skinBytes;
 }
 
 QByteArray meshBlock(const Mesh& mesh)
@@ -210,6 +215,12 @@ QByteArray meshBlock(const Mesh& mesh)
     appendValues(block, mesh.positions.empty() ? nullptr : mesh.positions.front().data(), mesh.positions.size() * 3);
     appendValues(block, mesh.normals.empty() ? nullptr : mesh.normals.front().data(), mesh.normals.size() * 3);
     appendValues(block, mesh.indices.data(), mesh.indices.size());
+    const Skin& skin = mesh.skin;
+    if (!skin.empty()) {
+        appendValues(block, skin.inverseBinds.front().data(), skin.inverseBinds.size() * 16);
+        appendValues(block, skin.vertexJoints.empty() ? nullptr : skin.vertexJoints.front().data(), skin.vertexJoints.size() * 4);
+        appendValues(block, skin.vertexWeights.empty() ? nullptr : skin.vertexWeights.front().data(), skin.vertexWeights.size() * 4);
+    }
     return block;
 }
 
@@ -223,6 +234,21 @@ std::shared_ptr<const Mesh> meshFromBlock(const QByteArray& block, const MeshCou
     if (counts.indices > 0)
         qFromLittleEndian<std::uint32_t>(bytes + (counts.positions + counts.normals) * kVectorBytes,
                                          static_cast<qsizetype>(counts.indices), mesh->indices.data());
+    if (!counts.skinJoints.empty()) {
+        Skin& skin = mesh->skin;
+        const char* at = bytes + (counts.positions + counts.normals) * kVectorBytes + counts.indices * sizeof(std::uint32_t);
+        skin.joints = counts.skinJoints;
+        skin.inverseBinds.resize(skin.joints.size());
+        qFromLittleEndian<float>(at, static_cast<qsizetype>(skin.joints.size() * 16), skin.inverseBinds.front().data());
+        at += skin.joints.size() * kMatrixBytes;
+        skin.vertexJoints.resize(counts.positions);
+        skin.vertexWeights.resize(counts.positions);
+        if (counts.positions > 0) {
+            qFromLittleEndian<std::uint16_t>(at, static_cast<qsizetype>(counts.positions * 4), skin.vertexJoints.front().data());
+            at += counts.positions * 4 * sizeof(std::uint16_t);
+            qFromLittleEndian<float>(at, static_cast<qsizetype>(counts.positions * 4), skin.vertexWeights.front().data());
+        }
+    }
     field.checked([&] { checkMesh(*mesh); });
     return mesh;
 }

@@ -59,11 +59,14 @@ inline constexpr qint64 kControlPointBytes = 9 * sizeof(double);
 QByteArray controlPointBlock(const std::vector<HermiteControlPoint>& points);
 std::vector<HermiteControlPoint> controlPointsFromBlock(const QByteArray& block, const JsonField& field);
 
-// A mesh: positions and normals as float32 x, y, z, then indices as uint32.
+// A mesh: positions and normals as float32 x, y, z, then indices as uint32; for a skinned mesh then
+// its joints' inverse bind matrices (16 float32 each, column-major), four joint indices per position
+// as uint16, and four weights per position as float32. The header lists the skin's joints by id.
 struct MeshCounts {
     std::size_t positions = 0;
     std::size_t normals = 0;
     std::size_t indices = 0;
+    std::vector<ObjectId> skinJoints; // none: a rigid mesh
     qint64 blockBytes() const;
 };
 QByteArray meshBlock(const Mesh& mesh);

@@ -161,9 +161,16 @@ ProjectLayout::ProjectLayout(const Scene& scene)
     for (const SceneObject& object : scene.objects)
         if (object.mesh && meshIndex.emplace(object.mesh.get(), meshes.size()).second) {
             const Mesh& mesh = *object.mesh;
-            meshes.append(QJsonObject{{"positions", static_cast<qint64>(mesh.positions.size())},
-                                      {"normals", static_cast<qint64>(mesh.normals.size())},
-                                      {"indices", static_cast<qint64>(mesh.indices.size())}});
+            QJsonObject counts{{"positions", static_cast<qint64>(mesh.positions.size())},
+                               {"normals", static_cast<qint64>(mesh.normals.size())},
+                               {"indices", static_cast<qint64>(mesh.indices.size())}};
+            if (!mesh.skin.empty()) {
+                QJsonArray joints;
+                for (const ObjectId joint : mesh.skin.joints)
+                    joints.append(idJson(joint));
+                counts.insert("skin", QJsonObject{{"joints", joints}});
+            }
+            meshes.append(counts);
             blocks.push_back([&mesh] { return meshBlock(mesh); });
         }
     QJsonArray objects;
@@ -334,7 +341,14 @@ std::shared_ptr<const Mesh> meshIn(const JsonField& field, BlockReading* binary)
         const auto count = [&](const char* key) {
             return static_cast<std::size_t>(field.member(key).integer(0, kMaxProjectBytes));
         };
-        const MeshCounts counts{count("positions"), count("normals"), count("indices")};
+        MeshCounts counts{count("positions"), count("normals"), count("indices"), {}};
+        if (field.has("skin")) {
+            const JsonField joints = field.member("skin").member("joints");
+            for (const JsonField& joint : joints.elements())
+                counts.skinJoints.push_back(static_cast<ObjectId>(joint.integer(1, kMaxId)));
+            if (counts.skinJoints.empty() || counts.skinJoints.size() > kMaxSkinJoints)
+                joints.fail(FileError::tr("a skin has 1 to %1 joints").arg(kMaxSkinJoints));
+        }
         return meshFromBlock(binary->blocks.next(counts.blockBytes(), field), counts, field);
     }
     auto mesh = std::make_shared<Mesh>();
@@ -588,7 +602,8 @@ Scene sceneIn(const JsonField& root, int version, BlockReading* binary)
     root.member("endTime").checked([&] { checkTimeRange(scene.fps, scene.startTime, scene.endTime); });
     scene.currentTime = numberIn(root.member("currentTime"), timeValue);
     std::vector<std::shared_ptr<const Mesh>> meshes;
-    for (const JsonField& mesh : root.member("meshes").elements())
+    const std::vector<JsonField> meshFields = root.member("meshes").elements();
+    for (const JsonField& mesh : meshFields)
         meshes.push_back(meshIn(mesh, binary));
     if (binary)
         for (const JsonField& list : root.member("times").elements()) {
@@ -603,6 +618,10 @@ Scene sceneIn(const JsonField& root, int version, BlockReading* binary)
     checkHierarchy(objects, scene.objects);
     for (const SceneObject& object : scene.objects)
         scene.nextObjectId = std::max(scene.nextObjectId, object.id + 1);
+    for (std::size_t i = 0; i < meshes.size(); ++i)
+        for (const ObjectId joint : meshes[i]->skin.joints)
+            if (std::none_of(scene.objects.begin(), scene.objects.end(), [&](const SceneObject& object) { return object.id == joint; }))
+                meshFields[i].member("skin").member("joints").fail(FileError::tr("no object has id %1").arg(joint));
     return scene;
 }
 

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <QString>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -28,11 +29,27 @@ struct Keyframe {
     bool constrained = true;  // kept exactly by the angular-velocity fit unless freed
 };
 
+// How a skinned mesh follows its joints (linear blend skinning, model/skinning.h): each position
+// moves with up to four joints, weighted. The joints are objects of the same scene.
+struct Skin {
+    std::vector<ObjectId> joints;
+    // One per joint: from the mesh's frame to the joint's frame in the bind pose, the pose in which
+    // the mesh was modelled (Assimp's offset matrix, glTF's inverse bind matrix), in scene units.
+    std::vector<Eigen::Matrix4f> inverseBinds;
+    // One each per position: indices into `joints`, and their weights, each ≥ 0, summing to 1, or to
+    // less where the rest of the position follows the mesh's own object (0 for a position no joint moves).
+    std::vector<std::array<std::uint16_t, 4>> vertexJoints;
+    std::vector<Eigen::Vector4f> vertexWeights;
+
+    bool empty() const { return joints.empty(); }
+};
+
 // A triangle mesh in the object's local frame, for display.
 struct Mesh {
     std::vector<Eigen::Vector3f> positions;
     std::vector<Eigen::Vector3f> normals;  // one per position, or empty
     std::vector<std::uint32_t> indices;    // three per triangle
+    Skin skin;                             // empty: a rigid mesh
 };
 
 // One direction stroke the artist drew on the unit sphere: unit vectors, optionally timed. Without

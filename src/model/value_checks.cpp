@@ -4,6 +4,7 @@
 
 #include <QLocale>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -270,6 +271,38 @@ void checkMesh(const Mesh& mesh)
     for (std::uint32_t index : mesh.indices)
         if (index >= mesh.positions.size())
             refuse(FileError::tr("mesh index %1 is beyond its %2 positions").arg(index).arg(mesh.positions.size()));
+    if (!mesh.skin.empty())
+        checkSkin(mesh.skin, mesh.positions.size());
+}
+
+void checkSkin(const Skin& skin, std::size_t positions)
+{
+    const std::size_t joints = skin.joints.size();
+    if (joints > kMaxSkinJoints)
+        refuse(FileError::tr("the skin has %1 joints, more than the %2 a mesh may follow").arg(joints).arg(kMaxSkinJoints));
+    for (std::size_t j = 0; j < joints; ++j)
+        if (skin.joints[j] == kNoObject || std::count(skin.joints.begin(), skin.joints.begin() + j, skin.joints[j]) > 0)
+            refuse(FileError::tr("skin joint %1 is 0 or named twice").arg(j));
+    if (skin.inverseBinds.size() != joints)
+        refuse(FileError::tr("the skin has %1 inverse bind matrices for %2 joints").arg(skin.inverseBinds.size()).arg(joints));
+    for (std::size_t j = 0; j < joints; ++j) {
+        const Eigen::Matrix4f& matrix = skin.inverseBinds[j];
+        if (!matrix.allFinite() || matrix.row(3) != Eigen::RowVector4f(0, 0, 0, 1))
+            refuse(FileError::tr("the inverse bind matrix of skin joint %1 is not a finite affine transform").arg(j));
+    }
+    if (skin.vertexJoints.size() != positions || skin.vertexWeights.size() != positions)
+        refuse(FileError::tr("the skin has %1 joint sets and %2 weight sets for %3 positions")
+                   .arg(skin.vertexJoints.size())
+                   .arg(skin.vertexWeights.size())
+                   .arg(positions));
+    for (std::size_t v = 0; v < positions; ++v) {
+        for (const std::uint16_t joint : skin.vertexJoints[v])
+            if (joint >= joints)
+                refuse(FileError::tr("skin vertex %1 names joint %2 of %3").arg(v).arg(joint).arg(joints));
+        const Eigen::Vector4f& weights = skin.vertexWeights[v];
+        if (!weights.allFinite() || (weights.array() < 0.0F).any() || weights.sum() > 1.0F + kSkinWeightTolerance)
+            refuse(FileError::tr("the weights of skin vertex %1 are not finite, ≥ 0 and at most 1 in sum").arg(v));
+    }
 }
 
 } // namespace gyre::model

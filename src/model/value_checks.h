@@ -97,8 +97,18 @@ void checkTrack(MotionTrack& track);
 double frameRate(double fps);
 // A frame rate, start and end times (timeValues, start before end), and at most kMaxFrames frames.
 void checkTimeRange(double fps, double startTime, double endTime);
+// The most joints a skin may have: the joint matrices a vertex shader holds in one 16 KiB uniform
+// block, the size every OpenGL 3.3 driver gives (256 4×4 float matrices). A 31-joint capture uses 31,
+// characters with fingers about 70.
+inline constexpr std::size_t kMaxSkinJoints = 256;
+
 // Finite positions and normals, one normal per position or none, and whole triangles of indices
-// that name positions.
+// that name positions; a skin that is empty or checkSkin's.
 void checkMesh(const Mesh& mesh);
+// At most kMaxSkinJoints distinct nonzero joints, a finite inverse bind each whose last row is
+// (0, 0, 0, 1), and for each of `positions` four joint indices below the joint count and four
+// finite weights ≥ 0 whose sum is at most 1 (within kSkinWeightTolerance).
+inline constexpr float kSkinWeightTolerance = 1e-3F;
+void checkSkin(const Skin& skin, std::size_t positions);
 
 } // namespace gyre::model

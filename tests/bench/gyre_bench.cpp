@@ -18,6 +18,8 @@
 #include "io/scene_import.h"
 #include "model/project_file.h"
 #include "model/scene.h"
+#include "model/scene_motion.h"
+#include "model/skinning.h"
 #include "io/scene_wire.h"
 #include "io/scene_worker.h"
 #include "built_scene_worker.h"
@@ -458,6 +460,36 @@ void BM_OpenProject(benchmark::State& state)
         benchmark::DoNotOptimize(gyre::model::readProject(path));
 }
 BENCHMARK(BM_OpenProject)->Arg(6000)->Unit(benchmark::kMillisecond);
+
+// The per-frame work of a capture-sized skin before its upload: the 31 joint matrices of a chain,
+// each joint's world pose composed up the chain from the shared motion (model/skinning.h).
+void BM_JointMatrices31(benchmark::State& state)
+{
+    constexpr int kJoints = 31;
+    gyre::model::Scene scene;
+    gyre::model::Skin skin;
+    for (int j = 0; j < kJoints; ++j) {
+        const auto id = static_cast<gyre::model::ObjectId>(j + 1);
+        gyre::model::SceneObject joint{id, QStringLiteral("Joint"), nullptr, j == 0 ? gyre::model::kNoObject : id - 1, {}, true};
+        // Two keys, so that evaluating interpolates as playback does.
+        joint.track.keys = {gyre::model::Keyframe{0.0, gyre::Pose{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.1, 0, 0)}, true},
+                            gyre::model::Keyframe{1.0, gyre::Pose{Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ())),
+                                                                  Eigen::Vector3d(0.1, 0, 0)}, true}};
+        scene.objects.push_back(joint);
+        skin.joints.push_back(id);
+        skin.inverseBinds.push_back(Eigen::Matrix4f::Identity());
+    }
+    const gyre::model::SceneMotion motion(scene, [](const gyre::model::SceneObject& object) {
+        return std::make_shared<const gyre::model::SharedTrackMotion>(object.track);
+    });
+    motion.build();
+    double time = 0.0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(gyre::model::jointMatrices(skin, 1, motion, time));
+        time = time < 1.0 ? time + 1.0 / 60.0 : 0.0;
+    }
+}
+BENCHMARK(BM_JointMatrices31)->Unit(benchmark::kMicrosecond);
 
 void BM_ExportGlbInWorker(benchmark::State& state)
 {

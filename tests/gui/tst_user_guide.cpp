@@ -19,6 +19,9 @@
 #include "app/viewport/viewport.h"
 #include "gui_test_support.h"
 #include "inspected_window.h"
+#include "model/project_file.h"
+#include "model/skinning.h"
+#include "skinned_tube.h"
 
 #include <QAbstractButton>
 #include <QAction>
@@ -527,6 +530,40 @@ private slots:
         QCOMPARE(window.selection().object(), foreArm);
         guide.settle();
         guide.picture(QStringLiteral("guide-bones.png"));
+    }
+
+    // A tail of six joints curled a little at each, its skinned tube following them: X-ray shading
+    // shows the bones inside, the fourth joint selected.
+    void showsASkinnedMeshFollowingItsJoints()
+    {
+        GuideWindow guide;
+        app::MainWindow& window = guide.window();
+        QTemporaryDir folder;
+        const QString path = folder.filePath(QStringLiteral("tail.gyre"));
+        model::writeProject(path, test::skinnedTube(6, 120, 0.5, 0.4));
+        QVERIFY(window.openProject(path));
+        window.playback().pause();
+        auto* viewport = guide.child<app::Viewport>();
+        QVERIFY(QTest::qWaitFor([&] { viewport->update(); return viewport->skeleton().bones().size() == 6; }, 30'000));
+        guide.child<QAction>("actionViewTop")->trigger();
+        guide.child<QAction>("actionXray")->trigger();
+        guide.child<QAction>("actionFrameAll")->trigger();
+        window.selection().selectObject(4);
+        guide.settle();
+        // The tube's end ring, modelled about the last joint's place, is about it where the curl takes it.
+        const model::Scene& scene = window.document().scene();
+        model::Document& document = window.document();
+        const model::SceneMotion motion(scene, [&document](const model::SceneObject& object) { return document.motion(object.id); });
+        const model::SceneObject& tube = scene.objects.back();
+        const std::vector<Eigen::Vector3f> skinned =
+            model::skinnedPositions(*tube.mesh, model::jointMatrices(tube.mesh->skin, tube.id, motion, 0.0));
+        Eigen::Vector3d endRing = Eigen::Vector3d::Zero();
+        for (std::size_t v = skinned.size() - 64; v < skinned.size(); ++v)
+            endRing += skinned[v].cast<double>() / 64.0;
+        const Eigen::Vector3d lastJoint = motion.worldPose(6, 0.0).position;
+        QVERIFY((endRing - lastJoint).norm() < 1e-5);
+        QVERIFY(std::abs(lastJoint.y()) > 0.5); // curled well away from the straight line
+        guide.picture(QStringLiteral("guide-skinning.png"));
     }
 
 private:

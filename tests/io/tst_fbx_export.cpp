@@ -208,7 +208,7 @@ model::Scene awkwardScene()
     const model::SceneObject root =
         spinner(scene, "Würfel Ä 1", model::kNoObject, {0, 0, 1}, 170.0 * kDegree, 1.0 / 30.0, 61);
     model::SceneObject middle = spinner(scene, "twin", root.id, {1, 1, 0}, 100.0 * kDegree, 0.25, 9);
-    middle.mesh = std::make_shared<model::Mesh>(model::Mesh{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {}, {0, 1, 2}});
+    middle.mesh = std::make_shared<model::Mesh>(model::Mesh{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {}, {0, 1, 2}, {}});
     const model::SceneObject leaf = spinner(scene, "twin", middle.id, {0.3, -1, 0.6}, 150.0 * kDegree, 0.5, 5);
     const model::SceneObject still = spinner(scene, "still one", model::kNoObject, {1, 0, 0}, 0.0, 1.0, 1);
     scene.objects = {root, middle, leaf, still};

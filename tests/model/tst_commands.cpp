@@ -139,6 +139,7 @@ private slots:
     void removeFitRestoresWhatEveryFitMoved();
     void importRemapsIdsAndKeepsSharedMeshes();
     void importRefusesBadBatches();
+    void importGivesSkinsTheirJointsSceneIds();
     void renameObject();
     void reparentKeepsParentsFirst();
     void reparentRefusesCycles();
@@ -424,7 +425,7 @@ void TstCommands::importRemapsIdsAndKeepsSharedMeshes()
     Document document;
     import(document, {objectWithKeys(7, {0})});
     std::vector<SceneObject> batch{objectWithKeys(10, {0}), objectWithKeys(3, {0}, 10), objectWithKeys(5, {0}, 3)};
-    const auto mesh = std::make_shared<Mesh>(Mesh{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {}, {0, 1, 2}});
+    const auto mesh = std::make_shared<Mesh>(Mesh{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {}, {0, 1, 2}, {}});
     batch[0].mesh = mesh;
     batch[2].mesh = mesh;
     const std::vector<ObjectId> ids = import(document, batch);
@@ -451,9 +452,38 @@ void TstCommands::importRefusesBadBatches()
     QVERIFY(refuses([&] { importing({objectWithKeys(1, {0}, 1)}); }, "its parent 1 does not come before it"));
     QVERIFY(refuses([&] { importing({objectWithKeys(1, {1, 0})}); }, "imported object 0: time 0 does not come after"));
     SceneObject badMesh = objectWithKeys(1, {0});
-    badMesh.mesh = std::make_shared<Mesh>(Mesh{{{0, 0, 0}}, {}, {0, 0, 1}});
+    badMesh.mesh = std::make_shared<Mesh>(Mesh{{{0, 0, 0}}, {}, {0, 0, 1}, {}});
     QVERIFY(refuses([&] { importing({badMesh}); }, "mesh index 1 is beyond its 1 positions"));
     QCOMPARE(document.undoStack().count(), 0);
+}
+
+void TstCommands::importGivesSkinsTheirJointsSceneIds()
+{
+    Document document;
+    import(document, {objectWithKeys(1, {0}), objectWithKeys(2, {0})}); // ids 1 and 2 are taken
+    // A batch whose mesh comes before its joints: batch ids 10 (the mesh), 20 and 30 (the joints).
+    auto mesh = std::make_shared<Mesh>(Mesh{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {}, {0, 1, 2}, {}});
+    mesh->skin.joints = {30, 20};
+    mesh->skin.inverseBinds.assign(2, Eigen::Matrix4f::Identity());
+    mesh->skin.vertexJoints.assign(3, {0, 1, 0, 0});
+    mesh->skin.vertexWeights.assign(3, Eigen::Vector4f(0.5F, 0.5F, 0.0F, 0.0F));
+    SceneObject held = objectWithKeys(10, {0});
+    held.mesh = mesh;
+    SceneObject twin = objectWithKeys(40, {0});
+    twin.mesh = mesh;
+    const std::vector<ObjectId> ids = import(document, {held, objectWithKeys(20, {0}), objectWithKeys(30, {0}, 20), twin});
+    const std::shared_ptr<const Mesh>& placed = document.object(ids[0])->mesh;
+    QCOMPARE(placed->skin.joints, (std::vector<ObjectId>{ids[2], ids[1]}));
+    QCOMPARE(placed->skin.vertexWeights, mesh->skin.vertexWeights);
+    QCOMPARE(document.object(ids[3])->mesh, placed); // the shared mesh stays shared
+    QCOMPARE(mesh->skin.joints, (std::vector<ObjectId>{30, 20})); // the batch's own mesh is not changed
+
+    // A joint that is no object of the batch is refused before any id is taken.
+    const ObjectId nextId = document.scene().nextObjectId;
+    mesh->skin.joints = {30, 50};
+    QVERIFY(refuses([&] { ImportObjectsCommand(document, {held, objectWithKeys(20, {0}), objectWithKeys(30, {0}, 20)}); },
+                    "imported object 0: the skin's joint 50 is not an object of the scene"));
+    QCOMPARE(document.scene().nextObjectId, nextId);
 }
 
 void TstCommands::renameObject()

@@ -36,9 +36,10 @@ std::optional<double> intersectMesh(const Ray& ray, const MeshPlacement& placeme
     const Pose toLocal = placement.pose.inverse();
     const Ray local{toLocal.apply(ray.origin) / placement.scale, toLocal.orientation * ray.direction};
     const model::Mesh& mesh = *placement.mesh;
+    const std::vector<Eigen::Vector3f>& positions = placement.positions ? *placement.positions : mesh.positions;
     std::optional<double> nearest;
     for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-        const auto corner = [&](std::size_t k) { return mesh.positions[mesh.indices[i + k]].cast<double>(); };
+        const auto corner = [&](std::size_t k) { return positions[mesh.indices[i + k]].cast<double>(); };
         const std::optional<double> t = intersectTriangle(local, corner(0), corner(1), corner(2));
         if (t && (!nearest || *t < *nearest))
             nearest = t;

@@ -12,11 +12,13 @@
 
 namespace gyre::app {
 
-// A mesh drawn at `pose`, scaled by `scale` about its own origin: x ↦ pose.apply(scale·x).
+// A mesh drawn at `pose`, scaled by `scale` about its own origin: x ↦ pose.apply(scale·x). A skinned
+// mesh is hit where it is drawn: `positions` are then its positions skinned (model::skinnedPositions).
 struct MeshPlacement {
     const model::Mesh* mesh = nullptr;
     Pose pose;
     double scale = 1.0;
+    const std::vector<Eigen::Vector3f>* positions = nullptr; // the mesh's own when null
 };
 
 // The ray parameter t of the hit on triangle (a, b, c), either side (Möller–Trumbore), or nullopt.

@@ -3,6 +3,8 @@
 #include "app/viewport/default_shape.h"
 #include "app/viewport/mesh_winding.h"
 #include "app/viewport/pose_matrix.h"
+#include "model/skinning.h"
+#include "model/value_checks.h"
 
 #include <QMatrix4x4>
 #include <QOpenGLContext>
@@ -11,6 +13,7 @@
 #include <QVector4D>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -18,10 +21,14 @@ namespace gyre::app {
 
 namespace {
 
-// Mesh shader attributes: position, normal, then the instance's model matrix as four columns.
+// Mesh shader attributes: position, normal, the instance's model matrix as four columns, then a
+// skinned mesh's joint indices and weights.
 constexpr GLuint kPositionAttribute = 0;
 constexpr GLuint kNormalAttribute = 1;
 constexpr GLuint kInstanceAttribute = 2;
+constexpr GLuint kJointsAttribute = 6;
+constexpr GLuint kWeightsAttribute = 7;
+constexpr GLuint kJointMatricesBinding = 0; // the uniform block's binding point
 constexpr int kFloatsPerMatrix = 16;
 constexpr float kHandlePointSize = 11.0F;
 
@@ -79,6 +86,13 @@ void SceneRenderer::initialize()
     };
     meshProgram_ = buildProgram(QStringLiteral("mesh"));
     lineProgram_ = buildProgram(QStringLiteral("line"));
+    if (const GLuint block = glGetUniformBlockIndex(meshProgram_->programId(), "JointMatrices"); block != GL_INVALID_INDEX)
+        glUniformBlockBinding(meshProgram_->programId(), block, kJointMatricesBinding);
+    glGenBuffers(1, &jointMatrices_);
+    glBindBuffer(GL_UNIFORM_BUFFER, jointMatrices_);
+    glBufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(model::kMaxSkinJoints * kFloatsPerMatrix * sizeof(float)),
+                 nullptr, GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
 
     identityInstance_.create();
     identityInstance_.bind();
@@ -116,6 +130,8 @@ void SceneRenderer::release()
     lineArray_.reset();
     for (QOpenGLBuffer* buffer : {&identityInstance_, &trailInstances_, &controlPoseInstances_, &lineBuffer_})
         buffer->destroy();
+    glDeleteBuffers(1, &jointMatrices_);
+    jointMatrices_ = 0;
     meshProgram_.reset();
     lineProgram_.reset();
 }
@@ -169,6 +185,28 @@ SceneRenderer::GpuMesh& SceneRenderer::gpuMesh(const model::Mesh& mesh, const st
     for (GLuint column = 0; column < 4; ++column) {
         glEnableVertexAttribArray(kInstanceAttribute + column);
         glVertexAttribDivisor(kInstanceAttribute + column, 1);
+    }
+    if (const model::Skin& skin = mesh.skin; !skin.empty()) {
+        // Per vertex: four uint16 joint indices, then four float weights.
+        struct SkinVertex {
+            std::array<std::uint16_t, 4> joints;
+            std::array<float, 4> weights;
+        };
+        std::vector<SkinVertex> skinVertices(mesh.positions.size());
+        for (std::size_t i = 0; i < skinVertices.size(); ++i) {
+            skinVertices[i].joints = skin.vertexJoints[i];
+            Eigen::Map<Eigen::Vector4f>(skinVertices[i].weights.data()) = skin.vertexWeights[i];
+        }
+        gpu.skinVertices.create();
+        gpu.skinVertices.bind();
+        gpu.skinVertices.allocate(skinVertices.data(), static_cast<int>(skinVertices.size() * sizeof(SkinVertex)));
+        glEnableVertexAttribArray(kJointsAttribute);
+        glVertexAttribIPointer(kJointsAttribute, 4, GL_UNSIGNED_SHORT, sizeof(SkinVertex),
+                               reinterpret_cast<const void*>(offsetof(SkinVertex, joints)));
+        glEnableVertexAttribArray(kWeightsAttribute);
+        glVertexAttribPointer(kWeightsAttribute, 4, GL_FLOAT, GL_FALSE, sizeof(SkinVertex),
+                              reinterpret_cast<const void*>(offsetof(SkinVertex, weights)));
+        gpu.skinVertices.release();
     }
     gpu.indices.create();
     gpu.indices.bind();
@@ -243,6 +281,15 @@ void SceneRenderer::setMeshColors(const Rgba& start, const Rgba& end)
     meshProgram_->setUniformValue("uColorEnd", toVector(end));
 }
 
+void SceneRenderer::uploadJointMatrices(const model::SceneObject& object, const FrameMeshes& meshes)
+{
+    const std::vector<Eigen::Matrix4f> joints =
+        model::jointMatrices(object.mesh->skin, object.id, *meshes.motion, meshes.scene->currentTime);
+    glBindBuffer(GL_UNIFORM_BUFFER, jointMatrices_);
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, static_cast<GLsizeiptr>(joints.size() * sizeof(Eigen::Matrix4f)), joints.data());
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
+}
+
 void SceneRenderer::drawObjects(const FrameMeshes& meshes)
 {
     const model::Scene& scene = *meshes.scene;
@@ -269,7 +316,13 @@ void SceneRenderer::drawObjects(const FrameMeshes& meshes)
             continue;
         setColor(&object == meshes.selected);
         meshProgram_->setUniformValue("uFrame", toQMatrix(poseMatrix(meshes.motion->worldPose(object.id, scene.currentTime))));
+        // Skinned in the shader here only: the trail, control poses and ghost show the bind pose.
+        const bool skinned = object.mesh && !object.mesh->skin.empty();
+        if (skinned)
+            uploadJointMatrices(object, meshes);
+        meshProgram_->setUniformValue("uSkinned", skinned);
         draw(gpuMesh(object));
+        meshProgram_->setUniformValue("uSkinned", false);
     }
     GpuMesh& bone = gpuMesh(boneMesh(), nullptr);
     for (const Bone& each : meshes.skeleton->bones()) {
@@ -314,6 +367,8 @@ void SceneRenderer::drawFrame(const Eigen::Matrix4d& viewProjectionMatrix, const
     meshProgram_->setUniformValue("uViewProjection", viewProjection);
     meshProgram_->setUniformValue("uEye", QVector3D(eye.x(), eye.y(), eye.z()));
     meshProgram_->setUniformValue("uHighlightInstance", -1);
+    meshProgram_->setUniformValue("uSkinned", false);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kJointMatricesBinding, jointMatrices_);
     drawObjects(meshes);
 
     const QMatrix4x4 selectedFrame = toQMatrix(poseMatrix(meshes.selectedParentFrame));

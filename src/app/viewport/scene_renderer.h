@@ -80,8 +80,9 @@ private:
         std::unique_ptr<QOpenGLVertexArrayObject> vertexArray;
         QOpenGLBuffer vertices{QOpenGLBuffer::VertexBuffer};
         QOpenGLBuffer indices{QOpenGLBuffer::IndexBuffer};
+        QOpenGLBuffer skinVertices{QOpenGLBuffer::VertexBuffer}; // joint indices and weights, for a skinned mesh
         int indexCount = 0;
-        float radius = 1.0F; // of the bounding sphere about the local origin
+        float radius = 1.0F; // of the bounding sphere about the local origin, in the bind pose
         std::optional<GLenum> frontFace; // GL_CCW or GL_CW for a closed mesh, whose back faces are culled
     };
 
@@ -89,6 +90,8 @@ private:
     // owner: the shared pointer that holds `mesh`, or null for a shape built once (default_shape.h).
     GpuMesh& gpuMesh(const model::Mesh& mesh, const std::shared_ptr<const model::Mesh>& owner);
     void drawObjects(const FrameMeshes& meshes);
+    // Uploads the joint matrices of the skinned `object` (model/skinning.h) at the scene's time.
+    void uploadJointMatrices(const model::SceneObject& object, const FrameMeshes& meshes);
     void dropUnusedMeshes();
     void drawMesh(GpuMesh& mesh, QOpenGLBuffer& instances, int instanceCount);
     void drawLines(GLenum mode, LineRange range);
@@ -106,6 +109,9 @@ private:
     QOpenGLBuffer trailInstances_{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer controlPoseInstances_{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer lineBuffer_{QOpenGLBuffer::VertexBuffer};
+    // The buffer of the mesh shader's uniform block of joint matrices, model::kMaxSkinJoints of them
+    // (QOpenGLBuffer has no uniform buffer type).
+    GLuint jointMatrices_ = 0;
     std::unique_ptr<QOpenGLVertexArrayObject> lineArray_;
     int trailInstanceCount_ = 0;
     std::vector<float> controlPoseMatrices_; // kept from frame to frame: drawing allocates nothing once grown

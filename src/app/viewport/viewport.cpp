@@ -2,6 +2,7 @@
 
 #include "app/viewport/default_shape.h"
 #include "app/viewport/picking.h"
+#include "model/skinning.h"
 
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -10,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <list>
 #include <numbers>
 #include <vector>
 
@@ -271,12 +273,18 @@ void Viewport::pickAt(const QPointF& position)
     std::vector<MeshPlacement> placements;
     std::vector<model::ObjectId> objects;
     std::vector<std::optional<std::size_t>> keys;
+    // A skinned mesh is tested where it is drawn, its positions skinned on the CPU as the shader does.
+    std::list<std::vector<Eigen::Vector3f>> skinned; // a list: the placements point into it
     updateSkeleton();
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const model::SceneObject& object = scene.objects[i];
         if (skeleton_.isJoint(i) || !object.visible)
             continue;
-        placements.push_back({&displayMesh(object), motion.worldPose(object.id, scene.currentTime), 1.0});
+        const std::vector<Eigen::Vector3f>* positions = nullptr;
+        if (object.mesh && !object.mesh->skin.empty())
+            positions = &skinned.emplace_back(model::skinnedPositions(
+                *object.mesh, model::jointMatrices(object.mesh->skin, object.id, motion, scene.currentTime)));
+        placements.push_back({&displayMesh(object), motion.worldPose(object.id, scene.currentTime), 1.0, positions});
         objects.push_back(object.id);
         keys.emplace_back();
     }

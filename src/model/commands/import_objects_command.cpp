@@ -1,9 +1,11 @@
 #include "model/commands/import_objects_command.h"
 
 #include "model/commands/command_checks.h"
+#include "model/skinning.h"
 #include "model/value_checks.h"
 
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -35,14 +37,39 @@ std::vector<PlacedObject> placeBatch(Document& document, std::vector<SceneObject
             refuseObject(i, problem.what());
         }
     }
+    // A skin's joints are objects of the batch, anywhere in it; they get the ids their objects get.
+    const auto skinJointsPlaced = [&batchIndex](const Mesh& mesh, ObjectId firstId) {
+        return skinWithJoints(mesh.skin, [&](ObjectId joint) {
+            const auto found = batchIndex.find(joint);
+            return found == batchIndex.end() ? kNoObject : firstId + found->second;
+        });
+    };
+    for (std::size_t i = 0; i < objects.size(); ++i)
+        if (objects[i].mesh && !objects[i].mesh->skin.empty()) {
+            try {
+                skinJointsPlaced(*objects[i].mesh, 1);
+            } catch (const std::invalid_argument& problem) {
+                refuseObject(i, problem.what());
+            }
+        }
     const ObjectId firstId = DocumentEditor(document).reserveObjectIds(objects.size());
     const std::size_t firstIndex = document.scene().objects.size();
+    std::map<const Mesh*, std::shared_ptr<const Mesh>> placedMeshes; // a shared skinned mesh stays shared
     std::vector<PlacedObject> placed;
     for (std::size_t i = 0; i < objects.size(); ++i) {
         SceneObject& object = objects[i];
         object.id = firstId + i;
         if (object.parent != kNoObject)
             object.parent = firstId + batchIndex.at(object.parent);
+        if (object.mesh && !object.mesh->skin.empty()) {
+            std::shared_ptr<const Mesh>& mesh = placedMeshes[object.mesh.get()];
+            if (!mesh) {
+                auto copy = std::make_shared<Mesh>(*object.mesh);
+                copy->skin = skinJointsPlaced(*object.mesh, firstId);
+                mesh = std::move(copy);
+            }
+            object.mesh = mesh;
+        }
         placed.push_back({firstIndex + i, std::move(object)});
     }
     return placed;
