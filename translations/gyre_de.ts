@@ -392,412 +392,427 @@
         <translation>Be&amp;wegung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="77"/>
+        <location filename="../ui/main_window.ui" line="78"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="78"/>
+        <location filename="../ui/main_window.ui" line="79"/>
         <source>&amp;Add</source>
         <translation>&amp;Hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="82"/>
+        <location filename="../ui/main_window.ui" line="83"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="93"/>
+        <location filename="../ui/main_window.ui" line="94"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="101"/>
+        <location filename="../ui/main_window.ui" line="102"/>
         <source>Edit</source>
         <translation>Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="106"/>
+        <location filename="../ui/main_window.ui" line="107"/>
         <source>Playback</source>
         <translation>Wiedergabe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="118"/>
+        <location filename="../ui/main_window.ui" line="119"/>
         <source>Inspector</source>
         <translation>Inspektor</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="130"/>
+        <location filename="../ui/main_window.ui" line="131"/>
         <source>ScrewBender</source>
         <translation>ScrewBender</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="142"/>
+        <location filename="../ui/main_window.ui" line="143"/>
         <source>Undo History</source>
         <translation>Rückgängig-Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="154"/>
+        <location filename="../ui/main_window.ui" line="155"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="166"/>
+        <location filename="../ui/main_window.ui" line="167"/>
         <source>Smoothness</source>
         <translation>Glätte</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="178"/>
+        <location filename="../ui/main_window.ui" line="179"/>
         <source>Angular Velocity Direction</source>
         <translation>Richtung der Winkelgeschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="190"/>
+        <location filename="../ui/main_window.ui" line="191"/>
         <source>Fit</source>
         <translation>Anpassung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="202"/>
+        <location filename="../ui/main_window.ui" line="203"/>
         <source>Angular Speed</source>
         <translation>Betrag der Winkelgeschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="214"/>
+        <location filename="../ui/main_window.ui" line="215"/>
+        <source>Graph Editor</source>
+        <translation>Grapheneditor</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="227"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="215"/>
+        <location filename="../ui/main_window.ui" line="228"/>
         <source>Start a new, empty project</source>
         <translation>Ein neues, leeres Projekt beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="218"/>
+        <location filename="../ui/main_window.ui" line="231"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="219"/>
+        <location filename="../ui/main_window.ui" line="232"/>
         <source>Open a Gyre project</source>
         <translation>Ein Gyre-Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="222"/>
+        <location filename="../ui/main_window.ui" line="235"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="223"/>
+        <location filename="../ui/main_window.ui" line="236"/>
         <source>Save the project</source>
         <translation>Das Projekt speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="226"/>
+        <location filename="../ui/main_window.ui" line="239"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="227"/>
+        <location filename="../ui/main_window.ui" line="240"/>
         <source>Save the project under a new name</source>
         <translation>Das Projekt unter einem neuen Namen speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="230"/>
+        <location filename="../ui/main_window.ui" line="243"/>
         <source>&amp;Import Scene…</source>
         <translation>Szene &amp;importieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="231"/>
+        <location filename="../ui/main_window.ui" line="244"/>
         <source>Add the objects and motion of an FBX, glTF, Collada, OBJ, BVH or other scene file</source>
         <translation>Die Objekte und die Bewegung einer FBX-, glTF-, Collada-, OBJ-, BVH- oder anderen Szenendatei hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="235"/>
+        <location filename="../ui/main_window.ui" line="248"/>
         <source>&amp;Export Scene…</source>
         <translation>Szene &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="236"/>
+        <location filename="../ui/main_window.ui" line="249"/>
         <source>Write the scene with its motion baked to glTF, Collada, FBX or OBJ</source>
         <translation>Die Szene mit gebackener Bewegung als glTF, Collada, FBX oder OBJ schreiben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="240"/>
+        <location filename="../ui/main_window.ui" line="253"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="241"/>
+        <location filename="../ui/main_window.ui" line="254"/>
         <source>Quit Gyre</source>
         <translation>Gyre beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="245"/>
+        <location filename="../ui/main_window.ui" line="258"/>
         <source>Undo &amp;History</source>
         <translation>Rückgängig-&amp;Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="246"/>
+        <location filename="../ui/main_window.ui" line="259"/>
         <source>Show every step of the undo history</source>
         <translation>Jeden Schritt des Rückgängig-Verlaufs zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="250"/>
+        <location filename="../ui/main_window.ui" line="263"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Einstellungen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="251"/>
+        <location filename="../ui/main_window.ui" line="264"/>
         <source>Choose the language Gyre speaks</source>
         <translation>Die Sprache wählen, die Gyre spricht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="257"/>
+        <location filename="../ui/main_window.ui" line="270"/>
         <source>Original Motion as &amp;Ghost</source>
         <translation>Ursprüngliche Bewegung als &amp;Geisterbild</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="258"/>
+        <location filename="../ui/main_window.ui" line="271"/>
         <source>Show the motion as it was when the project was opened or saved, faintly</source>
         <translation>Die Bewegung blass zeigen, wie sie beim Öffnen oder Speichern des Projekts war</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="263"/>
+        <location filename="../ui/main_window.ui" line="276"/>
         <source>Centre &amp;Trajectory</source>
         <translation>&amp;Bahn des Mittelpunkts</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="264"/>
+        <location filename="../ui/main_window.ui" line="277"/>
         <source>Show the path of the selected object&apos;s centre</source>
         <translation>Die Bahn des Mittelpunkts des gewählten Objekts zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="269"/>
+        <location filename="../ui/main_window.ui" line="282"/>
         <source>&amp;Control Poses</source>
         <translation>&amp;Kontrollposen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="270"/>
+        <location filename="../ui/main_window.ui" line="283"/>
         <source>Show the keyframe poses of the selected object in place</source>
         <translation>Die Posen der Schlüsselbilder des gewählten Objekts an Ort und Stelle zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="275"/>
+        <location filename="../ui/main_window.ui" line="288"/>
         <source>&amp;Stroboscopic Trail</source>
         <translation>&amp;Stroboskopspur</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="276"/>
+        <location filename="../ui/main_window.ui" line="289"/>
         <source>Show many copies of the selected object along its subdivided motion</source>
         <translation>Viele Kopien des gewählten Objekts entlang seiner unterteilten Bewegung zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="279"/>
+        <location filename="../ui/main_window.ui" line="292"/>
         <source>&amp;Frame Scene</source>
         <translation>Szene ein&amp;passen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="280"/>
+        <location filename="../ui/main_window.ui" line="293"/>
         <source>Point the camera at the whole scene</source>
         <translation>Die Kamera auf die ganze Szene richten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="284"/>
+        <location filename="../ui/main_window.ui" line="297"/>
         <source>Frame &amp;Selected</source>
         <translation>&amp;Auswahl einpassen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="285"/>
+        <location filename="../ui/main_window.ui" line="298"/>
         <source>Point the camera at the selected object</source>
         <translation>Die Kamera auf das ausgewählte Objekt richten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="289"/>
+        <location filename="../ui/main_window.ui" line="302"/>
         <source>&amp;Front View</source>
         <translation>&amp;Vorderansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="290"/>
+        <location filename="../ui/main_window.ui" line="303"/>
         <source>Look along +Y, Z up</source>
         <translation>Entlang +Y blicken, Z oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="294"/>
+        <location filename="../ui/main_window.ui" line="307"/>
         <source>&amp;Back View</source>
         <translation>&amp;Rückansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="295"/>
+        <location filename="../ui/main_window.ui" line="308"/>
         <source>Look along −Y, Z up</source>
         <translation>Entlang −Y blicken, Z oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="299"/>
+        <location filename="../ui/main_window.ui" line="312"/>
         <source>&amp;Right View</source>
         <translation>Ansicht von r&amp;echts</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="300"/>
+        <location filename="../ui/main_window.ui" line="313"/>
         <source>Look along −X, Z up</source>
         <translation>Entlang −X blicken, Z oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="304"/>
+        <location filename="../ui/main_window.ui" line="317"/>
         <source>&amp;Left View</source>
         <translation>Ansicht von &amp;links</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="305"/>
+        <location filename="../ui/main_window.ui" line="318"/>
         <source>Look along +X, Z up</source>
         <translation>Entlang +X blicken, Z oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="309"/>
+        <location filename="../ui/main_window.ui" line="322"/>
         <source>&amp;Top View</source>
         <translation>Ansicht von &amp;oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="310"/>
+        <location filename="../ui/main_window.ui" line="323"/>
         <source>Look down −Z, Y up</source>
         <translation>Entlang −Z nach unten blicken, Y oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="314"/>
+        <location filename="../ui/main_window.ui" line="327"/>
         <source>Botto&amp;m View</source>
         <translation>Ansicht von &amp;unten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="315"/>
+        <location filename="../ui/main_window.ui" line="328"/>
         <source>Look up +Z</source>
         <translation>Entlang +Z nach oben blicken</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="320"/>
+        <location filename="../ui/main_window.ui" line="333"/>
         <source>&amp;Orthographic</source>
         <translation>&amp;Orthografisch</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="321"/>
+        <location filename="../ui/main_window.ui" line="334"/>
         <source>Parallel projection instead of perspective</source>
         <translation>Parallelprojektion statt Perspektive</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="326"/>
+        <location filename="../ui/main_window.ui" line="339"/>
         <source>&amp;Wireframe</source>
         <translation>&amp;Drahtgitter</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="327"/>
+        <location filename="../ui/main_window.ui" line="340"/>
         <source>Draw the objects as the edges of their triangles</source>
         <translation>Die Objekte als Kanten ihrer Dreiecke zeichnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="332"/>
+        <location filename="../ui/main_window.ui" line="345"/>
         <source>&amp;X-Ray</source>
         <translation>&amp;Röntgen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="333"/>
+        <location filename="../ui/main_window.ui" line="346"/>
         <source>Draw the objects see-through</source>
         <translation>Die Objekte durchsichtig zeichnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="338"/>
+        <location filename="../ui/main_window.ui" line="351"/>
         <source>&amp;Play</source>
         <translation>&amp;Abspielen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="339"/>
+        <location filename="../ui/main_window.ui" line="352"/>
         <source>Play or pause the animation</source>
         <translation>Die Animation abspielen oder anhalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="343"/>
+        <location filename="../ui/main_window.ui" line="356"/>
         <source>Step &amp;Forward</source>
         <translation>Einen Schritt &amp;vor</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="344"/>
+        <location filename="../ui/main_window.ui" line="357"/>
         <source>One frame later</source>
         <translation>Ein Frame später</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="348"/>
+        <location filename="../ui/main_window.ui" line="361"/>
         <source>Step &amp;Backward</source>
         <translation>Einen Schritt &amp;zurück</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="349"/>
+        <location filename="../ui/main_window.ui" line="362"/>
         <source>One frame earlier</source>
         <translation>Ein Frame früher</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="353"/>
+        <location filename="../ui/main_window.ui" line="366"/>
         <source>Go to &amp;Start</source>
         <translation>Zum A&amp;nfang</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="354"/>
+        <location filename="../ui/main_window.ui" line="367"/>
         <source>Go to the first frame</source>
         <translation>Zum ersten Frame gehen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="358"/>
+        <location filename="../ui/main_window.ui" line="371"/>
         <source>Go to &amp;End</source>
         <translation>Zum &amp;Ende</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="359"/>
+        <location filename="../ui/main_window.ui" line="372"/>
         <source>Go to the last frame</source>
         <translation>Zum letzten Frame gehen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="365"/>
+        <location filename="../ui/main_window.ui" line="378"/>
         <source>&amp;Loop</source>
         <translation>&amp;Schleife</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="366"/>
+        <location filename="../ui/main_window.ui" line="379"/>
         <source>Start again from the beginning at the end</source>
         <translation>Am Ende wieder von vorn beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="369"/>
+        <location filename="../ui/main_window.ui" line="382"/>
         <source>&amp;Add Keyframe</source>
         <translation>Schlüsselbild &amp;hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="370"/>
+        <location filename="../ui/main_window.ui" line="383"/>
         <source>Key the selected object&apos;s pose at the current time</source>
         <translation>Die Pose des gewählten Objekts zur aktuellen Zeit als Schlüsselbild setzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="374"/>
+        <location filename="../ui/main_window.ui" line="387"/>
         <source>&amp;Delete Keyframe</source>
         <translation>Schlüsselbild &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="375"/>
+        <location filename="../ui/main_window.ui" line="388"/>
         <source>Delete the selected keyframe</source>
         <translation>Das gewählte Schlüsselbild löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="381"/>
+        <location filename="../ui/main_window.ui" line="394"/>
         <source>&amp;Constrain Keyframe</source>
         <translation>Schlüsselbild &amp;fixieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="382"/>
+        <location filename="../ui/main_window.ui" line="395"/>
         <source>Keep the selected keyframe exactly when fitting, or free it</source>
         <translation>Das gewählte Schlüsselbild bei der Anpassung exakt halten oder freigeben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="386"/>
+        <location filename="../ui/main_window.ui" line="399"/>
+        <source>&amp;Euler Filter</source>
+        <translation>&amp;Euler-Filter</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="400"/>
+        <source>Make the selected object&apos;s keys continuous: each key&apos;s quaternion in the hemisphere of the key before</source>
+        <translation>Die Schlüsselbilder des gewählten Objekts stetig machen: das Quaternion jedes Schlüsselbilds in die Hemisphäre des vorigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="403"/>
         <source>&amp;About Gyre</source>
         <translation>&amp;Über Gyre</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="387"/>
+        <location filename="../ui/main_window.ui" line="404"/>
         <source>Version, licence and the libraries Gyre is built on</source>
         <translation>Version, Lizenz und die Bibliotheken, auf denen Gyre aufbaut</translation>
     </message>
@@ -921,77 +936,77 @@
 <context>
     <name>gyre::FileError</name>
     <message>
-        <location filename="../src/model/project_file.cpp" line="366"/>
+        <location filename="../src/model/project_file.cpp" line="380"/>
         <source>these %1 keys bring the file past the %2 keys a project may hold</source>
         <translation>mit diesen %1 Schlüsseln hat die Datei mehr als die %2 Schlüssel, die ein Projekt haben darf</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="595"/>
+        <location filename="../src/model/project_file.cpp" line="611"/>
         <source>these %1 times bring the file past the %2 times a project may hold</source>
         <translation>mit diesen %1 Zeiten hat die Datei mehr als die %2 Zeiten, die ein Projekt haben darf</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="369"/>
+        <location filename="../src/model/project_file.cpp" line="383"/>
         <source>the file has no time lists</source>
         <translation>die Datei hat keine Zeitlisten</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="242"/>
+        <location filename="../src/model/project_file.cpp" line="249"/>
         <source>is larger than 1 GiB, the most a project file may hold</source>
         <translation>ist größer als 1 GiB, das Höchstmaß für eine Projektdatei</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="373"/>
+        <location filename="../src/model/project_file.cpp" line="387"/>
         <source>time list %1 holds %2 times for %3 keys</source>
         <translation>Zeitliste %1 enthält %2 Zeiten für %3 Schlüssel</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="572"/>
+        <location filename="../src/model/project_file.cpp" line="587"/>
         <source>a version %1 file starts with &quot;%2&quot; and its version in binary, not with JSON text</source>
         <translation>eine Datei der Version %1 beginnt mit „%2“ und ihrer Version in Binärform, nicht mit JSON-Text</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="654"/>
+        <location filename="../src/model/project_file.cpp" line="674"/>
         <source>the file ends inside its first %1 bytes</source>
         <translation>die Datei endet innerhalb ihrer ersten %1 Bytes</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="659"/>
+        <location filename="../src/model/project_file.cpp" line="679"/>
         <source>a version %1 file is JSON text, not binary</source>
         <translation>eine Datei der Version %1 ist JSON-Text, nicht binär</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="663"/>
+        <location filename="../src/model/project_file.cpp" line="683"/>
         <source>%1 bytes; a header may hold at most %2</source>
         <translation>%1 Bytes; ein Kopf darf höchstens %2 haben</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="129"/>
+        <location filename="../src/model/project_blocks.cpp" line="131"/>
         <source>%1 is neither 0 nor 1</source>
         <translation>%1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="233"/>
+        <location filename="../src/model/project_blocks.cpp" line="259"/>
         <source>its block needs %1 bytes; the file has %2 left</source>
         <translation>sein Block braucht %1 Bytes; die Datei hat noch %2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="239"/>
+        <location filename="../src/model/project_blocks.cpp" line="265"/>
         <source>the file ends %1 bytes into its block of %2</source>
         <translation>die Datei endet nach %1 Bytes seines Blocks von %2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="249"/>
+        <location filename="../src/model/project_blocks.cpp" line="275"/>
         <source>the file goes on after its last block</source>
         <translation>die Datei geht nach ihrem letzten Block weiter</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="255"/>
+        <location filename="../src/model/project_blocks.cpp" line="281"/>
         <source>the writer has no block for it</source>
         <translation>der Schreiber hat keinen Block dafür</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="258"/>
+        <location filename="../src/model/project_blocks.cpp" line="284"/>
         <source>its block holds %1 bytes, not %2</source>
         <translation>sein Block hat %1 Bytes, nicht %2</translation>
     </message>
@@ -1017,105 +1032,111 @@
         <translation>die Sperre der automatischen Sicherung kann nicht übernommen werden</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="254"/>
+        <location filename="../src/model/project_file.cpp" line="261"/>
         <source>unknown value &quot;%1&quot;; expected one of %2</source>
         <translation>unbekannter Wert „%1“; erwartet wird einer von %2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="291"/>
+        <location filename="../src/model/project_file.cpp" line="298"/>
         <source>%1 bytes are not a whole number of %2-byte items</source>
         <translation>%1 Bytes sind keine ganze Zahl von %2-Byte-Einträgen</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="402"/>
-        <location filename="../src/model/value_checks.cpp" line="155"/>
+        <location filename="../src/model/project_file.cpp" line="350"/>
+        <source>a skin has 1 to %1 joints</source>
+        <translation>ein Skin hat 1 bis %1 Gelenke</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="416"/>
+        <location filename="../src/model/value_checks.cpp" line="156"/>
         <source>a stroke needs at least one point</source>
         <translation>ein Strich braucht mindestens einen Punkt</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="404"/>
+        <location filename="../src/model/project_file.cpp" line="418"/>
         <source>%1 times for %2 points; give none or one per point</source>
         <translation>%1 Zeiten für %2 Punkte; geben Sie keine oder eine je Punkt an</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="431"/>
+        <location filename="../src/model/project_file.cpp" line="445"/>
         <source>these %1 control points bring the file past the %2 keys a project may hold</source>
         <translation>mit diesen %1 Kontrollpunkten hat die Datei mehr als die %2 Schlüssel, die ein Projekt haben darf</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="471"/>
-        <location filename="../src/model/value_checks.cpp" line="206"/>
+        <location filename="../src/model/project_file.cpp" line="485"/>
+        <location filename="../src/model/value_checks.cpp" line="207"/>
         <source>keys to restore without an applied fit</source>
         <translation>wiederherzustellende Schlüssel ohne angewendete Anpassung</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="492"/>
+        <location filename="../src/model/project_file.cpp" line="506"/>
         <source>the file has no meshes</source>
         <translation>die Datei hat keine Meshes</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="520"/>
+        <location filename="../src/model/project_file.cpp" line="535"/>
         <source>%1 is also the id of objects[%2]</source>
         <translation>%1 ist auch die ID von objects[%2]</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="523"/>
+        <location filename="../src/model/project_file.cpp" line="538"/>
+        <location filename="../src/model/project_file.cpp" line="624"/>
         <source>no object has id %1</source>
         <translation>kein Objekt hat die ID %1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="532"/>
+        <location filename="../src/model/project_file.cpp" line="547"/>
         <source>object %1 is its own ancestor</source>
         <translation>Objekt %1 ist sein eigener Vorfahr</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="545"/>
+        <location filename="../src/model/project_file.cpp" line="560"/>
         <source>object %1 comes after it in the file; parents come before their children</source>
         <translation>Objekt %1 steht in der Datei nach ihm; Eltern stehen vor ihren Kindern</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="566"/>
+        <location filename="../src/model/project_file.cpp" line="581"/>
         <source>expected &quot;%1&quot;, found &quot;%2&quot;; this is not a Gyre project</source>
         <translation>erwartet „%1“, gefunden „%2“; dies ist kein Gyre-Projekt</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="739"/>
+        <location filename="../src/model/project_file.cpp" line="759"/>
         <source>not saved, because its header (the objects&apos; names and settings, the sketches&apos; strokes) would hold %1 bytes, more than the %2 a project may hold</source>
         <translation>nicht gespeichert, weil ihr Kopf (die Namen und Einstellungen der Objekte, die Striche der Skizzen) %1 Bytes hätte, mehr als die %2, die ein Projekt haben darf</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="556"/>
+        <location filename="../src/model/project_file.cpp" line="571"/>
         <source>the file has version %1, newer than this build of Gyre reads (%2 and older); open it with a newer Gyre</source>
         <translation>die Datei hat Version %1, neuer als diese Gyre-Version lesen kann (%2 und älter); öffnen Sie sie mit einem neueren Gyre</translation>
     </message>
     <message>
         <location filename="../src/model/output_target.cpp" line="42"/>
-        <location filename="../src/model/project_file.cpp" line="714"/>
+        <location filename="../src/model/project_file.cpp" line="734"/>
         <source>is a directory, not a file</source>
         <translation>ist ein Verzeichnis, keine Datei</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="717"/>
+        <location filename="../src/model/project_file.cpp" line="737"/>
         <source>cannot open: %1</source>
         <translation>kann nicht geöffnet werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="621"/>
+        <location filename="../src/model/project_file.cpp" line="641"/>
         <source>cannot read: %1</source>
         <translation>kann nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="634"/>
+        <location filename="../src/model/project_file.cpp" line="654"/>
         <source>is empty; a project file holds a JSON object</source>
         <translation>ist leer; eine Projektdatei enthält ein JSON-Objekt</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="627"/>
+        <location filename="../src/model/project_file.cpp" line="647"/>
         <source>not valid JSON: %1 at byte %2</source>
         <translation>kein gültiges JSON: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="732"/>
+        <location filename="../src/model/project_file.cpp" line="752"/>
         <source>not saved, because the file would not read back: %1</source>
         <translation>nicht gespeichert, weil sich die Datei nicht wieder lesen ließe: %1</translation>
     </message>
@@ -1195,82 +1216,77 @@
         <translation>OBJ enthält keine Bewegung: die Meshes werden so geschrieben, wie sie zur Startzeit stehen</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="55"/>
+        <location filename="../src/io/scene_import.cpp" line="57"/>
         <source>no such file</source>
         <translation>Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="57"/>
+        <location filename="../src/io/scene_import.cpp" line="59"/>
         <source>is a directory, not a scene file</source>
         <translation>ist ein Verzeichnis, keine Szenendatei</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="59"/>
+        <location filename="../src/io/scene_import.cpp" line="61"/>
         <source>cannot be read (permission denied)</source>
         <translation>kann nicht gelesen werden (keine Berechtigung)</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="61"/>
+        <location filename="../src/io/scene_import.cpp" line="63"/>
         <source>the file is empty</source>
         <translation>die Datei ist leer</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="74"/>
+        <location filename="../src/io/scene_import.cpp" line="76"/>
         <source>the file holds no meshes and no animation</source>
         <translation>die Datei enthält weder Meshes noch Animation</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="83"/>
+        <location filename="../src/io/scene_import.cpp" line="85"/>
         <source>not a scene Gyre can read: %1</source>
         <translation>keine Szene, die Gyre lesen kann: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="87"/>
+        <location filename="../src/io/scene_import.cpp" line="89"/>
         <source>the file holds no scene nodes</source>
         <translation>die Datei enthält keine Szenenknoten</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="129"/>
+        <location filename="../src/io/scene_import.cpp" line="131"/>
         <source>%1 key %2 is not finite</source>
         <translation>%1schlüssel %2 ist nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="132"/>
+        <location filename="../src/io/scene_import.cpp" line="134"/>
         <source>%1 key %2 is not a rotation (a zero quaternion)</source>
         <translation>%1schlüssel %2 ist keine Rotation (ein Null-Quaternion)</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="135"/>
+        <location filename="../src/io/scene_import.cpp" line="137"/>
         <source>%1 key %2 is not after the key before it</source>
         <translation>%1schlüssel %2 liegt nicht nach dem Schlüssel davor</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="144"/>
+        <location filename="../src/io/scene_import.cpp" line="146"/>
         <source>node &apos;%1&apos;: %2</source>
         <translation>Knoten „%1“: %2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="259"/>
-        <source>mesh &apos;%1&apos; is skinned; skinning is not imported, so it shows in its bind pose</source>
-        <translation>Mesh „%1“ ist geskinnt; Skinning wird nicht importiert, daher erscheint es in seiner Bindungspose</translation>
-    </message>
-    <message>
-        <location filename="../src/io/scene_import.cpp" line="361"/>
+        <location filename="../src/io/scene_import.cpp" line="384"/>
         <source>node &apos;%1&apos; has more than one channel in animation &apos;%2&apos;; the first is used</source>
         <translation>Knoten „%1“ hat mehr als einen Kanal in der Animation „%2“; der erste wird verwendet</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="367"/>
+        <location filename="../src/io/scene_import.cpp" line="390"/>
         <source>node &apos;%1&apos; is moved by more than one of the chosen animations; the later one, &apos;%2&apos;, is used</source>
         <translation>Knoten „%1“ wird von mehr als einer der gewählten Animationen bewegt; die spätere, „%2“, wird verwendet</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="470"/>
+        <location filename="../src/io/scene_import.cpp" line="494"/>
         <source>animation &apos;%1&apos; moves &apos;%2&apos;, which is not in the scene</source>
         <translation>Animation „%1“ bewegt den Knoten „%2“, den es in der Szene nicht gibt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/io/scene_import.cpp" line="500"/>
+        <location filename="../src/io/scene_import.cpp" line="525"/>
         <source>the file has %n animation(s); there is no animation %1</source>
         <translation>
             <numerusform>die Datei hat %n Animation; es gibt keine Animation %1</numerusform>
@@ -1278,52 +1294,57 @@
         </translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="524"/>
+        <location filename="../src/io/scene_import.cpp" line="549"/>
         <source>the frame rate %1 is not in (0, %2]</source>
         <translation>die Bildrate %1 liegt nicht in (0, %2]</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="531"/>
+        <location filename="../src/io/scene_import.cpp" line="556"/>
         <source>the unit %1 m is not a positive length</source>
         <translation>die Einheit %1 m ist keine positive Länge</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="635"/>
+        <location filename="../src/io/scene_import.cpp" line="660"/>
         <source>Assimp reads %1 animations and TinyGLTF %2</source>
         <translation>Assimp liest %1 Animationen und TinyGLTF %2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="416"/>
+        <location filename="../src/io/scene_import.cpp" line="440"/>
         <source>node &apos;%1&apos; has a non-uniform scale; its children get the mean scale</source>
         <translation>Knoten „%1“ hat eine ungleichmäßige Skalierung; seine Kinder erhalten die mittlere Skalierung</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="434"/>
+        <location filename="../src/io/scene_import.cpp" line="257"/>
+        <source>mesh &apos;%1&apos;: %2</source>
+        <translation>Mesh „%1“: %2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="458"/>
         <source>rotation</source>
         <translation>Rotations</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="437"/>
+        <location filename="../src/io/scene_import.cpp" line="461"/>
         <source>position</source>
         <translation>Positions</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="452"/>
+        <location filename="../src/io/scene_import.cpp" line="476"/>
         <source>scaling</source>
         <translation>Skalierungs</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="458"/>
+        <location filename="../src/io/scene_import.cpp" line="482"/>
         <source>node &apos;%1&apos;: its scale changes over time; Gyre&apos;s motion is rigid, so the scale of its first key is kept</source>
         <translation>Knoten „%1“: seine Skalierung ändert sich mit der Zeit; Gyres Bewegung ist starr, daher wird die Skalierung seines ersten Animationsschlüssels beibehalten</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="513"/>
+        <location filename="../src/io/scene_import.cpp" line="538"/>
         <source>mesh and morph animation is not imported; only node motion is</source>
         <translation>Mesh- und Morph-Animation wird nicht importiert, nur die Bewegung der Knoten</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="515"/>
+        <location filename="../src/io/scene_import.cpp" line="540"/>
         <source>cameras and lights are not imported</source>
         <translation>Kameras und Lichter werden nicht importiert</translation>
     </message>
@@ -1387,7 +1408,7 @@
     </message>
     <message>
         <location filename="../src/model/json_field.cpp" line="116"/>
-        <location filename="../src/model/value_checks.cpp" line="65"/>
+        <location filename="../src/model/value_checks.cpp" line="66"/>
         <source>%1 is not a finite number</source>
         <translation>%1 ist keine endliche Zahl</translation>
     </message>
@@ -1412,124 +1433,159 @@
         <translation>erwartet: %1 Zahlen, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="29"/>
+        <location filename="../src/model/value_checks.cpp" line="30"/>
         <source>not all components are finite</source>
         <translation>nicht alle Komponenten sind endlich</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="39"/>
+        <location filename="../src/model/value_checks.cpp" line="40"/>
         <source>the %1 is zero</source>
         <translation>%1 ist null</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="41"/>
+        <location filename="../src/model/value_checks.cpp" line="42"/>
         <source>the %1 has length %2; it must have length 1</source>
         <translation>%1 hat die Länge %2; die Länge muss 1 sein</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="72"/>
+        <location filename="../src/model/value_checks.cpp" line="73"/>
         <source>%1 is negative</source>
         <translation>%1 ist negativ</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="79"/>
+        <location filename="../src/model/value_checks.cpp" line="80"/>
         <source>%1 is not positive</source>
         <translation>%1 ist nicht positiv</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="85"/>
+        <location filename="../src/model/value_checks.cpp" line="86"/>
         <source>direction</source>
         <translation>die Richtung</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="89"/>
+        <location filename="../src/model/value_checks.cpp" line="90"/>
         <source>quaternion</source>
         <translation>das Quaternion</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="100"/>
+        <location filename="../src/model/value_checks.cpp" line="101"/>
         <source>position coordinate %1 is beyond ±%2</source>
         <translation>die Positionskoordinate %1 liegt außerhalb von ±%2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="108"/>
+        <location filename="../src/model/value_checks.cpp" line="109"/>
         <source>time %1 is beyond ±%2 s</source>
         <translation>die Zeit %1 liegt außerhalb von ±%2 s</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="115"/>
+        <location filename="../src/model/value_checks.cpp" line="116"/>
         <source>time %1 does not come after the time before it, %2</source>
         <translation>die Zeit %1 liegt nicht nach der Zeit davor, %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="124"/>
+        <location filename="../src/model/value_checks.cpp" line="125"/>
         <source>the value has length %1; a fitted value needs length at least %2</source>
         <translation>der Wert hat die Länge %1; ein angepasster Wert braucht mindestens die Länge %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="133"/>
+        <location filename="../src/model/value_checks.cpp" line="134"/>
         <source>the derivative has length %1 per second; the most it may have is %2</source>
         <translation>die Ableitung hat die Länge %1 pro Sekunde; höchstens zulässig ist %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="159"/>
+        <location filename="../src/model/value_checks.cpp" line="160"/>
         <source>a stroke has no times or one per point</source>
         <translation>ein Strich hat keine Zeiten oder eine je Punkt</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="175"/>
+        <location filename="../src/model/value_checks.cpp" line="176"/>
         <source>the pattern&apos;s repeat count %1 is negative</source>
         <translation>die Wiederholungszahl %1 des Musters ist negativ</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="212"/>
+        <location filename="../src/model/value_checks.cpp" line="213"/>
         <source>subdivision levels %1 are outside 0 to %2</source>
         <translation>die Unterteilungsstufen %1 liegen außerhalb von 0 bis %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="223"/>
+        <location filename="../src/model/value_checks.cpp" line="224"/>
         <source>%1 keys at %2 levels make %3 poses; the budget is %4</source>
         <translation>%1 Schlüssel ergeben bei %2 Stufen %3 Posen; erlaubt sind höchstens %4</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="240"/>
+        <location filename="../src/model/value_checks.cpp" line="241"/>
         <source>a frame rate of %1 is above %2</source>
         <translation>eine Bildrate von %1 liegt über %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="248"/>
+        <location filename="../src/model/value_checks.cpp" line="249"/>
         <source>the end time %1 does not come after the start time %2</source>
         <translation>die Endzeit %1 liegt nicht nach der Startzeit %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="253"/>
+        <location filename="../src/model/value_checks.cpp" line="254"/>
         <source>%1 s at %2 fps make %3 frames; the budget is %4</source>
         <translation>%1 s bei %2 fps ergeben %3 Frames; erlaubt sind höchstens %4</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="262"/>
+        <location filename="../src/model/value_checks.cpp" line="263"/>
         <source>a mesh position is not finite</source>
         <translation>eine Mesh-Position ist nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="265"/>
+        <location filename="../src/model/value_checks.cpp" line="266"/>
         <source>a mesh normal is not finite</source>
         <translation>eine Mesh-Normale ist nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="267"/>
+        <location filename="../src/model/value_checks.cpp" line="268"/>
         <source>the mesh has %1 normals for %2 positions</source>
         <translation>das Mesh hat %1 Normalen für %2 Positionen</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="269"/>
+        <location filename="../src/model/value_checks.cpp" line="270"/>
         <source>the mesh&apos;s %1 indices do not make whole triangles</source>
         <translation>die %1 Indizes des Meshes ergeben keine ganzen Dreiecke</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="272"/>
+        <location filename="../src/model/value_checks.cpp" line="273"/>
         <source>mesh index %1 is beyond its %2 positions</source>
         <translation>der Mesh-Index %1 liegt jenseits seiner %2 Positionen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="282"/>
+        <source>the skin has %1 joints, more than the %2 a mesh may follow</source>
+        <translation>der Skin hat %1 Gelenke, mehr als die %2, denen ein Mesh folgen kann</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="285"/>
+        <source>skin joint %1 is 0 or named twice</source>
+        <translation>Skin-Gelenk %1 ist 0 oder doppelt genannt</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="287"/>
+        <source>the skin has %1 inverse bind matrices for %2 joints</source>
+        <translation>der Skin hat %1 inverse Bindematrizen für %2 Gelenke</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="291"/>
+        <source>the inverse bind matrix of skin joint %1 is not a finite affine transform</source>
+        <translation>die inverse Bindematrix von Skin-Gelenk %1 ist keine endliche affine Transformation</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="294"/>
+        <source>the skin has %1 joint sets and %2 weight sets for %3 positions</source>
+        <translation>der Skin hat %1 Gelenksätze und %2 Gewichtssätze für %3 Positionen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="301"/>
+        <source>skin vertex %1 names joint %2 of %3</source>
+        <translation>Skin-Eckpunkt %1 nennt Gelenk %2 von %3</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="304"/>
+        <source>the weights of skin vertex %1 are not finite, ≥ 0 and at most 1 in sum</source>
+        <translation>die Gewichte von Skin-Eckpunkt %1 sind nicht endlich, ≥ 0 und in der Summe höchstens 1</translation>
     </message>
     <message>
         <location filename="../src/io/scene_worker.cpp" line="28"/>
@@ -1592,92 +1648,92 @@
         <translation>die Antwort des Szenen-Leseprogramms ist fehlerhaft: eine Antwort der falschen Art</translation>
     </message>
     <message>
-        <location filename="../src/io/baked_scene.cpp" line="167"/>
+        <location filename="../src/io/baked_scene.cpp" line="171"/>
         <source>glTF times cannot be negative: the motion is written %1 s later, from 0 s</source>
         <translation>glTF-Zeiten können nicht negativ sein: die Bewegung wird %1 s später geschrieben, ab 0 s</translation>
     </message>
     <message>
-        <location filename="../src/io/baked_scene.cpp" line="186"/>
+        <location filename="../src/io/baked_scene.cpp" line="190"/>
         <source>&apos;%1&apos;: two of its keys are within a float32 step; its rotation and translation are written as baked samples, not as its splines</source>
         <translation>„%1“: zwei seiner Schlüssel liegen innerhalb eines float32-Schritts; seine Rotation und Translation werden als gebackene Abtastwerte geschrieben, nicht als seine Splines</translation>
     </message>
     <message>
-        <location filename="../src/io/baked_scene.cpp" line="193"/>
+        <location filename="../src/io/baked_scene.cpp" line="197"/>
         <source>&apos;%1&apos;: %2 baked samples are left out, each within a float32 step of the one kept (glTF stores times as float32)</source>
         <translation>„%1“: %2 gebackene Abtastwerte werden ausgelassen, jeder innerhalb eines float32-Schritts vom beibehaltenen (glTF speichert Zeiten als float32)</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="28"/>
+        <location filename="../src/io/gltf_animation.cpp" line="29"/>
         <source>%1 is %2 bytes, over the %3 bytes a glTF buffer may have</source>
         <translation>%1 hat %2 Bytes, mehr als die %3 Bytes, die ein glTF-Buffer haben darf</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="62"/>
+        <location filename="../src/io/gltf_animation.cpp" line="63"/>
         <source>there is no accessor %1</source>
         <translation>es gibt keinen Accessor %1</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="66"/>
+        <location filename="../src/io/gltf_animation.cpp" line="67"/>
         <source>count %1 is over the %2 elements Gyre reads</source>
         <translation>die Anzahl %1 ist größer als die %2 Elemente, die Gyre liest</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="74"/>
+        <location filename="../src/io/gltf_animation.cpp" line="75"/>
         <source>there is no buffer view %1</source>
         <translation>es gibt keine Buffer-View %1</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="77"/>
+        <location filename="../src/io/gltf_animation.cpp" line="78"/>
         <source>its buffer view names no buffer</source>
         <translation>seine Buffer-View nennt keinen Buffer</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="83"/>
+        <location filename="../src/io/gltf_animation.cpp" line="84"/>
         <source>%1 elements from byte %2 run past its buffer view&apos;s %3 bytes</source>
         <translation>%1 Elemente ab Byte %2 reichen über die %3 Bytes seiner Buffer-View hinaus</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="88"/>
+        <location filename="../src/io/gltf_animation.cpp" line="89"/>
         <source>its buffer view runs past the buffer&apos;s %1 bytes</source>
         <translation>seine Buffer-View reicht über die %1 Bytes des Buffers hinaus</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="101"/>
+        <location filename="../src/io/gltf_animation.cpp" line="102"/>
         <source>there is no such sampler</source>
         <translation>einen solchen Sampler gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="112"/>
+        <location filename="../src/io/gltf_animation.cpp" line="113"/>
         <source>&apos;%1&apos; is not an interpolation</source>
         <translation>„%1“ ist keine Interpolation</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="121"/>
+        <location filename="../src/io/gltf_animation.cpp" line="122"/>
         <source>%1 times need %2 output elements; the output has %3</source>
         <translation>%1 Zeiten brauchen %2 Ausgabeelemente; die Ausgabe hat %3</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="129"/>
+        <location filename="../src/io/gltf_animation.cpp" line="130"/>
         <source>time %1 is not finite or not after the one before it</source>
         <translation>Zeit %1 ist nicht endlich oder liegt nicht nach der vorherigen</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="137"/>
+        <location filename="../src/io/gltf_animation.cpp" line="138"/>
         <source>element %1 is not finite</source>
         <translation>Element %1 ist nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="148"/>
+        <location filename="../src/io/gltf_animation.cpp" line="149"/>
         <source>rotation %1 is a zero quaternion</source>
         <translation>Rotation %1 ist ein Null-Quaternion</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="219"/>
+        <location filename="../src/io/gltf_animation.cpp" line="220"/>
         <source>not a glTF file Gyre can read: %1</source>
         <translation>keine glTF-Datei, die Gyre lesen kann: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="327"/>
+        <location filename="../src/io/gltf_animation.cpp" line="337"/>
         <source>node &apos;%1&apos;: its motion at %2 fps needs more than %3 keys</source>
         <translation>Knoten „%1“: seine Bewegung braucht bei %2 fps mehr als %3 Schlüssel</translation>
     </message>
@@ -1781,6 +1837,36 @@
         <source>the file&apos;s %1 takes are Blender&apos;s, one for every object and action; each object gets its own action: %2</source>
         <translation>die %1 Takes der Datei stammen von Blender, einer für jedes Objekt und jede Aktion; jedes Objekt erhält seine eigene Aktion: %2</translation>
     </message>
+    <message>
+        <location filename="../src/io/scene_import_skin.cpp" line="42"/>
+        <source>mesh &apos;%1&apos;, bone &apos;%2&apos;: %3</source>
+        <translation>Mesh „%1“, Knochen „%2“: %3</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_skin.cpp" line="47"/>
+        <source>its offset matrix is not finite</source>
+        <translation>seine Offset-Matrix ist nicht endlich</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_skin.cpp" line="51"/>
+        <source>weight %1 names vertex %2 of %3</source>
+        <translation>Gewicht %1 nennt Eckpunkt %2 von %3</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_skin.cpp" line="53"/>
+        <source>weight %1 is not a finite number ≥ 0</source>
+        <translation>Gewicht %1 ist keine endliche Zahl ≥ 0</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_skin.cpp" line="63"/>
+        <source>mesh &apos;%1&apos; has %2 bones, more than the %3 Gyre can skin; it shows in its bind pose</source>
+        <translation>Mesh „%1“ hat %2 Knochen, mehr als die %3, die Gyre skinnen kann; es wird in seiner Bindepose gezeigt</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_skin.cpp" line="74"/>
+        <source>mesh &apos;%1&apos;: its bone &apos;%2&apos; is not a node of the scene; it shows in its bind pose</source>
+        <translation>Mesh „%1“: sein Knochen „%2“ ist kein Knoten der Szene; es wird in seiner Bindepose gezeigt</translation>
+    </message>
 </context>
 <context>
     <name>gyre::app::AddObjectActions</name>
@@ -1788,6 +1874,39 @@
         <location filename="../src/app/add_object_actions.cpp" line="49"/>
         <source>Add %1</source>
         <translation>%1 hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::ChannelListModel</name>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="60"/>
+        <source>Euler %1 (°)</source>
+        <translation>Euler %1 (°)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="62"/>
+        <source>quaternion w</source>
+        <translation>Quaternion w</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="66"/>
+        <source>quaternion %1</source>
+        <translation>Quaternion %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="70"/>
+        <source>ω %1 (rad/s)</source>
+        <translation>ω %1 (rad/s)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="72"/>
+        <source>|ω| (rad/s)</source>
+        <translation>|ω| (rad/s)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="76"/>
+        <source>position %1</source>
+        <translation>Position %1</translation>
     </message>
 </context>
 <context>
@@ -1841,7 +1960,7 @@
         <translation>Anpassung abgebrochen; nichts wurde angewendet.</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_controller.cpp" line="138"/>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="139"/>
         <source>Fit not applied: the track changed while it ran.</source>
         <translation>Anpassung nicht angewendet: Die Spur hat sich während der Anpassung geändert.</translation>
     </message>
@@ -1849,12 +1968,12 @@
 <context>
     <name>gyre::app::FitPanel</name>
     <message>
-        <location filename="../src/app/sketch/fit_panel.cpp" line="65"/>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="66"/>
         <source>Fitting…</source>
         <translation>Anpassung läuft…</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_panel.cpp" line="226"/>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="256"/>
         <source>Not changed: %1.</source>
         <translation>Nicht geändert: %1.</translation>
     </message>
@@ -1885,6 +2004,69 @@
         <location filename="../src/app/sketch/fit_progress.cpp" line="54"/>
         <source>Fit: round %v of %m</source>
         <translation>Anpassung: Runde %v von %m</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::GraphEditorPanel</name>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="84"/>
+        <source>The channels to plot: check one to show its curve</source>
+        <translation>Die darzustellenden Kanäle: einen ankreuzen, um seine Kurve zu zeigen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="119"/>
+        <source>The order of the Euler angles, as the inspector shows them</source>
+        <translation>Die Reihenfolge der Eulerwinkel, wie der Inspektor sie zeigt</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="120"/>
+        <source>Euler &amp;order:</source>
+        <translation>Euler-&amp;Reihenfolge:</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="124"/>
+        <source>world frame</source>
+        <translation>Weltsystem</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="125"/>
+        <source>object&apos;s frame</source>
+        <translation>Objektsystem</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="126"/>
+        <source>The frame the angular velocity&apos;s components are given in</source>
+        <translation>Das System, in dem die Komponenten der Winkelgeschwindigkeit angegeben sind</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="127"/>
+        <source>ω &amp;in:</source>
+        <translation>ω &amp;im:</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="132"/>
+        <source>Frame &amp;All</source>
+        <translation>&amp;Alles zeigen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="133"/>
+        <source>Show the whole time range and every shown curve (Home)</source>
+        <translation>Den ganzen Zeitbereich und jede gezeigte Kurve zeigen (Pos1)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="134"/>
+        <source>Frame &amp;Selected</source>
+        <translation>Auswahl &amp;zeigen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="136"/>
+        <source>Show the selected key between its neighbours</source>
+        <translation>Das gewählte Schlüsselbild zwischen seinen Nachbarn zeigen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="182"/>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
     </message>
 </context>
 <context>
@@ -2003,160 +2185,160 @@
 <context>
     <name>gyre::app::InspectorWidget</name>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="76"/>
+        <location filename="../src/app/inspector_widget.cpp" line="77"/>
         <source>time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="78"/>
+        <location filename="../src/app/inspector_widget.cpp" line="79"/>
         <source>position x</source>
         <translation>Position x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="78"/>
+        <location filename="../src/app/inspector_widget.cpp" line="79"/>
         <source>position y</source>
         <translation>Position y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="78"/>
+        <location filename="../src/app/inspector_widget.cpp" line="79"/>
         <source>position z</source>
         <translation>Position z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="81"/>
+        <location filename="../src/app/inspector_widget.cpp" line="82"/>
         <source>quaternion w</source>
         <translation>Quaternion w</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="81"/>
+        <location filename="../src/app/inspector_widget.cpp" line="82"/>
         <source>quaternion x</source>
         <translation>Quaternion x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="81"/>
+        <location filename="../src/app/inspector_widget.cpp" line="82"/>
         <source>quaternion y</source>
         <translation>Quaternion y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="81"/>
+        <location filename="../src/app/inspector_widget.cpp" line="82"/>
         <source>quaternion z</source>
         <translation>Quaternion z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="88"/>
+        <location filename="../src/app/inspector_widget.cpp" line="89"/>
         <source>matrix row %1, column %2</source>
         <translation>Matrix Zeile %1, Spalte %2</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="91"/>
+        <location filename="../src/app/inspector_widget.cpp" line="92"/>
         <source>axis x</source>
         <translation>Achse x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="91"/>
+        <location filename="../src/app/inspector_widget.cpp" line="92"/>
         <source>axis y</source>
         <translation>Achse y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="91"/>
+        <location filename="../src/app/inspector_widget.cpp" line="92"/>
         <source>axis z</source>
         <translation>Achse z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="91"/>
+        <location filename="../src/app/inspector_widget.cpp" line="92"/>
         <source>angle</source>
         <translation>Winkel</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="93"/>
+        <location filename="../src/app/inspector_widget.cpp" line="94"/>
         <source>first angle</source>
         <translation>erster Winkel</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="93"/>
+        <location filename="../src/app/inspector_widget.cpp" line="94"/>
         <source>second angle</source>
         <translation>zweiter Winkel</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="93"/>
+        <location filename="../src/app/inspector_widget.cpp" line="94"/>
         <source>third angle</source>
         <translation>dritter Winkel</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="135"/>
+        <location filename="../src/app/euler_convention_choosers.cpp" line="29"/>
         <source>extrinsic (fixed axes)</source>
         <translation>extrinsisch (feste Achsen)</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="136"/>
+        <location filename="../src/app/euler_convention_choosers.cpp" line="31"/>
         <source>intrinsic (moving axes)</source>
         <translation>intrinsisch (mitbewegte Achsen)</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="158"/>
+        <location filename="../src/app/inspector_widget.cpp" line="147"/>
         <source>about %1 (°)</source>
         <translation>um %1 (°)</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="172"/>
+        <location filename="../src/app/inspector_widget.cpp" line="161"/>
         <source>%1, keyframe %2 of %3</source>
         <translation>%1, Schlüsselbild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="206"/>
+        <location filename="../src/app/inspector_widget.cpp" line="195"/>
         <source>Near gimbal lock (%1° from it): the first and third angles turn about almost the same axis, so only their sum (or difference) is determined. Small changes of the rotation can swing them widely.</source>
         <translation>Nahe am Gimbal Lock (kardanische Blockade, %1° entfernt): Der erste und der dritte Winkel drehen fast um dieselbe Achse, daher ist nur ihre Summe (oder Differenz) bestimmt. Kleine Änderungen der Rotation können sie stark ausschlagen lassen.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="241"/>
+        <location filename="../src/app/inspector_widget.cpp" line="230"/>
         <source>The keyframe was not moved: %1.</source>
         <translation>Das Schlüsselbild wurde nicht verschoben: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="252"/>
+        <location filename="../src/app/inspector_widget.cpp" line="241"/>
         <source>The constraint was not changed: %1.</source>
         <translation>Die Fixierung wurde nicht geändert: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="260"/>
+        <location filename="../src/app/inspector_widget.cpp" line="249"/>
         <source>The position was not changed: %1.</source>
         <translation>Die Position wurde nicht geändert: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="272"/>
-        <location filename="../src/app/inspector_widget.cpp" line="295"/>
-        <location filename="../src/app/inspector_widget.cpp" line="321"/>
-        <location filename="../src/app/inspector_widget.cpp" line="344"/>
+        <location filename="../src/app/inspector_widget.cpp" line="261"/>
+        <location filename="../src/app/inspector_widget.cpp" line="284"/>
+        <location filename="../src/app/inspector_widget.cpp" line="310"/>
+        <location filename="../src/app/inspector_widget.cpp" line="333"/>
         <source>The rotation was not changed: %1.</source>
         <translation>Die Rotation wurde nicht geändert: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="277"/>
+        <location filename="../src/app/inspector_widget.cpp" line="266"/>
         <source>The rotation was not changed: the zero quaternion is no rotation.</source>
         <translation>Die Rotation wurde nicht geändert: Das Null-Quaternion ist keine Rotation.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="285"/>
+        <location filename="../src/app/inspector_widget.cpp" line="274"/>
         <source>The quaternion had length %1; it was scaled to length 1.</source>
         <translation>Das Quaternion hatte die Länge %1; es wurde auf Länge 1 skaliert.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="302"/>
+        <location filename="../src/app/inspector_widget.cpp" line="291"/>
         <source>The rotation was not changed: the matrix has determinant %1, so it flattens or mirrors space and is not a rotation.</source>
         <translation>Die Rotation wurde nicht geändert: Die Matrix hat die Determinante %1, sie staucht oder spiegelt also den Raum und ist keine Rotation.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="310"/>
+        <location filename="../src/app/inspector_widget.cpp" line="299"/>
         <source>The matrix was not a rotation (its rows were up to %1 from orthonormal); the nearest rotation was used.</source>
         <translation>Die Matrix war keine Rotation (ihre Zeilen wichen um bis zu %1 von orthonormal ab); die nächstgelegene Rotation wurde verwendet.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="327"/>
+        <location filename="../src/app/inspector_widget.cpp" line="316"/>
         <source>The rotation was not changed: a zero axis names no direction to turn about.</source>
         <translation>Die Rotation wurde nicht geändert: Eine Nullachse gibt keine Drehrichtung an.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="332"/>
+        <location filename="../src/app/inspector_widget.cpp" line="321"/>
         <source>The axis had length %1; it was scaled to length 1.</source>
         <translation>Die Achse hatte die Länge %1; sie wurde auf Länge 1 skaliert.</translation>
     </message>
@@ -2164,7 +2346,7 @@
 <context>
     <name>gyre::app::KeyframeActions</name>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="56"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="58"/>
         <source>Cannot add a keyframe: %1</source>
         <translation>Schlüsselbild kann nicht hinzugefügt werden: %1</translation>
     </message>
@@ -2270,177 +2452,177 @@
 <context>
     <name>gyre::app::MainWindow</name>
     <message>
-        <location filename="../src/app/main_window.cpp" line="67"/>
+        <location filename="../src/app/main_window.cpp" line="70"/>
         <source>Gyre projects (*.gyre)</source>
         <translation>Gyre-Projekte (*.gyre)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="167"/>
+        <location filename="../src/app/main_window.cpp" line="170"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="171"/>
+        <location filename="../src/app/main_window.cpp" line="174"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="195"/>
+        <location filename="../src/app/main_window.cpp" line="198"/>
         <source>&lt;opened&gt;</source>
         <translation>&lt;geöffnet&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="258"/>
+        <location filename="../src/app/main_window.cpp" line="273"/>
         <source>Drawing the direction on the sphere needs OpenGL 3.3, which this display does not offer. The speed plot and the fit work without it.</source>
         <translation>Das Zeichnen der Richtung auf der Kugel braucht OpenGL 3.3, das diese Anzeige nicht bietet. Das Geschwindigkeitsdiagramm und die Anpassung funktionieren ohne.</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="277"/>
+        <location filename="../src/app/main_window.cpp" line="292"/>
         <source>The 3D viewport needs OpenGL 3.3, which this display does not offer. Editing, the panels and the timeline work without it.</source>
         <translation>Das 3D-Ansichtsfenster braucht OpenGL 3.3, das diese Anzeige nicht bietet. Bearbeiten, die Bedienfelder und die Zeitleiste funktionieren ohne.</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="327"/>
+        <location filename="../src/app/main_window.cpp" line="342"/>
         <source>Viewport frame rate while something moves, and the time to subdivide the trail: on the worker, and from the request to its arrival</source>
         <translation>Bildrate des Ansichtsfensters, während sich etwas bewegt, und die Zeit zum Unterteilen der Stroboskopspur: im Hintergrund-Thread und von der Anforderung bis zum Eintreffen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="337"/>
+        <location filename="../src/app/main_window.cpp" line="352"/>
         <source>%1 fps · subdivision %2 ms (%3 ms to arrive)</source>
         <translation>%1 fps · Unterteilung %2 ms (%3 ms bis zur Ankunft)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="381"/>
+        <location filename="../src/app/main_window.cpp" line="396"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="383"/>
+        <location filename="../src/app/main_window.cpp" line="398"/>
         <source>%1[*] — Gyre</source>
         <translation>%1[*] — Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="398"/>
+        <location filename="../src/app/main_window.cpp" line="413"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="416"/>
+        <location filename="../src/app/main_window.cpp" line="431"/>
         <source>Cannot open the project</source>
         <translation>Das Projekt kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="439"/>
+        <location filename="../src/app/main_window.cpp" line="454"/>
         <source>L-shaped cycle (ScrewBender)</source>
         <translation>L-förmiger Zyklus (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="440"/>
+        <location filename="../src/app/main_window.cpp" line="455"/>
         <source>Spinning top (sketched angular velocity)</source>
         <translation>Kreisel (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="441"/>
+        <location filename="../src/app/main_window.cpp" line="456"/>
         <source>Letter M (sketched angular velocity)</source>
         <translation>Buchstabe M (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="442"/>
+        <location filename="../src/app/main_window.cpp" line="457"/>
         <source>Hat (sketched angular velocity)</source>
         <translation>Hut (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="443"/>
+        <location filename="../src/app/main_window.cpp" line="458"/>
         <source>Falling leaf (sketched angular velocity)</source>
         <translation>Fallendes Blatt (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="444"/>
+        <location filename="../src/app/main_window.cpp" line="459"/>
         <source>Pen (sketched angular speed)</source>
         <translation>Stift (skizzierter Betrag der Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="445"/>
+        <location filename="../src/app/main_window.cpp" line="460"/>
         <source>Pendulum (ScrewBender)</source>
         <translation>Pendel (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="446"/>
+        <location filename="../src/app/main_window.cpp" line="461"/>
         <source>Spinning block (ScrewBender)</source>
         <translation>Rotierender Block (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="447"/>
+        <location filename="../src/app/main_window.cpp" line="462"/>
         <source>Critter&apos;s non-planar cycle (ScrewBender)</source>
         <translation>Nicht-ebener Zyklus eines Tierchens (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="466"/>
+        <location filename="../src/app/main_window.cpp" line="481"/>
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="479"/>
+        <location filename="../src/app/main_window.cpp" line="494"/>
         <source>Cannot save the project</source>
         <translation>Das Projekt kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="483"/>
+        <location filename="../src/app/main_window.cpp" line="498"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="492"/>
+        <location filename="../src/app/main_window.cpp" line="507"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="492"/>
+        <location filename="../src/app/main_window.cpp" line="507"/>
         <source>The project has unsaved changes. Save them first?</source>
         <translation>Das Projekt hat ungespeicherte Änderungen. Zuerst speichern?</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="531"/>
+        <location filename="../src/app/main_window.cpp" line="546"/>
         <source>About Gyre</source>
         <translation>Über Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="532"/>
+        <location filename="../src/app/main_window.cpp" line="547"/>
         <source>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Edit the rotations of animated rigid objects: every way of writing an orientation, interpolation that behaves, sketched angular velocity, and ScrewBender motions.&lt;/p&gt;&lt;p&gt;Built on Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 and QCustomPlot %8.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Rotationen animierter starrer Objekte bearbeiten: jede Schreibweise einer Orientierung, Interpolation, die sich gut verhält, skizzierte Winkelgeschwindigkeit und ScrewBender-Bewegungen.&lt;/p&gt;&lt;p&gt;Aufgebaut auf Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 und QCustomPlot %8.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="552"/>
+        <location filename="../src/app/main_window.cpp" line="567"/>
         <source>Autosave failed: %1</source>
         <translation>Automatische Sicherung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="561"/>
+        <location filename="../src/app/main_window.cpp" line="576"/>
         <source>an untitled project</source>
         <translation>ein unbenanntes Projekt</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="564"/>
+        <location filename="../src/app/main_window.cpp" line="579"/>
         <source>Recover unsaved work</source>
         <translation>Ungesicherte Arbeit wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="565"/>
+        <location filename="../src/app/main_window.cpp" line="580"/>
         <source>Gyre ended without saving changes to %1 (last copy %2). Recover them?</source>
         <translation>Gyre wurde beendet, ohne Änderungen an %1 zu speichern (letzte Kopie %2). Wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="580"/>
+        <location filename="../src/app/main_window.cpp" line="595"/>
         <source>Cannot recover</source>
         <translation>Wiederherstellen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="555"/>
+        <location filename="../src/app/main_window.cpp" line="570"/>
         <source>Autosave is off: %1</source>
         <translation>Automatische Sicherung ist aus: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="199"/>
+        <location filename="../src/app/main_window.cpp" line="202"/>
         <source>Outliner</source>
         <translation>Gliederung</translation>
     </message>
@@ -2960,7 +3142,7 @@
         <translation>Anpassung der Winkelgeschwindigkeit anwenden</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/remove_fit_command.cpp" line="33"/>
+        <location filename="../src/model/commands/remove_fit_command.cpp" line="20"/>
         <source>Remove angular velocity fit</source>
         <translation>Anpassung der Winkelgeschwindigkeit entfernen</translation>
     </message>
@@ -2980,7 +3162,7 @@
         <translation>Strich radieren</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/import_objects_command.cpp" line="68"/>
+        <location filename="../src/model/commands/import_objects_command.cpp" line="95"/>
         <source>Import Objects</source>
         <translation>Objekte importieren</translation>
     </message>
@@ -3074,6 +3256,11 @@
         <source>Hide Object</source>
         <translation>Objekt ausblenden</translation>
     </message>
+    <message>
+        <location filename="../src/model/commands/apply_euler_filter_command.cpp" line="22"/>
+        <source>Apply Euler Filter</source>
+        <translation>Euler-Filter anwenden</translation>
+    </message>
 </context>
 <context>
     <name>gyre::model::Primitive</name>
@@ -3106,32 +3293,32 @@
 <context>
     <name>gyre::model::SketchFitError</name>
     <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="94"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="95"/>
         <source>Direction stroke %1 cannot be followed: %2</source>
         <translation>Dem Richtungsstrich %1 kann nicht gefolgt werden: %2</translation>
     </message>
     <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="248"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="243"/>
         <source>The fit needs at least two keyframes on the selected object.</source>
         <translation>Die Anpassung braucht mindestens zwei Schlüsselbilder am gewählten Objekt.</translation>
     </message>
     <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="251"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="246"/>
         <source>Nothing is sketched yet: draw the direction of the angular velocity on the sphere, or its magnitude on the plot.</source>
         <translation>Noch ist nichts skizziert: Zeichnen Sie die Richtung der Winkelgeschwindigkeit auf die Kugel oder ihren Betrag in das Diagramm.</translation>
     </message>
     <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="256"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="251"/>
         <source>The edit window has no length inside the keys&apos; span: widen it, or sketch between the first and the last key.</source>
         <translation>Das Bearbeitungsfenster hat innerhalb des Bereichs der Schlüsselbilder keine Länge: Erweitern Sie es oder skizzieren Sie zwischen dem ersten und dem letzten Schlüsselbild.</translation>
     </message>
     <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="262"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="257"/>
         <source>The edit window of %1 s needs %2 target samples at %3 a second; the budget is %4: narrow the window.</source>
         <translation>Das Bearbeitungsfenster von %1 s braucht bei %3 pro Sekunde %2 Zielabtastwerte; erlaubt sind höchstens %4: Verkleinern Sie das Fenster.</translation>
     </message>
     <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="273"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="268"/>
         <source>The pattern cannot be repeated: %1</source>
         <translation>Das Muster kann nicht wiederholt werden: %1</translation>
     </message>

@@ -392,412 +392,427 @@
         <translation>运动(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="77"/>
+        <location filename="../ui/main_window.ui" line="78"/>
         <source>&amp;Object</source>
         <translation>对象(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="78"/>
+        <location filename="../ui/main_window.ui" line="79"/>
         <source>&amp;Add</source>
         <translation>添加(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="82"/>
+        <location filename="../ui/main_window.ui" line="83"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="93"/>
+        <location filename="../ui/main_window.ui" line="94"/>
         <source>File</source>
         <translation>文件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="101"/>
+        <location filename="../ui/main_window.ui" line="102"/>
         <source>Edit</source>
         <translation>编辑</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="106"/>
+        <location filename="../ui/main_window.ui" line="107"/>
         <source>Playback</source>
         <translation>播放</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="118"/>
+        <location filename="../ui/main_window.ui" line="119"/>
         <source>Inspector</source>
         <translation>检查器</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="130"/>
+        <location filename="../ui/main_window.ui" line="131"/>
         <source>ScrewBender</source>
         <translation>ScrewBender</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="142"/>
+        <location filename="../ui/main_window.ui" line="143"/>
         <source>Undo History</source>
         <translation>撤销历史</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="154"/>
+        <location filename="../ui/main_window.ui" line="155"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="166"/>
+        <location filename="../ui/main_window.ui" line="167"/>
         <source>Smoothness</source>
         <translation>平滑度</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="178"/>
+        <location filename="../ui/main_window.ui" line="179"/>
         <source>Angular Velocity Direction</source>
         <translation>角速度方向</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="190"/>
+        <location filename="../ui/main_window.ui" line="191"/>
         <source>Fit</source>
         <translation>拟合</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="202"/>
+        <location filename="../ui/main_window.ui" line="203"/>
         <source>Angular Speed</source>
         <translation>角速度大小</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="214"/>
+        <location filename="../ui/main_window.ui" line="215"/>
+        <source>Graph Editor</source>
+        <translation>曲线编辑器</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="227"/>
         <source>&amp;New</source>
         <translation>新建(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="215"/>
+        <location filename="../ui/main_window.ui" line="228"/>
         <source>Start a new, empty project</source>
         <translation>新建一个空项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="218"/>
+        <location filename="../ui/main_window.ui" line="231"/>
         <source>&amp;Open…</source>
         <translation>打开(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="219"/>
+        <location filename="../ui/main_window.ui" line="232"/>
         <source>Open a Gyre project</source>
         <translation>打开 Gyre 项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="222"/>
+        <location filename="../ui/main_window.ui" line="235"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="223"/>
+        <location filename="../ui/main_window.ui" line="236"/>
         <source>Save the project</source>
         <translation>保存项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="226"/>
+        <location filename="../ui/main_window.ui" line="239"/>
         <source>Save &amp;As…</source>
         <translation>另存为(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="227"/>
+        <location filename="../ui/main_window.ui" line="240"/>
         <source>Save the project under a new name</source>
         <translation>以新名称保存项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="230"/>
+        <location filename="../ui/main_window.ui" line="243"/>
         <source>&amp;Import Scene…</source>
         <translation>导入场景(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="231"/>
+        <location filename="../ui/main_window.ui" line="244"/>
         <source>Add the objects and motion of an FBX, glTF, Collada, OBJ, BVH or other scene file</source>
         <translation>添加 FBX、glTF、Collada、OBJ、BVH 或其他场景文件中的对象和运动</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="235"/>
+        <location filename="../ui/main_window.ui" line="248"/>
         <source>&amp;Export Scene…</source>
         <translation>导出场景(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="236"/>
+        <location filename="../ui/main_window.ui" line="249"/>
         <source>Write the scene with its motion baked to glTF, Collada, FBX or OBJ</source>
         <translation>将场景及其烘焙后的运动写出为 glTF、Collada、FBX 或 OBJ</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="240"/>
+        <location filename="../ui/main_window.ui" line="253"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="241"/>
+        <location filename="../ui/main_window.ui" line="254"/>
         <source>Quit Gyre</source>
         <translation>退出 Gyre</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="245"/>
+        <location filename="../ui/main_window.ui" line="258"/>
         <source>Undo &amp;History</source>
         <translation>撤销历史(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="246"/>
+        <location filename="../ui/main_window.ui" line="259"/>
         <source>Show every step of the undo history</source>
         <translation>显示撤销历史中的每一步</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="250"/>
+        <location filename="../ui/main_window.ui" line="263"/>
         <source>&amp;Preferences…</source>
         <translation>首选项(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="251"/>
+        <location filename="../ui/main_window.ui" line="264"/>
         <source>Choose the language Gyre speaks</source>
         <translation>选择 Gyre 使用的语言</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="257"/>
+        <location filename="../ui/main_window.ui" line="270"/>
         <source>Original Motion as &amp;Ghost</source>
         <translation>以虚影显示原始运动(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="258"/>
+        <location filename="../ui/main_window.ui" line="271"/>
         <source>Show the motion as it was when the project was opened or saved, faintly</source>
         <translation>淡淡地显示项目打开或保存时的运动</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="263"/>
+        <location filename="../ui/main_window.ui" line="276"/>
         <source>Centre &amp;Trajectory</source>
         <translation>中心轨迹(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="264"/>
+        <location filename="../ui/main_window.ui" line="277"/>
         <source>Show the path of the selected object&apos;s centre</source>
         <translation>显示所选对象中心的路径</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="269"/>
+        <location filename="../ui/main_window.ui" line="282"/>
         <source>&amp;Control Poses</source>
         <translation>控制姿态(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="270"/>
+        <location filename="../ui/main_window.ui" line="283"/>
         <source>Show the keyframe poses of the selected object in place</source>
         <translation>在原位显示所选对象的关键帧姿态</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="275"/>
+        <location filename="../ui/main_window.ui" line="288"/>
         <source>&amp;Stroboscopic Trail</source>
         <translation>频闪轨迹(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="276"/>
+        <location filename="../ui/main_window.ui" line="289"/>
         <source>Show many copies of the selected object along its subdivided motion</source>
         <translation>沿细分后的运动显示所选对象的多个副本</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="279"/>
+        <location filename="../ui/main_window.ui" line="292"/>
         <source>&amp;Frame Scene</source>
         <translation>显示整个场景(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="280"/>
+        <location filename="../ui/main_window.ui" line="293"/>
         <source>Point the camera at the whole scene</source>
         <translation>将相机对准整个场景</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="284"/>
+        <location filename="../ui/main_window.ui" line="297"/>
         <source>Frame &amp;Selected</source>
         <translation>显示所选对象(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="285"/>
+        <location filename="../ui/main_window.ui" line="298"/>
         <source>Point the camera at the selected object</source>
         <translation>将相机对准所选对象</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="289"/>
+        <location filename="../ui/main_window.ui" line="302"/>
         <source>&amp;Front View</source>
         <translation>前视图(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="290"/>
+        <location filename="../ui/main_window.ui" line="303"/>
         <source>Look along +Y, Z up</source>
         <translation>沿 +Y 方向看,Z 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="294"/>
+        <location filename="../ui/main_window.ui" line="307"/>
         <source>&amp;Back View</source>
         <translation>后视图(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="295"/>
+        <location filename="../ui/main_window.ui" line="308"/>
         <source>Look along −Y, Z up</source>
         <translation>沿 −Y 方向看,Z 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="299"/>
+        <location filename="../ui/main_window.ui" line="312"/>
         <source>&amp;Right View</source>
         <translation>右视图(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="300"/>
+        <location filename="../ui/main_window.ui" line="313"/>
         <source>Look along −X, Z up</source>
         <translation>沿 −X 方向看,Z 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="304"/>
+        <location filename="../ui/main_window.ui" line="317"/>
         <source>&amp;Left View</source>
         <translation>左视图(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="305"/>
+        <location filename="../ui/main_window.ui" line="318"/>
         <source>Look along +X, Z up</source>
         <translation>沿 +X 方向看,Z 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="309"/>
+        <location filename="../ui/main_window.ui" line="322"/>
         <source>&amp;Top View</source>
         <translation>顶视图(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="310"/>
+        <location filename="../ui/main_window.ui" line="323"/>
         <source>Look down −Z, Y up</source>
         <translation>沿 −Z 向下看,Y 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="314"/>
+        <location filename="../ui/main_window.ui" line="327"/>
         <source>Botto&amp;m View</source>
         <translation>底视图(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="315"/>
+        <location filename="../ui/main_window.ui" line="328"/>
         <source>Look up +Z</source>
         <translation>沿 +Z 向上看</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="320"/>
+        <location filename="../ui/main_window.ui" line="333"/>
         <source>&amp;Orthographic</source>
         <translation>正交投影(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="321"/>
+        <location filename="../ui/main_window.ui" line="334"/>
         <source>Parallel projection instead of perspective</source>
         <translation>使用平行投影而非透视投影</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="326"/>
+        <location filename="../ui/main_window.ui" line="339"/>
         <source>&amp;Wireframe</source>
         <translation>线框(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="327"/>
+        <location filename="../ui/main_window.ui" line="340"/>
         <source>Draw the objects as the edges of their triangles</source>
         <translation>将对象绘制为其三角形的边</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="332"/>
+        <location filename="../ui/main_window.ui" line="345"/>
         <source>&amp;X-Ray</source>
         <translation>X 射线(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="333"/>
+        <location filename="../ui/main_window.ui" line="346"/>
         <source>Draw the objects see-through</source>
         <translation>将对象绘制为半透明</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="338"/>
+        <location filename="../ui/main_window.ui" line="351"/>
         <source>&amp;Play</source>
         <translation>播放(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="339"/>
+        <location filename="../ui/main_window.ui" line="352"/>
         <source>Play or pause the animation</source>
         <translation>播放或暂停动画</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="343"/>
+        <location filename="../ui/main_window.ui" line="356"/>
         <source>Step &amp;Forward</source>
         <translation>前进一帧(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="344"/>
+        <location filename="../ui/main_window.ui" line="357"/>
         <source>One frame later</source>
         <translation>后一帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="348"/>
+        <location filename="../ui/main_window.ui" line="361"/>
         <source>Step &amp;Backward</source>
         <translation>后退一帧(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="349"/>
+        <location filename="../ui/main_window.ui" line="362"/>
         <source>One frame earlier</source>
         <translation>前一帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="353"/>
+        <location filename="../ui/main_window.ui" line="366"/>
         <source>Go to &amp;Start</source>
         <translation>转到开头(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="354"/>
+        <location filename="../ui/main_window.ui" line="367"/>
         <source>Go to the first frame</source>
         <translation>转到第一帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="358"/>
+        <location filename="../ui/main_window.ui" line="371"/>
         <source>Go to &amp;End</source>
         <translation>转到结尾(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="359"/>
+        <location filename="../ui/main_window.ui" line="372"/>
         <source>Go to the last frame</source>
         <translation>转到最后一帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="365"/>
+        <location filename="../ui/main_window.ui" line="378"/>
         <source>&amp;Loop</source>
         <translation>循环(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="366"/>
+        <location filename="../ui/main_window.ui" line="379"/>
         <source>Start again from the beginning at the end</source>
         <translation>到结尾时从头重新开始</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="369"/>
+        <location filename="../ui/main_window.ui" line="382"/>
         <source>&amp;Add Keyframe</source>
         <translation>添加关键帧(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="370"/>
+        <location filename="../ui/main_window.ui" line="383"/>
         <source>Key the selected object&apos;s pose at the current time</source>
         <translation>在当前时间为所选对象的姿态设置关键帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="374"/>
+        <location filename="../ui/main_window.ui" line="387"/>
         <source>&amp;Delete Keyframe</source>
         <translation>删除关键帧(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="375"/>
+        <location filename="../ui/main_window.ui" line="388"/>
         <source>Delete the selected keyframe</source>
         <translation>删除所选关键帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="381"/>
+        <location filename="../ui/main_window.ui" line="394"/>
         <source>&amp;Constrain Keyframe</source>
         <translation>约束关键帧(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="382"/>
+        <location filename="../ui/main_window.ui" line="395"/>
         <source>Keep the selected keyframe exactly when fitting, or free it</source>
         <translation>拟合时精确保持所选关键帧，或将其释放</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="386"/>
+        <location filename="../ui/main_window.ui" line="399"/>
+        <source>&amp;Euler Filter</source>
+        <translation>欧拉滤波器(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="400"/>
+        <source>Make the selected object&apos;s keys continuous: each key&apos;s quaternion in the hemisphere of the key before</source>
+        <translation>使所选对象的关键帧连续：每个关键帧的四元数位于前一关键帧的半球中</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="403"/>
         <source>&amp;About Gyre</source>
         <translation>关于 Gyre(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="387"/>
+        <location filename="../ui/main_window.ui" line="404"/>
         <source>Version, licence and the libraries Gyre is built on</source>
         <translation>版本、许可证以及 Gyre 所基于的库</translation>
     </message>
@@ -921,77 +936,77 @@
 <context>
     <name>gyre::FileError</name>
     <message>
-        <location filename="../src/model/project_file.cpp" line="366"/>
+        <location filename="../src/model/project_file.cpp" line="380"/>
         <source>these %1 keys bring the file past the %2 keys a project may hold</source>
         <translation>加上这 %1 个关键帧，文件超出项目可容纳的 %2 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="595"/>
+        <location filename="../src/model/project_file.cpp" line="611"/>
         <source>these %1 times bring the file past the %2 times a project may hold</source>
         <translation>加上这 %1 个时间，文件超出项目可容纳的 %2 个时间</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="369"/>
+        <location filename="../src/model/project_file.cpp" line="383"/>
         <source>the file has no time lists</source>
         <translation>文件没有时间列表</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="242"/>
+        <location filename="../src/model/project_file.cpp" line="249"/>
         <source>is larger than 1 GiB, the most a project file may hold</source>
         <translation>大于 1 GiB，超出项目文件的上限</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="373"/>
+        <location filename="../src/model/project_file.cpp" line="387"/>
         <source>time list %1 holds %2 times for %3 keys</source>
         <translation>时间列表 %1 有 %2 个时间，却对应 %3 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="572"/>
+        <location filename="../src/model/project_file.cpp" line="587"/>
         <source>a version %1 file starts with &quot;%2&quot; and its version in binary, not with JSON text</source>
         <translation>版本 %1 的文件以“%2”及二进制的版本号开头，而不是 JSON 文本</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="654"/>
+        <location filename="../src/model/project_file.cpp" line="674"/>
         <source>the file ends inside its first %1 bytes</source>
         <translation>文件在其前 %1 个字节内就结束了</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="659"/>
+        <location filename="../src/model/project_file.cpp" line="679"/>
         <source>a version %1 file is JSON text, not binary</source>
         <translation>版本 %1 的文件是 JSON 文本，不是二进制</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="663"/>
+        <location filename="../src/model/project_file.cpp" line="683"/>
         <source>%1 bytes; a header may hold at most %2</source>
         <translation>%1 字节；文件头最多 %2 字节</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="129"/>
+        <location filename="../src/model/project_blocks.cpp" line="131"/>
         <source>%1 is neither 0 nor 1</source>
         <translation>%1 既不是 0 也不是 1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="233"/>
+        <location filename="../src/model/project_blocks.cpp" line="259"/>
         <source>its block needs %1 bytes; the file has %2 left</source>
         <translation>其数据块需要 %1 字节；文件只剩 %2 字节</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="239"/>
+        <location filename="../src/model/project_blocks.cpp" line="265"/>
         <source>the file ends %1 bytes into its block of %2</source>
         <translation>文件在其 %2 字节的数据块中第 %1 字节处结束</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="249"/>
+        <location filename="../src/model/project_blocks.cpp" line="275"/>
         <source>the file goes on after its last block</source>
         <translation>文件在最后一个数据块之后仍有内容</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="255"/>
+        <location filename="../src/model/project_blocks.cpp" line="281"/>
         <source>the writer has no block for it</source>
         <translation>写入程序没有它的数据块</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="258"/>
+        <location filename="../src/model/project_blocks.cpp" line="284"/>
         <source>its block holds %1 bytes, not %2</source>
         <translation>其数据块有 %1 字节，而不是 %2</translation>
     </message>
@@ -1017,105 +1032,111 @@
         <translation>无法获取自动保存锁</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="254"/>
+        <location filename="../src/model/project_file.cpp" line="261"/>
         <source>unknown value &quot;%1&quot;; expected one of %2</source>
         <translation>未知的值“%1”；应为以下之一：%2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="291"/>
+        <location filename="../src/model/project_file.cpp" line="298"/>
         <source>%1 bytes are not a whole number of %2-byte items</source>
         <translation>%1 字节不是 %2 字节条目的整数倍</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="402"/>
-        <location filename="../src/model/value_checks.cpp" line="155"/>
+        <location filename="../src/model/project_file.cpp" line="350"/>
+        <source>a skin has 1 to %1 joints</source>
+        <translation>蒙皮有 1 到 %1 个关节</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="416"/>
+        <location filename="../src/model/value_checks.cpp" line="156"/>
         <source>a stroke needs at least one point</source>
         <translation>笔画至少需要一个点</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="404"/>
+        <location filename="../src/model/project_file.cpp" line="418"/>
         <source>%1 times for %2 points; give none or one per point</source>
         <translation>%1 个时间对应 %2 个点；请不给时间或每个点给一个</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="431"/>
+        <location filename="../src/model/project_file.cpp" line="445"/>
         <source>these %1 control points bring the file past the %2 keys a project may hold</source>
         <translation>加上这 %1 个控制点，文件超出项目可容纳的 %2 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="471"/>
-        <location filename="../src/model/value_checks.cpp" line="206"/>
+        <location filename="../src/model/project_file.cpp" line="485"/>
+        <location filename="../src/model/value_checks.cpp" line="207"/>
         <source>keys to restore without an applied fit</source>
         <translation>有待恢复的关键帧，却没有已应用的拟合</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="492"/>
+        <location filename="../src/model/project_file.cpp" line="506"/>
         <source>the file has no meshes</source>
         <translation>文件中没有网格</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="520"/>
+        <location filename="../src/model/project_file.cpp" line="535"/>
         <source>%1 is also the id of objects[%2]</source>
         <translation>%1 也是 objects[%2] 的 ID</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="523"/>
+        <location filename="../src/model/project_file.cpp" line="538"/>
+        <location filename="../src/model/project_file.cpp" line="624"/>
         <source>no object has id %1</source>
         <translation>没有 ID 为 %1 的对象</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="532"/>
+        <location filename="../src/model/project_file.cpp" line="547"/>
         <source>object %1 is its own ancestor</source>
         <translation>对象 %1 是它自己的祖先</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="545"/>
+        <location filename="../src/model/project_file.cpp" line="560"/>
         <source>object %1 comes after it in the file; parents come before their children</source>
         <translation>对象 %1 在文件中位于它之后；父对象须在子对象之前</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="566"/>
+        <location filename="../src/model/project_file.cpp" line="581"/>
         <source>expected &quot;%1&quot;, found &quot;%2&quot;; this is not a Gyre project</source>
         <translation>应为“%1”，实际为“%2”；这不是 Gyre 项目</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="739"/>
+        <location filename="../src/model/project_file.cpp" line="759"/>
         <source>not saved, because its header (the objects&apos; names and settings, the sketches&apos; strokes) would hold %1 bytes, more than the %2 a project may hold</source>
         <translation>未保存，因为其文件头（对象的名称和设置、草图的笔画）将有 %1 字节，超过项目可容纳的 %2 字节</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="556"/>
+        <location filename="../src/model/project_file.cpp" line="571"/>
         <source>the file has version %1, newer than this build of Gyre reads (%2 and older); open it with a newer Gyre</source>
         <translation>文件版本为 %1，比此 Gyre 版本可读取的版本（%2 及更早）更新；请用更新的 Gyre 打开</translation>
     </message>
     <message>
         <location filename="../src/model/output_target.cpp" line="42"/>
-        <location filename="../src/model/project_file.cpp" line="714"/>
+        <location filename="../src/model/project_file.cpp" line="734"/>
         <source>is a directory, not a file</source>
         <translation>是目录，不是文件</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="717"/>
+        <location filename="../src/model/project_file.cpp" line="737"/>
         <source>cannot open: %1</source>
         <translation>无法打开：%1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="621"/>
+        <location filename="../src/model/project_file.cpp" line="641"/>
         <source>cannot read: %1</source>
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="634"/>
+        <location filename="../src/model/project_file.cpp" line="654"/>
         <source>is empty; a project file holds a JSON object</source>
         <translation>为空；项目文件应包含一个 JSON 对象</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="627"/>
+        <location filename="../src/model/project_file.cpp" line="647"/>
         <source>not valid JSON: %1 at byte %2</source>
         <translation>不是有效的 JSON：%1（位于第 %2 字节）</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="732"/>
+        <location filename="../src/model/project_file.cpp" line="752"/>
         <source>not saved, because the file would not read back: %1</source>
         <translation>未保存，因为该文件无法被重新读取：%1</translation>
     </message>
@@ -1195,134 +1216,134 @@
         <translation>OBJ 不包含运动：网格按起始时间的姿态写出</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="55"/>
+        <location filename="../src/io/scene_import.cpp" line="57"/>
         <source>no such file</source>
         <translation>文件不存在</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="57"/>
+        <location filename="../src/io/scene_import.cpp" line="59"/>
         <source>is a directory, not a scene file</source>
         <translation>是目录，不是场景文件</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="59"/>
+        <location filename="../src/io/scene_import.cpp" line="61"/>
         <source>cannot be read (permission denied)</source>
         <translation>无法读取（权限不足）</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="61"/>
+        <location filename="../src/io/scene_import.cpp" line="63"/>
         <source>the file is empty</source>
         <translation>文件为空</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="74"/>
+        <location filename="../src/io/scene_import.cpp" line="76"/>
         <source>the file holds no meshes and no animation</source>
         <translation>文件既没有网格也没有动画</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="83"/>
+        <location filename="../src/io/scene_import.cpp" line="85"/>
         <source>not a scene Gyre can read: %1</source>
         <translation>不是 Gyre 能读取的场景：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="87"/>
+        <location filename="../src/io/scene_import.cpp" line="89"/>
         <source>the file holds no scene nodes</source>
         <translation>文件不含场景节点</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="129"/>
+        <location filename="../src/io/scene_import.cpp" line="131"/>
         <source>%1 key %2 is not finite</source>
         <translation>%1关键帧 %2 不是有限值</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="132"/>
+        <location filename="../src/io/scene_import.cpp" line="134"/>
         <source>%1 key %2 is not a rotation (a zero quaternion)</source>
         <translation>%1关键帧 %2 不是旋转（零四元数）</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="135"/>
+        <location filename="../src/io/scene_import.cpp" line="137"/>
         <source>%1 key %2 is not after the key before it</source>
         <translation>%1关键帧 %2 不在前一个关键帧之后</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="144"/>
+        <location filename="../src/io/scene_import.cpp" line="146"/>
         <source>node &apos;%1&apos;: %2</source>
         <translation>节点“%1”：%2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="259"/>
-        <source>mesh &apos;%1&apos; is skinned; skinning is not imported, so it shows in its bind pose</source>
-        <translation>网格“%1”带有蒙皮；蒙皮不会被导入，因此它以绑定姿态显示</translation>
-    </message>
-    <message>
-        <location filename="../src/io/scene_import.cpp" line="361"/>
+        <location filename="../src/io/scene_import.cpp" line="384"/>
         <source>node &apos;%1&apos; has more than one channel in animation &apos;%2&apos;; the first is used</source>
         <translation>节点“%1”在动画“%2”中有多个通道；使用第一个</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="367"/>
+        <location filename="../src/io/scene_import.cpp" line="390"/>
         <source>node &apos;%1&apos; is moved by more than one of the chosen animations; the later one, &apos;%2&apos;, is used</source>
         <translation>节点“%1”被多个所选动画移动；使用较后的“%2”</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="470"/>
+        <location filename="../src/io/scene_import.cpp" line="494"/>
         <source>animation &apos;%1&apos; moves &apos;%2&apos;, which is not in the scene</source>
         <translation>动画“%1”移动“%2”，但场景中没有它</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/io/scene_import.cpp" line="500"/>
+        <location filename="../src/io/scene_import.cpp" line="525"/>
         <source>the file has %n animation(s); there is no animation %1</source>
         <translation>
             <numerusform>文件有 %n 个动画；没有动画 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="524"/>
+        <location filename="../src/io/scene_import.cpp" line="549"/>
         <source>the frame rate %1 is not in (0, %2]</source>
         <translation>帧率 %1 不在 (0, %2] 范围内</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="531"/>
+        <location filename="../src/io/scene_import.cpp" line="556"/>
         <source>the unit %1 m is not a positive length</source>
         <translation>单位 %1 m 不是正的长度</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="635"/>
+        <location filename="../src/io/scene_import.cpp" line="660"/>
         <source>Assimp reads %1 animations and TinyGLTF %2</source>
         <translation>Assimp 读到 %1 个动画，而 TinyGLTF 读到 %2 个</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="416"/>
+        <location filename="../src/io/scene_import.cpp" line="440"/>
         <source>node &apos;%1&apos; has a non-uniform scale; its children get the mean scale</source>
         <translation>节点“%1”的缩放不均匀；其子节点使用平均缩放</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="434"/>
+        <location filename="../src/io/scene_import.cpp" line="257"/>
+        <source>mesh &apos;%1&apos;: %2</source>
+        <translation>网格“%1”：%2</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import.cpp" line="458"/>
         <source>rotation</source>
         <translation>旋转</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="437"/>
+        <location filename="../src/io/scene_import.cpp" line="461"/>
         <source>position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="452"/>
+        <location filename="../src/io/scene_import.cpp" line="476"/>
         <source>scaling</source>
         <translation>缩放</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="458"/>
+        <location filename="../src/io/scene_import.cpp" line="482"/>
         <source>node &apos;%1&apos;: its scale changes over time; Gyre&apos;s motion is rigid, so the scale of its first key is kept</source>
         <translation>节点“%1”：其缩放随时间变化；Gyre 的运动是刚体运动，因此保留其第一个关键帧的缩放</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="513"/>
+        <location filename="../src/io/scene_import.cpp" line="538"/>
         <source>mesh and morph animation is not imported; only node motion is</source>
         <translation>网格动画和变形动画不会被导入；只导入节点运动</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="515"/>
+        <location filename="../src/io/scene_import.cpp" line="540"/>
         <source>cameras and lights are not imported</source>
         <translation>摄像机和灯光不会被导入</translation>
     </message>
@@ -1386,7 +1407,7 @@
     </message>
     <message>
         <location filename="../src/model/json_field.cpp" line="116"/>
-        <location filename="../src/model/value_checks.cpp" line="65"/>
+        <location filename="../src/model/value_checks.cpp" line="66"/>
         <source>%1 is not a finite number</source>
         <translation>%1 不是有限数</translation>
     </message>
@@ -1411,124 +1432,159 @@
         <translation>应为 %1 个数字，实际为 %2 个</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="29"/>
+        <location filename="../src/model/value_checks.cpp" line="30"/>
         <source>not all components are finite</source>
         <translation>并非所有分量都是有限值</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="39"/>
+        <location filename="../src/model/value_checks.cpp" line="40"/>
         <source>the %1 is zero</source>
         <translation>%1为零</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="41"/>
+        <location filename="../src/model/value_checks.cpp" line="42"/>
         <source>the %1 has length %2; it must have length 1</source>
         <translation>%1的长度为 %2；长度必须为 1</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="72"/>
+        <location filename="../src/model/value_checks.cpp" line="73"/>
         <source>%1 is negative</source>
         <translation>%1 为负数</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="79"/>
+        <location filename="../src/model/value_checks.cpp" line="80"/>
         <source>%1 is not positive</source>
         <translation>%1 不是正数</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="85"/>
+        <location filename="../src/model/value_checks.cpp" line="86"/>
         <source>direction</source>
         <translation>方向</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="89"/>
+        <location filename="../src/model/value_checks.cpp" line="90"/>
         <source>quaternion</source>
         <translation>四元数</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="100"/>
+        <location filename="../src/model/value_checks.cpp" line="101"/>
         <source>position coordinate %1 is beyond ±%2</source>
         <translation>位置坐标 %1 超出 ±%2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="108"/>
+        <location filename="../src/model/value_checks.cpp" line="109"/>
         <source>time %1 is beyond ±%2 s</source>
         <translation>时间 %1 超出 ±%2 秒</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="115"/>
+        <location filename="../src/model/value_checks.cpp" line="116"/>
         <source>time %1 does not come after the time before it, %2</source>
         <translation>时间 %1 不在前一个时间 %2 之后</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="124"/>
+        <location filename="../src/model/value_checks.cpp" line="125"/>
         <source>the value has length %1; a fitted value needs length at least %2</source>
         <translation>该值的长度为 %1；拟合值的长度至少须为 %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="133"/>
+        <location filename="../src/model/value_checks.cpp" line="134"/>
         <source>the derivative has length %1 per second; the most it may have is %2</source>
         <translation>导数的长度为每秒 %1；最大允许为 %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="159"/>
+        <location filename="../src/model/value_checks.cpp" line="160"/>
         <source>a stroke has no times or one per point</source>
         <translation>笔画要么没有时间，要么每个点有一个时间</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="175"/>
+        <location filename="../src/model/value_checks.cpp" line="176"/>
         <source>the pattern&apos;s repeat count %1 is negative</source>
         <translation>图案的重复次数 %1 为负数</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="212"/>
+        <location filename="../src/model/value_checks.cpp" line="213"/>
         <source>subdivision levels %1 are outside 0 to %2</source>
         <translation>细分层级 %1 超出 0 到 %2 的范围</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="223"/>
+        <location filename="../src/model/value_checks.cpp" line="224"/>
         <source>%1 keys at %2 levels make %3 poses; the budget is %4</source>
         <translation>%1 个关键帧经 %2 层细分得到 %3 个姿态；上限为 %4</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="240"/>
+        <location filename="../src/model/value_checks.cpp" line="241"/>
         <source>a frame rate of %1 is above %2</source>
         <translation>帧率 %1 高于 %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="248"/>
+        <location filename="../src/model/value_checks.cpp" line="249"/>
         <source>the end time %1 does not come after the start time %2</source>
         <translation>结束时间 %1 不在开始时间 %2 之后</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="253"/>
+        <location filename="../src/model/value_checks.cpp" line="254"/>
         <source>%1 s at %2 fps make %3 frames; the budget is %4</source>
         <translation>%1 秒以 %2 fps 计为 %3 帧；上限为 %4</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="262"/>
+        <location filename="../src/model/value_checks.cpp" line="263"/>
         <source>a mesh position is not finite</source>
         <translation>网格的某个位置不是有限值</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="265"/>
+        <location filename="../src/model/value_checks.cpp" line="266"/>
         <source>a mesh normal is not finite</source>
         <translation>网格的某个法线不是有限值</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="267"/>
+        <location filename="../src/model/value_checks.cpp" line="268"/>
         <source>the mesh has %1 normals for %2 positions</source>
         <translation>网格有 %1 个法线，却有 %2 个位置</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="269"/>
+        <location filename="../src/model/value_checks.cpp" line="270"/>
         <source>the mesh&apos;s %1 indices do not make whole triangles</source>
         <translation>网格的 %1 个索引不能组成完整的三角形</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="272"/>
+        <location filename="../src/model/value_checks.cpp" line="273"/>
         <source>mesh index %1 is beyond its %2 positions</source>
         <translation>网格索引 %1 超出其 %2 个位置</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="282"/>
+        <source>the skin has %1 joints, more than the %2 a mesh may follow</source>
+        <translation>蒙皮有 %1 个关节，超过网格可跟随的 %2 个</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="285"/>
+        <source>skin joint %1 is 0 or named twice</source>
+        <translation>蒙皮关节 %1 为 0 或被重复指定</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="287"/>
+        <source>the skin has %1 inverse bind matrices for %2 joints</source>
+        <translation>蒙皮为 %2 个关节提供了 %1 个逆绑定矩阵</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="291"/>
+        <source>the inverse bind matrix of skin joint %1 is not a finite affine transform</source>
+        <translation>蒙皮关节 %1 的逆绑定矩阵不是有限的仿射变换</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="294"/>
+        <source>the skin has %1 joint sets and %2 weight sets for %3 positions</source>
+        <translation>蒙皮为 %3 个位置提供了 %1 组关节和 %2 组权重</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="301"/>
+        <source>skin vertex %1 names joint %2 of %3</source>
+        <translation>蒙皮顶点 %1 指向 %3 个关节中的第 %2 个</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="304"/>
+        <source>the weights of skin vertex %1 are not finite, ≥ 0 and at most 1 in sum</source>
+        <translation>蒙皮顶点 %1 的权重不是有限、≥ 0 且总和至多为 1 的数</translation>
     </message>
     <message>
         <location filename="../src/io/scene_worker.cpp" line="28"/>
@@ -1591,92 +1647,92 @@
         <translation>场景读取程序的回复格式错误：回复类型不对</translation>
     </message>
     <message>
-        <location filename="../src/io/baked_scene.cpp" line="167"/>
+        <location filename="../src/io/baked_scene.cpp" line="171"/>
         <source>glTF times cannot be negative: the motion is written %1 s later, from 0 s</source>
         <translation>glTF 的时间不能为负：运动推后 %1 秒写出，从 0 秒开始</translation>
     </message>
     <message>
-        <location filename="../src/io/baked_scene.cpp" line="186"/>
+        <location filename="../src/io/baked_scene.cpp" line="190"/>
         <source>&apos;%1&apos;: two of its keys are within a float32 step; its rotation and translation are written as baked samples, not as its splines</source>
         <translation>“%1”：它有两个关键帧相距不到一个 float32 步长；其旋转和平移以烘焙采样写出，而不是以其样条写出</translation>
     </message>
     <message>
-        <location filename="../src/io/baked_scene.cpp" line="193"/>
+        <location filename="../src/io/baked_scene.cpp" line="197"/>
         <source>&apos;%1&apos;: %2 baked samples are left out, each within a float32 step of the one kept (glTF stores times as float32)</source>
         <translation>“%1”：省略了 %2 个烘焙采样，每个都与保留的采样相距不到一个 float32 步长（glTF 以 float32 存储时间）</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="28"/>
+        <location filename="../src/io/gltf_animation.cpp" line="29"/>
         <source>%1 is %2 bytes, over the %3 bytes a glTF buffer may have</source>
         <translation>%1 有 %2 字节，超过 glTF 缓冲区允许的 %3 字节</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="62"/>
+        <location filename="../src/io/gltf_animation.cpp" line="63"/>
         <source>there is no accessor %1</source>
         <translation>不存在访问器（accessor）%1</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="66"/>
+        <location filename="../src/io/gltf_animation.cpp" line="67"/>
         <source>count %1 is over the %2 elements Gyre reads</source>
         <translation>数量 %1 超过 Gyre 读取的 %2 个元素</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="74"/>
+        <location filename="../src/io/gltf_animation.cpp" line="75"/>
         <source>there is no buffer view %1</source>
         <translation>不存在缓冲区视图（buffer view）%1</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="77"/>
+        <location filename="../src/io/gltf_animation.cpp" line="78"/>
         <source>its buffer view names no buffer</source>
         <translation>其缓冲区视图未指定缓冲区</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="83"/>
+        <location filename="../src/io/gltf_animation.cpp" line="84"/>
         <source>%1 elements from byte %2 run past its buffer view&apos;s %3 bytes</source>
         <translation>从第 %2 字节起的 %1 个元素超出其缓冲区视图的 %3 字节</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="88"/>
+        <location filename="../src/io/gltf_animation.cpp" line="89"/>
         <source>its buffer view runs past the buffer&apos;s %1 bytes</source>
         <translation>其缓冲区视图超出缓冲区的 %1 字节</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="101"/>
+        <location filename="../src/io/gltf_animation.cpp" line="102"/>
         <source>there is no such sampler</source>
         <translation>不存在该采样器</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="112"/>
+        <location filename="../src/io/gltf_animation.cpp" line="113"/>
         <source>&apos;%1&apos; is not an interpolation</source>
         <translation>“%1”不是插值方式</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="121"/>
+        <location filename="../src/io/gltf_animation.cpp" line="122"/>
         <source>%1 times need %2 output elements; the output has %3</source>
         <translation>%1 个时间需要 %2 个输出元素；输出只有 %3 个</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="129"/>
+        <location filename="../src/io/gltf_animation.cpp" line="130"/>
         <source>time %1 is not finite or not after the one before it</source>
         <translation>时间 %1 不是有限值，或不在前一个时间之后</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="137"/>
+        <location filename="../src/io/gltf_animation.cpp" line="138"/>
         <source>element %1 is not finite</source>
         <translation>元素 %1 不是有限值</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="148"/>
+        <location filename="../src/io/gltf_animation.cpp" line="149"/>
         <source>rotation %1 is a zero quaternion</source>
         <translation>旋转 %1 是零四元数</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="219"/>
+        <location filename="../src/io/gltf_animation.cpp" line="220"/>
         <source>not a glTF file Gyre can read: %1</source>
         <translation>不是 Gyre 能读取的 glTF 文件：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/gltf_animation.cpp" line="327"/>
+        <location filename="../src/io/gltf_animation.cpp" line="337"/>
         <source>node &apos;%1&apos;: its motion at %2 fps needs more than %3 keys</source>
         <translation>节点“%1”：其运动在 %2 fps 下需要超过 %3 个关键帧</translation>
     </message>
@@ -1780,6 +1836,36 @@
         <source>the file&apos;s %1 takes are Blender&apos;s, one for every object and action; each object gets its own action: %2</source>
         <translation>文件的 %1 个 take 来自 Blender，每个对象与动作的组合各一个；每个对象各取自己的动作：%2</translation>
     </message>
+    <message>
+        <location filename="../src/io/scene_import_skin.cpp" line="42"/>
+        <source>mesh &apos;%1&apos;, bone &apos;%2&apos;: %3</source>
+        <translation>网格“%1”，骨骼“%2”：%3</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_skin.cpp" line="47"/>
+        <source>its offset matrix is not finite</source>
+        <translation>其偏移矩阵不是有限值</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_skin.cpp" line="51"/>
+        <source>weight %1 names vertex %2 of %3</source>
+        <translation>权重 %1 指向 %3 个顶点中的第 %2 个</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_skin.cpp" line="53"/>
+        <source>weight %1 is not a finite number ≥ 0</source>
+        <translation>权重 %1 不是 ≥ 0 的有限数</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_skin.cpp" line="63"/>
+        <source>mesh &apos;%1&apos; has %2 bones, more than the %3 Gyre can skin; it shows in its bind pose</source>
+        <translation>网格“%1”有 %2 根骨骼，超过 Gyre 可蒙皮的 %3 根；它以绑定姿势显示</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_import_skin.cpp" line="74"/>
+        <source>mesh &apos;%1&apos;: its bone &apos;%2&apos; is not a node of the scene; it shows in its bind pose</source>
+        <translation>网格“%1”：其骨骼“%2”不是场景中的节点；它以绑定姿势显示</translation>
+    </message>
 </context>
 <context>
     <name>gyre::app::AddObjectActions</name>
@@ -1787,6 +1873,39 @@
         <location filename="../src/app/add_object_actions.cpp" line="49"/>
         <source>Add %1</source>
         <translation>添加%1</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::ChannelListModel</name>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="60"/>
+        <source>Euler %1 (°)</source>
+        <translation>欧拉角 %1 (°)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="62"/>
+        <source>quaternion w</source>
+        <translation>四元数 w</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="66"/>
+        <source>quaternion %1</source>
+        <translation>四元数 %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="70"/>
+        <source>ω %1 (rad/s)</source>
+        <translation>ω %1 (rad/s)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="72"/>
+        <source>|ω| (rad/s)</source>
+        <translation>|ω| (rad/s)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="76"/>
+        <source>position %1</source>
+        <translation>位置 %1</translation>
     </message>
 </context>
 <context>
@@ -1840,7 +1959,7 @@
         <translation>已取消拟合；未应用任何内容。</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_controller.cpp" line="138"/>
+        <location filename="../src/app/sketch/fit_controller.cpp" line="139"/>
         <source>Fit not applied: the track changed while it ran.</source>
         <translation>未应用拟合：拟合运行期间轨道已更改。</translation>
     </message>
@@ -1848,12 +1967,12 @@
 <context>
     <name>gyre::app::FitPanel</name>
     <message>
-        <location filename="../src/app/sketch/fit_panel.cpp" line="65"/>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="66"/>
         <source>Fitting…</source>
         <translation>正在拟合…</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_panel.cpp" line="226"/>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="256"/>
         <source>Not changed: %1.</source>
         <translation>未更改：%1。</translation>
     </message>
@@ -1884,6 +2003,69 @@
         <location filename="../src/app/sketch/fit_progress.cpp" line="54"/>
         <source>Fit: round %v of %m</source>
         <translation>拟合：第 %v 轮，共 %m 轮</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::GraphEditorPanel</name>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="84"/>
+        <source>The channels to plot: check one to show its curve</source>
+        <translation>要绘制的通道：勾选一个以显示其曲线</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="119"/>
+        <source>The order of the Euler angles, as the inspector shows them</source>
+        <translation>欧拉角的顺序，与检查器中显示的相同</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="120"/>
+        <source>Euler &amp;order:</source>
+        <translation>欧拉顺序(&amp;O)：</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="124"/>
+        <source>world frame</source>
+        <translation>世界坐标系</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="125"/>
+        <source>object&apos;s frame</source>
+        <translation>对象坐标系</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="126"/>
+        <source>The frame the angular velocity&apos;s components are given in</source>
+        <translation>角速度分量所在的坐标系</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="127"/>
+        <source>ω &amp;in:</source>
+        <translation>ω 坐标系(&amp;I)：</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="132"/>
+        <source>Frame &amp;All</source>
+        <translation>显示全部(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="133"/>
+        <source>Show the whole time range and every shown curve (Home)</source>
+        <translation>显示整个时间范围和所有显示的曲线 (Home)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="134"/>
+        <source>Frame &amp;Selected</source>
+        <translation>显示所选(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="136"/>
+        <source>Show the selected key between its neighbours</source>
+        <translation>在相邻关键帧之间显示所选关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="182"/>
+        <source>time (s)</source>
+        <translation>时间 (s)</translation>
     </message>
 </context>
 <context>
@@ -2002,160 +2184,160 @@
 <context>
     <name>gyre::app::InspectorWidget</name>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="76"/>
+        <location filename="../src/app/inspector_widget.cpp" line="77"/>
         <source>time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="78"/>
+        <location filename="../src/app/inspector_widget.cpp" line="79"/>
         <source>position x</source>
         <translation>位置 x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="78"/>
+        <location filename="../src/app/inspector_widget.cpp" line="79"/>
         <source>position y</source>
         <translation>位置 y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="78"/>
+        <location filename="../src/app/inspector_widget.cpp" line="79"/>
         <source>position z</source>
         <translation>位置 z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="81"/>
+        <location filename="../src/app/inspector_widget.cpp" line="82"/>
         <source>quaternion w</source>
         <translation>四元数 w</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="81"/>
+        <location filename="../src/app/inspector_widget.cpp" line="82"/>
         <source>quaternion x</source>
         <translation>四元数 x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="81"/>
+        <location filename="../src/app/inspector_widget.cpp" line="82"/>
         <source>quaternion y</source>
         <translation>四元数 y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="81"/>
+        <location filename="../src/app/inspector_widget.cpp" line="82"/>
         <source>quaternion z</source>
         <translation>四元数 z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="88"/>
+        <location filename="../src/app/inspector_widget.cpp" line="89"/>
         <source>matrix row %1, column %2</source>
         <translation>矩阵第 %1 行第 %2 列</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="91"/>
+        <location filename="../src/app/inspector_widget.cpp" line="92"/>
         <source>axis x</source>
         <translation>轴 x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="91"/>
+        <location filename="../src/app/inspector_widget.cpp" line="92"/>
         <source>axis y</source>
         <translation>轴 y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="91"/>
+        <location filename="../src/app/inspector_widget.cpp" line="92"/>
         <source>axis z</source>
         <translation>轴 z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="91"/>
+        <location filename="../src/app/inspector_widget.cpp" line="92"/>
         <source>angle</source>
         <translation>角度</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="93"/>
+        <location filename="../src/app/inspector_widget.cpp" line="94"/>
         <source>first angle</source>
         <translation>第一个角</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="93"/>
+        <location filename="../src/app/inspector_widget.cpp" line="94"/>
         <source>second angle</source>
         <translation>第二个角</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="93"/>
+        <location filename="../src/app/inspector_widget.cpp" line="94"/>
         <source>third angle</source>
         <translation>第三个角</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="135"/>
+        <location filename="../src/app/euler_convention_choosers.cpp" line="29"/>
         <source>extrinsic (fixed axes)</source>
         <translation>外旋（固定轴）</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="136"/>
+        <location filename="../src/app/euler_convention_choosers.cpp" line="31"/>
         <source>intrinsic (moving axes)</source>
         <translation>内旋（随动轴）</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="158"/>
+        <location filename="../src/app/inspector_widget.cpp" line="147"/>
         <source>about %1 (°)</source>
         <translation>绕 %1（°）</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="172"/>
+        <location filename="../src/app/inspector_widget.cpp" line="161"/>
         <source>%1, keyframe %2 of %3</source>
         <translation>%1，第 %2 个关键帧，共 %3 个</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="206"/>
+        <location filename="../src/app/inspector_widget.cpp" line="195"/>
         <source>Near gimbal lock (%1° from it): the first and third angles turn about almost the same axis, so only their sum (or difference) is determined. Small changes of the rotation can swing them widely.</source>
         <translation>接近万向节锁（相差 %1°）：第一个角和第三个角几乎绕同一根轴旋转，因此只有它们的和（或差）是确定的。旋转的微小变化可能使它们大幅摆动。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="241"/>
+        <location filename="../src/app/inspector_widget.cpp" line="230"/>
         <source>The keyframe was not moved: %1.</source>
         <translation>关键帧未移动：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="252"/>
+        <location filename="../src/app/inspector_widget.cpp" line="241"/>
         <source>The constraint was not changed: %1.</source>
         <translation>约束未更改：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="260"/>
+        <location filename="../src/app/inspector_widget.cpp" line="249"/>
         <source>The position was not changed: %1.</source>
         <translation>位置未更改：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="272"/>
-        <location filename="../src/app/inspector_widget.cpp" line="295"/>
-        <location filename="../src/app/inspector_widget.cpp" line="321"/>
-        <location filename="../src/app/inspector_widget.cpp" line="344"/>
+        <location filename="../src/app/inspector_widget.cpp" line="261"/>
+        <location filename="../src/app/inspector_widget.cpp" line="284"/>
+        <location filename="../src/app/inspector_widget.cpp" line="310"/>
+        <location filename="../src/app/inspector_widget.cpp" line="333"/>
         <source>The rotation was not changed: %1.</source>
         <translation>旋转未更改：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="277"/>
+        <location filename="../src/app/inspector_widget.cpp" line="266"/>
         <source>The rotation was not changed: the zero quaternion is no rotation.</source>
         <translation>旋转未更改：零四元数不表示旋转。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="285"/>
+        <location filename="../src/app/inspector_widget.cpp" line="274"/>
         <source>The quaternion had length %1; it was scaled to length 1.</source>
         <translation>四元数的长度为 %1；已缩放为长度 1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="302"/>
+        <location filename="../src/app/inspector_widget.cpp" line="291"/>
         <source>The rotation was not changed: the matrix has determinant %1, so it flattens or mirrors space and is not a rotation.</source>
         <translation>旋转未更改：矩阵的行列式为 %1，它会压扁或镜像空间，不是旋转。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="310"/>
+        <location filename="../src/app/inspector_widget.cpp" line="299"/>
         <source>The matrix was not a rotation (its rows were up to %1 from orthonormal); the nearest rotation was used.</source>
         <translation>该矩阵不是旋转（其各行与正交归一最多相差 %1）；已改用最接近的旋转。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="327"/>
+        <location filename="../src/app/inspector_widget.cpp" line="316"/>
         <source>The rotation was not changed: a zero axis names no direction to turn about.</source>
         <translation>旋转未更改：零轴没有给出旋转方向。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="332"/>
+        <location filename="../src/app/inspector_widget.cpp" line="321"/>
         <source>The axis had length %1; it was scaled to length 1.</source>
         <translation>轴的长度为 %1；已缩放为长度 1。</translation>
     </message>
@@ -2163,7 +2345,7 @@
 <context>
     <name>gyre::app::KeyframeActions</name>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="56"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="58"/>
         <source>Cannot add a keyframe: %1</source>
         <translation>无法添加关键帧：%1</translation>
     </message>
@@ -2269,177 +2451,177 @@
 <context>
     <name>gyre::app::MainWindow</name>
     <message>
-        <location filename="../src/app/main_window.cpp" line="67"/>
+        <location filename="../src/app/main_window.cpp" line="70"/>
         <source>Gyre projects (*.gyre)</source>
         <translation>Gyre 项目 (*.gyre)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="167"/>
+        <location filename="../src/app/main_window.cpp" line="170"/>
         <source>&amp;Undo</source>
         <translation>撤销(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="171"/>
+        <location filename="../src/app/main_window.cpp" line="174"/>
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="195"/>
+        <location filename="../src/app/main_window.cpp" line="198"/>
         <source>&lt;opened&gt;</source>
         <translation>&lt;已打开&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="258"/>
+        <location filename="../src/app/main_window.cpp" line="273"/>
         <source>Drawing the direction on the sphere needs OpenGL 3.3, which this display does not offer. The speed plot and the fit work without it.</source>
         <translation>在球面上绘制方向需要 OpenGL 3.3，而此显示环境不支持。速度图和拟合无需它也能工作。</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="277"/>
+        <location filename="../src/app/main_window.cpp" line="292"/>
         <source>The 3D viewport needs OpenGL 3.3, which this display does not offer. Editing, the panels and the timeline work without it.</source>
         <translation>3D 视口需要 OpenGL 3.3，而此显示环境不支持。编辑、面板和时间轴无需它也能工作。</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="327"/>
+        <location filename="../src/app/main_window.cpp" line="342"/>
         <source>Viewport frame rate while something moves, and the time to subdivide the trail: on the worker, and from the request to its arrival</source>
         <translation>有物体运动时视口的帧率，以及细分频闪轨迹所用的时间：在后台线程中的用时，以及从请求到送达的用时</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="337"/>
+        <location filename="../src/app/main_window.cpp" line="352"/>
         <source>%1 fps · subdivision %2 ms (%3 ms to arrive)</source>
         <translation>%1 fps · 细分 %2 毫秒（%3 毫秒后到达）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="381"/>
+        <location filename="../src/app/main_window.cpp" line="396"/>
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="383"/>
+        <location filename="../src/app/main_window.cpp" line="398"/>
         <source>%1[*] — Gyre</source>
         <translation>%1[*] — Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="398"/>
+        <location filename="../src/app/main_window.cpp" line="413"/>
         <source>Open Project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="416"/>
+        <location filename="../src/app/main_window.cpp" line="431"/>
         <source>Cannot open the project</source>
         <translation>无法打开项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="439"/>
+        <location filename="../src/app/main_window.cpp" line="454"/>
         <source>L-shaped cycle (ScrewBender)</source>
         <translation>L 形循环（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="440"/>
+        <location filename="../src/app/main_window.cpp" line="455"/>
         <source>Spinning top (sketched angular velocity)</source>
         <translation>陀螺（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="441"/>
+        <location filename="../src/app/main_window.cpp" line="456"/>
         <source>Letter M (sketched angular velocity)</source>
         <translation>字母 M（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="442"/>
+        <location filename="../src/app/main_window.cpp" line="457"/>
         <source>Hat (sketched angular velocity)</source>
         <translation>帽子（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="443"/>
+        <location filename="../src/app/main_window.cpp" line="458"/>
         <source>Falling leaf (sketched angular velocity)</source>
         <translation>飘落的树叶（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="444"/>
+        <location filename="../src/app/main_window.cpp" line="459"/>
         <source>Pen (sketched angular speed)</source>
         <translation>笔（草图绘制的角速度大小）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="445"/>
+        <location filename="../src/app/main_window.cpp" line="460"/>
         <source>Pendulum (ScrewBender)</source>
         <translation>摆（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="446"/>
+        <location filename="../src/app/main_window.cpp" line="461"/>
         <source>Spinning block (ScrewBender)</source>
         <translation>旋转的方块（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="447"/>
+        <location filename="../src/app/main_window.cpp" line="462"/>
         <source>Critter&apos;s non-planar cycle (ScrewBender)</source>
         <translation>小动物的非平面循环（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="466"/>
+        <location filename="../src/app/main_window.cpp" line="481"/>
         <source>Save Project As</source>
         <translation>项目另存为</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="479"/>
+        <location filename="../src/app/main_window.cpp" line="494"/>
         <source>Cannot save the project</source>
         <translation>无法保存项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="483"/>
+        <location filename="../src/app/main_window.cpp" line="498"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="492"/>
+        <location filename="../src/app/main_window.cpp" line="507"/>
         <source>Unsaved changes</source>
         <translation>未保存的更改</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="492"/>
+        <location filename="../src/app/main_window.cpp" line="507"/>
         <source>The project has unsaved changes. Save them first?</source>
         <translation>项目有未保存的更改。要先保存吗？</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="531"/>
+        <location filename="../src/app/main_window.cpp" line="546"/>
         <source>About Gyre</source>
         <translation>关于 Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="532"/>
+        <location filename="../src/app/main_window.cpp" line="547"/>
         <source>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Edit the rotations of animated rigid objects: every way of writing an orientation, interpolation that behaves, sketched angular velocity, and ScrewBender motions.&lt;/p&gt;&lt;p&gt;Built on Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 and QCustomPlot %8.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;编辑动画刚体的旋转：各种朝向表示方式、表现良好的插值、草图绘制的角速度，以及 ScrewBender 运动。&lt;/p&gt;&lt;p&gt;基于 Qt %2、Eigen %3.%4.%5、Ceres Solver %6、Assimp %7 和 QCustomPlot %8 构建。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="552"/>
+        <location filename="../src/app/main_window.cpp" line="567"/>
         <source>Autosave failed: %1</source>
         <translation>自动保存失败：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="561"/>
+        <location filename="../src/app/main_window.cpp" line="576"/>
         <source>an untitled project</source>
         <translation>一个未命名项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="564"/>
+        <location filename="../src/app/main_window.cpp" line="579"/>
         <source>Recover unsaved work</source>
         <translation>恢复未保存的工作</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="565"/>
+        <location filename="../src/app/main_window.cpp" line="580"/>
         <source>Gyre ended without saving changes to %1 (last copy %2). Recover them?</source>
         <translation>Gyre 结束时未保存对 %1 的更改（最后一次副本 %2）。要恢复吗？</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="580"/>
+        <location filename="../src/app/main_window.cpp" line="595"/>
         <source>Cannot recover</source>
         <translation>无法恢复</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="555"/>
+        <location filename="../src/app/main_window.cpp" line="570"/>
         <source>Autosave is off: %1</source>
         <translation>自动保存已关闭：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="199"/>
+        <location filename="../src/app/main_window.cpp" line="202"/>
         <source>Outliner</source>
         <translation>大纲</translation>
     </message>
@@ -2955,7 +3137,7 @@
         <translation>应用角速度拟合</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/remove_fit_command.cpp" line="33"/>
+        <location filename="../src/model/commands/remove_fit_command.cpp" line="20"/>
         <source>Remove angular velocity fit</source>
         <translation>移除角速度拟合</translation>
     </message>
@@ -2975,7 +3157,7 @@
         <translation>擦除笔画</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/import_objects_command.cpp" line="68"/>
+        <location filename="../src/model/commands/import_objects_command.cpp" line="95"/>
         <source>Import Objects</source>
         <translation>导入对象</translation>
     </message>
@@ -3069,6 +3251,11 @@
         <source>Hide Object</source>
         <translation>隐藏对象</translation>
     </message>
+    <message>
+        <location filename="../src/model/commands/apply_euler_filter_command.cpp" line="22"/>
+        <source>Apply Euler Filter</source>
+        <translation>应用欧拉滤波器</translation>
+    </message>
 </context>
 <context>
     <name>gyre::model::Primitive</name>
@@ -3101,32 +3288,32 @@
 <context>
     <name>gyre::model::SketchFitError</name>
     <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="94"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="95"/>
         <source>Direction stroke %1 cannot be followed: %2</source>
         <translation>无法沿方向笔画 %1 拟合：%2</translation>
     </message>
     <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="248"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="243"/>
         <source>The fit needs at least two keyframes on the selected object.</source>
         <translation>拟合需要所选对象至少有两个关键帧。</translation>
     </message>
     <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="251"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="246"/>
         <source>Nothing is sketched yet: draw the direction of the angular velocity on the sphere, or its magnitude on the plot.</source>
         <translation>尚未绘制草图：请在球面上绘制角速度的方向，或在图中绘制其大小。</translation>
     </message>
     <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="256"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="251"/>
         <source>The edit window has no length inside the keys&apos; span: widen it, or sketch between the first and the last key.</source>
         <translation>编辑窗口在关键帧范围内的长度为零：请扩大它，或在第一个和最后一个关键帧之间绘制草图。</translation>
     </message>
     <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="262"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="257"/>
         <source>The edit window of %1 s needs %2 target samples at %3 a second; the budget is %4: narrow the window.</source>
         <translation>%1 秒的编辑窗口在每秒 %3 个采样时需要 %2 个目标采样；上限为 %4：请缩小窗口。</translation>
     </message>
     <message>
-        <location filename="../src/model/sketch_fit_problem.cpp" line="273"/>
+        <location filename="../src/model/sketch_fit_problem.cpp" line="268"/>
         <source>The pattern cannot be repeated: %1</source>
         <translation>图案无法重复：%1</translation>
     </message>
