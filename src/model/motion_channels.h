@@ -1,5 +1,5 @@
 #pragma once
-// The channels of a track over time, as the graph editor plots them (issue 23): the orientation as
+// The channels of a track over time, as the graph editor plots them: the orientation as
 // three Euler angles in a chosen convention, unwrapped along time (the Euler filter,
 // core/euler_angles.h) so that a spin is a ramp and not a saw-tooth; the orientation as the four
 // quaternion components, their sign kept continuous from the first key's; the angular velocity's

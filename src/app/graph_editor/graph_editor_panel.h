@@ -1,5 +1,5 @@
 #pragma once
-// The Graph Editor (issue 23): the selected object's channels over time in one plot, as an animator's
+// The Graph Editor: the selected object's channels over time in one plot, as an animator's
 // graph editor shows them. The Euler angles are in the convention the inspector shows (the choosers
 // here and there are linked by the main window) and unwrapped, so a spin is a ramp; the quaternion
 // components, the angular velocity in the world or the object's frame, |ω| and the position can be
