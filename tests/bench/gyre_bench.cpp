@@ -308,7 +308,8 @@ void BM_Fit(benchmark::State& state)
     state.counters["variable_frames"] = result.variableFrames;
     state.counters["largest_F_n"] = result.largestFragmentError;
 }
-BENCHMARK(BM_Fit)->Arg(20)->Arg(85)->Unit(benchmark::kMillisecond);
+// 100 to 3000 keys show whether the fit's time grows linearly with the keys (µs a key = time / keys).
+BENCHMARK(BM_Fit)->Arg(20)->Arg(85)->Arg(100)->Arg(400)->Arg(2000)->Arg(3000)->Unit(benchmark::kMillisecond);
 
 // What the app's Fit button does on the bundled spinning top, between the click and the result: the
 // sketch turned into the fit's problem, then the fit.
