@@ -15,13 +15,10 @@
 
 namespace gyre {
 
-// T is double, or an Eigen array of lanes in a batch (screw_batch.cpp).
-template <class T>
-struct BasicSinCos {
-    T sin;
-    T cos;
+struct SinCos {
+    double sin;
+    double cos;
 };
-using SinCos = BasicSinCos<double>;
 
 namespace fast_trig_detail {
 
@@ -55,67 +52,6 @@ constexpr double kStepTail = static_cast<double>(kStepLong - static_cast<long do
 // Adding and subtracting 1.5·2^52 rounds a double of magnitude below 2^51 to the nearest integer.
 constexpr double kRoundingShift = 6755399441055744.0;
 
-// The pieces of fastSinCos and fastAngleOnUnitCircle, inline and branch-free, each a template over
-// T, double or an Eigen array of lanes, so that a batch (screw_batch.cpp) runs the same operations
-// on several values per register, with only the table look-ups one lane at a time.
-
-// x = k·π/128 + r with k an integer (held as a T) and |r| ≤ π/256, for |x| ≤ kLargestReduced.
-template <class T>
-struct Reduced {
-    T k;
-    T r;
-};
-template <class T>
-inline Reduced<T> reduce(const T& x)
-{
-    const T k = (x * kStepsPerRadian + kRoundingShift) - kRoundingShift;
-    return {k, (x - k * kStepHead) - k * kStepTail};
-}
-
-// sin r and cos r for |r| ≤ π/256: the Taylor series to r⁷ and r⁶; the first terms left out, r⁹/9!
-// and r⁸/8!, are below 2e-20.
-template <class T>
-inline BasicSinCos<T> seriesSinCos(const T& r)
-{
-    constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040;
-    constexpr double c2 = -1.0 / 2, c4 = 1.0 / 24, c6 = -1.0 / 720;
-    const T r2 = r * r;
-    const T r4 = r2 * r2;
-    return {r + (r * r2) * ((s3 + r2 * s5) + r4 * s7), 1.0 + r2 * ((c2 + r2 * c4) + r4 * c6)};
-}
-
-// The table entry of step k (|k| < 2³¹, as |x| ≤ kLargestReduced makes it).
-inline std::size_t stepIndex(double k)
-{
-    return static_cast<std::size_t>(static_cast<std::int32_t>(k) & (kStepsPerTurn - 1));
-}
-
-// sin and cos of k·π/128 + r from the table's sin and cos of k·π/128 and the series' of r.
-template <class T>
-inline BasicSinCos<T> sumOfAngles(const BasicSinCos<T>& step, const BasicSinCos<T>& remainder)
-{
-    return {step.sin * remainder.cos + step.cos * remainder.sin, step.cos * remainder.cos - step.sin * remainder.sin};
-}
-
-// The kAngleTable entry for the point (cosine, sine) of fastAngleOnUnitCircle.
-inline std::size_t angleIndex(double cosine, double sine)
-{
-    const bool steep = sine > cosine; // a > π/4
-    const auto bin = static_cast<std::size_t>(static_cast<std::int32_t>(std::min(sine, cosine) * kAngleBins));
-    return bin + (steep ? kAngleBinsPerHalf : 0);
-}
-
-// a = θ + asin(sin a·cos θ − cos a·sin θ) for the table angle θ below a, with its sine and cosine.
-template <class T>
-inline T angleAbove(const T& belowAngle, const T& belowSin, const T& belowCos, const T& cosine, const T& sine)
-{
-    const T sigma = sine * belowCos - cosine * belowSin;
-    // asin σ = σ + σ³/6 + 3σ⁵/40 + 5σ⁷/112; the first term left out, 35σ⁹/1152, is below 2e-22.
-    const T s2 = sigma * sigma;
-    const T series = (1.0 / 6 + s2 * (3.0 / 40)) + (s2 * s2) * (5.0 / 112);
-    return belowAngle + (sigma + (sigma * s2) * series);
-}
-
 } // namespace fast_trig_detail
 
 // sin x and cos x, with an absolute error of a few 1e-16 for |x| ≤ 1024; beyond, the standard library's.
@@ -124,9 +60,19 @@ inline SinCos fastSinCos(double x)
     using namespace fast_trig_detail;
     if (!(std::abs(x) <= kLargestReduced)) [[unlikely]]
         return {std::sin(x), std::cos(x)};
-    const Reduced<double> reduced = reduce(x);
-    const std::size_t j = stepIndex(reduced.k);
-    return sumOfAngles(SinCos{kSinCosTable.sin[j], kSinCosTable.cos[j]}, seriesSinCos(reduced.r));
+    const double k = (x * kStepsPerRadian + kRoundingShift) - kRoundingShift;
+    const double r = (x - k * kStepHead) - k * kStepTail; // |r| ≤ π/256
+    // Taylor series to r⁷ and r⁶; the first terms left out, r⁹/9! and r⁸/8!, are below 2e-20.
+    constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040;
+    constexpr double c2 = -1.0 / 2, c4 = 1.0 / 24, c6 = -1.0 / 720;
+    const double r2 = r * r;
+    const double r4 = r2 * r2;
+    const double sinR = r + (r * r2) * ((s3 + r2 * s5) + r4 * s7);
+    const double cosR = 1.0 + r2 * ((c2 + r2 * c4) + r4 * c6);
+    const auto j = static_cast<std::size_t>(static_cast<std::int64_t>(k) & (kStepsPerTurn - 1));
+    const double sinK = kSinCosTable.sin[j];
+    const double cosK = kSinCosTable.cos[j];
+    return {sinK * cosR + cosK * sinR, cosK * cosR - sinK * sinR};
 }
 
 // The angle a ∈ [0, π/2] of the point (cos a, sin a) of the unit circle, both coordinates
@@ -139,8 +85,14 @@ inline SinCos fastSinCos(double x)
 inline double fastAngleOnUnitCircle(double cosine, double sine)
 {
     using namespace fast_trig_detail;
-    const TableAngle& below = kAngleTable[angleIndex(cosine, sine)];
-    return angleAbove(below.angle, below.sin, below.cos, cosine, sine);
+    const bool steep = sine > cosine; // a > π/4
+    const auto bin = static_cast<std::size_t>(static_cast<std::int64_t>(std::min(sine, cosine) * kAngleBins));
+    const TableAngle& below = kAngleTable[bin + (steep ? kAngleBinsPerHalf : 0)];
+    const double sigma = sine * below.cos - cosine * below.sin;
+    // asin σ = σ + σ³/6 + 3σ⁵/40 + 5σ⁷/112; the first term left out, 35σ⁹/1152, is below 2e-22.
+    const double s2 = sigma * sigma;
+    const double series = (1.0 / 6 + s2 * (3.0 / 40)) + (s2 * s2) * (5.0 / 112);
+    return below.angle + (sigma + (sigma * s2) * series);
 }
 
 } // namespace gyre

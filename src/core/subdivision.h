@@ -17,7 +17,6 @@
 #include "core/screw.h"
 
 #include <cstddef>
-#include <memory>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -59,20 +58,13 @@ std::optional<std::size_t> subdividedPoseCount(std::size_t controlPoses, int lev
 // allocates nothing once the buffers have grown. Output pose i·2^L is the image of control pose i.
 class PolyscrewSubdivider {
 public:
-    PolyscrewSubdivider();
-    ~PolyscrewSubdivider();
-    PolyscrewSubdivider(PolyscrewSubdivider&&) noexcept;
-    PolyscrewSubdivider& operator=(PolyscrewSubdivider&&) noexcept;
-
     // Throws std::invalid_argument for negative levels or a result too large to hold.
     const std::vector<Pose>& subdivide(const std::vector<Pose>& controlPoses, const SubdivisionSettings& settings);
 
 private:
-    struct LevelBuffers; // a level's screws and poses, all evaluated together (ScrewBatch)
-
     std::vector<Pose> current_;
     std::vector<Pose> next_;
-    std::unique_ptr<LevelBuffers> buffers_;
+    std::vector<Pose> extended_;
 };
 
 // One-shot convenience over PolyscrewSubdivider.

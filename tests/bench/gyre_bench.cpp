@@ -7,7 +7,6 @@
 #include "core/orientation_curves.h"
 #include "core/quaternion_math.h"
 #include "core/screw.h"
-#include "core/screw_batch.h"
 #include "core/subdivision.h"
 #include "fit/angular_velocity_fit.h"
 #include "model/sketch_fit_problem.h"
@@ -120,6 +119,9 @@ BENCHMARK(BM_ScrewEvaluate);
 
 // The screw as an Eigen program would write it, the SE(3) geodesic La·exp(t·log(La⁻¹Lb)) with 4×4
 // matrices (tests/core/core_test_support.h, the tests' independent construction): BM_Screw's Eigen row.
+// BM_Screw's floors: one lane, ~15 ns (151 flops, one square root, one division); vectorised across
+// screws at the project's flags (SSE2, two doubles a register, one add and one multiply a cycle),
+// ~38 cycles for two screws, ~7 ns a screw at 2.6 GHz, ~6 ns with loads and stores overlapped.
 void BM_ScrewEigen(benchmark::State& state)
 {
     const PosePairs pairs = randomPairs();
@@ -132,53 +134,6 @@ void BM_ScrewEigen(benchmark::State& state)
     state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_ScrewEigen);
-
-// BM_Screw's work for all 1024 pairs at once: ScrewBatch's screws, then each at one t, as a level of
-// subdivision evaluates its edges. Time per screw = time / 1024 (items_per_second). The floor: 151
-// flops a screw (its construction, the angle, one sine and cosine, the pose), one square root and one
-// division, at two doubles a register and one add and one multiply a cycle, is ~38 cycles for two
-// screws, ~7 ns a screw at 2.6 GHz; ~6 ns with the loads and stores overlapped. Table look-ups
-// (three a screw) and the poses' move between their layout and the lanes' come on top.
-void BM_ScrewBatch(benchmark::State& state)
-{
-    const PosePairs pairs = randomPairs();
-    gyre::ScrewBatch batch;
-    std::vector<Pose> out(kPairs);
-    for (auto _ : state) {
-        batch.assign(pairs.from, pairs.to);
-        batch.evaluate(0.375, out);
-        benchmark::DoNotOptimize(out.data());
-    }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kPairs));
-}
-BENCHMARK(BM_ScrewBatch);
-
-// The midpoint screws of 1024 pairs, batched and one at a time, as subdivision spends most of its
-// screws.
-void BM_ScrewMidpoints(benchmark::State& state)
-{
-    const PosePairs pairs = randomPairs();
-    std::vector<Pose> out(kPairs);
-    for (auto _ : state) {
-        gyre::screwMidpoints(pairs.from, pairs.to, out);
-        benchmark::DoNotOptimize(out.data());
-    }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kPairs));
-}
-BENCHMARK(BM_ScrewMidpoints);
-
-void BM_ScrewMidpointSingle(benchmark::State& state)
-{
-    const PosePairs pairs = randomPairs();
-    std::size_t i = 0;
-    for (auto _ : state) {
-        Pose pose = gyre::Screw::midpoint(pairs.from[i], pairs.to[i]);
-        benchmark::DoNotOptimize(pose);
-        i = (i + 1) & (kPairs - 1);
-    }
-    state.SetItemsProcessed(state.iterations());
-}
-BENCHMARK(BM_ScrewMidpointSingle);
 
 // Each core operation has an Eigen row right after it, on the same inputs, so that every run prints
 // the ratio: gyre's time over the *Eigen row's.
