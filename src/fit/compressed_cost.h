@@ -1,0 +1,40 @@
+#pragma once
+// A Ceres cost function with the Gauss–Newton model of another in far fewer residuals.
+//
+// A cost function of m residuals r(x) over n parameters, J = ∂r/∂x, enters Ceres' trust-region step
+// only through ½|r|², JᵀJ and Jᵀr. With [J r] = Q·R (R upper triangular, (n+1)×(n+1)), the n + 1
+// residuals r̃ = R's last column with the Jacobian J̃ = R's first n columns give the same three:
+// |r̃|² = |r|², J̃ᵀJ̃ = JᵀJ, J̃ᵀr̃ = Jᵀr (square-root information form). R comes from the Gram matrix
+// G = [J r]ᵀ[J r] = RᵀR, by a pivoted LDLᵀ, so that a rank-deficient block (a residual with no
+// component off J's columns, as at an exact fit) still factors: R = √D·Lᵀ·P.
+//
+// For the fit's segments (m = 8 residuals a node, 4 to 64 nodes; n = 16) this shrinks the Jacobian
+// Ceres stores and walks several times an iteration from 80×16 to 17×16 at 10 nodes, and keeps the
+// full one in a scratch buffer of a few kilobytes that stays in the first-level cache.
+//
+// r̃ is r turned by Qᵀ, so r̃ is only defined together with its Jacobian: evaluated without Jacobians,
+// the residuals are (|r|, 0, …, 0), of the same squared norm. That is all Ceres' trust-region
+// minimiser reads of such an evaluation (the cost of a candidate step); nothing in the fit uses
+// Problem::Evaluate, covariance estimation or gradient checking, which would need one r̃ throughout.
+
+#include <ceres/cost_function.h>
+
+#include <memory>
+
+namespace gyre::fit {
+
+class CompressedCost final : public ceres::CostFunction {
+public:
+    // R stays on the stack up to this many parameters (the fit's segments have 16).
+    static constexpr int kMaxParameters = 16;
+
+    // Throws std::invalid_argument if `full` has more than kMaxParameters parameters.
+    explicit CompressedCost(std::unique_ptr<ceres::CostFunction> full);
+
+    bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
+
+private:
+    std::unique_ptr<ceres::CostFunction> full_;
+};
+
+} // namespace gyre::fit
