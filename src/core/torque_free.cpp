@@ -17,9 +17,9 @@ namespace {
 // A bound on the steps of one span: a flight so fast or so long that it needs more is refused, not stored.
 constexpr std::size_t kMaxSteps = 200000;
 
-// Dormand–Prince 5(4): the nodes, the stage weights, the fifth-order weights (the seventh stage's row, so
-// its last stage is the next step's first) and the difference of the fourth-order weights from them.
-constexpr std::array<double, 7> kNodes{0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0};
+// Dormand–Prince 5(4): the stage weights (the equation is autonomous, so the nodes are not needed), the
+// fifth-order weights (the seventh stage's row, so its last stage is the next step's first) and the difference
+// of the fourth-order weights from them.
 constexpr std::array<std::array<double, 6>, 7> kStages{{
     {},
     {1.0 / 5.0},
@@ -93,6 +93,7 @@ TorqueFreeMotion::TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::
         throw std::invalid_argument("the start of a free flight is not finite");
     if (!std::isfinite(duration) || duration < 0.0)
         throw std::invalid_argument("a free flight lasts a finite time ≥ 0");
+    inverseMoments_ = principal_.moments.cwiseInverse();
     const Eigen::Matrix3d world = start_.toRotationMatrix();
     momentum_ = world * inertia * world.transpose() * startAngularVelocity;
 
@@ -129,7 +130,7 @@ TorqueFreeMotion::TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::
                 at += h * kStages[stage][j] * k[j];
             if (stage == 6)
                 next = at;
-            k[stage] = stepAt(t + kNodes[stage] * h, at).dp;
+            k[stage] = rate(at);
         }
         Eigen::Vector4d error = Eigen::Vector4d::Zero();
         for (std::size_t j = 0; j < 7; ++j)
@@ -151,7 +152,18 @@ TorqueFreeMotion::TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::
     }
 }
 
-// ṗ = ½·p⊗(0, ω_p) with ω_p = D⁻¹·ℓ, ℓ = p⁻¹·L·p; p̈ = ½·ṗ⊗(0, ω_p) + ½·p⊗(0, D⁻¹·(ℓ × ω_p)), from
+// ṗ = ½·p⊗(0, ω_p) with ω_p = D⁻¹·ℓ, ℓ = p⁻¹·L·p (the rotation by p/|p|: inside a step p strays from unit
+// length by O(h²|ω|²)).
+Eigen::Vector4d TorqueFreeMotion::rate(const Eigen::Vector4d& p) const
+{
+    const Eigen::Vector3d u(p[1], p[2], p[3]);
+    const Eigen::Vector3d c = u.cross(momentum_);
+    // p⁻¹·L·p = L + 2(u × (u × L) − w(u × L))/|p|² for p = (w, u)
+    const Eigen::Vector3d body = momentum_ + (2.0 / p.squaredNorm()) * (u.cross(c) - p[0] * c);
+    return 0.5 * product(p, pure(body.cwiseProduct(inverseMoments_)));
+}
+
+// The step's ṗ as rate() gives it, and p̈ = ½·ṗ⊗(0, ω_p) + ½·p⊗(0, D⁻¹·(ℓ × ω_p)), from
 // Euler's ℓ̇ = ℓ × ω_p.
 TorqueFreeMotion::Step TorqueFreeMotion::stepAt(double time, const Eigen::Vector4d& p) const
 {

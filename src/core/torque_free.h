@@ -70,10 +70,12 @@ private:
         double time;
         Eigen::Vector4d p, dp, ddp;  // w, x, y, z of the principal frame's orientation and its derivatives
     };
+    Eigen::Vector4d rate(const Eigen::Vector4d& p) const;
     Step stepAt(double time, const Eigen::Vector4d& p) const;
     Eigen::Quaterniond principalOrientation(double t) const;
 
     PrincipalInertia principal_;
+    Eigen::Vector3d inverseMoments_;  // D⁻¹
     Eigen::Quaterniond start_;
     Eigen::Vector3d startAngularVelocity_;
     Eigen::Vector3d momentum_;
