@@ -111,59 +111,76 @@ TorqueFreeMotion::TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::
         return;
     }
 
-    // The Dormand–Prince integration of p = q·V, first stage of each step the last of the one before.
+    integrate(tolerance);
+}
+
+// The Dormand–Prince integration of p = q·V, the first stage of each step the last of the one before. The
+// stages run on plain arrays: this loop is all a span's solve does, thousands of times.
+void TorqueFreeMotion::integrate(double tolerance)
+{
     Eigen::Vector4d p = vectorOf(start_ * principal_.axes);
     steps_.push_back(stepAt(0.0, p));
-    if (duration == 0.0)
+    if (duration_ == 0.0)
         return;
-    const double fastest = momentum_.norm() / d[0] + 1e-300;  // |ω| ≤ |L|/D_min throughout
-    double h = std::min(duration, 0.05 / fastest);
+    const double fastest = momentum_.norm() * inverseMoments_.maxCoeff() + 1e-300;  // |ω| ≤ |L|/D_min throughout
+    double h = std::min(duration_, 0.05 / fastest);
     double t = 0.0;
-    std::array<Eigen::Vector4d, 7> k;
-    k[0] = steps_.back().dp;
-    while (t < duration) {
-        h = std::min(h, duration - t);
-        Eigen::Vector4d next;
+    std::array<Quaternion4, 7> k;
+    rate(p.data(), k[0].data());
+    while (t < duration_) {
+        h = std::min(h, duration_ - t);
+        Quaternion4 at;
         for (std::size_t stage = 1; stage < 7; ++stage) {
-            Eigen::Vector4d at = p;
-            for (std::size_t j = 0; j < stage; ++j)
-                at += h * kStages[stage][j] * k[j];
-            if (stage == 6)
-                next = at;
-            k[stage] = rate(at);
+            for (std::size_t c = 0; c < 4; ++c) {
+                double sum = 0.0;
+                for (std::size_t j = 0; j < stage; ++j)
+                    sum += kStages[stage][j] * k[j][c];
+                at[c] = p[static_cast<Eigen::Index>(c)] + h * sum;
+            }
+            rate(at.data(), k[stage].data());
         }
-        Eigen::Vector4d error = Eigen::Vector4d::Zero();
-        for (std::size_t j = 0; j < 7; ++j)
-            error += h * kErrorWeights[j] * k[j];
-        const double size = error.cwiseAbs().maxCoeff();
+        double size = 0.0;
+        for (std::size_t c = 0; c < 4; ++c) {
+            double sum = 0.0;
+            for (std::size_t j = 0; j < 7; ++j)
+                sum += kErrorWeights[j] * k[j][c];
+            size = std::max(size, std::abs(h * sum));
+        }
         const double factor = std::clamp(0.9 * std::pow(tolerance / std::max(size, 1e-300), 0.2), 0.2, 5.0);
-        if (size > tolerance && h > 1e-14 * duration) {
+        if (size > tolerance && h > 1e-14 * duration_) {
             h *= factor;
             continue;
         }
-        t = (duration - (t + h) <= 1e-15 * duration) ? duration : t + h;
-        p = next.normalized();
+        t = (duration_ - (t + h) <= 1e-15 * duration_) ? duration_ : t + h;
+        p = Eigen::Vector4d(at[0], at[1], at[2], at[3]).normalized();  // the seventh stage is the fifth-order step
         steps_.push_back(stepAt(t, p));
         if (steps_.size() > kMaxSteps)
             throw std::invalid_argument("a free flight would need more than " + std::to_string(kMaxSteps) +
                                         " integration steps");
-        k[0] = steps_.back().dp;
+        rate(p.data(), k[0].data());
         h *= factor;
     }
 }
 
 // ṗ = ½·p⊗(0, ω_p) with ω_p = D⁻¹·ℓ, ℓ = p⁻¹·L·p (the rotation by p/|p|: inside a step p strays from unit
-// length by O(h²|ω|²)).
-Eigen::Vector4d TorqueFreeMotion::rate(const Eigen::Vector4d& p) const
+// length by O(h²|ω|²)), with p = (w, u):
+//     ℓ = L + 2(u × (u × L) − w(u × L))/|p|²,   ṗ = ½(−u·ω_p, w·ω_p + u × ω_p).
+void TorqueFreeMotion::rate(const double* p, double* dp) const
 {
-    const Eigen::Vector3d u(p[1], p[2], p[3]);
-    const Eigen::Vector3d c = u.cross(momentum_);
-    // p⁻¹·L·p = L + 2(u × (u × L) − w(u × L))/|p|² for p = (w, u)
-    const Eigen::Vector3d body = momentum_ + (2.0 / p.squaredNorm()) * (u.cross(c) - p[0] * c);
-    return 0.5 * product(p, pure(body.cwiseProduct(inverseMoments_)));
+    const double w = p[0], x = p[1], y = p[2], z = p[3];
+    const double lx = momentum_.x(), ly = momentum_.y(), lz = momentum_.z();
+    const double cx = y * lz - z * ly, cy = z * lx - x * lz, cz = x * ly - y * lx;  // u × L
+    const double scale = 2.0 / (w * w + x * x + y * y + z * z);
+    const double ox = (lx + scale * ((y * cz - z * cy) - w * cx)) * inverseMoments_.x();
+    const double oy = (ly + scale * ((z * cx - x * cz) - w * cy)) * inverseMoments_.y();
+    const double oz = (lz + scale * ((x * cy - y * cx) - w * cz)) * inverseMoments_.z();
+    dp[0] = -0.5 * (x * ox + y * oy + z * oz);
+    dp[1] = 0.5 * (w * ox + y * oz - z * oy);
+    dp[2] = 0.5 * (w * oy + z * ox - x * oz);
+    dp[3] = 0.5 * (w * oz + x * oy - y * ox);
 }
 
-// The step's ṗ as rate() gives it, and p̈ = ½·ṗ⊗(0, ω_p) + ½·p⊗(0, D⁻¹·(ℓ × ω_p)), from
+// The step's ṗ, and p̈ = ½·ṗ⊗(0, ω_p) + ½·p⊗(0, D⁻¹·(ℓ × ω_p)), from
 // Euler's ℓ̇ = ℓ × ω_p.
 TorqueFreeMotion::Step TorqueFreeMotion::stepAt(double time, const Eigen::Vector4d& p) const
 {

@@ -18,6 +18,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 
+#include <array>
 #include <vector>
 
 namespace gyre {
@@ -70,7 +71,9 @@ private:
         double time;
         Eigen::Vector4d p, dp, ddp;  // w, x, y, z of the principal frame's orientation and its derivatives
     };
-    Eigen::Vector4d rate(const Eigen::Vector4d& p) const;
+    using Quaternion4 = std::array<double, 4>;  // w, x, y, z
+    void integrate(double tolerance);
+    void rate(const double* p, double* dp) const;
     Step stepAt(double time, const Eigen::Vector4d& p) const;
     Eigen::Quaterniond principalOrientation(double t) const;
 
