@@ -1,8 +1,7 @@
 #include "core/torque_free.h"
 
+#include "core/mass_properties.h"
 #include "core/quaternion_math.h"
-
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <array>
@@ -62,30 +61,22 @@ Eigen::Matrix3d inertiaTensor(double ixx, double iyy, double izz, double ixy, do
     return inertia;
 }
 
-PrincipalInertia principalInertia(const Eigen::Matrix3d& inertia)
+namespace {
+
+// The tensor's principal frame, after inertiaProblem has passed it.
+PrincipalAxes checkedPrincipalAxes(const Eigen::Matrix3d& inertia)
 {
-    if (!inertia.allFinite())
-        throw std::invalid_argument("the inertia tensor is not finite");
-    const double scale = inertia.cwiseAbs().maxCoeff();
-    if ((inertia - inertia.transpose()).cwiseAbs().maxCoeff() > 1e-12 * scale)
-        throw std::invalid_argument("the inertia tensor is not symmetric");
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(inertia);
-    const Eigen::Vector3d moments = solver.eigenvalues();
-    if (!(moments[0] > 1e-12 * moments[2]))
-        throw std::invalid_argument("the inertia tensor is not positive definite (principal moments " +
-                                    std::to_string(moments[0]) + ", " + std::to_string(moments[1]) + ", " +
-                                    std::to_string(moments[2]) + ")");
-    Eigen::Matrix3d axes = solver.eigenvectors();
-    if (axes.determinant() < 0.0)
-        axes.col(2) = -axes.col(2);
-    return {moments, Eigen::Quaterniond(axes).normalized()};
+    if (const char* problem = inertiaProblem(inertia))
+        throw std::invalid_argument(problem);
+    return principalAxes(inertia);
 }
+
+} // namespace
 
 TorqueFreeMotion::TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::Quaterniond& startOrientation,
                                    const Eigen::Vector3d& startAngularVelocity, double duration, Solver solver,
                                    double tolerance)
-    : principal_(principalInertia(inertia))
-    , start_(startOrientation.normalized())
+    : start_(startOrientation.normalized())
     , startAngularVelocity_(startAngularVelocity)
     , duration_(duration)
 {
@@ -93,11 +84,14 @@ TorqueFreeMotion::TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::
         throw std::invalid_argument("the start of a free flight is not finite");
     if (!std::isfinite(duration) || duration < 0.0)
         throw std::invalid_argument("a free flight lasts a finite time ≥ 0");
-    inverseMoments_ = principal_.moments.cwiseInverse();
+    const PrincipalAxes principal = checkedPrincipalAxes(inertia);
+    moments_ = principal.moments;
+    axes_ = Eigen::Quaterniond(principal.axes).normalized();
+    inverseMoments_ = moments_.cwiseInverse();
     const Eigen::Matrix3d world = start_.toRotationMatrix();
     momentum_ = world * inertia * world.transpose() * startAngularVelocity;
 
-    const Eigen::Vector3d& d = principal_.moments;
+    const Eigen::Vector3d& d = moments_;
     const bool lowPair = d[1] - d[0] <= kSymmetricMomentTolerance * d[2];
     const bool highPair = d[2] - d[1] <= kSymmetricMomentTolerance * d[2];
     if (solver == Solver::Automatic && (lowPair || highPair)) {
@@ -105,7 +99,7 @@ TorqueFreeMotion::TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::
         const int distinct = lowPair ? 2 : 0;
         const double a = lowPair ? 0.5 * (d[0] + d[1]) : 0.5 * (d[1] + d[2]);
         const double c = d[distinct];
-        symmetryAxis_ = principal_.axes * Eigen::Vector3d::Unit(distinct);
+        symmetryAxis_ = axes_ * Eigen::Vector3d::Unit(distinct);
         precession_ = momentum_ / a;
         spin_ = (1.0 - c / a) * (start_.conjugate() * startAngularVelocity).dot(symmetryAxis_);
         return;
@@ -118,7 +112,7 @@ TorqueFreeMotion::TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::
 // stages run on plain arrays: this loop is all a span's solve does, thousands of times.
 void TorqueFreeMotion::integrate(double tolerance)
 {
-    Eigen::Vector4d p = vectorOf(start_ * principal_.axes);
+    Eigen::Vector4d p = vectorOf(start_ * axes_);
     steps_.push_back(stepAt(0.0, p));
     if (duration_ == 0.0)
         return;
@@ -185,9 +179,9 @@ void TorqueFreeMotion::rate(const double* p, double* dp) const
 TorqueFreeMotion::Step TorqueFreeMotion::stepAt(double time, const Eigen::Vector4d& p) const
 {
     const Eigen::Vector3d body = quaternionOf(p).conjugate() * momentum_;
-    const Eigen::Vector3d omega = body.cwiseQuotient(principal_.moments);
+    const Eigen::Vector3d omega = body.cwiseQuotient(moments_);
     const Eigen::Vector4d dp = 0.5 * product(p, pure(omega));
-    const Eigen::Vector3d domega = body.cross(omega).cwiseQuotient(principal_.moments);
+    const Eigen::Vector3d domega = body.cross(omega).cwiseQuotient(moments_);
     return {time, p, dp, 0.5 * product(dp, pure(omega)) + 0.5 * product(p, pure(domega))};
 }
 
@@ -195,7 +189,7 @@ Eigen::Quaterniond TorqueFreeMotion::principalOrientation(double t) const
 {
     t = std::clamp(t, 0.0, duration_);
     if (symmetric_)
-        return quatExp(0.5 * t * precession_) * start_ * quatExp(0.5 * t * spin_ * symmetryAxis_) * principal_.axes;
+        return quatExp(0.5 * t * precession_) * start_ * quatExp(0.5 * t * spin_ * symmetryAxis_) * axes_;
     if (steps_.size() == 1)
         return quaternionOf(steps_.front().p);
     const auto after = std::upper_bound(steps_.begin() + 1, steps_.end() - 1, t,
@@ -217,14 +211,14 @@ Eigen::Quaterniond TorqueFreeMotion::principalOrientation(double t) const
 
 Eigen::Quaterniond TorqueFreeMotion::orientation(double t) const
 {
-    return (principalOrientation(t) * principal_.axes.conjugate()).normalized();
+    return (principalOrientation(t) * axes_.conjugate()).normalized();
 }
 
 // ω = R_p·D⁻¹·R_pᵀ·L, with R_p the principal frame's orientation.
 Eigen::Vector3d TorqueFreeMotion::angularVelocity(double t) const
 {
     const Eigen::Quaterniond p = principalOrientation(t);
-    return p * (p.conjugate() * momentum_).cwiseQuotient(principal_.moments).eval();
+    return p * (p.conjugate() * momentum_).cwiseQuotient(moments_).eval();
 }
 
 double TorqueFreeMotion::kineticEnergy() const { return 0.5 * momentum_.dot(startAngularVelocity_); }

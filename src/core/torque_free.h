@@ -23,19 +23,9 @@
 
 namespace gyre {
 
-// The principal axes of a body inertia tensor.
-struct PrincipalInertia {
-    Eigen::Vector3d moments;  // D, increasing
-    Eigen::Quaterniond axes;  // V: its columns are the principal axes in the body frame (a rotation)
-};
-
-// The symmetric 3×3 tensor of the six components, as `gyre-cli --inertia` and the inspector give them.
+// The symmetric 3×3 tensor of the six components, as `gyre-cli --inertia` gives them.
 Eigen::Matrix3d inertiaTensor(double ixx, double iyy, double izz, double ixy = 0.0, double ixz = 0.0,
                               double iyz = 0.0);
-
-// Throws std::invalid_argument unless `inertia` is finite, symmetric (to 1e-12 relative) and positive definite
-// (its least principal moment above 1e-12 of its greatest), with a message that says which.
-PrincipalInertia principalInertia(const Eigen::Matrix3d& inertia);
 
 // The per-step error tolerance of the integration (on the unit quaternion): far below 1e-9 of any quantity
 // over a span of thousands of steps.
@@ -50,7 +40,8 @@ public:
 
     // The motion from `start` (orientation, world angular velocity in rad/s) over [0, duration] seconds, its steps
     // controlled to `tolerance` (a coarser one only where a solver iterates). Throws std::invalid_argument for a
-    // non-finite start, a duration not finite and ≥ 0, or an inertia that principalInertia refuses.
+    // non-finite start, a duration not finite and ≥ 0, or an inertia that inertiaProblem (core/mass_properties.h)
+    // refuses, with its message.
     TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::Quaterniond& startOrientation,
                      const Eigen::Vector3d& startAngularVelocity, double duration, Solver solver = Solver::Automatic,
                      double tolerance = kTorqueFreeTolerance);
@@ -77,7 +68,8 @@ private:
     Step stepAt(double time, const Eigen::Vector4d& p) const;
     Eigen::Quaterniond principalOrientation(double t) const;
 
-    PrincipalInertia principal_;
+    Eigen::Vector3d moments_;         // D, increasing
+    Eigen::Quaterniond axes_;         // V: its columns are the principal axes in the body frame
     Eigen::Vector3d inverseMoments_;  // D⁻¹
     Eigen::Quaterniond start_;
     Eigen::Vector3d startAngularVelocity_;

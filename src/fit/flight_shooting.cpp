@@ -1,5 +1,6 @@
 #include "fit/flight_shooting.h"
 
+#include "core/mass_properties.h"
 #include "core/quaternion_math.h"
 #include "core/torque_free.h"
 
@@ -63,7 +64,7 @@ std::vector<Eigen::Vector3d> seeds(const FlightSpan& span, const std::optional<E
 {
     const Eigen::Quaterniond arc = shortArc(span.end * span.start.conjugate());
     const Eigen::Vector3d slerp = 2.0 * quatLog(arc) / span.duration;
-    const Eigen::Matrix3d principal = (span.start * principalInertia(span.inertia).axes).toRotationMatrix();
+    const Eigen::Matrix3d principal = span.start.toRotationMatrix() * principalAxes(span.inertia).axes;
     std::vector<Eigen::Vector3d> axes{principal.col(0), principal.col(1), principal.col(2)};
     if (slerp.norm() > 1e-9)
         axes.push_back(slerp.normalized());

@@ -39,7 +39,7 @@ inline constexpr std::size_t kMaxFlightSolutions = 6;
 
 // The solutions of the span, least kinetic energy first, distinct (start angular velocities further apart than
 // 1e-6 of their size). `hint` is one more seed, the angular velocity the artist's motion has at the start.
-// Throws std::invalid_argument for an inertia principalInertia refuses, a duration not finite and > 0, or when no
+// Throws std::invalid_argument for an inertia inertiaProblem (core/mass_properties.h) refuses, a duration not finite and > 0, or when no
 // seed converges.
 std::vector<FlightSolution> solveFlight(const FlightSpan& span,
                                         const std::optional<Eigen::Vector3d>& hint = std::nullopt);

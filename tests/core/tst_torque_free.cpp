@@ -69,7 +69,6 @@ class TestTorqueFree : public QObject {
     Q_OBJECT
 
 private slots:
-    void principalAxesDiagonalise();
     void refusesBadInertia();
     void conservesMomentumAndEnergy();
     void agreesWithFixedStepRk4();
@@ -79,32 +78,20 @@ private slots:
     void startIsTheGivenState();
 };
 
-void TestTorqueFree::principalAxesDiagonalise()
-{
-    Random random(7);
-    const Eigen::Matrix3d inertia = rotatedInertia({0.5, 1.5, 2.25}, random.rotation());
-    const PrincipalInertia principal = principalInertia(inertia);
-    const Eigen::Matrix3d v = principal.axes.toRotationMatrix();
-    const Eigen::Matrix3d diagonal = v.transpose() * inertia * v;
-    QVERIFY((diagonal - Eigen::Vector3d(0.5, 1.5, 2.25).asDiagonal().toDenseMatrix()).cwiseAbs().maxCoeff() < 1e-12);
-    QVERIFY(std::abs(v.determinant() - 1.0) < 1e-12);
-}
-
 void TestTorqueFree::refusesBadInertia()
 {
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, principalInertia(inertiaTensor(1.0, 1.0, -1.0)));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, principalInertia(inertiaTensor(1.0, 1.0, 1.0, 2.0)));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, principalInertia(inertiaTensor(1.0, NAN, 1.0)));
-    Eigen::Matrix3d asymmetric = inertiaTensor(1.0, 2.0, 3.0);
-    asymmetric(0, 1) = 0.1;
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, principalInertia(asymmetric));
+    const Eigen::Vector3d omega(1.0, 2.0, 3.0);
+    for (const Eigen::Matrix3d& inertia : {inertiaTensor(1.0, 1.0, -1.0), inertiaTensor(1.0, 1.0, 1.0, 2.0),
+                                           inertiaTensor(1.0, NAN, 1.0), inertiaTensor(1.0, 1.0, 3.0)})
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 TorqueFreeMotion(inertia, Eigen::Quaterniond::Identity(), omega, 1.0));
 }
 
 void TestTorqueFree::conservesMomentumAndEnergy()
 {
     Random random(11);
     for (int trial = 0; trial < 4; ++trial) {
-        const Eigen::Matrix3d inertia = rotatedInertia({0.3, 0.8 + 0.15 * trial, 1.4}, random.rotation());
+        const Eigen::Matrix3d inertia = rotatedInertia({0.6, 0.8 + 0.15 * trial, 1.4}, random.rotation());
         const Eigen::Quaterniond start = random.rotation();
         const Eigen::Vector3d omega = random.vector(12.0);
         const double duration = 2.5;
@@ -128,7 +115,7 @@ void TestTorqueFree::conservesMomentumAndEnergy()
 void TestTorqueFree::agreesWithFixedStepRk4()
 {
     Random random(23);
-    const Eigen::Matrix3d inertia = rotatedInertia({0.4, 1.0, 1.7}, random.rotation());
+    const Eigen::Matrix3d inertia = rotatedInertia({0.7, 1.0, 1.6}, random.rotation());
     const Eigen::Quaterniond start = random.rotation();
     const Eigen::Vector3d omega = random.vector(8.0);
     const double duration = 2.0;
@@ -167,7 +154,7 @@ void TestTorqueFree::angularVelocityIsTheOrientationsDerivative()
 void TestTorqueFree::symmetricTopMatchesItsClosedForm()
 {
     Random random(41);
-    for (const Eigen::Vector3d& moments : {Eigen::Vector3d(1.0, 1.0, 2.5), Eigen::Vector3d(0.4, 1.2, 1.2)}) {
+    for (const Eigen::Vector3d& moments : {Eigen::Vector3d(1.0, 1.0, 1.9), Eigen::Vector3d(0.4, 1.2, 1.2)}) {
         const Eigen::Matrix3d inertia = rotatedInertia(moments, random.rotation());
         const Eigen::Quaterniond start = random.rotation();
         const Eigen::Vector3d omega = random.vector(9.0);
