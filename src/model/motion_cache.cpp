@@ -6,15 +6,22 @@
 
 namespace gyre::model {
 
-SharedTrackMotion::SharedTrackMotion(MotionTrack track, std::shared_ptr<std::atomic<std::size_t>> builds)
+SharedTrackMotion::SharedTrackMotion(MotionTrack track, std::shared_ptr<std::atomic<std::size_t>> builds,
+                                     std::shared_ptr<const Mesh> body)
     : track_(std::move(track))
     , builds_(std::move(builds))
+    , body_(std::move(body))
 {
 }
 
 const TrackMotion& SharedTrackMotion::motion() const
 {
-    return build(motion_, [this] { return TrackMotion(track_); });
+    return build(motion_, [this] {
+        SceneObject object;
+        object.track.interpolation = track_.interpolation;
+        object.mesh = body_;
+        return TrackMotion(track_, {}, flightBodyOf(object));
+    });
 }
 
 const TrackMotion& SharedTrackMotion::motionWithoutFit() const
@@ -46,7 +53,7 @@ std::shared_ptr<const SharedTrackMotion> MotionCache::motion(const SceneObject& 
 {
     std::shared_ptr<const SharedTrackMotion>& motion = motions_[object.id];
     if (!motion)
-        motion = std::make_shared<const SharedTrackMotion>(object.track, builds_);
+        motion = std::make_shared<const SharedTrackMotion>(object.track, builds_, object.mesh);
     return motion;
 }
 

@@ -70,7 +70,11 @@ std::optional<Pose> DrawnMotion::originalWorldPose(model::ObjectId id, double ti
 void DrawnMotion::setPreviewTrack(model::ObjectId object, std::optional<model::MotionTrack> track)
 {
     previewObject_ = object;
-    previewMotion_ = track ? std::make_shared<const model::SharedTrackMotion>(std::move(*track)) : nullptr;
+    // The object's mesh goes along: a ballistic track flies the body it gives.
+    const model::SceneObject* previewed = model::findObject(document_.scene(), object);
+    previewMotion_ = track ? std::make_shared<const model::SharedTrackMotion>(std::move(*track), nullptr,
+                                                                              previewed ? previewed->mesh : nullptr)
+                           : nullptr;
     rebuildMotionInBackground();
 }
 
