@@ -4,6 +4,7 @@
 // a bad --inertia, --solution, --gravity or --up is refused with a message that names the option.
 
 #include "cli_test_support.h"
+#include "core/core_test_support.h"
 #include "core/torque_free.h"
 
 #include <QTest>
@@ -14,12 +15,6 @@ using namespace gyre;
 using namespace gyre::test;
 
 namespace {
-
-double angleBetween(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b)
-{
-    const Eigen::Quaterniond d = a.conjugate() * b;
-    return 2.0 * std::atan2(d.vec().norm(), std::abs(d.w()));
-}
 
 // The world angular velocity at row i by the central difference of its neighbours' orientations.
 Eigen::Vector3d omegaAt(const Csv& csv, std::size_t i)
@@ -42,16 +37,9 @@ private slots:
 
 private:
     QString path(const QString& name) const { return directory_.filePath(name); }
-    QString writeFile(const QString& name, const QByteArray& contents) const
-    {
-        QFile file(path(name));
-        if (!file.open(QIODevice::WriteOnly) || file.write(contents) != contents.size())
-            qFatal("cannot write %s", qPrintable(name));
-        return path(name);
-    }
     QString keysFile() const
     {
-        return writeFile("keys.csv", "time,qw,qx,qy,qz,x,y,z\n"
+        return writeFileIn(directory_, "keys.csv", "time,qw,qx,qy,qz,x,y,z\n"
                                      "0,1,0,0,0,0,0,1\n"
                                      "0.8,0.5,0.5,-0.5,0.5,2,0,1.5\n");
     }

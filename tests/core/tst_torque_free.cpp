@@ -5,6 +5,7 @@
 #include "core/torque_free.h"
 
 #include "core_test_support.h"
+#include "rigid_body_test_support.h"
 
 #include <QObject>
 #include <QTest>
@@ -16,20 +17,6 @@ using namespace gyre;
 using namespace gyre::test;
 
 namespace {
-
-// An inertia tensor with products: principal moments rotated by `axes`.
-Eigen::Matrix3d rotatedInertia(const Eigen::Vector3d& moments, const Eigen::Quaterniond& axes)
-{
-    const Eigen::Matrix3d r = axes.toRotationMatrix();
-    return r * moments.asDiagonal() * r.transpose();
-}
-
-// World angular momentum R·I·Rᵀ·ω and kinetic energy ½·ωᵀ·R·I·Rᵀ·ω.
-Eigen::Vector3d momentumOf(const Eigen::Matrix3d& inertia, const Eigen::Quaterniond& q, const Eigen::Vector3d& omega)
-{
-    const Eigen::Matrix3d r = q.toRotationMatrix();
-    return r * inertia * r.transpose() * omega;
-}
 
 // The reference: Euler's equations I·ω̇ = (I·ω)×ω for the body angular velocity and q̇ = ½·q⊗(0, ω_body),
 // classical RK4 at a fixed step, the tensor used as given (no principal axes).

@@ -7,6 +7,9 @@
 #include "fit/ballistic_flight.h"
 #include "fit/flight_shooting.h"
 
+#include "core/core_test_support.h"
+#include "core/rigid_body_test_support.h"
+
 #include <QTest>
 
 #include <cmath>
@@ -15,31 +18,16 @@
 
 using namespace gyre;
 using namespace gyre::fit;
+using gyre::test::angleBetween;
+using gyre::test::momentumOf;
+using gyre::test::rotatedInertia;
 
 namespace {
-
-double angleBetween(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b)
-{
-    const Eigen::Quaterniond d = a.conjugate() * b;
-    return 2.0 * std::atan2(d.vec().norm(), std::abs(d.w()));
-}
 
 Eigen::Quaterniond randomRotation(std::mt19937_64& rng)
 {
     std::normal_distribution<double> normal;
     return Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng)).normalized();
-}
-
-Eigen::Matrix3d rotatedInertia(const Eigen::Vector3d& moments, const Eigen::Quaterniond& axes)
-{
-    const Eigen::Matrix3d r = axes.toRotationMatrix();
-    return r * moments.asDiagonal() * r.transpose();
-}
-
-Eigen::Vector3d momentumOf(const Eigen::Matrix3d& inertia, const Eigen::Quaterniond& q, const Eigen::Vector3d& omega)
-{
-    const Eigen::Matrix3d r = q.toRotationMatrix();
-    return r * inertia * r.transpose() * omega;
 }
 
 } // namespace
