@@ -7,21 +7,16 @@
 namespace gyre::model {
 
 SharedTrackMotion::SharedTrackMotion(MotionTrack track, std::shared_ptr<std::atomic<std::size_t>> builds,
-                                     std::shared_ptr<const Mesh> body)
+                                     const MassProperties& body)
     : track_(std::move(track))
     , builds_(std::move(builds))
-    , body_(std::move(body))
+    , body_(body)
 {
 }
 
 const TrackMotion& SharedTrackMotion::motion() const
 {
-    return build(motion_, [this] {
-        SceneObject object;
-        object.track.interpolation = track_.interpolation;
-        object.mesh = body_;
-        return TrackMotion(track_, {}, flightBodyOf(object));
-    });
+    return build(motion_, [this] { return TrackMotion(track_, {}, body_); });
 }
 
 const TrackMotion& SharedTrackMotion::motionWithoutFit() const
@@ -53,7 +48,7 @@ std::shared_ptr<const SharedTrackMotion> MotionCache::motion(const SceneObject& 
 {
     std::shared_ptr<const SharedTrackMotion>& motion = motions_[object.id];
     if (!motion)
-        motion = std::make_shared<const SharedTrackMotion>(object.track, builds_, object.mesh);
+        motion = std::make_shared<const SharedTrackMotion>(object.track, builds_, flightBodyOf(object));
     return motion;
 }
 

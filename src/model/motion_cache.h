@@ -26,9 +26,9 @@ namespace gyre::model {
 class SharedTrackMotion {
 public:
     // `builds`, if not null, counts the builds (MotionCache::builds). `body` is what a ballistic track flies
-    // (flightBodyOf), found at the build, off the UI thread.
+    // (flightBodyOf).
     explicit SharedTrackMotion(MotionTrack track, std::shared_ptr<std::atomic<std::size_t>> builds = nullptr,
-                               std::shared_ptr<const Mesh> body = nullptr);
+                               const MassProperties& body = {});
 
     // The track as it was when this was made.
     const MotionTrack& track() const { return track_; }
@@ -52,7 +52,7 @@ private:
 
     MotionTrack track_;
     std::shared_ptr<std::atomic<std::size_t>> builds_;
-    std::shared_ptr<const Mesh> body_;
+    MassProperties body_;
     mutable Lazy motion_;
     mutable Lazy withoutFit_;
 };

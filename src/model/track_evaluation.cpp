@@ -7,6 +7,7 @@
 #include "core/quaternion_math.h"
 #include "core/subdivision.h"
 #include "core/number_text.h"
+#include "model/object_mass.h"
 #include "model/value_checks.h"
 
 #include <algorithm>
@@ -258,13 +259,8 @@ std::vector<double> bakeTimes(const std::vector<double>& keyTimes, const BakeRan
 
 MassProperties flightBodyOf(const SceneObject& object)
 {
-    if (object.track.interpolation != InterpolationMethod::Ballistic || !object.mesh || object.mesh->indices.empty())
-        return {};
-    try {
-        return meshMassProperties(object.mesh->positions, object.mesh->indices).properties;
-    } catch (const std::invalid_argument&) {
-        return {};
-    }
+    return object.track.interpolation == InterpolationMethod::Ballistic ? objectMassProperties(object).properties
+                                                                        : MassProperties{};
 }
 
 std::vector<double> keyTimes(const MotionTrack& track)

@@ -115,9 +115,9 @@ std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& rang
 
 std::vector<double> keyTimes(const MotionTrack& track);
 
-// The body a ballistic track of `object` flies: its mesh's mass properties (meshMassProperties of
-// core/mass_properties.h), or the default MassProperties for an object without a mesh or with one that
-// meshMassProperties refuses, and for a track of any other interpolation, which needs none.
+// The body a ballistic track of `object` flies: its mass properties (objectMassProperties, object_mass.h: typed,
+// its mesh's, or the default block's); the default MassProperties for a track of any other interpolation, which
+// needs none.
 MassProperties flightBodyOf(const SceneObject& object);
 
 // The track's positions as TrackMotion plays them, when they are a cubic curve through the keys (squad

@@ -3,6 +3,7 @@
 #include "app/euler_convention_choosers.h"
 #include "core/quaternion_math.h"
 #include "model/commands/set_keyframe_orientation_command.h"
+#include "model/object_mass.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -52,8 +53,15 @@ QPen channelPen(Channel channel)
         const int component = index - static_cast<int>(Channel::AngularVelocityX);
         return QPen(colours[static_cast<std::size_t>(component)], 1.0, Qt::DotLine);
     }
-    const int component = index - static_cast<int>(Channel::PositionX);
-    return QPen(colours[static_cast<std::size_t>(component)], 1.0, Qt::DashDotLine);
+    if (channel <= Channel::PositionZ) {
+        const int component = index - static_cast<int>(Channel::PositionX);
+        return QPen(colours[static_cast<std::size_t>(component)], 1.0, Qt::DashDotLine);
+    }
+    if (channel <= Channel::AngularMomentumMagnitude) {
+        const int component = index - static_cast<int>(Channel::AngularMomentumX);
+        return QPen(colours[static_cast<std::size_t>(component)], 1.0, Qt::DashDotDotLine);
+    }
+    return QPen(QColor(230, 120, 20), 1.0); // the kinetic energy, alone in orange
 }
 
 bool isFrameAllKey(const QKeyEvent& event)
@@ -72,7 +80,14 @@ GraphEditorPanel::GraphEditorPanel(model::Document& document, Selection& selecti
     , sampler_(
           *this, selection, document,
           [this](const std::shared_ptr<const model::SharedTrackMotion>& motion, const model::Scene&) {
-              return [motion, settings = settings()] {
+              // The body's mesh, for its inertia, which the job computes if no view has yet.
+              model::SceneObject body;
+              if (const model::SceneObject* object = document_.object(selection_.object())) {
+                  body.mesh = object->mesh;
+                  body.massOverride = object->massOverride;
+              }
+              return [motion, settings = settings(), body = std::move(body)]() mutable {
+                  settings.inertia = model::objectMassProperties(body).properties.inertia;
                   return model::sampleChannels(motion->motion(), motion->track().keys, settings);
               };
           },
@@ -123,7 +138,7 @@ QWidget* GraphEditorPanel::makeChoosers()
     velocityFrameChooser_->setObjectName(QStringLiteral("graphVelocityFrameCombo"));
     velocityFrameChooser_->addItem(tr("world frame"), static_cast<int>(model::VelocityFrame::World));
     velocityFrameChooser_->addItem(tr("object's frame"), static_cast<int>(model::VelocityFrame::Local));
-    velocityFrameChooser_->setToolTip(tr("The frame the angular velocity's components are given in"));
+    velocityFrameChooser_->setToolTip(tr("The frame the angular velocity's and angular momentum's components are given in"));
     auto* velocityLabel = new QLabel(tr("ω &in:"), row);
     velocityLabel->setBuddy(velocityFrameChooser_);
 
