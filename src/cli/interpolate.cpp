@@ -3,11 +3,11 @@
 #include "cli/command_line.h"
 #include "cli/verbs.h"
 #include "core/number_text.h"
-#include "core/mass_properties.h"
 #include "core/orientation_curves.h"
 #include "core/torque_free.h"
 #include "fit/ballistic_flight.h"
 #include "io/pose_csv.h"
+#include "model/object_mass.h"
 #include "model/track_evaluation.h"
 
 #include <optional>
@@ -53,8 +53,11 @@ Eigen::Matrix3d inertiaOption(const VerbCommandLine& commandLine)
                                 std::to_string(n.size()));
     const Eigen::Matrix3d inertia =
         n.size() == 3 ? inertiaTensor(n[0], n[1], n[2]) : inertiaTensor(n[0], n[1], n[2], n[3], n[4], n[5]);
-    if (const char* problem = inertiaProblem(inertia))
-        throw commandLine.error(std::string("--inertia: ") + problem);
+    try {
+        model::checkMassProperties({1.0, Eigen::Vector3d::Zero(), inertia});
+    } catch (const std::invalid_argument& problem) {
+        throw commandLine.error(std::string("--inertia: ") + problem.what());
+    }
     return inertia;
 }
 

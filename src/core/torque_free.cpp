@@ -63,11 +63,12 @@ Eigen::Matrix3d inertiaTensor(double ixx, double iyy, double izz, double ixy, do
 
 namespace {
 
-// The tensor's principal frame, after inertiaProblem has passed it.
+// The tensor's principal frame, after inertiaProblem has passed it. Callers that show the reason check first
+// (model::checkMassProperties says it in words).
 PrincipalAxes checkedPrincipalAxes(const Eigen::Matrix3d& inertia)
 {
-    if (const char* problem = inertiaProblem(inertia))
-        throw std::invalid_argument(problem);
+    if (inertiaProblem(inertia) != InertiaProblem::None)
+        throw std::invalid_argument("the inertia tensor is not one a body can have");
     return principalAxes(inertia);
 }
 

@@ -41,7 +41,7 @@ public:
     // The motion from `start` (orientation, world angular velocity in rad/s) over [0, duration] seconds, its steps
     // controlled to `tolerance` (a coarser one only where a solver iterates). Throws std::invalid_argument for a
     // non-finite start, a duration not finite and ≥ 0, or an inertia that inertiaProblem (core/mass_properties.h)
-    // refuses, with its message.
+    // refuses.
     TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::Quaterniond& startOrientation,
                      const Eigen::Vector3d& startAngularVelocity, double duration, Solver solver = Solver::Automatic,
                      double tolerance = kTorqueFreeTolerance);
