@@ -3,6 +3,7 @@
 #include "model/commands/add_keyframe_command.h"
 #include "model/commands/apply_euler_filter_command.h"
 #include "model/commands/remove_keyframe_command.h"
+#include "model/commands/step_ballistic_solution_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
 #include "model/track_evaluation.h"
 
@@ -35,9 +36,11 @@ KeyframeActions::KeyframeActions(model::Document& document, Selection& selection
     // updateActions must not toggle the key back.
     connect(actions_.toggleConstraint, &QAction::triggered, this, &KeyframeActions::toggleConstraint);
     connect(actions_.eulerFilter, &QAction::triggered, this, &KeyframeActions::applyEulerFilter);
+    connect(actions_.nextFlight, &QAction::triggered, this, [this] { stepFlightSolution(1); });
+    connect(actions_.previousFlight, &QAction::triggered, this, [this] { stepFlightSolution(-1); });
     connect(&selection_, &Selection::changed, this, &KeyframeActions::updateActions);
     connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
-        if (changes & (model::Change::Keyframes | model::Change::Scene))
+        if (changes & (model::Change::Keyframes | model::Change::TrackSettings | model::Change::Scene))
             updateActions();
     });
     updateActions();
@@ -88,11 +91,32 @@ void KeyframeActions::applyEulerFilter()
         document_.push(new model::ApplyEulerFilterCommand(document_, object->id));
 }
 
+void KeyframeActions::stepFlightSolution(int direction)
+{
+    const model::SceneObject* object = selection_.selectedObject();
+    if (object == nullptr)
+        return;
+    try {
+        if (const auto solutions = model::StepBallisticSolutionCommand::stepped(document_, object->id,
+                                                                                document_.scene().currentTime, direction))
+            document_.push(new model::StepBallisticSolutionCommand(document_, object->id, *solutions));
+        else
+            statusBar_->showMessage(tr("This span has a single free flight"), kMessageMilliseconds);
+    } catch (const std::invalid_argument& error) {
+        statusBar_->showMessage(tr("Cannot step the flight: %1").arg(QString::fromUtf8(error.what())),
+                                kMessageMilliseconds);
+    }
+}
+
 void KeyframeActions::updateActions()
 {
     const model::Keyframe* key = selection_.selectedKey();
     const model::SceneObject* object = selection_.selectedObject();
     actions_.eulerFilter->setEnabled(object != nullptr && model::ApplyEulerFilterCommand::changes(object->track));
+    const bool flies = object != nullptr && object->track.interpolation == InterpolationMethod::Ballistic &&
+                       object->track.keys.size() >= 2;
+    actions_.nextFlight->setEnabled(flies);
+    actions_.previousFlight->setEnabled(flies);
     actions_.add->setEnabled(selection_.selectedObject() != nullptr);
     actions_.remove->setEnabled(key != nullptr);
     actions_.toggleConstraint->setEnabled(key != nullptr);

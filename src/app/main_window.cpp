@@ -164,7 +164,8 @@ void MainWindow::setUpActions()
     connect(ui_->actionExportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToExport);
     new AddObjectActions(document_, selection_, *ui_->menuAdd, this);
     new KeyframeActions(
-        document_, selection_, {ui_->actionAddKeyframe, ui_->actionDeleteKeyframe, ui_->actionToggleConstraint, ui_->actionEulerFilter},
+        document_, selection_, {ui_->actionAddKeyframe, ui_->actionDeleteKeyframe, ui_->actionToggleConstraint, ui_->actionEulerFilter,
+                                ui_->actionNextFlightSolution, ui_->actionPreviousFlightSolution},
         statusBar(), this);
 
     QAction* undo = document_.undoStack().createUndoAction(this, tr("&Undo"));

@@ -33,6 +33,8 @@ QString methodLabel(InterpolationMethod method)
         return ScrewBenderPanel::tr("Euler angles, linearly");
     case InterpolationMethod::Screw:
         return ScrewBenderPanel::tr("Screw motion (ScrewBender)");
+    case InterpolationMethod::Ballistic:
+        return ScrewBenderPanel::tr("Ballistic (free flight between keys)");
     }
     return {};
 }

@@ -150,6 +150,18 @@ double VerbCommandLine::frameRate(const QString& option) const
     }
 }
 
+std::vector<double> VerbCommandLine::numberList(const QString& option) const
+{
+    std::vector<double> numbers;
+    try {
+        for (const QString& item : requiredValue(option).split(QLatin1Char(',')))
+            numbers.push_back(parseFiniteNumber(item.toStdString()));
+    } catch (const std::invalid_argument& problem) {
+        throw error(dashed(option).toStdString() + ": " + problem.what());
+    }
+    return numbers;
+}
+
 int VerbCommandLine::nonNegativeInteger(const QString& option) const
 {
     const QString text = requiredValue(option);

@@ -65,6 +65,8 @@ public:
     double positiveNumber(const QString& option) const;
     // A required option's value as a frame rate in (0, model::kMaxFps].
     double frameRate(const QString& option) const;
+    // A required option's value as comma-separated finite numbers, e.g. "1,2,3".
+    std::vector<double> numberList(const QString& option) const;
     // A required option's value as an integer ≥ 0.
     int nonNegativeInteger(const QString& option) const;
     // The convention of --order (default xyz) and --intrinsic or --extrinsic (default extrinsic),

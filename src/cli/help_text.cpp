@@ -52,6 +52,7 @@ The Euler options say how to read Euler input and how to write Euler output. Row
 of gimbal lock are reported on standard error.)";
 
 const char* const kInterpolate = R"(Usage: gyre-cli interpolate KEYS.csv -o FRAMES.csv --method METHOD --fps F [--order AXES] [--intrinsic|--extrinsic]
+       gyre-cli interpolate KEYS.csv -o FRAMES.csv --method ballistic --inertia I --fps F [--solution K] [--gravity G] [--up X,Y,Z]
 
 Samples the motion through timed keys (a time column is required, at least two keys) at
 t0 + k/F up to the last key, plus a sample at every key time. Writes time,qw,qx,qy,qz,x,y,z.
@@ -59,7 +60,17 @@ t0 + k/F up to the last key, plus a sample at every key time. Writes time,qw,qx,
   --method   slerp, nlerp, euler    orientation by that curve, position linear
              squad, hermite         orientation by that curve, position cubic Hermite
              screw                  the polyscrew through the key poses
+             ballistic              free flight between keys: torque-free rotation that meets
+                                    each next key exactly, position on the parabola under gravity
   --fps F    samples per second, above 0 and at most 1000
+
+Options of the ballistic method (the keys are the body's orientations, its origin its centre of mass):
+  --inertia Ixx,Iyy,Izz[,Ixy,Ixz,Iyz]  the inertia tensor in the body frame (any unit; only ratios
+                                       count), symmetric positive definite
+  --solution K  the K-th solution of each span by kinetic energy, 0 the least (at most 6 per span);
+                default: the one nearest the hermite motion's angular velocity at the span's start
+  --gravity G   m/s^2, at least 0 (default 9.81)
+  --up X,Y,Z    the world's up (default 0,0,1: Gyre is Z-up)
 
 The Euler options say how to read Euler input, and the angles the euler method interpolates.)";
 

@@ -296,9 +296,11 @@ std::unique_ptr<OrientationCurve> makeOrientationCurve(InterpolationMethod metho
     case InterpolationMethod::Euler:
         return std::make_unique<EulerAngleCurve>(std::move(keys), convention);
     case InterpolationMethod::Screw:
+        throw std::invalid_argument("screw interpolation moves poses, not orientations: use Polyscrew");
+    case InterpolationMethod::Ballistic:
         break;
     }
-    throw std::invalid_argument("screw interpolation moves poses, not orientations: use Polyscrew");
+    throw std::invalid_argument("ballistic interpolation is a body's free flight, not an orientation curve");
 }
 
 } // namespace gyre

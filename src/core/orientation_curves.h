@@ -144,22 +144,25 @@ private:
     std::vector<Eigen::Vector3d> angles_;
 };
 
-enum class InterpolationMethod { Slerp, Nlerp, Squad, Hermite, Euler, Screw };
+// Ballistic: every span a rigid body's free flight (core/torque_free.h, fit/ballistic_flight.h), which needs the
+// body's inertia: like Screw, it is no orientation curve.
+enum class InterpolationMethod { Slerp, Nlerp, Squad, Hermite, Euler, Screw, Ballistic };
 
-inline constexpr NameTable<InterpolationMethod, 6> kInterpolationMethodNames{{
+inline constexpr NameTable<InterpolationMethod, 7> kInterpolationMethodNames{{
     {InterpolationMethod::Slerp, "slerp"},
     {InterpolationMethod::Nlerp, "nlerp"},
     {InterpolationMethod::Squad, "squad"},
     {InterpolationMethod::Hermite, "hermite"},
     {InterpolationMethod::Euler, "euler"},
     {InterpolationMethod::Screw, "screw"},
+    {InterpolationMethod::Ballistic, "ballistic"},
 }};
 
 std::optional<InterpolationMethod> parseInterpolationMethod(std::string_view name);
 std::string_view interpolationMethodName(InterpolationMethod method);
 
-// The orientation curve of a method; `Screw` is not an orientation curve (see polyscrew.h) and
-// throws std::invalid_argument. The convention is used by `Euler` only.
+// The orientation curve of a method; `Screw` (see polyscrew.h) and `Ballistic` are not orientation curves and
+// throw std::invalid_argument. The convention is used by `Euler` only.
 std::unique_ptr<OrientationCurve> makeOrientationCurve(InterpolationMethod method, std::vector<OrientationKey> keys,
                                                        const EulerConvention& convention = {});
 

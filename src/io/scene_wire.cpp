@@ -159,6 +159,7 @@ void writeTrack(Writer& out, const model::MotionTrack& track)
     out.put<qint32>(track.subdivision.levels);
     out.put<quint8>(track.subdivision.cyclic);
     out.put<quint8>(track.subdivision.decoupled);
+    out.block(std::vector<qint32>(track.flightSolutions.begin(), track.flightSolutions.end()));
     std::vector<double> numbers;
     numbers.reserve(track.keys.size() * kKeyNumbers);
     std::vector<quint8> constrained;
@@ -438,6 +439,8 @@ model::MotionTrack trackIn(Reader& in, const std::string& what)
     track.subdivision.levels = in.get<qint32>();
     track.subdivision.cyclic = in.flag();
     track.subdivision.decoupled = in.flag();
+    for (const qint32 solution : in.block<qint32>("flight solutions"))
+        track.flightSolutions.push_back(std::max(solution, -1));
     const std::vector<double> numbers = in.block<double>("keyframes", kKeyNumbers);
     const std::vector<quint8> constrained = in.block<quint8>("keyframe flags");
     if (constrained.size() * kKeyNumbers != numbers.size())

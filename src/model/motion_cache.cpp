@@ -6,15 +6,17 @@
 
 namespace gyre::model {
 
-SharedTrackMotion::SharedTrackMotion(MotionTrack track, std::shared_ptr<std::atomic<std::size_t>> builds)
+SharedTrackMotion::SharedTrackMotion(MotionTrack track, std::shared_ptr<std::atomic<std::size_t>> builds,
+                                     const MassProperties& body)
     : track_(std::move(track))
     , builds_(std::move(builds))
+    , body_(body)
 {
 }
 
 const TrackMotion& SharedTrackMotion::motion() const
 {
-    return build(motion_, [this] { return TrackMotion(track_); });
+    return build(motion_, [this] { return TrackMotion(track_, {}, body_); });
 }
 
 const TrackMotion& SharedTrackMotion::motionWithoutFit() const
@@ -46,7 +48,7 @@ std::shared_ptr<const SharedTrackMotion> MotionCache::motion(const SceneObject& 
 {
     std::shared_ptr<const SharedTrackMotion>& motion = motions_[object.id];
     if (!motion)
-        motion = std::make_shared<const SharedTrackMotion>(object.track, builds_);
+        motion = std::make_shared<const SharedTrackMotion>(object.track, builds_, flightBodyOf(object));
     return motion;
 }
 

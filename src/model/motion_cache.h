@@ -25,8 +25,10 @@ namespace gyre::model {
 
 class SharedTrackMotion {
 public:
-    // `builds`, if not null, counts the builds (MotionCache::builds).
-    explicit SharedTrackMotion(MotionTrack track, std::shared_ptr<std::atomic<std::size_t>> builds = nullptr);
+    // `builds`, if not null, counts the builds (MotionCache::builds). `body` is what a ballistic track flies
+    // (flightBodyOf).
+    explicit SharedTrackMotion(MotionTrack track, std::shared_ptr<std::atomic<std::size_t>> builds = nullptr,
+                               const MassProperties& body = {});
 
     // The track as it was when this was made.
     const MotionTrack& track() const { return track_; }
@@ -50,6 +52,7 @@ private:
 
     MotionTrack track_;
     std::shared_ptr<std::atomic<std::size_t>> builds_;
+    MassProperties body_;
     mutable Lazy motion_;
     mutable Lazy withoutFit_;
 };

@@ -79,6 +79,14 @@ QJsonObject subdivisionJson(const SubdivisionSettings& settings)
             {"decoupled", settings.decoupled}};
 }
 
+QJsonArray flightSolutionsJson(const std::vector<int>& solutions)
+{
+    QJsonArray array;
+    for (const int solution : solutions)
+        array.append(solution);
+    return array;
+}
+
 QJsonObject strokeJson(const DirectionStroke& stroke)
 {
     return {{"points", arrayJson(stroke.points, [](const Eigen::Vector3d& point) { return json(point); })},
@@ -188,6 +196,7 @@ ProjectLayout::ProjectLayout(const Scene& scene)
             {"mesh", object.mesh ? QJsonValue(meshIndex.at(object.mesh.get())) : QJsonValue()},
             {"interpolation", QString::fromLatin1(interpolationMethodName(object.track.interpolation))},
             {"subdivision", subdivisionJson(object.track.subdivision)},
+            {"flightSolutions", flightSolutionsJson(object.track.flightSolutions)},
             {"keyframes", keyframes},
             {"sketch", sketchJson(object.track.sketch, fittedCurve, keysBeforeFit)}};
         if (object.massOverride)
@@ -514,6 +523,10 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
     }
     object.track.interpolation = named(field.member("interpolation"), kInterpolationMethodNames);
     object.track.subdivision = subdivisionIn(field.member("subdivision"));
+    // Files written before ballistic interpolation take every span's default flight.
+    if (field.has("flightSolutions"))
+        for (const JsonField& choice : field.member("flightSolutions").elements())
+            object.track.flightSolutions.push_back(static_cast<int>(choice.integer(-1, std::numeric_limits<int>::max())));
     object.track.keys = keysIn(field.member("keyframes"), binary);
     field.member("subdivision").member("levels").checked([&] {
         checkPoseBudget(object.track.keys.size(), object.track.interpolation, object.track.subdivision);

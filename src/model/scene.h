@@ -92,6 +92,10 @@ struct MotionTrack {
     SharedVector<Keyframe> keys;  // strictly increasing times; copies share them (shared_vector.h)
     InterpolationMethod interpolation = InterpolationMethod::Hermite;
     SubdivisionSettings subdivision;  // used when interpolation is Screw
+    // Used when interpolation is Ballistic: for span i (key i to key i + 1), the index by kinetic energy of its
+    // chosen free flight (fit/ballistic_flight.h, taken modulo the span's count), or negative (and for spans past
+    // the end) the default, the flight nearest the hermite motion.
+    std::vector<int> flightSolutions;
     SketchState sketch;
 };
 

@@ -1,11 +1,13 @@
 #include "model/track_evaluation.h"
 
 #include "core/key_time_map.h"
+#include "fit/ballistic_flight.h"
 #include "core/polyscrew.h"
 #include "core/position_curve.h"
 #include "core/quaternion_math.h"
 #include "core/subdivision.h"
 #include "core/number_text.h"
+#include "model/object_mass.h"
 #include "model/value_checks.h"
 
 #include <algorithm>
@@ -100,10 +102,56 @@ private:
     Polyscrew motion_;
 };
 
-std::unique_ptr<const detail::KeyedMotion> keyedMotion(const MotionTrack& track, const EulerConvention& eulerConvention)
+// Every span a free flight of the body (fit/ballistic_flight.h), its solution the track's choice; one key
+// is held.
+class BallisticMotion final : public detail::KeyedMotion {
+public:
+    BallisticMotion(const MotionTrack& track, const MassProperties& body)
+        : flight_(flightOf(track, body))
+        , held_(track.keys.front().pose)
+    {
+    }
+
+    Pose at(double time) const override { return flight_ ? flight_->at(time) : held_; }
+
+    std::vector<TrackMotion::FlightChoice> choices() const
+    {
+        std::vector<TrackMotion::FlightChoice> result;
+        if (flight_)
+            for (const fit::BallisticFlight::Span& span : flight_->spans())
+                result.push_back({span.chosen, span.solutions.size()});
+        return result;
+    }
+
+private:
+    static std::optional<fit::BallisticFlight> flightOf(const MotionTrack& track, const MassProperties& body)
+    {
+        if (track.keys.size() < 2)
+            return std::nullopt;
+        std::vector<fit::FlightKey> keys;
+        keys.reserve(track.keys.size());
+        for (const Keyframe& key : track.keys)
+            keys.push_back({key.time, key.pose});
+        std::vector<std::optional<std::size_t>> choices;
+        for (const int choice : track.flightSolutions)
+            choices.push_back(choice >= 0 ? std::optional<std::size_t>(static_cast<std::size_t>(choice)) : std::nullopt);
+        fit::FlightBody flightBody;
+        flightBody.inertia = body.inertia;
+        flightBody.centreOfMass = body.centre;
+        return fit::BallisticFlight(keys, flightBody, choices);
+    }
+
+    std::optional<fit::BallisticFlight> flight_;
+    Pose held_;
+};
+
+std::unique_ptr<const detail::KeyedMotion> keyedMotion(const MotionTrack& track, const EulerConvention& eulerConvention,
+                                                       const MassProperties& body)
 {
     if (track.keys.empty())
         return nullptr;
+    if (track.interpolation == InterpolationMethod::Ballistic)
+        return std::make_unique<BallisticMotion>(track, body);
     if (track.interpolation == InterpolationMethod::Screw) {
         if (track.subdivision.levels < 0 || track.subdivision.levels >= 32)
             throw std::invalid_argument("subdivision levels must be between 0 and 31");
@@ -128,11 +176,13 @@ std::optional<std::pair<double, double>> cycleOf(const MotionTrack& track)
 
 } // namespace
 
-TrackMotion::TrackMotion(const MotionTrack& track, const EulerConvention& eulerConvention)
-    : keyed_(keyedMotion(track, eulerConvention))
+TrackMotion::TrackMotion(const MotionTrack& track, const EulerConvention& eulerConvention, const MassProperties& body)
+    : keyed_(keyedMotion(track, eulerConvention, body))
     , fitted_(fittedSpline(track.sketch))
     , cycle_(cycleOf(track))
 {
+    if (const auto* ballistic = dynamic_cast<const BallisticMotion*>(keyed_.get()))
+        flightChoices_ = ballistic->choices();
 }
 
 TrackMotion::~TrackMotion() = default;
@@ -207,6 +257,12 @@ std::vector<double> bakeTimes(const std::vector<double>& keyTimes, const BakeRan
     return times;
 }
 
+MassProperties flightBodyOf(const SceneObject& object)
+{
+    return object.track.interpolation == InterpolationMethod::Ballistic ? objectMassProperties(object).properties
+                                                                        : MassProperties{};
+}
+
 std::vector<double> keyTimes(const MotionTrack& track)
 {
     std::vector<double> times;
@@ -224,9 +280,9 @@ std::optional<PositionCurve> cubicPositionCurve(const MotionTrack& track)
 }
 
 std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range,
-                                 const EulerConvention& eulerConvention)
+                                 const EulerConvention& eulerConvention, const MassProperties& body)
 {
-    const TrackMotion motion(track, eulerConvention);
+    const TrackMotion motion(track, eulerConvention, body);
     const std::vector<double> times = bakeTimes(keyTimes(track), range);
     std::vector<TimedPose> poses;
     poses.reserve(times.size());

@@ -10,12 +10,17 @@
 //   poses outside the keys. A cyclic track repeats forever: its closing span, from the last key back
 //   to the first, lasts the mean of the other spans, so the period is T = n·(tₙ₋₁ − t₀)/(n − 1) for
 //   n keys.
+// - ballistic: every span between two keys the free flight of the body (`body`: its inertia and centre of mass
+//   in the object's frame) that meets both keys (fit/ballistic_flight.h), the solution of span i the track's
+//   flightSolutions[i] (by kinetic energy) or the one nearest the hermite motion; the centre of mass on the
+//   parabola under 9.81 m/s² along +Z (Gyre's up). Each span is solved when the motion is built.
 // - A fit (track.sketch.fittedCurve non-empty) gives the orientation inside the span of its control
 //   points, by the normalised HermiteQuaternionSpline through them; outside, and for positions, the
 //   interpolation above. On a cyclic screw track the fit repeats with the cycle, as the motion does.
 // A track without keys stays at the identity pose.
 
 #include "core/euler_angles.h"
+#include "core/mass_properties.h"
 #include "core/orientation_curves.h"
 #include "core/pose.h"
 #include "core/position_curve.h"
@@ -35,9 +40,11 @@ class KeyedMotion;
 class TrackMotion {
 public:
     // Built once, evaluated at many times. Throws std::invalid_argument for key or control-point
-    // times that do not strictly increase, or a subdivision too large to hold. The convention is
-    // the one the euler interpolation uses.
-    explicit TrackMotion(const MotionTrack& track, const EulerConvention& eulerConvention = {});
+    // times that do not strictly increase, a subdivision too large to hold, or a free flight that cannot be
+    // solved. The convention is the one the euler interpolation uses, `body` the one the ballistic one flies
+    // (by default a unit sphere's: objectMassProperties gives an object's).
+    explicit TrackMotion(const MotionTrack& track, const EulerConvention& eulerConvention = {},
+                         const MassProperties& body = {});
     ~TrackMotion();
     TrackMotion(TrackMotion&&) noexcept;
     TrackMotion& operator=(TrackMotion&&) noexcept;
@@ -48,11 +55,20 @@ public:
     // method alike, screws included. Zero where the pose is held.
     Eigen::Vector3d angularVelocity(double time) const;
 
+    // For a ballistic track of two keys or more, each span's chosen free flight and how many it offers (the
+    // choice an index by kinetic energy); empty for every other track.
+    struct FlightChoice {
+        std::size_t chosen = 0;
+        std::size_t count = 0;
+    };
+    const std::vector<FlightChoice>& flightChoices() const { return flightChoices_; }
+
 private:
     std::unique_ptr<const detail::KeyedMotion> keyed_; // null for a track without keys
     std::optional<HermiteQuaternionSpline> fitted_;
     // A cyclic screw track's first key time t₀ and period T: time t plays as t₀ + ((t − t₀) mod T).
     std::optional<std::pair<double, double>> cycle_;
+    std::vector<FlightChoice> flightChoices_;
 };
 
 // The step of TrackMotion::angularVelocity's central difference, seconds: small against any key
@@ -95,9 +111,14 @@ struct TimedPose {
 // The track's poses at bakeTimes(its key times, range). Throws std::invalid_argument for a pose that is
 // not unitSample.
 std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range,
-                                 const EulerConvention& eulerConvention = {});
+                                 const EulerConvention& eulerConvention = {}, const MassProperties& body = {});
 
 std::vector<double> keyTimes(const MotionTrack& track);
+
+// The body a ballistic track of `object` flies: its mass properties (objectMassProperties, object_mass.h: typed,
+// its mesh's, or the default block's); the default MassProperties for a track of any other interpolation, which
+// needs none.
+MassProperties flightBodyOf(const SceneObject& object);
 
 // The track's positions as TrackMotion plays them, when they are a cubic curve through the keys (squad
 // and hermite tracks with two keys or more); none for the other interpolations.

@@ -8,7 +8,9 @@
 #include "core/quaternion_math.h"
 #include "core/screw.h"
 #include "core/subdivision.h"
+#include "core/torque_free.h"
 #include "fit/angular_velocity_fit.h"
+#include "fit/flight_shooting.h"
 #include "model/sketch_fit_problem.h"
 #include "samples/sample_scenes.h"
 #include "fit_test_support.h"
@@ -329,6 +331,46 @@ void BM_Fit(benchmark::State& state)
 }
 // 100 to 3000 keys show whether the fit's time grows linearly with the keys (µs a key = time / keys).
 BENCHMARK(BM_Fit)->Arg(20)->Arg(85)->Arg(100)->Arg(400)->Arg(2000)->Arg(3000)->Unit(benchmark::kMillisecond);
+
+// A free flight of one second between two keys of a T-handle-like body (principal moments 1 : 2 : 3, rotated
+// off the body axes), the second key a little over a turn from the first: the shooting of every seed, the
+// polish and the sort (flight_shooting.h). Target: a few milliseconds, so it can run while a key is dragged.
+gyre::fit::FlightSpan benchFlightSpan()
+{
+    const Eigen::Quaterniond axes(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1.0, 2.0, 0.5).normalized()));
+    const Eigen::Matrix3d r = axes.toRotationMatrix();
+    const Eigen::Matrix3d inertia = r * Eigen::Vector3d(1.0, 2.0, 3.0).asDiagonal() * r.transpose();
+    const gyre::TorqueFreeMotion made(inertia, Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.5, 7.0, 0.3), 1.0);
+    return {inertia, Eigen::Quaterniond::Identity(), made.orientation(1.0), 1.0};
+}
+
+void BM_FlightSolve(benchmark::State& state)
+{
+    const gyre::fit::FlightSpan span = benchFlightSpan();
+    std::vector<gyre::fit::FlightSolution> solutions;
+    for (auto _ : state) {
+        solutions = gyre::fit::solveFlight(span);
+        benchmark::DoNotOptimize(solutions.data());
+    }
+    state.counters["solutions"] = static_cast<double>(solutions.size());
+}
+BENCHMARK(BM_FlightSolve)->Unit(benchmark::kMillisecond);
+
+// One sample of a built flight, as the viewport takes it every frame: orientation and angular velocity.
+void BM_FlightEvaluate(benchmark::State& state)
+{
+    const gyre::fit::FlightSpan span = benchFlightSpan();
+    const gyre::TorqueFreeMotion motion(span.inertia, span.start, gyre::fit::solveFlight(span).front().startAngularVelocity,
+                                        span.duration);
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const double t = static_cast<double>(i++ % 997) / 997.0;
+        benchmark::DoNotOptimize(motion.orientation(t));
+        benchmark::DoNotOptimize(motion.angularVelocity(t));
+    }
+    state.counters["steps"] = static_cast<double>(motion.stepCount());
+}
+BENCHMARK(BM_FlightEvaluate);
 
 // What the app's Fit button does on the bundled spinning top, between the click and the result: the
 // sketch turned into the fit's problem, then the fit.

@@ -97,6 +97,15 @@ inline Csv readCsv(const QString& path)
     return csv;
 }
 
+// `contents` written to the file `name` in `folder`; its path.
+inline QString writeFileIn(const QTemporaryDir& folder, const QString& name, const QByteArray& contents)
+{
+    QFile file(folder.filePath(name));
+    if (!file.open(QIODevice::WriteOnly) || file.write(contents) != contents.size())
+        qFatal("cannot write %s", qPrintable(name));
+    return file.fileName();
+}
+
 inline QString number(double value) { return QString::number(value, 'g', 17); }
 
 // What gyre-cli may print on standard error when it succeeds.

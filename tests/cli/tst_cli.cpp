@@ -667,7 +667,7 @@ void TstCli::badInput_data()
     QTest::newRow("unknown method") << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "cubic", "--fps", "24"}
                                     << keys << 2
                                     << "interpolate: --method: unknown value 'cubic'; expected slerp, nlerp, squad, "
-                                       "hermite, euler or screw";
+                                       "hermite, euler, screw or ballistic";
     QTest::newRow("unknown scheme") << QStringList{"subdivide", "IN", "-o", "OUT", "--scheme", "loop", "--levels", "2"}
                                     << keys << 2
                                     << "subdivide: --scheme: unknown value 'loop'; expected four-point, four-point-b, "

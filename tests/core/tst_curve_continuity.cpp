@@ -52,6 +52,7 @@ double stepBound(InterpolationMethod method, const std::vector<OrientationKey>& 
     case InterpolationMethod::Euler:
         return 3.0 * kPi / shortestSegment * kStep + kSlack;
     case InterpolationMethod::Screw:
+    case InterpolationMethod::Ballistic:
         break;
     }
     return 0.0;

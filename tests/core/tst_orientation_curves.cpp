@@ -247,6 +247,7 @@ void TestOrientationCurves::everyCurve()
         QVERIFY(dynamic_cast<const EulerAngleCurve*>(curve.get()) != nullptr);
         break;
     case InterpolationMethod::Screw:
+    case InterpolationMethod::Ballistic:
         QFAIL("not an orientation curve");
     }
 }
@@ -284,12 +285,15 @@ void TestOrientationCurves::invalidKeysThrow()
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                              HermiteQuaternionSpline({HermiteControlPoint{1.0, q, {}}, HermiteControlPoint{1.0, q, {}}}));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, makeOrientationCurve(InterpolationMethod::Screw, {{0.0, q}, {1.0, q}}));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             makeOrientationCurve(InterpolationMethod::Ballistic, {{0.0, q}, {1.0, q}}));
 }
 
 void TestOrientationCurves::methodNames()
 {
     for (InterpolationMethod m : {InterpolationMethod::Slerp, InterpolationMethod::Nlerp, InterpolationMethod::Squad,
-                                  InterpolationMethod::Hermite, InterpolationMethod::Euler, InterpolationMethod::Screw}) {
+                                  InterpolationMethod::Hermite, InterpolationMethod::Euler, InterpolationMethod::Screw,
+                                  InterpolationMethod::Ballistic}) {
         const std::string_view name = interpolationMethodName(m);
         QVERIFY(!name.empty());
         const std::optional<InterpolationMethod> parsed = parseInterpolationMethod(name);

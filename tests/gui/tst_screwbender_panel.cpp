@@ -42,19 +42,20 @@ private slots:
     {
         InspectedWindow inspected(0);
         QComboBox* methods = inspected.child<QComboBox>("interpolationCombo");
-        QCOMPARE(methods->count(), 6);
+        QCOMPARE(methods->count(), 7);
         const InterpolationMethod expected[] = {InterpolationMethod::Slerp, InterpolationMethod::Nlerp,
                                                 InterpolationMethod::Squad, InterpolationMethod::Hermite,
-                                                InterpolationMethod::Euler, InterpolationMethod::Screw};
-        for (int index = 0; index < 6; ++index) {
+                                                InterpolationMethod::Euler, InterpolationMethod::Screw,
+                                                InterpolationMethod::Ballistic};
+        for (int index = 0; index < 7; ++index) {
             const int steps = inspected.undoSteps();
             test::choose(methods, index);
             QCOMPARE(inspected.window().selection().selectedObject()->track.interpolation, expected[index]);
             QCOMPARE(inspected.undoSteps(), steps + 1);
         }
         inspected.window().document().undoStack().undo();
-        QCOMPARE(inspected.window().selection().selectedObject()->track.interpolation, InterpolationMethod::Euler);
-        QCOMPARE(methods->currentIndex(), 4);
+        QCOMPARE(inspected.window().selection().selectedObject()->track.interpolation, InterpolationMethod::Screw);
+        QCOMPARE(methods->currentIndex(), 5);
     }
 
     void eachSubdivisionSettingIsOneUndoStep()

@@ -32,6 +32,7 @@
 #include "model/commands/set_pattern_command.h"
 #include "model/commands/set_subdivision_command.h"
 #include "model/commands/set_time_range_command.h"
+#include "model/commands/step_ballistic_solution_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
 #include "model/gesture.h"
 #include "model/input_error.h"
@@ -135,6 +136,7 @@ private slots:
     void keyframeEdits();
     void trackSettings();
     void budgetsRefuseUnboundedTracks();
+    void stepBallisticSolutionCyclesOneSpan();
     void strokes();
     void sketchSettings();
     void applyFitResult();
@@ -262,6 +264,34 @@ void TstCommands::trackSettings()
     QVERIFY(!track.subdivision.cyclic);
     QVERIFY(refuses([&] { SetSubdivisionCommand(document, id, {SubdivisionScheme::Jarek, 17, true, false}); },
                     "levels 17 are outside 0 to 16"));
+}
+
+// Next and previous flight step the span at the time given, one undo step each, wrapping around its count;
+// the other span keeps its flight, and a track that is not ballistic has nothing to step.
+void TstCommands::stepBallisticSolutionCyclesOneSpan()
+{
+    Document document;
+    SceneObject object = objectWithKeys(1, {0, 1, 2});
+    object.track.interpolation = InterpolationMethod::Ballistic;
+    const ObjectId id = import(document, {object, objectWithKeys(2, {0, 1})}).front();
+    const auto choices = [&] { return document.motion(id)->motion().flightChoices(); };
+    const std::vector<TrackMotion::FlightChoice> before = choices();
+    QCOMPARE(before.size(), std::size_t(2));
+    const std::size_t count = before[1].count;
+    QVERIFY(count >= 2);
+    const std::optional<std::vector<int>> next = StepBallisticSolutionCommand::stepped(document, id, 1.5, 1);
+    QVERIFY(next.has_value());
+    const int steps = document.undoStack().count();
+    document.undoStack().push(new StepBallisticSolutionCommand(document, id, *next));
+    QCOMPARE(document.undoStack().count(), steps + 1);
+    QCOMPARE(choices()[1].chosen, (before[1].chosen + 1) % count);
+    QCOMPARE(choices()[0].chosen, before[0].chosen);
+    document.undoStack().undo();
+    QCOMPARE(choices()[1].chosen, before[1].chosen);
+    const std::optional<std::vector<int>> previous = StepBallisticSolutionCommand::stepped(document, id, 1.5, -1);
+    QVERIFY(previous.has_value());
+    QCOMPARE((*previous)[1], static_cast<int>((before[1].chosen + count - 1) % count));
+    QVERIFY(!StepBallisticSolutionCommand::stepped(document, id + 1, 0.5, 1).has_value());
 }
 
 // Every command that changes the keys' count, the levels or the interpolation of a track keeps it within
@@ -672,6 +702,7 @@ void TstCommands::signalsSayWhatChanged_data()
     row("interpolation", [](Document& d) { return new SetInterpolationCommand(d, 2, InterpolationMethod::Squad); },
         {"TrackSettings:2"});
     row("subdivision", [](Document& d) { return new SetSubdivisionCommand(d, 2, {}); }, {"TrackSettings:2"});
+    row("flight solution", [](Document& d) { return new StepBallisticSolutionCommand(d, 2, {1}); }, {"TrackSettings:2"});
     row("add stroke", [](Document& d) { return new AddStrokeCommand(d, 2, {{Eigen::Vector3d::UnitX()}, {}}); },
         {"Sketch:2"});
     row("erase stroke", [](Document& d) { return new EraseStrokeCommand(d, 2, 0); }, {"Sketch:2"});

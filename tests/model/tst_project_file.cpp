@@ -285,6 +285,7 @@ class TstProjectFile : public QObject {
 private slots:
     void savedScenesLoadBackExactly();
     void numbersReadBackToTheSameBits();
+    void ballisticTracksKeepTheirFlightChoices();
     void sharedMeshesStayShared();
     void tracksShareTimesAndConstantValues();
     void readsTheHandWrittenBinaryProject();
@@ -327,6 +328,28 @@ void TstProjectFile::savedScenesLoadBackExactly()
         QCOMPARE(loaded.objects.size(), scene.objects.size());
         QCOMPARE(loaded.nextObjectId, scene.nextObjectId);
     }
+}
+
+void TstProjectFile::ballisticTracksKeepTheirFlightChoices()
+{
+    Scene scene;
+    SceneObject object;
+    object.id = 1;
+    object.name = QStringLiteral("coin");
+    object.track.interpolation = InterpolationMethod::Ballistic;
+    object.track.keys = {{0.0, {}, true}, {0.5, {}, true}, {1.0, {}, true}, {1.5, {}, true}};
+    object.track.flightSolutions = {2, -1, 1};
+    scene.objects.push_back(object);
+    scene.nextObjectId = 2;
+    const QString path = directory_.filePath(QStringLiteral("ballistic.gyre"));
+    writeProject(path, scene);
+    const Scene loaded = readProject(path);
+    QCOMPARE(loaded.objects.front().track.interpolation, InterpolationMethod::Ballistic);
+    QCOMPARE(loaded.objects.front().track.flightSolutions, (std::vector<int>{2, -1, 1}));
+    // A track that never chose keeps no choices.
+    scene.objects.front().track.flightSolutions.clear();
+    writeProject(path, scene);
+    QVERIFY(readProject(path).objects.front().track.flightSolutions.empty());
 }
 
 void TstProjectFile::numbersReadBackToTheSameBits()
@@ -606,7 +629,7 @@ void TstProjectFile::refusesMalformedFiles_data()
     row("index beyond positions", projectWith({"meshes", 0, "indices"}, "AAAAAAEAAAAFAAAA"),
         "meshes[0]: mesh index 5 is beyond its 3 positions");
     row("unknown interpolation", projectWith({"objects", 0, "interpolation"}, "cubic"),
-        "objects[0].interpolation: unknown value \"cubic\"; expected one of slerp, nlerp, squad, hermite, euler, screw");
+        "objects[0].interpolation: unknown value \"cubic\"; expected one of slerp, nlerp, squad, hermite, euler, screw, ballistic");
     row("too many levels", projectWith({"objects", 0, "subdivision", "levels"}, 17),
         "objects[0].subdivision.levels: 17 is outside 0 to 16");
     row("zero fps", projectWith({"fps"}, 0), "fps: 0 is not positive");

@@ -73,6 +73,7 @@ private slots:
     void screwSpeedIsContinuousAcrossKeys();
     void fittedCurveOverridesOnlyItsWindow();
     void trackWithoutKeysStaysAtIdentity();
+    void ballisticFliesTheChosenFlights();
     void refusesKeysOutOfOrder();
     void bakeSamplesFramesAndKeys();
     void bakeTrackGivesThePosesAtItsTimes();
@@ -90,6 +91,7 @@ void TstTrackEvaluation::passesThroughItsKeys_data()
     QTest::newRow("hermite") << int(InterpolationMethod::Hermite) << 0 << false;
     QTest::newRow("euler") << int(InterpolationMethod::Euler) << 0 << false;
     QTest::newRow("screw") << int(InterpolationMethod::Screw) << 0 << false;
+    QTest::newRow("ballistic") << int(InterpolationMethod::Ballistic) << 0 << false;
     // Four-point subdivision interpolates: control pose i stays at parameter i.
     QTest::newRow("screw four-point open") << int(InterpolationMethod::Screw) << 3 << false;
     QTest::newRow("screw four-point cyclic") << int(InterpolationMethod::Screw) << 3 << true;
@@ -306,6 +308,34 @@ void TstTrackEvaluation::fittedCurveOverridesOnlyItsWindow()
         QVERIFY(poseDistance(fitted.at(time), plain.at(time)) < kTolerance);
         QVERIFY(distanceUpToSign(fitted.at(time).orientation, fit.front().value.normalized()) > 1e-3);
     }
+}
+
+// A ballistic track of a body with three different moments: each span offers its flights, the track's choice
+// picks one (modulo the count), and the world angular momentum R·I·Rᵀ·ω stays put within each span.
+void TstTrackEvaluation::ballisticFliesTheChosenFlights()
+{
+    MotionTrack track = randomTrack(InterpolationMethod::Ballistic, {0.0, 0.6, 1.1}, 5);
+    MassProperties body;
+    body.inertia = Eigen::Vector3d(0.6, 1.0, 1.3).asDiagonal();
+    body.centre = Eigen::Vector3d(0.1, 0.0, 0.0);
+    const TrackMotion byDefault(track, {}, body);
+    QCOMPARE(byDefault.flightChoices().size(), std::size_t(2));
+    const std::size_t count = byDefault.flightChoices()[1].count;
+    QVERIFY(count >= 2);
+    track.flightSolutions = {-1, static_cast<int>(byDefault.flightChoices()[1].chosen + 1)};
+    const TrackMotion stepped(track, {}, body);
+    QCOMPARE(stepped.flightChoices()[0].chosen, byDefault.flightChoices()[0].chosen);
+    QCOMPARE(stepped.flightChoices()[1].chosen, (byDefault.flightChoices()[1].chosen + 1) % count);
+    QVERIFY(poseDistance(stepped.at(0.3), byDefault.at(0.3)) < kTolerance);
+    QVERIFY(poseDistance(stepped.at(0.85), byDefault.at(0.85)) > 1e-3);
+    for (const Keyframe& key : track.keys)
+        QVERIFY(poseDistance(stepped.at(key.time), key.pose) < kTolerance);
+    const auto momentum = [&](double t) {
+        const Eigen::Matrix3d r = stepped.at(t).orientation.toRotationMatrix();
+        return Eigen::Vector3d(r * body.inertia * r.transpose() * stepped.angularVelocity(t));
+    };
+    for (double t = 0.7; t < 1.05; t += 0.05)  // central differences: good to about 1e-8
+        QVERIFY((momentum(t) - momentum(0.65)).norm() < 1e-6 * momentum(0.65).norm());
 }
 
 void TstTrackEvaluation::trackWithoutKeysStaysAtIdentity()

@@ -70,7 +70,11 @@ std::optional<Pose> DrawnMotion::originalWorldPose(model::ObjectId id, double ti
 void DrawnMotion::setPreviewTrack(model::ObjectId object, std::optional<model::MotionTrack> track)
 {
     previewObject_ = object;
-    previewMotion_ = track ? std::make_shared<const model::SharedTrackMotion>(std::move(*track)) : nullptr;
+    // A ballistic track flies the object's body.
+    const model::SceneObject* previewed = model::findObject(document_.scene(), object);
+    previewMotion_ = track ? std::make_shared<const model::SharedTrackMotion>(
+                                 std::move(*track), nullptr, previewed ? model::flightBodyOf(*previewed) : MassProperties{})
+                           : nullptr;
     rebuildMotionInBackground();
 }
 
