@@ -1,7 +1,9 @@
 #pragma once
-// The Motion menu's keyframe actions on the selection: key the selected object's pose at the current
-// time, delete the selected key, constrain or free it, run the Euler filter on the object's keys. Each
-// is one undo step; each is enabled only when it applies (the filter when it would change a key).
+// The Motion menu's keyframe actions on the selection: key every selected object's pose at the
+// current time, delete every selected key, constrain or free the active key, run the Euler filter on
+// the active object's keys; and Edit ▸ Select All Keys / Select No Keys. Each edit is one undo step
+// however many objects it touches; each action is enabled only when it applies (the filter when it
+// would change a key).
 
 #include "app/selected_track.h"
 #include "app/selection.h"
@@ -19,6 +21,8 @@ struct KeyframeActionSet {
     QAction* remove = nullptr;
     QAction* toggleConstraint = nullptr; // checkable: checked when the selected key is constrained
     QAction* eulerFilter = nullptr;      // on the selected object's keys (apply_euler_filter_command.h)
+    QAction* selectAll = nullptr;        // every key of the active object
+    QAction* selectNone = nullptr;
 };
 
 class KeyframeActions : public QObject {
@@ -29,8 +33,9 @@ public:
     KeyframeActions(model::Document& document, Selection& selection, KeyframeActionSet actions,
                     QStatusBar* statusBar, QObject* parent = nullptr);
 
-    void addKeyframe();
-    void removeKeyframe();
+    // Keys each selected object that has no key at the current time; selects the new keys.
+    void addKeyframes();
+    void removeKeyframes();
     void toggleConstraint();
     void applyEulerFilter();
 

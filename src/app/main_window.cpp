@@ -4,6 +4,7 @@
 #include "app/euler_convention_choosers.h"
 #include "app/graph_editor/graph_editor_panel.h"
 #include "app/inspector_widget.h"
+#include "app/key_clipboard_actions.h"
 #include "app/outliner/outliner_panel.h"
 #include "app/preferences_dialog.h"
 #include "app/screwbender_panel.h"
@@ -163,9 +164,14 @@ void MainWindow::setUpActions()
     connect(ui_->actionImportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToImport);
     connect(ui_->actionExportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToExport);
     new AddObjectActions(document_, selection_, *ui_->menuAdd, this);
-    new KeyframeActions(
-        document_, selection_, {ui_->actionAddKeyframe, ui_->actionDeleteKeyframe, ui_->actionToggleConstraint, ui_->actionEulerFilter},
-        statusBar(), this);
+    // Blender's second keys for these: X deletes, Insert keys.
+    ui_->actionDeleteKeyframe->setShortcuts({QKeySequence(Qt::Key_Delete), QKeySequence(Qt::Key_X)});
+    ui_->actionAddKeyframe->setShortcuts({QKeySequence(Qt::Key_K), QKeySequence(Qt::Key_Insert)});
+    new KeyframeActions(document_, selection_,
+                        {ui_->actionAddKeyframe, ui_->actionDeleteKeyframe, ui_->actionToggleConstraint,
+                         ui_->actionEulerFilter, ui_->actionSelectAllKeys, ui_->actionSelectNoKeys},
+                        statusBar(), this);
+    new KeyClipboardActions(document_, selection_, ui_->actionCopyKeys, ui_->actionPasteKeys, statusBar(), this);
 
     QAction* undo = document_.undoStack().createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
