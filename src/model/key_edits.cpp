@@ -61,4 +61,16 @@ std::vector<Keyframe> shiftedKeys(const std::vector<Keyframe>& keys, const std::
     return shifted;
 }
 
+std::optional<std::vector<Keyframe>> retimedKeys(const std::vector<Keyframe>& keys, const std::vector<std::size_t>& moved,
+                                                 const std::function<double(double)>& retime, double gap)
+{
+    std::vector<Keyframe> retimed = keys;
+    for (std::size_t index : moved)
+        retimed[index].time = retime(keys[index].time);
+    for (std::size_t index = 1; index < retimed.size(); ++index)
+        if (!(retimed[index].time - retimed[index - 1].time > gap))
+            return std::nullopt;
+    return retimed;
+}
+
 } // namespace gyre::model

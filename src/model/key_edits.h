@@ -6,6 +6,8 @@
 #include "model/scene.h"
 
 #include <cstddef>
+#include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -25,5 +27,10 @@ std::pair<double, double> shiftRange(const std::vector<Keyframe>& keys, const st
 // `keys` with those at `moved` later by `shift` seconds, `shift` within shiftRange.
 std::vector<Keyframe> shiftedKeys(const std::vector<Keyframe>& keys, const std::vector<std::size_t>& moved,
                                   double shift);
+
+// `keys` with the time of each key at `moved` mapped by `retime`, or none if the times would then not
+// increase by more than `gap` from key to key: a retiming may not cross or join keys.
+std::optional<std::vector<Keyframe>> retimedKeys(const std::vector<Keyframe>& keys, const std::vector<std::size_t>& moved,
+                                                 const std::function<double(double)>& retime, double gap);
 
 } // namespace gyre::model
