@@ -31,8 +31,9 @@ const char* editText(ReplaceKeyframesCommand::Edit edit)
     return QT_TRANSLATE_NOOP("gyre::model::Command", "Scale Keyframes");
 }
 
-ObjectKeys checkedKeys(const Document& document, ObjectKeys keys)
+std::vector<std::pair<ObjectId, SharedVector<Keyframe>>> checkedKeys(const Document& document, ObjectKeys keys)
 {
+    std::vector<std::pair<ObjectId, SharedVector<Keyframe>>> checked;
     std::vector<ObjectId> seen;
     for (auto& [object, objectKeys] : keys) {
         const MotionTrack& track = requireObject(document, object).track;
@@ -41,8 +42,9 @@ ObjectKeys checkedKeys(const Document& document, ObjectKeys keys)
         seen.push_back(object);
         checkKeyframes(objectKeys);
         checkPoseBudget(objectKeys.size(), track.interpolation, track.subdivision);
+        checked.emplace_back(object, std::move(objectKeys));
     }
-    return keys;
+    return checked;
 }
 
 bool sameKeys(const std::vector<Keyframe>& a, const std::vector<Keyframe>& b)
@@ -67,9 +69,9 @@ void ReplaceKeyframesCommand::swap()
 {
     DocumentEditor editor(document_);
     for (auto& [object, keys] : keys_) {
-        std::vector<Keyframe> previous = objectIn(editor.scene(), object).track.keys;
+        SharedVector<Keyframe> previous = objectIn(editor.scene(), object).track.keys;
         editor.edit(object, Change::Keyframes,
-                    [&, id = object](Scene& scene) { objectIn(scene, id).track.keys = std::move(keys); });
+                    [&, id = object](Scene& scene) { objectIn(scene, id).track.keys = keys; });
         keys = std::move(previous);
     }
 }

@@ -6,6 +6,7 @@
 
 #include "model/commands/mergeable_command.h"
 #include "model/document.h"
+#include "model/shared_vector.h"
 
 #include <cstddef>
 #include <utility>
@@ -36,7 +37,9 @@ private:
 
     Document& document_;
     Edit edit_;
-    ObjectKeys keys_; // the keys that the next redo or undo puts in
+    // The keys that the next redo or undo puts in, shared with the document once put in: undo and redo
+    // copy no keys.
+    std::vector<std::pair<ObjectId, SharedVector<Keyframe>>> keys_;
 };
 
 } // namespace gyre::model
