@@ -7,6 +7,7 @@
 #include "app/main_window.h"
 #include "app/outliner/outliner_panel.h"
 #include "app/timeline_widget.h"
+#include "app/viewport/viewport.h"
 #include "gui_test_support.h"
 #include "model/commands/delete_object_command.h"
 #include "model/key_clipboard.h"
@@ -230,6 +231,25 @@ private slots:
         stack().undo();
         QCOMPARE(keys(kTop).size(), std::size_t{4});
         QCOMPARE(keys(kLeaf).size(), std::size_t{3});
+    }
+
+    void ctrlClickInTheViewportAddsAndRemovesObjects()
+    {
+        auto* viewport = window_->findChild<app::Viewport*>();
+        QVERIFY(viewport != nullptr);
+        select(kTop);
+        const std::optional<QPointF> leaf = viewport->objectScreenPosition(kLeaf);
+        const std::optional<QPointF> top = viewport->objectScreenPosition(kTop);
+        QVERIFY(leaf && top);
+        QTest::mouseClick(viewport, Qt::LeftButton, Qt::ControlModifier, leaf->toPoint());
+        QCOMPARE(selection().objects(), (std::vector<model::ObjectId>{kTop, kLeaf}));
+        QCOMPARE(selection().object(), kLeaf);
+        QCOMPARE(timeline_->rows(), (std::vector<model::ObjectId>{kTop, kLeaf}));
+        QTest::mouseClick(viewport, Qt::LeftButton, Qt::ControlModifier, top->toPoint());
+        QCOMPARE(selection().objects(), std::vector<model::ObjectId>{kLeaf});
+        // A plain click selects one object again.
+        QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, top->toPoint());
+        QCOMPARE(selection().objects(), std::vector<model::ObjectId>{kTop});
     }
 
     void selectedKeysOfTwoObjectsMoveTogetherOnTheDopeSheet()
