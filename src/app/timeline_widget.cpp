@@ -509,12 +509,14 @@ void TimelineWidget::finishBox(Qt::KeyboardModifiers modifiers)
         return;
     }
     const QRect area = QRect(box.from, box.to).normalized();
+    const std::vector<model::ObjectId> shown = rows();
     std::set<KeyRef> inside;
-    for (model::ObjectId object : rows()) {
-        const auto& keys = document_.object(object)->track.keys;
+    for (std::size_t row = 0; row < shown.size(); ++row) {
+        const int y = rowRect(row, shown.size()).center().y();
+        const auto& keys = document_.object(shown[row])->track.keys;
         for (std::size_t index = 0; index < keys.size(); ++index)
-            if (const std::optional<QPoint> centre = keyMarkerCentre(object, index); centre && area.contains(*centre))
-                inside.insert({object, index});
+            if (area.contains(QPoint(static_cast<int>(std::lround(xForTime(keys[index].time))), y)))
+                inside.insert({shown[row], index});
     }
     selection_.selectKeys(inside, modifiers.testFlag(Qt::ShiftModifier));
 }
