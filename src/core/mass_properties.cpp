@@ -1,0 +1,194 @@
+#include "core/mass_properties.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+
+namespace gyre {
+
+namespace {
+
+// The moments of a body about the origin: its mass m, first moment ∫ x dm and second moment ∫ x xᵀ dm.
+struct Moments {
+    double mass = 0.0;
+    Eigen::Vector3d first = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+
+    void scale(double factor)
+    {
+        mass *= factor;
+        first *= factor;
+        second *= factor;
+    }
+};
+
+MassProperties aboutCentre(const Moments& moments)
+{
+    MassProperties properties;
+    properties.mass = moments.mass;
+    properties.centre = moments.first / moments.mass;
+    // Parallel axes: the second moment about the centre is C − m·c·cᵀ.
+    const Eigen::Matrix3d second = moments.second - moments.mass * properties.centre * properties.centre.transpose();
+    properties.inertia = second.trace() * Eigen::Matrix3d::Identity() - second;
+    properties.inertia = 0.5 * (properties.inertia + properties.inertia.transpose()).eval();
+    return properties;
+}
+
+Eigen::Vector3d positionAt(const std::vector<Eigen::Vector3f>& positions, std::uint32_t index)
+{
+    return positions[index].cast<double>();
+}
+
+// Whether every edge, its ends matched by position, is run once in each direction.
+bool isClosed(const std::vector<Eigen::Vector3f>& positions, const std::vector<std::uint32_t>& indices)
+{
+    // Welds positions by their bits, so faces with their own vertices (flat shading) still join.
+    std::unordered_map<std::string, std::uint32_t> welded;
+    std::vector<std::uint32_t> weldedIndex(positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        std::string bits(sizeof(float) * 3, '\0');
+        for (int axis = 0; axis < 3; ++axis) {
+            const float coordinate = positions[i][axis] == 0.0f ? 0.0f : positions[i][axis]; // −0 is 0
+            std::memcpy(bits.data() + axis * sizeof(float), &coordinate, sizeof(float));
+        }
+        weldedIndex[i] = welded.emplace(std::move(bits), static_cast<std::uint32_t>(welded.size())).first->second;
+    }
+    // Each directed edge counts +1, its reverse −1: closed and consistently wound iff every sum is 0.
+    std::unordered_map<std::uint64_t, int> balance;
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
+        for (int corner = 0; corner < 3; ++corner) {
+            const std::uint64_t from = weldedIndex[indices[t + corner]];
+            const std::uint64_t to = weldedIndex[indices[t + (corner + 1) % 3]];
+            if (from == to)
+                continue;
+            if (from < to)
+                ++balance[from << 32 | to];
+            else
+                --balance[to << 32 | from];
+        }
+    return !balance.empty() && std::all_of(balance.begin(), balance.end(), [](const auto& edge) { return edge.second == 0; });
+}
+
+Moments solidMoments(const std::vector<Eigen::Vector3f>& positions, const std::vector<std::uint32_t>& indices)
+{
+    const Eigen::Matrix3d canonical = Eigen::Matrix3d::Constant(1.0) + Eigen::Matrix3d::Identity();
+    Moments moments;
+    for (std::size_t t = 0; t < indices.size(); t += 3) {
+        Eigen::Matrix3d corners;
+        corners << positionAt(positions, indices[t]), positionAt(positions, indices[t + 1]),
+            positionAt(positions, indices[t + 2]);
+        const double determinant = corners.determinant();
+        moments.mass += determinant / 6.0;
+        moments.first += determinant / 24.0 * corners.rowwise().sum();
+        moments.second += determinant / 120.0 * corners * canonical * corners.transpose();
+    }
+    if (moments.mass < 0.0)
+        moments.scale(-1.0); // wound inside out
+    return moments;
+}
+
+Moments shellMoments(const std::vector<Eigen::Vector3f>& positions, const std::vector<std::uint32_t>& indices)
+{
+    Moments moments;
+    for (std::size_t t = 0; t < indices.size(); t += 3) {
+        const Eigen::Vector3d a = positionAt(positions, indices[t]);
+        const Eigen::Vector3d b = positionAt(positions, indices[t + 1]);
+        const Eigen::Vector3d c = positionAt(positions, indices[t + 2]);
+        const double area = 0.5 * (b - a).cross(c - a).norm();
+        const Eigen::Vector3d sum = a + b + c;
+        moments.mass += area;
+        moments.first += area / 3.0 * sum;
+        moments.second += area / 12.0 *
+                          (a * a.transpose() + b * b.transpose() + c * c.transpose() + sum * sum.transpose());
+    }
+    return moments;
+}
+
+Moments boxMoments(const std::vector<Eigen::Vector3f>& positions)
+{
+    Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector3d high = -low;
+    for (const Eigen::Vector3f& position : positions) {
+        low = low.cwiseMin(position.cast<double>());
+        high = high.cwiseMax(position.cast<double>());
+    }
+    // A flat or empty box gets a thickness of a thousandth of its size (or 1 mm), so it has a volume.
+    const double thickness = std::max(1e-3 * (high - low).maxCoeff(), 1e-3);
+    const Eigen::Vector3d size = (high - low).cwiseMax(thickness);
+    Moments moments;
+    moments.mass = size.prod();
+    const Eigen::Vector3d centre = 0.5 * (low + high);
+    moments.first = moments.mass * centre;
+    // A box's second moment about its centre is m/12·diag(size²).
+    moments.second = moments.mass / 12.0 * size.cwiseProduct(size).asDiagonal().toDenseMatrix() +
+                     moments.mass * centre * centre.transpose();
+    return moments;
+}
+
+} // namespace
+
+MeshMass meshMassProperties(const std::vector<Eigen::Vector3f>& positions, const std::vector<std::uint32_t>& indices,
+                            double density)
+{
+    if (positions.empty())
+        throw std::invalid_argument("a mesh without positions has no mass");
+    if (indices.size() % 3 != 0)
+        throw std::invalid_argument("the mesh's index count is not a multiple of three");
+    for (const std::uint32_t index : indices)
+        if (index >= positions.size())
+            throw std::invalid_argument("the mesh has an index past its positions");
+    for (const Eigen::Vector3f& position : positions)
+        if (!position.allFinite())
+            throw std::invalid_argument("the mesh has a position that is not finite");
+
+    MeshMass result;
+    Moments moments;
+    if (isClosed(positions, indices) && (moments = solidMoments(positions, indices)).mass > 0.0) {
+        result.model = MassModel::Solid;
+        moments.scale(density);
+    } else if ((moments = shellMoments(positions, indices)).mass > 0.0) {
+        result.model = MassModel::Shell;
+        // The shell weighs what a solid sphere of its area would: V = A^{3/2}/(6√π).
+        const double area = moments.mass;
+        moments.scale(density * std::sqrt(area) / (6.0 * std::sqrt(std::numbers::pi)));
+    } else {
+        result.model = MassModel::BoundingBox;
+        moments = boxMoments(positions);
+        moments.scale(density);
+    }
+    result.properties = aboutCentre(moments);
+    return result;
+}
+
+PrincipalAxes principalAxes(const Eigen::Matrix3d& inertia)
+{
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(inertia);
+    PrincipalAxes principal{solver.eigenvalues(), solver.eigenvectors()};
+    if (principal.axes.determinant() < 0.0)
+        principal.axes.col(2) *= -1.0;
+    return principal;
+}
+
+const char* inertiaProblem(const Eigen::Matrix3d& inertia)
+{
+    if (!inertia.allFinite())
+        return "the inertia tensor has a value that is not finite";
+    if ((inertia - inertia.transpose()).cwiseAbs().maxCoeff() > 1e-12 * inertia.cwiseAbs().maxCoeff())
+        return "the inertia tensor is not symmetric";
+    const Eigen::Vector3d moments = principalAxes(inertia).moments;
+    if (!(moments[0] > 0.0))
+        return "the inertia tensor is not positive definite";
+    if (moments[0] + moments[1] < moments[2] * (1.0 - 1e-9))
+        return "no body has these moments of inertia: the two smaller principal moments add up to less than the largest";
+    return nullptr;
+}
+
+} // namespace gyre
