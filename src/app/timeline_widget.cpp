@@ -435,12 +435,13 @@ void TimelineWidget::pressKey(const KeyRef& key, const QMouseEvent& event)
         shiftPress_.emplace(key, event.position().toPoint());
         return;
     }
-    if (!selection_.isKeySelected(key.first, key.second))
+    const bool selected = selection_.isKeySelected(key.first, key.second);
+    if (!selected)
         selection_.selectKey(key.first, key.second);
-    startKeyDrag(key, timeAtX(event.position().x()));
+    startKeyDrag(key, timeAtX(event.position().x()), selected);
 }
 
-void TimelineWidget::startKeyDrag(const KeyRef& pressed, double pressTime)
+void TimelineWidget::startKeyDrag(const KeyRef& pressed, double pressTime, bool selectsOnClick)
 {
     KeyDrag drag;
     for (model::ObjectId object : selection_.objects()) {
@@ -450,6 +451,8 @@ void TimelineWidget::startKeyDrag(const KeyRef& pressed, double pressTime)
     }
     drag.pressedKeyTime = document_.object(pressed.first)->track.keys[pressed.second].time;
     drag.pressTime = pressTime;
+    if (selectsOnClick)
+        drag.selectsOnClick = pressed;
     keyDrag_ = std::move(drag);
 }
 
@@ -466,7 +469,7 @@ void TimelineWidget::mouseMoveEvent(QMouseEvent* event)
         shiftPress_.reset();
         if (!selection_.isKeySelected(key.first, key.second))
             selection_.toggleKey(key.first, key.second);
-        startKeyDrag(key, timeAtX(from.x()));
+        startKeyDrag(key, timeAtX(from.x()), false);
     }
     if (keyDrag_) {
         dragKeysTo(event->position().x(), event->modifiers());
@@ -491,6 +494,8 @@ void TimelineWidget::mouseReleaseEvent(QMouseEvent* event)
     }
     if (box_)
         finishBox(event->modifiers());
+    if (keyDrag_ && !dragGesture_ && keyDrag_->selectsOnClick)
+        selection_.selectKey(keyDrag_->selectsOnClick->first, keyDrag_->selectsOnClick->second);
     endKeyDrag();
     scrubbing_ = false;
 }

@@ -8,7 +8,8 @@
 // Pressing the ruler, or clicking between markers, scrubs: it pauses playback and sets the current
 // time, which is not undoable (document.h); a click between markers also deselects the keys. A drag
 // between markers draws a box and selects the keys in it (Shift adds them). Pressing a marker selects
-// its key; Shift+click adds it to the selected keys or takes it out. Dragging a marker moves every
+// its key (a click on a key already selected selects it alone); Shift+click adds it to the selected
+// keys or takes it out. Dragging a marker moves every
 // selected key, of every row, by the same time, one undo step per drag: the shift stops where a moved
 // key would come within a frame (1 ms with Shift) of a key that is not moved, or leave the range, so
 // keys never cross or land on each other. Scrubbing and dragging snap to frames unless Shift is held.
@@ -87,6 +88,8 @@ private:
         double pressedKeyTime = 0.0;
         double pressTime = 0.0;
         double shift = 0.0; // the shift pushed last
+        // The pressed key, if it was selected already: a click (no move) then selects it alone.
+        std::optional<KeyRef> selectsOnClick;
     };
     // A press between markers: a box while it is dragged, a click (scrub) if it is not.
     struct BoxPress {
@@ -105,7 +108,7 @@ private:
     // The key whose marker is under `point`, in the row under it, the nearest if several are.
     std::optional<KeyRef> keyAt(const QPoint& point) const;
     void pressKey(const KeyRef& key, const QMouseEvent& event);
-    void startKeyDrag(const KeyRef& pressed, double pressTime);
+    void startKeyDrag(const KeyRef& pressed, double pressTime, bool selectsOnClick);
     void scrubTo(double x, Qt::KeyboardModifiers modifiers);
     void dragKeysTo(double x, Qt::KeyboardModifiers modifiers);
     void endKeyDrag();

@@ -282,6 +282,10 @@ private slots:
         stack().undo();
         QCOMPARE(keys(kTop)[1].time, 1.0);
         QCOMPARE(keys(kLeaf)[1].time, 2.0);
+        // A click on one of the selected keys, without a drag, selects it alone.
+        QTest::mouseClick(timeline_, Qt::LeftButton, Qt::NoModifier, *timeline_->keyMarkerCentre(kLeaf, 1));
+        QCOMPARE(selection().keys(), (std::set<app::KeyRef>{{kLeaf, 1}}));
+        QCOMPARE(selection().object(), kLeaf);
     }
 
     void selectAllAndNoneAndTheSelectionFollowsTheDocument()
