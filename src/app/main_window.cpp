@@ -164,9 +164,12 @@ void MainWindow::setUpActions()
     connect(ui_->actionImportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToImport);
     connect(ui_->actionExportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToExport);
     new AddObjectActions(document_, selection_, *ui_->menuAdd, this);
-    // Blender's second keys for these: X deletes, Insert keys.
-    ui_->actionDeleteKeyframe->setShortcuts({QKeySequence(Qt::Key_Delete), QKeySequence(Qt::Key_X)});
+    // Blender's second keys for these: X deletes (in the views that take it), Insert keys.
     ui_->actionAddKeyframe->setShortcuts({QKeySequence(Qt::Key_K), QKeySequence(Qt::Key_Insert)});
+    deleteKeysByX_ = new QAction(ui_->actionDeleteKeyframe->text(), this);
+    deleteKeysByX_->setShortcut(Qt::Key_X);
+    deleteKeysByX_->setShortcutContext(Qt::WidgetShortcut);
+    connect(deleteKeysByX_, &QAction::triggered, ui_->actionDeleteKeyframe, &QAction::trigger);
     new KeyframeActions(document_, selection_,
                         {ui_->actionAddKeyframe, ui_->actionDeleteKeyframe, ui_->actionToggleConstraint,
                          ui_->actionEulerFilter, ui_->actionSelectAllKeys, ui_->actionSelectNoKeys},
@@ -256,7 +259,9 @@ void MainWindow::createViews()
     // Scrolled, so that the sphere above it and the speed plot below can be given the column's height.
     addScrolled(ui_->screwBenderDockLayout, new ScrewBenderPanel(document_, selection_));
     ui_->timelineDockLayout->addWidget(new TimeBar(document_, ui_->timelineDockContents));
-    ui_->timelineDockLayout->addWidget(new TimelineWidget(document_, selection_, playback_, ui_->timelineDockContents), 1);
+    auto* timeline = new TimelineWidget(document_, selection_, playback_, ui_->timelineDockContents);
+    timeline->addAction(deleteKeysByX_);
+    ui_->timelineDockLayout->addWidget(timeline, 1);
     addScrolled(ui_->smoothnessDockLayout, new SmoothnessPanel(document_, selection_));
     ui_->magnitudeDockLayout->addWidget(new MagnitudePlot(document_, selection_, ui_->magnitudeDockContents));
     auto* graphEditor = new GraphEditorPanel(document_, selection_, ui_->graphEditorDockContents);
@@ -309,6 +314,7 @@ void MainWindow::createViewport()
         return;
     }
     viewport_ = new Viewport(document_, selection_, ui_->centralWidget);
+    viewport_->addAction(deleteKeysByX_);
     ui_->centralLayout->addWidget(viewport_);
     viewport_->setShowGhost(ui_->actionShowGhost->isChecked());
     viewport_->setShowTrajectory(ui_->actionShowTrajectory->isChecked());

@@ -158,9 +158,10 @@ QWidget* GraphEditorPanel::makeChoosers()
     scaleKeys_ = new QAction(tr("&Scale Keys"), this);
     scaleKeys_->setShortcut(Qt::Key_S);
     scaleKeys_->setStatusTip(tr("Scale the selected keys' times about the current frame; click to keep, Esc to cancel"));
+    // On the plot alone: G and S typed into a chooser above it choose.
     for (QAction* action : {moveKeys_, scaleKeys_}) {
-        action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-        addAction(action);
+        action->setShortcutContext(Qt::WidgetShortcut);
+        plot_->addAction(action);
     }
     connect(moveKeys_, &QAction::triggered, this, [this] { beginTransform(false); });
     connect(scaleKeys_, &QAction::triggered, this, [this] { beginTransform(true); });
