@@ -1,6 +1,7 @@
 #include "app/inspector_widget.h"
 
 #include "app/euler_convention_choosers.h"
+#include "app/mass_properties_group.h"
 #include "core/rotation.h"
 #include "model/commands/set_keyframe_time_command.h"
 #include "model/commands/set_keyframe_orientation_command.h"
@@ -101,6 +102,8 @@ InspectorWidget::InspectorWidget(model::Document& document, Selection& selection
     connect(eulerAngles_, &NumberFields::editingFinished, this, &InspectorWidget::applyEulerAngles);
     connect(ui_->constrainedCheck, &QCheckBox::clicked, this, &InspectorWidget::applyConstraint);
     setUpConventionChoosers();
+    // Below the key's groups, scrolling with them; it shows the object, so it stays enabled without a key.
+    ui_->fieldsLayout->insertWidget(ui_->fieldsLayout->count() - 1, new MassPropertiesGroup(document, selection, this));
 
     connect(&selection_, &Selection::changed, this, [this] {
         clearMessage();
@@ -163,7 +166,7 @@ void InspectorWidget::showSelectedKey()
                                     .arg(*shownKey_ + 1)
                                     .arg(object->track.keys.size()));
     ui_->keyTitleLabel->show();
-    ui_->fieldsWidget->setEnabled(true);
+    setKeyFieldsEnabled(true);
     time_->show({key->time});
     const Eigen::Vector3d& position = key->pose.position;
     position_->show({position.x(), position.y(), position.z()});
@@ -197,13 +200,20 @@ void InspectorWidget::showOrientation(const model::SceneObject& object, std::siz
             .arg(roundedNumberText(lockDistance, 2)));
 }
 
+void InspectorWidget::setKeyFieldsEnabled(bool enabled)
+{
+    for (QWidget* group : {ui_->keyframeGroup, ui_->positionGroup, ui_->quaternionGroup, ui_->matrixGroup,
+                           ui_->axisAngleGroup, ui_->eulerGroup})
+        group->setEnabled(enabled);
+}
+
 void InspectorWidget::showNoKey()
 {
     shownObject_ = model::kNoObject;
     shownKey_.reset();
     ui_->noKeyLabel->show();
     ui_->keyTitleLabel->hide();
-    ui_->fieldsWidget->setEnabled(false);
+    setKeyFieldsEnabled(false);
     for (NumberFields* fields : {time_, position_, quaternion_, matrix_, axisAngle_, eulerAngles_})
         fields->clear();
     ui_->constrainedCheck->setChecked(false);

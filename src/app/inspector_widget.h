@@ -54,6 +54,7 @@ private:
     void showSelectedKey();
     void showOrientation(const model::SceneObject& object, std::size_t keyIndex);
     void showNoKey();
+    void setKeyFieldsEnabled(bool enabled);
 
     // The keyframe the fields show, which edits go to.
     const model::Keyframe& shownKeyframe() const;

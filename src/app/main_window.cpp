@@ -324,6 +324,8 @@ void MainWindow::createViewport()
     connect(ui_->actionShowTrajectory, &QAction::toggled, viewport_, &Viewport::setShowTrajectory);
     connect(ui_->actionShowControlPoses, &QAction::toggled, viewport_, &Viewport::setShowControlPoses);
     connect(ui_->actionShowTrail, &QAction::toggled, viewport_, &Viewport::setShowTrail);
+    connect(ui_->actionShowAngularMomentum, &QAction::toggled, viewport_, &Viewport::setShowAngularMomentum);
+    connect(ui_->actionShowPrincipalAxes, &QAction::toggled, viewport_, &Viewport::setShowPrincipalAxes);
     connect(viewport_, &Viewport::drawingFailed, this, [this](const QString& message) { statusBar()->showMessage(message); });
     connect(ui_->actionFrameAll, &QAction::triggered, viewport_, &Viewport::frameScene);
     connect(ui_->actionFrameSelected, &QAction::triggered, viewport_, &Viewport::frameSelected);

@@ -6,9 +6,11 @@
 #include "core/number_text.h"
 #include "io/scene_import.h"
 #include "io/scene_worker.h"
+#include "model/object_mass.h"
 #include "model/project_file.h"
 #include "model/scene_queries.h"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -34,6 +36,29 @@ std::string objectLine(const model::Scene& scene, const SceneObject& object)
     if (!keys.empty())
         line += " from " + formatNumber(keys.front().time) + " to " + formatNumber(keys.back().time) + " s";
     return line + ", " + std::string(interpolationMethodName(object.track.interpolation));
+}
+
+// Four significant digits: what a mass or a moment of inertia is known to; a value below `zero` shows as 0.
+std::string rounded(double value, double zero = 0.0)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", std::abs(value) < zero ? 0.0 : value);
+    return text;
+}
+
+// "    mass 0.332 kg (from the mesh, solid), centre (0, 0, 0.1) m, principal moments 0.01, 0.02, 0.02 kg·m²"
+std::string massLine(const SceneObject& object)
+{
+    // A mesh's float positions put the centre of a symmetric body a few 1e-8 m off its axis.
+    constexpr double kMicrometre = 1e-6;
+    const model::ObjectMass mass = model::objectMassProperties(object);
+    const Eigen::Vector3d& centre = mass.properties.centre;
+    const Eigen::Vector3d moments = principalAxes(mass.properties.inertia).moments;
+    return "    mass " + rounded(mass.properties.mass) + " kg (" + model::massSourceText(mass.source).toStdString() +
+           "), centre (" + rounded(centre.x(), kMicrometre) + ", " + rounded(centre.y(), kMicrometre) + ", " +
+           rounded(centre.z(), kMicrometre) +
+           ") m, principal moments " + rounded(moments[0]) + ", " + rounded(moments[1]) + ", " + rounded(moments[2]) +
+           " kg·m²";
 }
 
 // A project by its .gyre extension; any other file is a scene for Assimp, whose animations are listed.
@@ -69,7 +94,7 @@ void runInfo(const QStringList& arguments)
             formatNumber(scene.fps) + " fps\n";
     text += plural(scene.objects.size(), "object") + ", " + plural(model::keyframeCount(scene), "keyframe") + "\n";
     for (const SceneObject& object : scene.objects)
-        text += objectLine(scene, object) + "\n";
+        text += objectLine(scene, object) + "\n" + massLine(object) + "\n";
     std::fputs(text.c_str(), stdout);
 }
 

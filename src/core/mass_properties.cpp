@@ -5,16 +5,18 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
+#include <optional>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
-#include <string>
 #include <unordered_map>
 
 namespace gyre {
 
 namespace {
+
+// Positions closer than this fraction of the mesh's size are one: float rounding is a few 1e-7 of it.
+constexpr double kWeldTolerance = 1e-5;
 
 // The moments of a body about the origin: its mass m, first moment ∫ x dm and second moment ∫ x xᵀ dm.
 struct Moments {
@@ -47,20 +49,62 @@ Eigen::Vector3d positionAt(const std::vector<Eigen::Vector3f>& positions, std::u
     return positions[index].cast<double>();
 }
 
-// Whether every edge, its ends matched by position, is run once in each direction.
+// The index of each position's weld: positions within `tolerance` of an earlier one share its index.
+// A grid of cells `tolerance` wide finds them, looking in the 27 cells around each position.
+std::vector<std::uint32_t> weldedIndices(const std::vector<Eigen::Vector3f>& positions, double tolerance)
+{
+    struct CellHash {
+        std::size_t operator()(const Eigen::Vector3i& cell) const
+        {
+            return (static_cast<std::size_t>(cell.x()) * 73856093u) ^ (static_cast<std::size_t>(cell.y()) * 19349663u) ^
+                   (static_cast<std::size_t>(cell.z()) * 83492791u);
+        }
+    };
+    struct CellEqual {
+        bool operator()(const Eigen::Vector3i& a, const Eigen::Vector3i& b) const { return a == b; }
+    };
+    std::unordered_map<Eigen::Vector3i, std::vector<std::uint32_t>, CellHash, CellEqual> grid;
+    std::vector<std::uint32_t> welded(positions.size());
+    std::vector<Eigen::Vector3d> representatives;
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        const Eigen::Vector3d point = positions[i].cast<double>();
+        const Eigen::Vector3i cell = (point / tolerance).array().floor().cast<int>();
+        std::optional<std::uint32_t> found;
+        for (int dx = -1; dx <= 1 && !found; ++dx)
+            for (int dy = -1; dy <= 1 && !found; ++dy)
+                for (int dz = -1; dz <= 1 && !found; ++dz) {
+                    const auto entry = grid.find(cell + Eigen::Vector3i(dx, dy, dz));
+                    if (entry == grid.end())
+                        continue;
+                    for (const std::uint32_t candidate : entry->second)
+                        if ((representatives[candidate] - point).norm() <= tolerance) {
+                            found = candidate;
+                            break;
+                        }
+                }
+        if (!found) {
+            found = static_cast<std::uint32_t>(representatives.size());
+            representatives.push_back(point);
+            grid[cell].push_back(*found);
+        }
+        welded[i] = *found;
+    }
+    return welded;
+}
+
+// Whether every edge, its ends welded by position (faces with their own vertices, or a seam whose
+// copies differ by float rounding, still join), is run once in each direction.
 bool isClosed(const std::vector<Eigen::Vector3f>& positions, const std::vector<std::uint32_t>& indices)
 {
-    // Welds positions by their bits, so faces with their own vertices (flat shading) still join.
-    std::unordered_map<std::string, std::uint32_t> welded;
-    std::vector<std::uint32_t> weldedIndex(positions.size());
-    for (std::size_t i = 0; i < positions.size(); ++i) {
-        std::string bits(sizeof(float) * 3, '\0');
-        for (int axis = 0; axis < 3; ++axis) {
-            const float coordinate = positions[i][axis] == 0.0f ? 0.0f : positions[i][axis]; // −0 is 0
-            std::memcpy(bits.data() + axis * sizeof(float), &coordinate, sizeof(float));
-        }
-        weldedIndex[i] = welded.emplace(std::move(bits), static_cast<std::uint32_t>(welded.size())).first->second;
+    Eigen::Vector3f low = positions.front(), high = positions.front();
+    for (const Eigen::Vector3f& position : positions) {
+        low = low.cwiseMin(position);
+        high = high.cwiseMax(position);
     }
+    const double size = (high - low).cast<double>().norm();
+    if (!(size > 0.0))
+        return false;
+    const std::vector<std::uint32_t> weldedIndex = weldedIndices(positions, kWeldTolerance * size);
     // Each directed edge counts +1, its reverse −1: closed and consistently wound iff every sum is 0.
     std::unordered_map<std::uint64_t, int> balance;
     for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
@@ -177,18 +221,18 @@ PrincipalAxes principalAxes(const Eigen::Matrix3d& inertia)
     return principal;
 }
 
-const char* inertiaProblem(const Eigen::Matrix3d& inertia)
+InertiaProblem inertiaProblem(const Eigen::Matrix3d& inertia)
 {
     if (!inertia.allFinite())
-        return "the inertia tensor has a value that is not finite";
+        return InertiaProblem::NotFinite;
     if ((inertia - inertia.transpose()).cwiseAbs().maxCoeff() > 1e-12 * inertia.cwiseAbs().maxCoeff())
-        return "the inertia tensor is not symmetric";
+        return InertiaProblem::NotSymmetric;
     const Eigen::Vector3d moments = principalAxes(inertia).moments;
     if (!(moments[0] > 0.0))
-        return "the inertia tensor is not positive definite";
+        return InertiaProblem::NotPositiveDefinite;
     if (moments[0] + moments[1] < moments[2] * (1.0 - 1e-9))
-        return "no body has these moments of inertia: the two smaller principal moments add up to less than the largest";
-    return nullptr;
+        return InertiaProblem::NoSuchBody;
+    return InertiaProblem::None;
 }
 
 } // namespace gyre

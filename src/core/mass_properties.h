@@ -23,6 +23,7 @@ struct MassProperties {
     double mass = 1.0;                                  // kg
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();   // centre of mass, in the body's frame
     Eigen::Matrix3d inertia = Eigen::Matrix3d::Identity(); // about the centre, in the body's frame, kg·m²
+    bool operator==(const MassProperties&) const = default;
 };
 
 // How mass properties were found.
@@ -57,9 +58,9 @@ struct PrincipalAxes {
 };
 PrincipalAxes principalAxes(const Eigen::Matrix3d& inertia);
 
-// Null when `inertia` can be the inertia tensor of a body: finite, symmetric, positive definite, and its
-// principal moments meet the triangle inequality I₁ + I₂ ≥ I₃ (relative tolerance 1e-9); otherwise
-// what is wrong, in English, for the caller to translate.
-const char* inertiaProblem(const Eigen::Matrix3d& inertia);
+// Whether `inertia` can be the inertia tensor of a body: finite, symmetric, positive definite, and its
+// principal moments meet the triangle inequality I₁ + I₂ ≥ I₃ (relative tolerance 1e-9).
+enum class InertiaProblem { None, NotFinite, NotSymmetric, NotPositiveDefinite, NoSuchBody };
+InertiaProblem inertiaProblem(const Eigen::Matrix3d& inertia);
 
 } // namespace gyre

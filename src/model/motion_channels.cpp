@@ -59,8 +59,9 @@ ChannelCurves sampleChannels(const TrackMotion& motion, const std::vector<Keyfra
         previous = q;
         rotations.push_back(q);
         const Eigen::Vector3d worldVelocity = motion.angularVelocity(time);
-        const Eigen::Vector3d velocity =
-            settings.velocityFrame == VelocityFrame::World ? worldVelocity : Eigen::Vector3d(q.conjugate() * worldVelocity);
+        const Eigen::Vector3d localVelocity = q.conjugate() * worldVelocity;
+        const bool world = settings.velocityFrame == VelocityFrame::World;
+        const Eigen::Vector3d velocity = world ? worldVelocity : localVelocity;
         const std::array quaternion{q.w(), q.x(), q.y(), q.z()};
         for (std::size_t c = 0; c < 4; ++c)
             curves.values[static_cast<std::size_t>(Channel::QuaternionW) + c].push_back(quaternion[c]);
@@ -69,6 +70,13 @@ ChannelCurves sampleChannels(const TrackMotion& motion, const std::vector<Keyfra
             curves.values[static_cast<std::size_t>(Channel::PositionX) + static_cast<std::size_t>(c)].push_back(pose.position[c]);
         }
         channel(curves, Channel::AngularSpeed).push_back(worldVelocity.norm());
+        // In the object's frame L = I·ω_local; turned into the parent's, R·I·Rᵀ·ω.
+        const Eigen::Vector3d localMomentum = settings.inertia * localVelocity;
+        const Eigen::Vector3d momentum = world ? Eigen::Vector3d(q * localMomentum) : localMomentum;
+        for (int c = 0; c < 3; ++c)
+            curves.values[static_cast<std::size_t>(Channel::AngularMomentumX) + static_cast<std::size_t>(c)].push_back(momentum[c]);
+        channel(curves, Channel::AngularMomentumMagnitude).push_back(localMomentum.norm());
+        channel(curves, Channel::KineticEnergy).push_back(0.5 * localVelocity.dot(localMomentum));
     }
 
     const std::vector<Eigen::Vector3d> angles = unwrappedEulerAngles(rotations, settings.convention);

@@ -4,7 +4,9 @@
 // core/euler_angles.h) so that a spin is a ramp and not a saw-tooth; the orientation as the four
 // quaternion components, their sign kept continuous from the first key's; the angular velocity's
 // components in the parent's (world) or the object's own (local) frame and its magnitude; and the
-// position. Where the middle angle comes near its gimbal-lock value, the time spans are listed, since
+// position; and, for the physics, the angular momentum L = R·I·Rᵀ·ω about the centre of mass and the
+// rotational kinetic energy ½·ωᵀ·R·I·Rᵀ·ω, with R the orientation and I the body's inertia tensor
+// (model/object_mass.h): in free flight both stay constant. Where the middle angle comes near its gimbal-lock value, the time spans are listed, since
 // there the first and third angles stop meaning much on their own.
 
 #include "core/euler_angles.h"
@@ -33,15 +35,20 @@ enum class Channel {
     PositionX,
     PositionY,
     PositionZ,
+    AngularMomentumX,
+    AngularMomentumY,
+    AngularMomentumZ,
+    AngularMomentumMagnitude,
+    KineticEnergy,
 };
-inline constexpr std::size_t kChannelCount = 14;
+inline constexpr std::size_t kChannelCount = 19;
 
 inline bool isEulerChannel(Channel channel) { return channel <= Channel::EulerThird; }
 // 0, 1 or 2 for the first, second and third Euler angle.
 inline int eulerIndex(Channel channel) { return static_cast<int>(channel); }
 
-// The frame angular velocity is given in: the parent's (ω = 2q′q⁻¹) or the object's own
-// (ω_local = q⁻¹ ω q, what a gyroscope on the object reads).
+// The frame angular velocity and momentum are given in: the parent's (ω = 2q′q⁻¹) or the object's own
+// (ω_local = q⁻¹ ω q, what a gyroscope on the object reads; L_local = I·ω_local).
 enum class VelocityFrame { World, Local };
 
 // Within this distance of gimbal lock a change δ of the rotation can move the first and third angles
@@ -54,13 +61,14 @@ struct ChannelSettings {
     double start = 0.0; // seconds
     double end = 10.0;
     std::size_t samples = 2000; // evenly spaced from start to end, besides the keys' times
+    Eigen::Matrix3d inertia = Eigen::Matrix3d::Identity(); // the body's, in its own frame, kg·m²
 };
 
 struct ChannelCurves {
     // Increasing: the even samples merged with the key times inside the range.
     std::vector<double> times;
     // Per channel, one value per time: Euler angles in degrees, quaternion components, angular
-    // velocity in rad/s, position in scene units.
+    // velocity in rad/s, position in scene units, angular momentum in kg·m²/s, energy in joules.
     std::array<std::vector<double>, kChannelCount> values;
     // Per key inside the range, its index in `times`, and the key's own index in the track.
     std::vector<std::pair<std::size_t, std::size_t>> keySamples;

@@ -2,6 +2,7 @@
 
 #include "model/input_error.h"
 #include "model/json_field.h"
+#include "model/object_mass.h"
 #include "model/output_target.h"
 #include "model/project_blocks.h"
 #include "model/sketch_fit_problem.h"
@@ -192,7 +193,7 @@ ProjectLayout::ProjectLayout(const Scene& scene)
         const QJsonObject keyframes = keysJson(object.track.keys);
         const QJsonObject fittedCurve = controlPointsJson(object.track.sketch.fittedCurve);
         const QJsonObject keysBeforeFit = keysJson(object.track.sketch.keysBeforeFit);
-        objects.append(QJsonObject{
+        QJsonObject entry{
             {"id", idJson(object.id)},
             {"name", object.name},
             {"parent", idJson(object.parent)},
@@ -201,7 +202,10 @@ ProjectLayout::ProjectLayout(const Scene& scene)
             {"interpolation", QString::fromLatin1(interpolationMethodName(object.track.interpolation))},
             {"subdivision", subdivisionJson(object.track.subdivision)},
             {"keyframes", keyframes},
-            {"sketch", sketchJson(object.track.sketch, fittedCurve, keysBeforeFit)}});
+            {"sketch", sketchJson(object.track.sketch, fittedCurve, keysBeforeFit)}};
+        if (object.massOverride)
+            entry.insert("massProperties", massPropertiesJson(*object.massOverride));
+        objects.append(entry);
     }
     QJsonArray times;
     for (const std::vector<Keyframe>* keys : timeLists_) {
@@ -518,6 +522,8 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
     object.parent = optionalId(field.member("parent"));
     // Files written before objects could be hidden show every object.
     object.visible = !field.has("visible") || field.member("visible").boolean();
+    if (field.has("massProperties"))
+        object.massOverride = massPropertiesIn(field.member("massProperties"));
     if (const JsonField mesh = field.member("mesh"); !mesh.isNull()) {
         if (meshes.empty())
             mesh.fail(FileError::tr("the file has no meshes"));

@@ -3,6 +3,7 @@
 // values that undo commands copy and swap; only the Document (document.h) changes them, through
 // its undo stack.
 
+#include "core/mass_properties.h"
 #include "core/orientation_curves.h"
 #include "core/pose.h"
 #include "core/subdivision.h"
@@ -103,6 +104,9 @@ struct SceneObject {
     // Drawn and pickable in the viewport (Blender's eye in the outliner). It hides the object alone, not
     // its children, and changes no motion: exports and fits still see it.
     bool visible = true;
+    // The body's mass, centre of mass and inertia as the artist typed them; none: from the mesh
+    // (model::objectMassProperties).
+    std::optional<MassProperties> massOverride = std::nullopt;
 };
 
 struct Scene {

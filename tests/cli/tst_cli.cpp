@@ -476,15 +476,18 @@ void TstCli::infoSummarisesAProject()
     QCOMPARE(run.exitCode, 0);
     QCOMPARE(run.err, QString());
     const QStringList lines = run.out.split('\n', Qt::SkipEmptyParts);
-    QCOMPARE(lines.size(), 6);
+    QCOMPARE(lines.size(), 9);
     QCOMPARE(lines[0], in + ": Gyre project");
     QCOMPARE(lines[1], QStringLiteral("time range: 0 to 4 s at 30 fps"));
     QCOMPARE(lines[2], QStringLiteral("3 objects, 5 keyframes"));
     QCOMPARE(lines[3], QStringLiteral("  car: 3 keyframes from %1 to %2 s, squad")
                            .arg(QString::number(keys[0].time, 'g', QLocale::FloatingPointShortest),
                                 QString::number(keys[2].time, 'g', QLocale::FloatingPointShortest)));
-    QVERIFY2(lines[4].startsWith("  wheel (child of car): 2 keyframes from "), qPrintable(lines[4]));
-    QCOMPARE(lines[5], QStringLiteral("  light: 0 keyframes, squad"));
+    // Without a mesh an object is the block, 0.332 m³ (tst_primitive_meshes) of water.
+    QVERIFY2(lines[4].startsWith("    mass 332 kg (from the mesh, solid), centre ("), qPrintable(lines[4]));
+    QVERIFY2(lines[5].startsWith("  wheel (child of car): 2 keyframes from "), qPrintable(lines[5]));
+    QCOMPARE(lines[7], QStringLiteral("  light: 0 keyframes, squad"));
+    QCOMPARE(lines[8], lines[4]);
 }
 
 void TstCli::keysWritesAnObjectsKeyframes()

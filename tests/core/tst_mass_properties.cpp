@@ -73,6 +73,7 @@ private slots:
     void turnedMovedBoxMatchesClosedForm_data();
     void turnedMovedBoxMatchesClosedForm();
     void insideOutBoxIsTheSameSolid();
+    void seamCopiesApartByRoundingStillClose();
     void tetrahedronMatchesMonteCarloIntegration();
     void openMeshIsAThinShell();
     void meshWithoutAreaIsItsBoundingBox();
@@ -119,6 +120,33 @@ void TestMassProperties::insideOutBoxIsTheSameSolid()
     QVERIFY(outward.properties.mass > 0.0);
     QVERIFY(close(inward.properties.inertia, outward.properties.inertia, 1e-12));
     QVERIFY(std::abs(inward.properties.mass - outward.properties.mass) <= 1e-12 * outward.properties.mass);
+}
+
+// A cylinder of radius 1 and height 2 built as modellers do: a ring of quads whose last column copies the
+// first at angle 2π (cos and sin in float, off by rounding), and two fan caps.
+void TestMassProperties::seamCopiesApartByRoundingStillClose()
+{
+    const int segments = 64;
+    TestMesh mesh;
+    for (int k = 0; k <= segments; ++k) {
+        const float angle = 2.0f * std::numbers::pi_v<float> * static_cast<float>(k) / segments;
+        for (const float z : {-1.0f, 1.0f})
+            mesh.positions.emplace_back(std::cos(angle), std::sin(angle), z);
+    }
+    QVERIFY(mesh.positions[2 * segments] != mesh.positions[0]); // the seam's copy differs
+    const auto bottom = static_cast<std::uint32_t>(mesh.positions.size());
+    mesh.positions.emplace_back(0.0f, 0.0f, -1.0f);
+    mesh.positions.emplace_back(0.0f, 0.0f, 1.0f);
+    for (std::uint32_t k = 0; k < segments; ++k) {
+        const std::uint32_t a = 2 * k, b = a + 2;
+        mesh.indices.insert(mesh.indices.end(), {a, b, b + 1, a, b + 1, a + 1, bottom, b, a, bottom + 1, a + 1, b + 1});
+    }
+    const MeshMass result = meshMassProperties(mesh.positions, mesh.indices, 1.0);
+    QCOMPARE(result.model, MassModel::Solid);
+    // The inscribed 64-gon prism: area 32·sin(2π/64), height 2; Izz = m·r²/2 for its disc, near enough.
+    const double volume = 2.0 * 32.0 * std::sin(2.0 * std::numbers::pi / segments);
+    QVERIFY(std::abs(result.properties.mass - volume) < 1e-5 * volume);
+    QVERIFY(std::abs(result.properties.inertia(2, 2) - 0.5 * volume) < 0.01 * volume);
 }
 
 void TestMassProperties::tetrahedronMatchesMonteCarloIntegration()
@@ -226,17 +254,17 @@ void TestMassProperties::principalAxesAreARightHandedFrameOfTheTensor()
 
 void TestMassProperties::inertiaProblemsAreNamed()
 {
-    QCOMPARE(inertiaProblem(boxInertia(2.0, {1, 2, 3}, Eigen::Matrix3d::Identity())), nullptr);
-    QVERIFY(inertiaProblem(Eigen::Vector3d(1, 1, 3).asDiagonal().toDenseMatrix()) != nullptr); // 1 + 1 < 3
-    QVERIFY(inertiaProblem(Eigen::Vector3d(1, -1, 1).asDiagonal().toDenseMatrix()) != nullptr);
+    QCOMPARE(inertiaProblem(boxInertia(2.0, {1, 2, 3}, Eigen::Matrix3d::Identity())), InertiaProblem::None);
+    QCOMPARE(inertiaProblem(Eigen::Vector3d(1, 1, 3).asDiagonal().toDenseMatrix()), InertiaProblem::NoSuchBody); // 1 + 1 < 3
+    QCOMPARE(inertiaProblem(Eigen::Vector3d(1, -1, 1).asDiagonal().toDenseMatrix()), InertiaProblem::NotPositiveDefinite);
     Eigen::Matrix3d skewed = Eigen::Matrix3d::Identity();
     skewed(0, 1) = 0.1;
-    QVERIFY(inertiaProblem(skewed) != nullptr);
+    QCOMPARE(inertiaProblem(skewed), InertiaProblem::NotSymmetric);
     Eigen::Matrix3d infinite = Eigen::Matrix3d::Identity();
     infinite(2, 2) = std::numeric_limits<double>::infinity();
-    QVERIFY(inertiaProblem(infinite) != nullptr);
+    QCOMPARE(inertiaProblem(infinite), InertiaProblem::NotFinite);
     // A thin rod's moments (0, m, m) sit on the boundary but are not positive definite.
-    QVERIFY(inertiaProblem(Eigen::Vector3d(0, 1, 1).asDiagonal().toDenseMatrix()) != nullptr);
+    QCOMPARE(inertiaProblem(Eigen::Vector3d(0, 1, 1).asDiagonal().toDenseMatrix()), InertiaProblem::NotPositiveDefinite);
 }
 
 QTEST_APPLESS_MAIN(TestMassProperties)

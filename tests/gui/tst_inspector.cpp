@@ -6,14 +6,17 @@
 #include "inspected_window.h"
 
 #include "gui_test_support.h"
+#include "model/object_mass.h"
 
 #include <QCheckBox>
 #include <QFrame>
 #include <QLabel>
+#include <QScrollArea>
 #include <QTest>
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 using namespace gyre;
 using test::enter;
@@ -282,6 +285,52 @@ private slots:
         QCOMPARE(inspected.undoSteps(), steps + 1);
         QVERIFY(!inspected.child<QFrame>("inspectorMessageFrame")->isHidden());
         QVERIFY(inspected.child<QLabel>("inspectorMessageLabel")->text().startsWith(QStringLiteral("The keyframe was not moved")));
+    }
+
+    void typedMassPropertiesAreUndoStepsAndABodyThatCannotBeIsRefused()
+    {
+        InspectedWindow inspected(kQuarterTurnKey);
+        model::Document& document = inspected.window().document();
+        const MassProperties fromMesh = model::objectMassProperties(*document.object(inspected.object())).properties;
+        QLineEdit* mass = inspected.field("massEdit");
+        // Below the key's groups: the artist scrolls down to it, and it shows the object once in view.
+        auto* scrollArea = inspected.child<QScrollArea>("fieldsScrollArea");
+        scrollArea->ensureWidgetVisible(inspected.child<QWidget>("massPropertiesGroup"));
+        QTRY_VERIFY(!mass->text().isEmpty());
+        QVERIFY(mass->isReadOnly());
+        QVERIFY(std::abs(shownNumber(mass) - fromMesh.mass) <= 1e-6 * fromMesh.mass);
+
+        // Ticking "Type values" starts from the mesh's, so the motion does not change.
+        const int steps = inspected.undoSteps();
+        test::clickIndicator(inspected.child<QCheckBox>("massTypedCheck"));
+        QCOMPARE(inspected.undoSteps(), steps + 1);
+        QVERIFY(document.object(inspected.object())->massOverride == fromMesh);
+        QVERIFY(!mass->isReadOnly());
+
+        enter(mass, QStringLiteral("2.5"));
+        QCOMPARE(document.object(inspected.object())->massOverride->mass, 2.5);
+        QCOMPARE(inspected.undoSteps(), steps + 2);
+
+        // Moments 1, 1, 3: the two smaller add up to less than the largest.
+        const std::pair<const char*, const char*> moments[] = {
+            {"inertiaEdit0", "1"}, {"inertiaEdit1", "1"}, {"inertiaEdit3", "0"}, {"inertiaEdit4", "0"}, {"inertiaEdit5", "0"}};
+        for (const auto& [name, text] : moments)
+            typeOver(inspected.field(name), QString::fromLatin1(text));
+        enter(inspected.field("inertiaEdit2"), QStringLiteral("3"));
+        QCOMPARE(inspected.undoSteps(), steps + 2);
+        QVERIFY(!inspected.child<QLabel>("massMessageLabel")->isHidden());
+        QVERIFY2(inspected.child<QLabel>("massMessageLabel")->text().contains(QStringLiteral("no body has this inertia")),
+                 qPrintable(inspected.child<QLabel>("massMessageLabel")->text()));
+        QCOMPARE(document.object(inspected.object())->massOverride->inertia, fromMesh.inertia);
+
+        // Unticking goes back to the mesh's, one more step; undoing it brings the typed mass back.
+        scrollArea->ensureWidgetVisible(inspected.child<QCheckBox>("massTypedCheck"));
+        test::clickIndicator(inspected.child<QCheckBox>("massTypedCheck"));
+        QVERIFY(!document.object(inspected.object())->massOverride);
+        QVERIFY(mass->isReadOnly());
+        document.undoStack().undo();
+        QCOMPARE(document.object(inspected.object())->massOverride->mass, 2.5);
+        QCOMPARE(shownNumber(mass), 2.5);
     }
 
     void theConstraintCheckBoxTogglesTheKeyAsOneUndoStep()

@@ -1,10 +1,12 @@
 // The viewport's geometry without OpenGL: the orbit camera's projections and moves, and picking.
 
+#include "app/viewport/body_overlay.h"
 #include "app/viewport/default_shape.h"
 #include "app/viewport/mesh_winding.h"
 #include "app/viewport/orbit_camera.h"
 #include "app/viewport/picking.h"
 #include "app/viewport/skeleton.h"
+#include "model/object_mass.h"
 #include "model/scene_motion.h"
 
 #include <QTest>
@@ -77,6 +79,66 @@ class TestViewportGeometry : public QObject {
     Q_OBJECT
 
 private slots:
+    // The arrow of a box body, against its momentum summed over a grid of small cells, each moving at
+    // v = ω × r: L = Σ m·r × v about the centre of mass. Its principal axes are the box's edges, the
+    // longest edge's the one of least moment.
+    void theMomentumArrowAndPrincipalAxesAreTheBoxs()
+    {
+        const Eigen::Vector3d size(0.8, 0.3, 0.5);
+        model::SceneObject box;
+        auto mesh = std::make_shared<model::Mesh>();
+        for (int corner = 0; corner < 8; ++corner)
+            mesh->positions.push_back(Eigen::Vector3f(corner & 1 ? 0.4F : -0.4F, corner & 2 ? 0.15F : -0.15F,
+                                                      corner & 4 ? 0.25F : -0.25F) + Eigen::Vector3f(0.1F, 0.2F, 0.3F));
+        mesh->indices = {0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6};
+        box.mesh = mesh;
+        const MassProperties mass = model::objectMassProperties(box).properties;
+        const Pose pose{Eigen::Quaterniond(Eigen::AngleAxisd(0.9, Eigen::Vector3d(1, 2, -1).normalized())), {1, -2, 0.5}};
+        const Eigen::Vector3d omega(1.5, -0.4, 2.0);
+
+        const int cells = 24;
+        const double cellMass = mass.mass / (cells * cells * cells);
+        Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
+        for (int i = 0; i < cells; ++i)
+            for (int j = 0; j < cells; ++j)
+                for (int k = 0; k < cells; ++k) {
+                    const Eigen::Vector3d local = (Eigen::Vector3d(i, j, k).array() + 0.5).matrix().cwiseProduct(size) / cells - size / 2;
+                    const Eigen::Vector3d r = pose.orientation * local; // from the centre of mass
+                    momentum += cellMass * r.cross(omega.cross(r));
+                }
+        // The midpoint rule leaves out each cell's own spin, a relative 1/cells² of the moments.
+        const Eigen::Vector3d computed = app::worldAngularMomentum(pose, mass, omega);
+        QVERIFY2((computed - momentum).norm() < 3.0 / (cells * cells) * momentum.norm(),
+                 qPrintable(QStringLiteral("%1 against %2").arg(computed.norm()).arg(momentum.norm())));
+
+        std::vector<app::LineVertex> lines;
+        app::appendMomentumArrow(lines, pose, mass, omega, 1.0);
+        QCOMPARE(lines.size(), std::size_t(10)); // the shaft and four barbs
+        const auto point = [&](std::size_t index) {
+            return Eigen::Vector3d(lines[index].position[0], lines[index].position[1], lines[index].position[2]);
+        };
+        const Eigen::Vector3d centre = pose.apply(Eigen::Vector3d(0.1, 0.2, 0.3));
+        QVERIFY((point(0) - centre).norm() < 1e-6);
+        QVERIFY((point(1) - point(0)).normalized().dot(momentum.normalized()) > 1.0 - 1e-4);
+        const double expectedLength = app::momentumArrowLength(momentum.norm(), mass, 1.0);
+        QVERIFY(std::abs((point(1) - point(0)).norm() - expectedLength) < 3.0 / (cells * cells) * expectedLength);
+
+        lines.clear();
+        app::appendPrincipalAxes(lines, pose, mass, 1.0);
+        QCOMPARE(lines.size(), std::size_t(6));
+        for (int axis = 0; axis < 3; ++axis) {
+            const Eigen::Vector3d drawn = (point(2 * axis + 1) - point(2 * axis)).normalized();
+            // Least moment about the longest edge (x, 0.8), most about the shortest (y, 0.3).
+            const Eigen::Vector3d edge = pose.orientation * Eigen::Vector3d::Unit(axis == 0 ? 0 : axis == 1 ? 2 : 1);
+            QVERIFY2(std::abs(drawn.dot(edge)) > 1.0 - 1e-5, qPrintable(QStringLiteral("axis %1").arg(axis)));
+            QVERIFY(((point(2 * axis + 1) + point(2 * axis)) / 2 - centre).norm() < 1e-5);
+        }
+        // At rest there is no arrow.
+        lines.clear();
+        app::appendMomentumArrow(lines, pose, mass, Eigen::Vector3d::Zero(), 1.0);
+        QVERIFY(lines.empty());
+    }
+
     void projectThenUnprojectComesBack()
     {
         app::OrbitCamera camera = cameraAt(Eigen::Vector3d(1, 2, 3));

@@ -11,6 +11,7 @@
 #include "model/commands/set_keyframe_time_command.h"
 #include "model/commands/remove_keyframe_command.h"
 #include "model/commands/rename_object_command.h"
+#include "model/commands/set_mass_override_command.h"
 #include "model/commands/set_object_visibility_command.h"
 #include "model/commands/reparent_object_command.h"
 #include "model/commands/reparent_object_in_place_command.h"
@@ -112,6 +113,22 @@ std::shared_ptr<const Mesh> RandomEdits::mesh()
     return mesh;
 }
 
+MassProperties RandomEdits::massProperties()
+{
+    const Eigen::Vector3d size(number(0.1, 2), number(0.1, 2), number(0.1, 2));
+    const Eigen::Vector3d squares = size.cwiseProduct(size);
+    MassProperties properties;
+    properties.mass = number(0.1, 10);
+    properties.centre = vector();
+    const Eigen::Matrix3d turn = rotation().toRotationMatrix();
+    properties.inertia = turn *
+                         (properties.mass / 12.0 *
+                          Eigen::Vector3d(squares.y() + squares.z(), squares.x() + squares.z(), squares.x() + squares.y()))
+                             .asDiagonal() *
+                         turn.transpose();
+    return properties;
+}
+
 std::vector<SceneObject> RandomEdits::objects(int count)
 {
     const std::shared_ptr<const Mesh> shared = mesh();
@@ -129,6 +146,8 @@ std::vector<SceneObject> RandomEdits::objects(int count)
                                     number(0, 1) < 0.5, number(0, 1) < 0.5};
         object.track.sketch = sketch();
         object.visible = number(0, 1) < 0.8;
+        if (number(0, 1) < 0.3)
+            object.massOverride = massProperties();
         batch.push_back(object);
     }
     return batch;
@@ -194,6 +213,10 @@ std::unique_ptr<QUndoCommand> RandomEdits::command(Document& document, EditKind 
         return std::make_unique<RenameObjectCommand>(document, id, QStringLiteral("renamed %1").arg(index(100)));
     case EditKind::SetObjectVisibility:
         return std::make_unique<SetObjectVisibilityCommand>(document, id, number(0, 1) < 0.5);
+    case EditKind::SetMassOverride:
+        return std::make_unique<SetMassOverrideCommand>(document, id,
+                                                        number(0, 1) < 0.3 ? std::nullopt
+                                                                           : std::optional(massProperties()));
     case EditKind::ReparentObject:
     case EditKind::ReparentObjectInPlace: {
         const std::vector<SceneObject>& objects = document.scene().objects;

@@ -20,6 +20,7 @@ enum class EditKind {
     DeleteObject,
     RenameObject,
     SetObjectVisibility,
+    SetMassOverride,
     ReparentObject,
     ReparentObjectInPlace,
     AddKeyframe,
@@ -70,6 +71,8 @@ public:
     // A batch of objects in ImportObjectsCommand's terms: local ids 1..n, parents earlier in the batch.
     std::vector<SceneObject> objects(int count);
     std::shared_ptr<const Mesh> mesh();
+    // A box's: of random size and mass, turned and off centre.
+    MassProperties massProperties();
     // A scene with `count` objects, each with keys and a sketch, some sharing a mesh.
     Scene scene(int count);
 

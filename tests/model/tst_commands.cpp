@@ -17,6 +17,8 @@
 #include "model/commands/set_keyframe_time_command.h"
 #include "model/commands/remove_keyframe_command.h"
 #include "model/commands/rename_object_command.h"
+#include "model/commands/set_mass_override_command.h"
+#include "model/object_mass.h"
 #include "model/commands/set_object_visibility_command.h"
 #include "model/commands/reparent_object_command.h"
 #include "model/commands/reparent_object_in_place_command.h"
@@ -141,6 +143,7 @@ private slots:
     void importRefusesBadBatches();
     void importGivesSkinsTheirJointsSceneIds();
     void renameObject();
+    void massOverrideTakesOnlyABodysProperties();
     void reparentKeepsParentsFirst();
     void reparentRefusesCycles();
     void reparentInPlaceKeepsTheWorldPoseAtEveryKey();
@@ -486,6 +489,39 @@ void TstCommands::importGivesSkinsTheirJointsSceneIds()
     QCOMPARE(document.scene().nextObjectId, nextId);
 }
 
+void TstCommands::massOverrideTakesOnlyABodysProperties()
+{
+    Document document;
+    import(document, {objectWithKeys(1, {0, 1})});
+    const int imported = document.undoStack().index();
+    const MassProperties computed = objectMassProperties(*document.object(1)).properties;
+    MassProperties typed;
+    typed.mass = 2.0;
+    typed.inertia = Eigen::Vector3d(1, 2, 2.5).asDiagonal();
+    document.undoStack().push(new SetMassOverrideCommand(document, 1, typed));
+    QCOMPARE(objectMassProperties(*document.object(1)).source, MassSource::Typed);
+    QVERIFY(objectMassProperties(*document.object(1)).properties == typed);
+    QCOMPARE(document.undoStack().undoText(), QStringLiteral("Set Mass Properties"));
+    document.undoStack().push(new SetMassOverrideCommand(document, 1, std::nullopt));
+    QCOMPARE(document.undoStack().undoText(), QStringLiteral("Mass From Mesh"));
+    QVERIFY(objectMassProperties(*document.object(1)).properties == computed);
+    document.undoStack().undo();
+    QVERIFY(*document.object(1)->massOverride == typed);
+    document.undoStack().undo();
+    QVERIFY(!document.object(1)->massOverride);
+
+    MassProperties rod = typed;
+    rod.inertia = Eigen::Vector3d(1, 1, 3).asDiagonal();
+    QVERIFY(refuses([&] { SetMassOverrideCommand(document, 1, rod); }, "no body has this inertia"));
+    MassProperties weightless = typed;
+    weightless.mass = 0.0;
+    QVERIFY(refuses([&] { SetMassOverrideCommand(document, 1, weightless); }, "the mass must be a number above 0"));
+    MassProperties nowhere = typed;
+    nowhere.centre.x() = std::nan("");
+    QVERIFY(refuses([&] { SetMassOverrideCommand(document, 1, nowhere); }, "not a finite point"));
+    QCOMPARE(document.undoStack().index(), imported);
+}
+
 void TstCommands::renameObject()
 {
     Document document;
@@ -652,6 +688,8 @@ void TstCommands::signalsSayWhatChanged_data()
         {"Added:4", "Added:5"});
     row("rename", [](Document& d) { return new RenameObjectCommand(d, 2, QStringLiteral("x")); }, {"Object:2"});
     row("hide", [](Document& d) { return new SetObjectVisibilityCommand(d, 2, false); }, {"Object:2"});
+    row("mass", [](Document& d) { return new SetMassOverrideCommand(d, 2, MassProperties{}); },
+        {"Object:2", "TrackSettings:2"});
     row("reparent", [](Document& d) { return new ReparentObjectCommand(d, 2, 3); }, {"Object:2"});
     row("reparent in place", [](Document& d) { return new ReparentObjectInPlaceCommand(d, 2, 3); },
         {"Object:2", "Keyframes:2"});

@@ -47,6 +47,50 @@ class TstMotionChannels : public QObject {
     Q_OBJECT
 
 private slots:
+    // The momentum and energy against a body made of point masses, each moving at v = ω × r:
+    // L = Σ m·r × v and E = ½·Σ m·|v|², with I = Σ m·(|r|²·𝟙 − r·rᵀ) the only thing passed in.
+    void momentumAndEnergyAreThoseOfPointMasses()
+    {
+        const std::vector<std::pair<double, Eigen::Vector3d>> masses{
+            {1.0, {0.3, -0.2, 0.1}}, {2.0, {-0.1, 0.4, 0.2}}, {0.5, {0.2, 0.1, -0.5}}, {1.5, {-0.3, -0.1, 0.05}}};
+        Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+        for (const auto& [m, r] : masses)
+            inertia += m * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
+        // Half a turn a second about a tilted axis, from a tilted start.
+        const Eigen::Vector3d axis = Eigen::Vector3d(1, 2, 2).normalized();
+        const Eigen::Quaterniond start(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, -1, 0).normalized()));
+        SceneObject object;
+        object.track.interpolation = InterpolationMethod::Slerp;
+        for (int k = 0; k < 4; ++k)
+            object.track.keys.push_back(
+                Keyframe{double(k), Pose{Eigen::Quaterniond(Eigen::AngleAxisd(kPi / 2.0 * k, axis)) * start, {}}, true});
+        const Eigen::Vector3d omega = kPi / 2.0 * axis;
+        const TrackMotion motion(object.track);
+        for (const VelocityFrame frame : {VelocityFrame::World, VelocityFrame::Local}) {
+            ChannelSettings settings{{}, frame, 0.0, 3.0, 31};
+            settings.inertia = inertia;
+            const ChannelCurves curves = sampleChannels(motion, object.track.keys, settings);
+            // Not the first and last samples, at the ends of the keys, where the motion stops.
+            for (std::size_t i = 1; i + 1 < curves.times.size(); ++i) {
+                const Eigen::Quaterniond q = motion.at(curves.times[i]).orientation;
+                Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
+                double energy = 0.0;
+                for (const auto& [m, r] : masses) {
+                    const Eigen::Vector3d position = q * r;
+                    const Eigen::Vector3d velocity = omega.cross(position);
+                    momentum += m * position.cross(velocity);
+                    energy += 0.5 * m * velocity.squaredNorm();
+                }
+                const Eigen::Vector3d expected = frame == VelocityFrame::World ? momentum : Eigen::Vector3d(q.conjugate() * momentum);
+                const Eigen::Vector3d actual(curves.value(Channel::AngularMomentumX, i), curves.value(Channel::AngularMomentumY, i),
+                                             curves.value(Channel::AngularMomentumZ, i));
+                QVERIFY2((actual - expected).norm() < 1e-7, qPrintable(QStringLiteral("L at sample %1").arg(i)));
+                QVERIFY(std::abs(curves.value(Channel::AngularMomentumMagnitude, i) - momentum.norm()) < 1e-7);
+                QVERIFY(std::abs(curves.value(Channel::KineticEnergy, i) - energy) < 1e-7);
+            }
+        }
+    }
+
     void aSpinIsARampAndTheQuaternionKeepsItsSign()
     {
         const SceneObject object = spin(false);

@@ -1,5 +1,6 @@
 // The primitives Object ▸ Add makes: each a closed surface (every edge shared by exactly two
 // triangles that run it in opposite directions), facing outward, with the volume its solid has.
+#include "model/object_mass.h"
 #include "model/primitive_meshes.h"
 
 #include <QtTest>
@@ -86,6 +87,24 @@ private slots:
                 QVERIFY(winding.normalized().dot(mesh.normals[mesh.indices[t]]) > 0.999F);
         }
         QVERIFY(enclosedVolume(mesh) > 0.0);
+
+        // So each is a solid body to the physics, weighing its volume in water.
+        SceneObject object;
+        object.mesh = std::make_shared<Mesh>(mesh);
+        const ObjectMass mass = objectMassProperties(object);
+        QCOMPARE(mass.source, MassSource::Solid);
+        QVERIFY(std::abs(mass.properties.mass - kDefaultDensity * enclosedVolume(mesh)) < 1e-9 * mass.properties.mass);
+        QCOMPARE(inertiaProblem(mass.properties.inertia), InertiaProblem::None);
+    }
+
+    // An object without a mesh is drawn as the block, and weighs as the block does.
+    void anObjectWithoutAMeshHasTheBlocksMass()
+    {
+        const MeshMass block = meshMassProperties(primitiveMesh(Primitive::Block).positions,
+                                                  primitiveMesh(Primitive::Block).indices);
+        QVERIFY(objectMassProperties(SceneObject{}).properties == block.properties);
+        // The block's centre of mass lies ahead of its body's, towards the nose (+x), and above, towards the fin.
+        QVERIFY(block.properties.centre.x() > 0.0 && block.properties.centre.z() > 0.0);
     }
 
     void theVolumesAreThoseOfTheSolids()

@@ -555,6 +555,15 @@ void TstProjectFile::refusesMalformedFiles_data()
         "objects[0].keyframes[0].orientation: the quaternion has length 2; it must have length 1");
     row("three numbers for four", projectWith({"objects", 0, "keyframes", 0, "orientation"}, array({1, 0, 0})),
         "objects[0].keyframes[0].orientation: expected 4 numbers, found 3");
+    const auto mass = [](double value, QJsonArray inertia) {
+        return QJsonObject{{"mass", value}, {"centre", array({0, 0, 0})}, {"inertia", inertia}};
+    };
+    row("a body that cannot be", projectWith({"objects", 0, "massProperties"}, mass(1.5, array({1, 1, 3, 0, 0, 0}))),
+        "objects[0].massProperties: no body has this inertia");
+    row("no mass", projectWith({"objects", 0, "massProperties"}, mass(0, array({1, 1, 1, 0, 0, 0}))),
+        "objects[0].massProperties: the mass must be a number above 0");
+    row("five moments", projectWith({"objects", 0, "massProperties"}, mass(1, array({1, 1, 1, 0, 0}))),
+        "objects[0].massProperties.inertia: the inertia needs six numbers");
     row("times that do not increase", projectWith({"objects", 1, "keyframes", 2, "time"}, 0.75),
         "objects[1].keyframes[2].time: time 0.75 does not come after the time before it, 0.75");
     row("keys to restore without a fit",

@@ -74,6 +74,14 @@ QString ChannelListModel::name(Channel channel) const
     case Channel::PositionY:
     case Channel::PositionZ:
         return tr("position %1").arg(axis(static_cast<int>(channel) - static_cast<int>(Channel::PositionX)));
+    case Channel::AngularMomentumX:
+    case Channel::AngularMomentumY:
+    case Channel::AngularMomentumZ:
+        return tr("L %1 (kg·m²/s)").arg(axis(static_cast<int>(channel) - static_cast<int>(Channel::AngularMomentumX)));
+    case Channel::AngularMomentumMagnitude:
+        return tr("|L| (kg·m²/s)");
+    case Channel::KineticEnergy:
+        return tr("rotational energy (J)");
     }
     return {};
 }

@@ -5,6 +5,7 @@
 #include "model/commands/replace_keyframes_command.h"
 #include "model/commands/set_keyframe_orientation_command.h"
 #include "model/key_edits.h"
+#include "model/object_mass.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -56,8 +57,15 @@ QPen channelPen(Channel channel)
         const int component = index - static_cast<int>(Channel::AngularVelocityX);
         return QPen(colours[static_cast<std::size_t>(component)], 1.0, Qt::DotLine);
     }
-    const int component = index - static_cast<int>(Channel::PositionX);
-    return QPen(colours[static_cast<std::size_t>(component)], 1.0, Qt::DashDotLine);
+    if (channel <= Channel::PositionZ) {
+        const int component = index - static_cast<int>(Channel::PositionX);
+        return QPen(colours[static_cast<std::size_t>(component)], 1.0, Qt::DashDotLine);
+    }
+    if (channel <= Channel::AngularMomentumMagnitude) {
+        const int component = index - static_cast<int>(Channel::AngularMomentumX);
+        return QPen(colours[static_cast<std::size_t>(component)], 1.0, Qt::DashDotDotLine);
+    }
+    return QPen(QColor(230, 120, 20), 1.0); // the kinetic energy, alone in orange
 }
 
 bool isFrameAllKey(const QKeyEvent& event)
@@ -76,7 +84,14 @@ GraphEditorPanel::GraphEditorPanel(model::Document& document, Selection& selecti
     , sampler_(
           *this, selection, document,
           [this](const std::shared_ptr<const model::SharedTrackMotion>& motion, const model::Scene&) {
-              return [motion, settings = settings()] {
+              // The body's mesh, for its inertia, which the job computes if no view has yet.
+              model::SceneObject body;
+              if (const model::SceneObject* object = document_.object(selection_.object())) {
+                  body.mesh = object->mesh;
+                  body.massOverride = object->massOverride;
+              }
+              return [motion, settings = settings(), body = std::move(body)]() mutable {
+                  settings.inertia = model::objectMassProperties(body).properties.inertia;
                   return model::sampleChannels(motion->motion(), motion->track().keys, settings);
               };
           },
@@ -134,7 +149,7 @@ QWidget* GraphEditorPanel::makeChoosers()
     velocityFrameChooser_->setObjectName(QStringLiteral("graphVelocityFrameCombo"));
     velocityFrameChooser_->addItem(tr("world frame"), static_cast<int>(model::VelocityFrame::World));
     velocityFrameChooser_->addItem(tr("object's frame"), static_cast<int>(model::VelocityFrame::Local));
-    velocityFrameChooser_->setToolTip(tr("The frame the angular velocity's components are given in"));
+    velocityFrameChooser_->setToolTip(tr("The frame the angular velocity's and angular momentum's components are given in"));
     auto* velocityLabel = new QLabel(tr("ω &in:"), row);
     velocityLabel->setBuddy(velocityFrameChooser_);
 

@@ -38,6 +38,7 @@ struct FrameLines {
     std::vector<LineVertex> vertices;
     LineRange grid, trajectory, axes; // lines, depth-tested, before the meshes
     LineRange handles, handlePoints;  // lines and points, on top of everything
+    LineRange physics;                // lines on top: angular momentum, principal axes
 };
 
 } // namespace gyre::app

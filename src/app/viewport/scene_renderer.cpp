@@ -405,6 +405,7 @@ void SceneRenderer::drawFrame(const Eigen::Matrix4d& viewProjectionMatrix, const
     glDisable(GL_DEPTH_TEST);
     lineProgram_->bind();
     lineArray_->bind();
+    drawLines(GL_LINES, lines.physics);
     drawLines(GL_LINES, lines.handles);
     drawLines(GL_POINTS, lines.handlePoints);
     lineArray_->release();

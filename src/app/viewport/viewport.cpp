@@ -1,8 +1,12 @@
 #include "app/viewport/viewport.h"
 
+#include "app/viewport/body_overlay.h"
 #include "app/viewport/default_shape.h"
 #include "app/viewport/picking.h"
+#include "core/quaternion_math.h"
+#include "model/object_mass.h"
 #include "model/skinning.h"
+#include "model/track_evaluation.h"
 
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -92,6 +96,18 @@ void Viewport::setPreviewTrack(model::ObjectId object, std::optional<model::Moti
 void Viewport::setShowGhost(bool show)
 {
     showGhost_ = show;
+    update();
+}
+
+void Viewport::setShowAngularMomentum(bool show)
+{
+    showAngularMomentum_ = show;
+    update();
+}
+
+void Viewport::setShowPrincipalAxes(bool show)
+{
+    showPrincipalAxes_ = show;
     update();
 }
 
@@ -472,6 +488,26 @@ void Viewport::buildLines()
     if (handles)
         handles->appendTips(vertices);
     lines_.handlePoints = rangeFrom(first);
+
+    first = vertices.size();
+    const model::SceneObject* selected = selection_.selectedObject();
+    if (selected && (showAngularMomentum_ || showPrincipalAxes_)) {
+        const MassProperties mass = model::objectMassProperties(*selected).properties;
+        const double radius = renderer_.meshRadius(*selected);
+        const double time = document_.scene().currentTime;
+        const Pose pose = drawn_.motion().worldPose(selected->id, time);
+        if (showPrincipalAxes_)
+            appendPrincipalAxes(vertices, pose, mass, radius);
+        if (showAngularMomentum_) {
+            // The world angular velocity, parents' turning included: ω ≈ log(q(t+h)·q(t−h)⁻¹)/h.
+            const double h = model::kAngularVelocityStep;
+            const Eigen::Quaterniond after = drawn_.motion().worldPose(selected->id, time + h).orientation;
+            const Eigen::Quaterniond before = drawn_.motion().worldPose(selected->id, time - h).orientation;
+            const Eigen::Vector3d velocity = 2.0 * quatLog(after * before.conjugate()) / (2.0 * h);
+            appendMomentumArrow(vertices, pose, mass, velocity, radius);
+        }
+    }
+    lines_.physics = rangeFrom(first);
 }
 
 void Viewport::measureFrame()

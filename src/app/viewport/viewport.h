@@ -63,6 +63,9 @@ public:
     void setShowTrajectory(bool show);
     void setShowControlPoses(bool show);
     void setShowTrail(bool show);
+    // The selected object's angular momentum as an arrow, and its principal axes (body_overlay.h).
+    void setShowAngularMomentum(bool show);
+    void setShowPrincipalAxes(bool show);
     // Points the camera at all objects, the selected object's trajectory and its control poses.
     void frameScene();
     // frameScene as soon as the motion drawn holds every object of the scene (after an import, whose
@@ -157,6 +160,8 @@ private:
     bool showTrajectory_ = true;
     bool showControlPoses_ = true;
     bool showTrail_ = true;
+    bool showAngularMomentum_ = false;
+    bool showPrincipalAxes_ = false;
 
     FrameLines lines_; // kept from frame to frame, so that drawing allocates nothing once it has grown
 

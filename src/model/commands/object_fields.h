@@ -52,6 +52,7 @@ inline constexpr auto keyConstrained = [](auto& object, std::size_t key) -> auto
 };
 inline constexpr auto objectName = [](auto& object, std::size_t) -> auto& { return object.name; };
 inline constexpr auto objectVisible = [](auto& object, std::size_t) -> auto& { return object.visible; };
+inline constexpr auto objectMassOverride = [](auto& object, std::size_t) -> auto& { return object.massOverride; };
 inline constexpr auto trackInterpolation = [](auto& object, std::size_t) -> auto& {
     return object.track.interpolation;
 };
@@ -80,6 +81,9 @@ using KeyframesField = MemberField<trackKeys, SharedVector<Keyframe>, Merge::Nev
 using KeyframeConstraintField = MemberField<keyConstrained, bool, Merge::Never, Change::Keyframes>;
 using ObjectNameField = MemberField<objectName, QString, Merge::Never, Change::Object>;
 using ObjectVisibilityField = MemberField<objectVisible, bool, Merge::Never, Change::Object>;
+// The mass moves no key but the free flight of a ballistic track depends on it: its motion is rebuilt.
+using MassOverrideField =
+    MemberField<objectMassOverride, std::optional<MassProperties>, Merge::WithinGesture, Change::Object, Change::TrackSettings>;
 using InterpolationField = MemberField<trackInterpolation, InterpolationMethod, Merge::Never, Change::TrackSettings>;
 using SubdivisionField = MemberField<trackSubdivision, SubdivisionSettings, Merge::WithinGesture, Change::TrackSettings>;
 using StrokeField = MemberField<sketchStroke, DirectionStroke, Merge::WithinGesture, Change::Sketch>;
