@@ -1,16 +1,18 @@
 #include "app/keyframe_actions.h"
 
-#include "model/commands/add_keyframe_command.h"
 #include "model/commands/apply_euler_filter_command.h"
-#include "model/commands/remove_keyframe_command.h"
+#include "model/commands/replace_keyframes_command.h"
 #include "model/commands/step_ballistic_solution_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
+#include "model/key_edits.h"
 #include "model/track_evaluation.h"
 
 #include <QAction>
 #include <QStatusBar>
 
 #include <algorithm>
+#include <optional>
+#include <set>
 #include <stdexcept>
 
 namespace gyre::app {
@@ -30,8 +32,10 @@ KeyframeActions::KeyframeActions(model::Document& document, Selection& selection
     , actions_(actions)
     , statusBar_(statusBar)
 {
-    connect(actions_.add, &QAction::triggered, this, &KeyframeActions::addKeyframe);
-    connect(actions_.remove, &QAction::triggered, this, &KeyframeActions::removeKeyframe);
+    connect(actions_.add, &QAction::triggered, this, &KeyframeActions::addKeyframes);
+    connect(actions_.remove, &QAction::triggered, this, &KeyframeActions::removeKeyframes);
+    connect(actions_.selectAll, &QAction::triggered, &selection_, &Selection::selectAllKeys);
+    connect(actions_.selectNone, &QAction::triggered, &selection_, &Selection::deselectKeys);
     // triggered, not toggled: the action's check mark follows the key, and setChecked from
     // updateActions must not toggle the key back.
     connect(actions_.toggleConstraint, &QAction::triggered, this, &KeyframeActions::toggleConstraint);
@@ -46,35 +50,50 @@ KeyframeActions::KeyframeActions(model::Document& document, Selection& selection
     updateActions();
 }
 
-void KeyframeActions::addKeyframe()
+void KeyframeActions::addKeyframes()
 {
-    const model::SceneObject* object = selection_.selectedObject();
-    if (object == nullptr)
-        return;
     const double time = document_.scene().currentTime;
-    // The key holds the pose the object has now, so keying changes nothing but the keys.
-    const model::Keyframe key{time, document_.motion(object->id)->motion().at(time), true};
-    const model::ObjectId id = object->id;
+    model::ObjectKeys keys;
+    for (model::ObjectId id : selection_.objects()) {
+        const auto& existing = document_.object(id)->track.keys;
+        if (std::any_of(existing.begin(), existing.end(), [time](const model::Keyframe& key) { return key.time == time; }))
+            continue;
+        // The key holds the pose the object has now, so keying changes nothing but the keys.
+        const model::Keyframe key{time, document_.motion(id)->motion().at(time), true};
+        keys.emplace_back(id, model::withKeys(existing, {key}));
+    }
+    if (keys.empty())
+        return;
     try {
-        document_.push(new model::AddKeyframeCommand(document_, id, key));
+        document_.push(new model::ReplaceKeyframesCommand(document_, keys, model::ReplaceKeyframesCommand::Edit::Insert));
     } catch (const std::invalid_argument& error) {
         statusBar_->showMessage(tr("Cannot add a keyframe: %1").arg(QString::fromUtf8(error.what())),
                                 kMessageMilliseconds);
         return;
     }
-    const auto& keys = document_.object(id)->track.keys;
-    const auto added = std::find_if(keys.begin(), keys.end(), [time](const model::Keyframe& k) { return k.time == time; });
-    if (added != keys.end())
-        selection_.selectKey(id, static_cast<std::size_t>(added - keys.begin()));
+    std::set<KeyRef> added;
+    std::optional<KeyRef> active;
+    for (const auto& [id, objectKeys] : keys) {
+        const auto at = std::find_if(objectKeys.begin(), objectKeys.end(),
+                                     [time](const model::Keyframe& key) { return key.time == time; });
+        const KeyRef key{id, static_cast<std::size_t>(at - objectKeys.begin())};
+        added.insert(key);
+        if (id == selection_.object())
+            active = key;
+    }
+    selection_.selectKeys(added, false, active);
 }
 
-void KeyframeActions::removeKeyframe()
+void KeyframeActions::removeKeyframes()
 {
-    if (selection_.selectedKey() == nullptr)
+    model::ObjectKeys keys;
+    for (model::ObjectId id : selection_.objects())
+        if (const std::vector<std::size_t> removed = selection_.keysOf(id); !removed.empty())
+            keys.emplace_back(id, model::withoutKeys(document_.object(id)->track.keys, removed));
+    if (keys.empty())
         return;
-    const model::ObjectId object = selection_.object();
-    document_.push(new model::RemoveKeyframeCommand(document_, object, *selection_.key()));
-    selection_.selectObject(object); // the key is gone; its index now names its neighbour
+    document_.push(new model::ReplaceKeyframesCommand(document_, std::move(keys), model::ReplaceKeyframesCommand::Edit::Delete));
+    selection_.deselectKeys(); // the keys are gone; their indices now name their neighbours
 }
 
 void KeyframeActions::toggleConstraint()
@@ -117,8 +136,10 @@ void KeyframeActions::updateActions()
                        object->track.keys.size() >= 2;
     actions_.nextFlight->setEnabled(flies);
     actions_.previousFlight->setEnabled(flies);
-    actions_.add->setEnabled(selection_.selectedObject() != nullptr);
-    actions_.remove->setEnabled(key != nullptr);
+    actions_.add->setEnabled(object != nullptr);
+    actions_.remove->setEnabled(!selection_.keys().empty());
+    actions_.selectAll->setEnabled(object != nullptr && !object->track.keys.empty());
+    actions_.selectNone->setEnabled(!selection_.keys().empty());
     actions_.toggleConstraint->setEnabled(key != nullptr);
     actions_.toggleConstraint->setChecked(key != nullptr && key->constrained);
 }

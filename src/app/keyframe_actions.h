@@ -1,8 +1,10 @@
 #pragma once
-// The Motion menu's keyframe actions on the selection: key the selected object's pose at the current
-// time, delete the selected key, constrain or free it, run the Euler filter on the object's keys, step the
-// current span of a ballistic track through its free flights. Each is one undo step; each is enabled only when
-// it applies (the filter when it would change a key, the flight steps on a ballistic track of two keys or more).
+// The Motion menu's keyframe actions on the selection: key every selected object's pose at the
+// current time, delete every selected key, constrain or free the active key, run the Euler filter on
+// the active object's keys, step the current span of a ballistic track through its free flights; and
+// Edit ▸ Select All Keys / Select No Keys. Each edit is one undo step however many objects it touches;
+// each action is enabled only when it applies (the filter when it would change a key, the flight steps
+// on a ballistic track of two keys or more).
 
 #include "app/selected_track.h"
 #include "app/selection.h"
@@ -22,6 +24,8 @@ struct KeyframeActionSet {
     QAction* eulerFilter = nullptr;      // on the selected object's keys (apply_euler_filter_command.h)
     QAction* nextFlight = nullptr;       // the current span's next free flight (step_ballistic_solution_command.h)
     QAction* previousFlight = nullptr;
+    QAction* selectAll = nullptr;        // every key of the active object
+    QAction* selectNone = nullptr;
 };
 
 class KeyframeActions : public QObject {
@@ -32,8 +36,9 @@ public:
     KeyframeActions(model::Document& document, Selection& selection, KeyframeActionSet actions,
                     QStatusBar* statusBar, QObject* parent = nullptr);
 
-    void addKeyframe();
-    void removeKeyframe();
+    // Keys each selected object that has no key at the current time; selects the new keys.
+    void addKeyframes();
+    void removeKeyframes();
     void toggleConstraint();
     void applyEulerFilter();
     // direction +1 or −1: the selected ballistic track's span at the current time takes another flight.

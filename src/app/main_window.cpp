@@ -4,6 +4,7 @@
 #include "app/euler_convention_choosers.h"
 #include "app/graph_editor/graph_editor_panel.h"
 #include "app/inspector_widget.h"
+#include "app/key_clipboard_actions.h"
 #include "app/outliner/outliner_panel.h"
 #include "app/preferences_dialog.h"
 #include "app/screwbender_panel.h"
@@ -163,10 +164,18 @@ void MainWindow::setUpActions()
     connect(ui_->actionImportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToImport);
     connect(ui_->actionExportScene, &QAction::triggered, sceneFiles_, &SceneFileActions::chooseSceneToExport);
     new AddObjectActions(document_, selection_, *ui_->menuAdd, this);
-    new KeyframeActions(
-        document_, selection_, {ui_->actionAddKeyframe, ui_->actionDeleteKeyframe, ui_->actionToggleConstraint, ui_->actionEulerFilter,
-                                ui_->actionNextFlightSolution, ui_->actionPreviousFlightSolution},
-        statusBar(), this);
+    // Blender's second keys for these: X deletes (in the views that take it), Insert keys.
+    ui_->actionAddKeyframe->setShortcuts({QKeySequence(Qt::Key_K), QKeySequence(Qt::Key_Insert)});
+    deleteKeysByX_ = new QAction(ui_->actionDeleteKeyframe->text(), this);
+    deleteKeysByX_->setShortcut(Qt::Key_X);
+    deleteKeysByX_->setShortcutContext(Qt::WidgetShortcut);
+    connect(deleteKeysByX_, &QAction::triggered, ui_->actionDeleteKeyframe, &QAction::trigger);
+    new KeyframeActions(document_, selection_,
+                        {ui_->actionAddKeyframe, ui_->actionDeleteKeyframe, ui_->actionToggleConstraint,
+                         ui_->actionEulerFilter, ui_->actionNextFlightSolution, ui_->actionPreviousFlightSolution,
+                         ui_->actionSelectAllKeys, ui_->actionSelectNoKeys},
+                        statusBar(), this);
+    new KeyClipboardActions(document_, selection_, ui_->actionCopyKeys, ui_->actionPasteKeys, statusBar(), this);
 
     QAction* undo = document_.undoStack().createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
@@ -251,7 +260,9 @@ void MainWindow::createViews()
     // Scrolled, so that the sphere above it and the speed plot below can be given the column's height.
     addScrolled(ui_->screwBenderDockLayout, new ScrewBenderPanel(document_, selection_));
     ui_->timelineDockLayout->addWidget(new TimeBar(document_, ui_->timelineDockContents));
-    ui_->timelineDockLayout->addWidget(new TimelineWidget(document_, selection_, playback_, ui_->timelineDockContents), 1);
+    auto* timeline = new TimelineWidget(document_, selection_, playback_, ui_->timelineDockContents);
+    timeline->addAction(deleteKeysByX_);
+    ui_->timelineDockLayout->addWidget(timeline, 1);
     addScrolled(ui_->smoothnessDockLayout, new SmoothnessPanel(document_, selection_));
     ui_->magnitudeDockLayout->addWidget(new MagnitudePlot(document_, selection_, ui_->magnitudeDockContents));
     auto* graphEditor = new GraphEditorPanel(document_, selection_, ui_->graphEditorDockContents);
@@ -304,6 +315,7 @@ void MainWindow::createViewport()
         return;
     }
     viewport_ = new Viewport(document_, selection_, ui_->centralWidget);
+    viewport_->addAction(deleteKeysByX_);
     ui_->centralLayout->addWidget(viewport_);
     viewport_->setShowGhost(ui_->actionShowGhost->isChecked());
     viewport_->setShowTrajectory(ui_->actionShowTrajectory->isChecked());

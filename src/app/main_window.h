@@ -101,6 +101,9 @@ private:
     std::unique_ptr<jobs::Autosave> autosave_;
     FitController* fitController_ = nullptr; // a child of the window, shared by the fit panel and status bar
     Viewport* viewport_ = nullptr; // owned by the central widget
+    // X, Blender's second key for Delete Keyframe, only in the timeline and the viewport: window-wide
+    // it would take the X typed into a chooser (an Euler order) or a name.
+    QAction* deleteKeysByX_ = nullptr;
 };
 
 } // namespace gyre::app

@@ -1,6 +1,7 @@
 #include "app/timeline_widget.h"
 
-#include "model/commands/set_keyframe_time_command.h"
+#include "model/commands/replace_keyframes_command.h"
+#include "model/key_edits.h"
 
 #include <QEvent>
 #include <QKeyEvent>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 
 namespace gyre::app {
 
@@ -28,6 +30,8 @@ constexpr double kLabelPadding = 16.0;    // pixels between two labels
 // Without snapping, the closest a dragged key comes to its neighbour; far above kKeyMergeSeconds, so
 // that baking keeps both keys.
 constexpr double kUnsnappedKeyGapSeconds = 1e-3;
+// A press that moves less than this many pixels is a click.
+constexpr int kDragStartPixels = 4;
 
 bool isWholeNumber(double value)
 {
@@ -101,27 +105,32 @@ TimelineWidget::TimelineWidget(model::Document& document, Selection& selection, 
     : QWidget(parent)
     , document_(document)
     , selection_(selection)
-    , selectedTrack_(document, selection)
     , playback_(playback)
 {
     setFocusPolicy(Qt::StrongFocus);
     setAttribute(Qt::WA_OpaquePaintEvent);
     // The cursor alone moves with the current time; the rest is redrawn when what it shows changes.
     connect(&document_, &model::Document::currentTimeChanged, this, [this] { update(); });
-    connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
+    connect(&document_, &model::Document::changed, this, [this](model::ObjectId object, model::Changes changes) {
         using model::Change;
         if (changes.testFlag(Change::Scene))
             endKeyDrag(); // the keys a drag was moving are gone with the old scene
-        if (changes & (Change::Scene | Change::Keyframes | Change::SceneSettings))
+        const bool shownRow = selection_.isObjectSelected(object) &&
+                              (changes & (Change::Keyframes | Change::Object | Change::Removed | Change::Added));
+        if (shownRow || (changes & (Change::Scene | Change::SceneSettings)))
             invalidateStaticLayer();
     });
-    // The selected key is drawn apart.
-    connect(&selection_, &Selection::changed, this, [this] { invalidateStaticLayer(); });
+    // The rows and the selected keys follow the selection.
+    connect(&selection_, &Selection::changed, this, [this] {
+        invalidateStaticLayer();
+        updateGeometry();
+    });
 }
 
 QSize TimelineWidget::sizeHint() const
 {
-    return {640, rulerRect().height() + kKeyLaneHeight + 8};
+    const auto rowCount = static_cast<int>(std::max<std::size_t>(1, rows().size()));
+    return {640, rulerRect().height() + rowCount * kKeyLaneHeight + 8};
 }
 
 QSize TimelineWidget::minimumSizeHint() const
@@ -155,12 +164,42 @@ QRect TimelineWidget::keyLaneRect() const
     return {0, ruler.bottom() + 1, width(), std::max(kKeyLaneHeight, height() - ruler.height())};
 }
 
+std::vector<model::ObjectId> TimelineWidget::rows() const
+{
+    std::vector<model::ObjectId> shown = selection_.objects();
+    if (shown.size() > kMaxRows) {
+        const model::ObjectId active = selection_.object();
+        const bool activeShown = std::find(shown.begin(), shown.begin() + kMaxRows, active) != shown.begin() + kMaxRows;
+        shown.resize(kMaxRows);
+        if (!activeShown && active != model::kNoObject)
+            shown.back() = active;
+    }
+    return shown;
+}
+
+QRect TimelineWidget::rowRect(std::size_t row, std::size_t rowCount) const
+{
+    const QRect lanes = keyLaneRect();
+    const auto count = static_cast<int>(std::max<std::size_t>(1, rowCount));
+    const int top = lanes.top() + lanes.height() * static_cast<int>(row) / count;
+    const int bottom = lanes.top() + lanes.height() * (static_cast<int>(row) + 1) / count;
+    return {0, top, width(), bottom - top};
+}
+
 std::optional<QPoint> TimelineWidget::keyMarkerCentre(std::size_t key) const
 {
-    const model::SceneObject* object = selection_.selectedObject();
-    if (object == nullptr || key >= object->track.keys.size())
+    return keyMarkerCentre(selection_.object(), key);
+}
+
+std::optional<QPoint> TimelineWidget::keyMarkerCentre(model::ObjectId object, std::size_t key) const
+{
+    const std::vector<model::ObjectId> shown = rows();
+    const auto row = std::find(shown.begin(), shown.end(), object);
+    const model::SceneObject* found = document_.object(object);
+    if (row == shown.end() || found == nullptr || key >= found->track.keys.size())
         return std::nullopt;
-    return QPoint(static_cast<int>(std::lround(xForTime(object->track.keys[key].time))), keyLaneRect().center().y());
+    const QRect lane = rowRect(static_cast<std::size_t>(row - shown.begin()), shown.size());
+    return QPoint(static_cast<int>(std::lround(xForTime(found->track.keys[key].time))), lane.center().y());
 }
 
 void TimelineWidget::invalidateStaticLayer()
@@ -216,6 +255,7 @@ void TimelineWidget::paintEvent(QPaintEvent*)
     painter.drawPixmap(0, 0, staticLayer_);
     painter.setRenderHint(QPainter::Antialiasing);
     paintCursor(painter);
+    paintBox(painter);
     if (hasFocus()) {
         painter.setPen(QPen(palette().highlight(), 1.0));
         painter.setBrush(Qt::NoBrush);
@@ -276,32 +316,57 @@ void TimelineWidget::paintRuler(QPainter& painter) const
 
 void TimelineWidget::paintKeyMarkers(QPainter& painter) const
 {
-    const model::SceneObject* object = selection_.selectedObject();
-    if (object == nullptr)
-        return;
-    const std::optional<std::size_t> selectedKey = selection_.key();
+    const std::vector<model::ObjectId> shown = rows();
     const QColor keyColour = palette().color(QPalette::Text);
     const QColor selectedColour = palette().color(QPalette::Highlight);
+    QColor labelColour = keyColour;
+    labelColour.setAlphaF(0.45f);
     painter.save();
     painter.setClipRect(keyLaneRect());
-    for (std::size_t index = 0; index < object->track.keys.size(); ++index) {
-        const model::Keyframe& key = object->track.keys[index];
-        const bool selected = selectedKey == index;
-        const double radius = selected ? kSelectedMarkerRadius : kMarkerRadius;
-        const QPointF centre(xForTime(key.time), keyLaneRect().center().y());
-        QPainterPath diamond;
-        diamond.moveTo(centre + QPointF(0, -radius));
-        diamond.lineTo(centre + QPointF(radius, 0));
-        diamond.lineTo(centre + QPointF(0, radius));
-        diamond.lineTo(centre + QPointF(-radius, 0));
-        diamond.closeSubpath();
-        const QColor colour = selected ? selectedColour : keyColour;
-        painter.setPen(QPen(colour, 1.5));
-        // Constrained keys are kept by the fit and drawn solid; free keys, which it may move, hollow.
-        painter.setBrush(key.constrained ? QBrush(colour) : palette().base());
-        painter.drawPath(diamond);
+    for (std::size_t row = 0; row < shown.size(); ++row) {
+        const model::SceneObject* object = document_.object(shown[row]);
+        const QRect lane = rowRect(row, shown.size());
+        if (shown.size() > 1) {
+            // Which object the row is: its name under the markers, and a line between rows.
+            painter.setPen(labelColour);
+            painter.drawText(lane.adjusted(kSideMargin + 2, 0, 0, 0), Qt::AlignLeft | Qt::AlignTop, object->name);
+            if (row > 0)
+                painter.drawLine(lane.topLeft(), lane.topRight());
+        }
+        const std::vector<std::size_t> selectedKeys = selection_.keysOf(object->id);
+        auto nextSelected = selectedKeys.begin();
+        for (std::size_t index = 0; index < object->track.keys.size(); ++index) {
+            const model::Keyframe& key = object->track.keys[index];
+            const bool selected = nextSelected != selectedKeys.end() && *nextSelected == index;
+            if (selected)
+                ++nextSelected;
+            const double radius = selected ? kSelectedMarkerRadius : kMarkerRadius;
+            const QPointF centre(xForTime(key.time), lane.center().y());
+            QPainterPath diamond;
+            diamond.moveTo(centre + QPointF(0, -radius));
+            diamond.lineTo(centre + QPointF(radius, 0));
+            diamond.lineTo(centre + QPointF(0, radius));
+            diamond.lineTo(centre + QPointF(-radius, 0));
+            diamond.closeSubpath();
+            const QColor colour = selected ? selectedColour : keyColour;
+            painter.setPen(QPen(colour, 1.5));
+            // Constrained keys are kept by the fit and drawn solid; free keys, which it may move, hollow.
+            painter.setBrush(key.constrained ? QBrush(colour) : palette().base());
+            painter.drawPath(diamond);
+        }
     }
     painter.restore();
+}
+
+void TimelineWidget::paintBox(QPainter& painter) const
+{
+    if (!box_ || !box_->dragged)
+        return;
+    QColor fill = palette().color(QPalette::Highlight);
+    fill.setAlphaF(0.2f);
+    painter.setPen(QPen(palette().color(QPalette::Highlight), 1.0, Qt::DashLine));
+    painter.setBrush(fill);
+    painter.drawRect(QRect(box_->from, box_->to).normalized());
 }
 
 void TimelineWidget::paintCursor(QPainter& painter) const
@@ -321,23 +386,27 @@ void TimelineWidget::paintCursor(QPainter& painter) const
     painter.drawPath(handle);
 }
 
-std::optional<std::size_t> TimelineWidget::keyAt(const QPoint& point) const
+std::optional<KeyRef> TimelineWidget::keyAt(const QPoint& point) const
 {
-    const model::SceneObject* object = selection_.selectedObject();
-    const QRect lane = keyLaneRect();
+    const std::vector<model::ObjectId> shown = rows();
     const int reach = kSelectedMarkerRadius + kMarkerHitSlack;
-    if (object == nullptr || std::abs(point.y() - lane.center().y()) > reach)
-        return std::nullopt;
-    std::optional<std::size_t> nearest;
-    double nearestDistance = reach;
-    for (std::size_t index = 0; index < object->track.keys.size(); ++index) {
-        const double distance = std::abs(xForTime(object->track.keys[index].time) - point.x());
-        if (distance <= nearestDistance) {
-            nearest = index;
-            nearestDistance = distance;
+    for (std::size_t row = 0; row < shown.size(); ++row) {
+        const QRect lane = rowRect(row, shown.size());
+        if (point.y() < lane.top() || point.y() > lane.bottom() || std::abs(point.y() - lane.center().y()) > reach)
+            continue;
+        const model::SceneObject* object = document_.object(shown[row]);
+        std::optional<KeyRef> nearest;
+        double nearestDistance = reach;
+        for (std::size_t index = 0; index < object->track.keys.size(); ++index) {
+            const double distance = std::abs(xForTime(object->track.keys[index].time) - point.x());
+            if (distance <= nearestDistance) {
+                nearest = KeyRef{object->id, index};
+                nearestDistance = distance;
+            }
         }
+        return nearest;
     }
-    return nearest;
+    return std::nullopt;
 }
 
 void TimelineWidget::mousePressEvent(QMouseEvent* event)
@@ -347,16 +416,44 @@ void TimelineWidget::mousePressEvent(QMouseEvent* event)
         return;
     }
     const QPoint point = event->position().toPoint();
-    if (const std::optional<std::size_t> key = keyAt(point)) {
-        const model::ObjectId object = selection_.object();
-        selection_.selectKey(object, *key);
-        const double markerX = xForTime(document_.object(object)->track.keys[*key].time);
-        keyDrag_ = KeyDrag{object, *key, event->position().x() - markerX};
+    if (const std::optional<KeyRef> key = keyAt(point)) {
+        pressKey(*key, *event);
+        return;
+    }
+    if (keyLaneRect().contains(point)) {
+        box_ = BoxPress{point, point, false};
         return;
     }
     scrubbing_ = true;
     playback_.pause();
     scrubTo(event->position().x(), event->modifiers());
+}
+
+void TimelineWidget::pressKey(const KeyRef& key, const QMouseEvent& event)
+{
+    if (event.modifiers().testFlag(Qt::ShiftModifier)) {
+        shiftPress_.emplace(key, event.position().toPoint());
+        return;
+    }
+    const bool selected = selection_.isKeySelected(key.first, key.second);
+    if (!selected)
+        selection_.selectKey(key.first, key.second);
+    startKeyDrag(key, timeAtX(event.position().x()), selected);
+}
+
+void TimelineWidget::startKeyDrag(const KeyRef& pressed, double pressTime, bool selectsOnClick)
+{
+    KeyDrag drag;
+    for (model::ObjectId object : selection_.objects()) {
+        std::vector<std::size_t> indices = selection_.keysOf(object);
+        if (!indices.empty())
+            drag.objects.push_back({object, document_.object(object)->track.keys, std::move(indices)});
+    }
+    drag.pressedKeyTime = document_.object(pressed.first)->track.keys[pressed.second].time;
+    drag.pressTime = pressTime;
+    if (selectsOnClick)
+        drag.selectsOnClick = pressed;
+    keyDrag_ = std::move(drag);
 }
 
 void TimelineWidget::mouseMoveEvent(QMouseEvent* event)
@@ -365,10 +462,24 @@ void TimelineWidget::mouseMoveEvent(QMouseEvent* event)
         QWidget::mouseMoveEvent(event);
         return;
     }
-    if (keyDrag_)
-        dragKeyTo(event->position().x(), event->modifiers());
-    else if (scrubbing_)
+    const QPoint point = event->position().toPoint();
+    if (shiftPress_ && (point - shiftPress_->second).manhattanLength() >= kDragStartPixels) {
+        // A Shift+drag of a marker moves the selected keys, unsnapped; its key joins them.
+        const auto [key, from] = *shiftPress_;
+        shiftPress_.reset();
+        if (!selection_.isKeySelected(key.first, key.second))
+            selection_.toggleKey(key.first, key.second);
+        startKeyDrag(key, timeAtX(from.x()), false);
+    }
+    if (keyDrag_) {
+        dragKeysTo(event->position().x(), event->modifiers());
+    } else if (box_) {
+        box_->to = point;
+        box_->dragged = box_->dragged || (point - box_->from).manhattanLength() >= kDragStartPixels;
+        update();
+    } else if (scrubbing_) {
         scrubTo(event->position().x(), event->modifiers());
+    }
 }
 
 void TimelineWidget::mouseReleaseEvent(QMouseEvent* event)
@@ -377,8 +488,42 @@ void TimelineWidget::mouseReleaseEvent(QMouseEvent* event)
         QWidget::mouseReleaseEvent(event);
         return;
     }
+    if (shiftPress_) {
+        selection_.toggleKey(shiftPress_->first.first, shiftPress_->first.second);
+        shiftPress_.reset();
+    }
+    if (box_)
+        finishBox(event->modifiers());
+    if (keyDrag_ && !dragGesture_ && keyDrag_->selectsOnClick)
+        selection_.selectKey(keyDrag_->selectsOnClick->first, keyDrag_->selectsOnClick->second);
     endKeyDrag();
     scrubbing_ = false;
+}
+
+void TimelineWidget::finishBox(Qt::KeyboardModifiers modifiers)
+{
+    const BoxPress box = *box_;
+    box_.reset();
+    update();
+    if (!box.dragged) {
+        // A click between markers: scrub there, and let go of the keys.
+        if (!modifiers.testFlag(Qt::ShiftModifier))
+            selection_.deselectKeys();
+        playback_.pause();
+        scrubTo(box.from.x(), modifiers);
+        return;
+    }
+    const QRect area = QRect(box.from, box.to).normalized();
+    const std::vector<model::ObjectId> shown = rows();
+    std::set<KeyRef> inside;
+    for (std::size_t row = 0; row < shown.size(); ++row) {
+        const int y = rowRect(row, shown.size()).center().y();
+        const auto& keys = document_.object(shown[row])->track.keys;
+        for (std::size_t index = 0; index < keys.size(); ++index)
+            if (area.contains(QPoint(static_cast<int>(std::lround(xForTime(keys[index].time))), y)))
+                inside.insert({shown[row], index});
+    }
+    selection_.selectKeys(inside, modifiers.testFlag(Qt::ShiftModifier));
 }
 
 void TimelineWidget::keyPressEvent(QKeyEvent* event)
@@ -410,61 +555,46 @@ void TimelineWidget::scrubTo(double x, Qt::KeyboardModifiers modifiers)
     document_.setCurrentTime(seconds);
 }
 
-void TimelineWidget::dragKeyTo(double x, Qt::KeyboardModifiers modifiers)
+void TimelineWidget::dragKeysTo(double x, Qt::KeyboardModifiers modifiers)
 {
-    const model::SceneObject* object = document_.object(keyDrag_->object);
-    if (object == nullptr || keyDrag_->key >= object->track.keys.size()) {
-        // The key went away under the drag (an undo, another view): nothing left to move.
-        endKeyDrag();
-        return;
+    for (const KeyDrag::Moved& moved : keyDrag_->objects) {
+        const model::SceneObject* object = document_.object(moved.object);
+        if (object == nullptr || object->track.keys.size() != moved.keys.size()) {
+            // The keys went away under the drag (an undo, another view): nothing left to move.
+            endKeyDrag();
+            return;
+        }
     }
-    const double target = keyDragTime(object->track.keys, keyDrag_->key, timeAtX(x - keyDrag_->grabOffset),
-                                      !(modifiers & Qt::ShiftModifier));
-    if (target == object->track.keys[keyDrag_->key].time)
+    const model::Scene& scene = document_.scene();
+    const bool snap = !modifiers.testFlag(Qt::ShiftModifier);
+    double shift = timeAtX(x) - keyDrag_->pressTime;
+    if (snap) // the pressed key lands on a frame, the others keep their distances to it
+        shift = snappedToFrame(keyDrag_->pressedKeyTime + shift) - keyDrag_->pressedKeyTime;
+    const double gap = snap ? 1.0 / scene.fps : kUnsnappedKeyGapSeconds;
+    double lower = -std::numeric_limits<double>::infinity();
+    double upper = std::numeric_limits<double>::infinity();
+    for (const KeyDrag::Moved& moved : keyDrag_->objects) {
+        const auto [low, high] = model::shiftRange(moved.keys, moved.indices, gap, scene.startTime, scene.endTime);
+        lower = std::max(lower, low);
+        upper = std::min(upper, high);
+    }
+    shift = lower <= upper ? std::clamp(shift, lower, upper) : 0.0;
+    if (shift == keyDrag_->shift)
         return;
+    keyDrag_->shift = shift;
+    model::ObjectKeys keys;
+    for (const KeyDrag::Moved& moved : keyDrag_->objects)
+        keys.emplace_back(moved.object, model::shiftedKeys(moved.keys, moved.indices, shift));
     if (!dragGesture_)
         dragGesture_.emplace(document_);
-    dragGesture_->push(new model::SetKeyframeTimeCommand(document_, object->id, keyDrag_->key, target));
+    dragGesture_->push(new model::ReplaceKeyframesCommand(document_, std::move(keys),
+                                                          model::ReplaceKeyframesCommand::Edit::Move));
 }
 
 void TimelineWidget::endKeyDrag()
 {
     keyDrag_.reset();
     dragGesture_.reset(); // finishes the drag's undo step
-}
-
-double TimelineWidget::keyDragTime(const std::vector<model::Keyframe>& keys, std::size_t key, double pointerTime,
-                                   bool snap) const
-{
-    const model::Scene& scene = document_.scene();
-    const double current = keys[key].time;
-    const double before = key > 0 ? keys[key - 1].time : -std::numeric_limits<double>::infinity();
-    const double after = key + 1 < keys.size() ? keys[key + 1].time : std::numeric_limits<double>::infinity();
-    double time = std::clamp(pointerTime, scene.startTime, scene.endTime);
-    if (snap) {
-        time = snappedToFrame(time);
-        // The first frame after the neighbour before, the last before the neighbour after; the loops
-        // step past a frame that k/fps rounds onto the neighbour itself.
-        if (time <= before) {
-            double frame = std::floor(before * scene.fps) + 1.0;
-            while (frame / scene.fps <= before)
-                frame += 1.0;
-            time = frame / scene.fps;
-        }
-        if (time >= after) {
-            double frame = std::ceil(after * scene.fps) - 1.0;
-            while (frame / scene.fps >= after)
-                frame -= 1.0;
-            time = frame / scene.fps;
-        }
-    } else {
-        const double earliest = before + kUnsnappedKeyGapSeconds;
-        const double latest = after - kUnsnappedKeyGapSeconds;
-        if (earliest > latest)
-            return current;
-        time = std::clamp(time, earliest, latest);
-    }
-    return time > before && time < after ? time : current;
 }
 
 double TimelineWidget::snappedToFrame(double seconds) const

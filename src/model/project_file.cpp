@@ -63,6 +63,19 @@ QJsonArray arrayJson(const std::vector<Item>& items, ToJson toJson)
     return array;
 }
 
+} // namespace
+
+QJsonObject keyframeJson(const Keyframe& key)
+{
+    const Eigen::Quaterniond& q = key.pose.orientation;
+    return {{"time", key.time},
+            {"orientation", numbersJson({q.w(), q.x(), q.y(), q.z()})},
+            {"position", json(key.pose.position)},
+            {"constrained", key.constrained}};
+}
+
+namespace {
+
 QJsonObject keyLayoutJson(const KeyLayout& layout)
 {
     return {{"count", static_cast<qint64>(layout.count)},
@@ -372,7 +385,9 @@ std::shared_ptr<const Mesh> meshIn(const JsonField& field, BlockReading* binary)
     return mesh;
 }
 
-Keyframe keyframeIn(const JsonField& field)
+} // namespace
+
+Keyframe keyframeFromJson(const JsonField& field)
 {
     Keyframe key;
     key.time = field.member("time").number();
@@ -383,11 +398,13 @@ Keyframe keyframeIn(const JsonField& field)
     return key;
 }
 
+namespace {
+
 // A list of keys: in versions 1 and 2 an array of keyframes, in version 3 the layout of its block.
 std::vector<Keyframe> keysIn(const JsonField& field, BlockReading* binary)
 {
     if (!binary)
-        return timedItems<Keyframe>(field, "time", keyframeIn, [](const Keyframe& key) { return key.time; });
+        return timedItems<Keyframe>(field, "time", keyframeFromJson, [](const Keyframe& key) { return key.time; });
     KeyLayout layout;
     layout.count = budgetedCount(field.member("count"), binary->keysLeft,
                                  FileError::tr("these %1 keys bring the file past the %2 keys a project may hold"));

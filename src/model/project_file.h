@@ -12,7 +12,10 @@
 
 #include "model/scene.h"
 
+#include "model/json_field.h"
+
 #include <QByteArray>
+#include <QJsonObject>
 #include <QString>
 
 namespace gyre::model {
@@ -24,6 +27,12 @@ inline constexpr int kProjectVersion = 3;
 // Larger files are refused before they are read. At 32 to 65 bytes a key, a version 3 file this
 // size would hold more keys than a project may (kMaxProjectKeys, model/project_blocks.h).
 inline constexpr qint64 kMaxProjectBytes = qint64{1} << 30;
+
+// One keyframe as version 2 writes it in JSON text, `{"time", "orientation": [w, x, y, z], "position",
+// "constrained"}`, and read back, checked as a file's are (throws FieldError). The clipboard carries
+// keys in this form (key_clipboard.h).
+QJsonObject keyframeJson(const Keyframe& key);
+Keyframe keyframeFromJson(const JsonField& field);
 
 // The project file's bytes: the same bytes for the same scene, since the header's members are
 // written in sorted order. Saving writes these bytes; tests compare them.

@@ -264,6 +264,85 @@ private slots:
         QVERIFY(plot->yAxis->range().lower <= 0.0 && plot->yAxis->range().upper >= 360.0);
     }
 
+    // Shift+click selects keys 1 and 2 of the spin; G moves them 6 frames later and raises their z angle
+    // with the pointer, one undo step; Esc puts them back with no step; S with the current time at 3 s
+    // halves their distance from it; a Shift+drag box adds key 3.
+    void gAndSMoveAndScaleTheSelectedKeys()
+    {
+        model::Document& document = window_->document();
+        QUndoStack& stack = document.undoStack();
+        QCustomPlot* plot = panel_->plot();
+        window_->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+        const auto at = [&](double time, double degrees) {
+            return QPointF(plot->xAxis->coordToPixel(time), plot->yAxis->coordToPixel(degrees)).toPoint();
+        };
+        QTest::mouseClick(plot, Qt::LeftButton, Qt::ShiftModifier, at(1.0, 120.0));
+        QTest::mouseClick(plot, Qt::LeftButton, Qt::ShiftModifier, at(2.0, 240.0));
+        QCOMPARE(window_->selection().keysOf(object_), (std::vector<std::size_t>{1, 2}));
+        QCOMPARE(panel_->selectedKeyGraph(Channel::EulerThird)->dataCount(), 2);
+        const auto keys = [&] { return document.object(object_)->track.keys; };
+        const std::vector<model::Keyframe> before = keys();
+
+        // G, the pointer 6 frames (0.25 s) right and 40 pixels up, a click keeps it.
+        plot->setFocus();
+        const QPoint start = at(1.5, 180.0);
+        test::sendMove(plot, start, Qt::NoButton);
+        QTest::keyClick(plot, Qt::Key_G);
+        const QPoint end = QPoint(at(1.75, 180.0).x(), start.y() - 40);
+        const double raised = plot->yAxis->pixelToCoord(end.y()) - plot->yAxis->pixelToCoord(start.y());
+        for (const QPointF& point : test::straightPath(start, end, 6))
+            test::sendMove(plot, point, Qt::NoButton);
+        QTest::mouseClick(plot, Qt::LeftButton, Qt::NoModifier, end);
+        QCOMPARE(stack.count(), 1);
+        QCOMPARE(keys()[1].time, 1.25);
+        QCOMPARE(keys()[2].time, 2.25);
+        for (std::size_t key : {1, 2}) {
+            const double angle = (kSpinDegreesPerSecond * double(key) + raised) / kDegrees;
+            const Eigen::Quaterniond expected = Eigen::Quaterniond(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ())) * tipped();
+            QVERIFY(std::abs(std::abs(keys()[key].pose.orientation.dot(expected)) - 1.0) < 1e-9);
+        }
+        QCOMPARE(keys()[3].time, 3.0);
+        QSignalSpy updated(panel_, &app::GraphEditorPanel::curvesUpdated);
+        stack.undo();
+        QCOMPARE(keys()[1].time, 1.0);
+        QCOMPARE(keys()[2].pose.orientation.coeffs(), before[2].pose.orientation.coeffs());
+        QVERIFY(updated.wait(5000));
+
+        // G then Esc: the keys as they were, no step.
+        const int steps = stack.index();
+        test::sendMove(plot, start, Qt::NoButton);
+        QTest::keyClick(plot, Qt::Key_G);
+        test::sendMove(plot, end, Qt::NoButton);
+        QCOMPARE(keys()[1].time, 1.25);
+        QTest::keyClick(plot, Qt::Key_Escape);
+        QCOMPARE(keys()[1].time, 1.0);
+        QCOMPARE(stack.index(), steps);
+        QCOMPARE(stack.count(), steps); // no step left behind (the undone G's redo went with the new edit)
+
+        // S about 3 s: the pointer from 2 s to 2.5 s halves the distances, key 1 to 2 s and key 2 to 2.5 s.
+        document.setCurrentTime(3.0);
+        test::sendMove(plot, at(2.0, 180.0), Qt::NoButton);
+        QTest::keyClick(plot, Qt::Key_S);
+        test::sendMove(plot, at(2.5, 180.0), Qt::NoButton);
+        QTest::mouseClick(plot, Qt::LeftButton, Qt::NoModifier, at(2.5, 180.0));
+        QCOMPARE(stack.index(), steps + 1);
+        QCOMPARE(stack.undoText(), QStringLiteral("Scale Keyframes"));
+        QCOMPARE(keys()[1].time, 2.0);
+        QCOMPARE(keys()[2].time, 2.5);
+        QCOMPARE(keys()[3].time, 3.0);
+        stack.undo();
+        QVERIFY(updated.wait(5000));
+
+        // A Shift+drag box about the key at 3 s adds it.
+        const QPoint corner = at(3.0, 360.0);
+        QTest::mousePress(plot, Qt::LeftButton, Qt::ShiftModifier, corner - QPoint(15, 15));
+        test::sendMove(plot, corner, Qt::LeftButton);
+        test::sendMove(plot, corner + QPoint(15, 15), Qt::LeftButton);
+        QTest::mouseRelease(plot, Qt::LeftButton, Qt::ShiftModifier, corner + QPoint(15, 15));
+        QCOMPARE(window_->selection().keysOf(object_), (std::vector<std::size_t>{1, 2, 3}));
+    }
+
 private:
     std::unique_ptr<app::MainWindow> window_;
     app::GraphEditorPanel* panel_ = nullptr;

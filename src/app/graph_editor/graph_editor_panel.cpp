@@ -2,7 +2,9 @@
 
 #include "app/euler_convention_choosers.h"
 #include "core/quaternion_math.h"
+#include "model/commands/replace_keyframes_command.h"
 #include "model/commands/set_keyframe_orientation_command.h"
+#include "model/key_edits.h"
 #include "model/object_mass.h"
 
 #include <QAction>
@@ -17,7 +19,9 @@
 #include <qcustomplot.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <set>
 #include <numbers>
 #include <stdexcept>
 
@@ -113,10 +117,17 @@ GraphEditorPanel::GraphEditorPanel(model::Document& document, Selection& selecti
 
     connect(&channels_, &ChannelListModel::shownChanged, this, &GraphEditorPanel::showChannel);
     connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
-        if (changes & (SelectedTrack::kAnotherObject | model::Change::Scene))
+        if (changes & (SelectedTrack::kAnotherObject | model::Change::Scene)) {
             releasePlot(); // the held key is another object's now
+            if (transform_)
+                finishTransform(true);
+        }
         if (changes & (model::kMotionChanges | model::Change::SceneSettings))
             sampler_.schedule();
+    });
+    connect(&selection_, &Selection::changed, this, [this] {
+        showSelectedKeys();
+        plot_->replot();
     });
     sampler_.schedule();
 }
@@ -156,6 +167,19 @@ QWidget* GraphEditorPanel::makeChoosers()
         button->setDefaultAction(action);
         layout->addWidget(button);
     }
+    moveKeys_ = new QAction(tr("&Move Keys"), this);
+    moveKeys_->setShortcut(Qt::Key_G);
+    moveKeys_->setStatusTip(tr("Move the selected keys with the pointer; click to keep, Esc to cancel"));
+    scaleKeys_ = new QAction(tr("&Scale Keys"), this);
+    scaleKeys_->setShortcut(Qt::Key_S);
+    scaleKeys_->setStatusTip(tr("Scale the selected keys' times about the current frame; click to keep, Esc to cancel"));
+    // On the plot alone: G and S typed into a chooser above it choose.
+    for (QAction* action : {moveKeys_, scaleKeys_}) {
+        action->setShortcutContext(Qt::WidgetShortcut);
+        plot_->addAction(action);
+    }
+    connect(moveKeys_, &QAction::triggered, this, [this] { beginTransform(false); });
+    connect(scaleKeys_, &QAction::triggered, this, [this] { beginTransform(true); });
     connect(frameAll_, &QAction::triggered, this, &GraphEditorPanel::frameAll);
     connect(frameSelected_, &QAction::triggered, this, &GraphEditorPanel::frameSelectedKey);
 
@@ -184,7 +208,11 @@ bool GraphEditorPanel::event(QEvent* event)
 
 void GraphEditorPanel::keyPressEvent(QKeyEvent* event)
 {
-    if (isFrameAllKey(*event))
+    if (transform_ && event->key() == Qt::Key_Escape)
+        finishTransform(false);
+    else if (transform_ && (event->key() == Qt::Key_Return || event->key() == Qt::Key_Enter))
+        finishTransform(true);
+    else if (isFrameAllKey(*event))
         frameAll();
     else
         QWidget::keyPressEvent(event);
@@ -206,6 +234,10 @@ void GraphEditorPanel::setUpPlot()
         keys->setLineStyle(QCPGraph::lsNone);
         keys->removeFromLegend();
         keyGraphs_[c] = keys;
+        QCPGraph* selected = plot_->addGraph();
+        selected->setLineStyle(QCPGraph::lsNone);
+        selected->removeFromLegend();
+        selectedKeyGraphs_[c] = selected;
         showChannel(channel, channels_.isShown(channel));
     }
     connect(plot_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, &GraphEditorPanel::showKeyMarkers);
@@ -213,6 +245,9 @@ void GraphEditorPanel::setUpPlot()
     connect(plot_, &QCustomPlot::mousePress, this, &GraphEditorPanel::pressPlot);
     connect(plot_, &QCustomPlot::mouseMove, this, &GraphEditorPanel::movePlot);
     connect(plot_, &QCustomPlot::mouseRelease, this, &GraphEditorPanel::releasePlot);
+    connect(plot_->selectionRect(), &QCPSelectionRect::accepted, this,
+            [this](const QRect& box, QMouseEvent*) { selectKeysIn(box); });
+    plot_->setMouseTracking(true); // G and S follow the pointer with no button held
 }
 
 model::ChannelSettings GraphEditorPanel::settings() const
@@ -252,6 +287,7 @@ void GraphEditorPanel::showCurves(const model::ChannelCurves& curves)
     for (const auto& [sample, key] : curves.keySamples)
         keyTimes_.push_back(curves.times[sample]);
     showKeyMarkers();
+    showSelectedKeys();
     showGimbalZones(curves.gimbalZones);
     if (anotherObject)
         frameAll();
@@ -270,10 +306,14 @@ void GraphEditorPanel::showKeyMarkers()
         return;
     keyMarkersShown_ = apart;
     for (std::size_t c = 0; c < model::kChannelCount; ++c) {
-        keyGraphs_[c]->setScatterStyle(apart ? QCPScatterStyle(QCPScatterStyle::ssDiamond,
-                                                               channelPen(static_cast<Channel>(c)).color(), Qt::white,
+        const QColor colour = channelPen(static_cast<Channel>(c)).color();
+        keyGraphs_[c]->setScatterStyle(apart ? QCPScatterStyle(QCPScatterStyle::ssDiamond, colour, Qt::white,
                                                                kKeyMarkerPixels)
                                              : QCPScatterStyle(QCPScatterStyle::ssNone));
+        // Selected keys filled, and larger.
+        selectedKeyGraphs_[c]->setScatterStyle(apart ? QCPScatterStyle(QCPScatterStyle::ssDiamond, colour, colour,
+                                                                       kKeyMarkerPixels + 3.0)
+                                                     : QCPScatterStyle(QCPScatterStyle::ssNone));
     }
 }
 
@@ -303,6 +343,7 @@ void GraphEditorPanel::showChannel(Channel channel, bool shown)
     QCPGraph* graph = graphs_[static_cast<std::size_t>(channel)];
     graph->setVisible(shown);
     keyGraphs_[static_cast<std::size_t>(channel)]->setVisible(shown);
+    selectedKeyGraphs_[static_cast<std::size_t>(channel)]->setVisible(shown);
     if (shown)
         graph->addToLegend();
     else
@@ -369,13 +410,30 @@ std::optional<std::pair<Channel, std::size_t>> GraphEditorPanel::keyAt(const QPo
 
 void GraphEditorPanel::pressPlot(QMouseEvent* event)
 {
+    if (transform_) {
+        finishTransform(event->button() == Qt::LeftButton); // a right click cancels
+        return;
+    }
+    // The plot draws a box for this press only if it begins a Shift+drag off the keys (selectKeysIn).
+    plot_->setSelectionRectMode(QCP::srmNone);
     if (event->button() != Qt::LeftButton || shownObject_ != selection_.object())
         return;
     const auto held = keyAt(event->position());
     const model::SceneObject* object = selection_.selectedObject();
-    if (!held || object == nullptr || held->second >= object->track.keys.size())
+    const bool heldKey = held && object != nullptr && held->second < object->track.keys.size();
+    if (event->modifiers().testFlag(Qt::ShiftModifier)) {
+        if (heldKey) {
+            lastAngle_ = model::eulerIndex(held->first);
+            selection_.toggleKey(object->id, held->second);
+        } else {
+            plot_->setSelectionRectMode(QCP::srmCustom);
+        }
+        return;
+    }
+    if (!heldKey)
         return;
     const auto [channel, key] = *held;
+    lastAngle_ = model::eulerIndex(channel);
     const auto sample = std::find_if(curves_.keySamples.begin(), curves_.keySamples.end(),
                                      [key](const auto& keySample) { return keySample.second == key; });
     KeyDrag drag;
@@ -395,6 +453,9 @@ void GraphEditorPanel::pressPlot(QMouseEvent* event)
 
 void GraphEditorPanel::movePlot(QMouseEvent* event)
 {
+    pointer_ = event->position();
+    if (transform_)
+        updateTransform(pointer_);
     if (!drag_ || !(event->buttons() & Qt::LeftButton))
         return;
     Eigen::Vector3d angles = drag_->pressAngles;
@@ -412,6 +473,129 @@ void GraphEditorPanel::releasePlot()
     if (!drag_)
         return;
     drag_.reset(); // finishes the gesture
+    plot_->setInteraction(QCP::iRangeDrag, true);
+}
+
+void GraphEditorPanel::showSelectedKeys()
+{
+    for (std::size_t c = 0; c < model::kChannelCount; ++c) {
+        QVector<double> times;
+        QVector<double> values;
+        const QCPGraph* keys = keyGraphs_[c];
+        for (int k = 0; k < keys->dataCount() && static_cast<std::size_t>(k) < curves_.keySamples.size(); ++k) {
+            if (selection_.isKeySelected(shownObject_, curves_.keySamples[static_cast<std::size_t>(k)].second)) {
+                times.push_back(keys->data()->at(k)->key);
+                values.push_back(keys->data()->at(k)->value);
+            }
+        }
+        selectedKeyGraphs_[c]->setData(times, values, true);
+    }
+}
+
+void GraphEditorPanel::selectKeysIn(const QRect& box)
+{
+    if (shownObject_ != selection_.object() || !keyMarkersShown_)
+        return;
+    std::set<KeyRef> inside;
+    for (std::size_t c = 0; c < model::kChannelCount; ++c) {
+        const QCPGraph* keys = keyGraphs_[c];
+        if (!keys->visible())
+            continue;
+        for (int k = 0; k < keys->dataCount() && static_cast<std::size_t>(k) < curves_.keySamples.size(); ++k) {
+            const QPointF drawn(plot_->xAxis->coordToPixel(keys->data()->at(k)->key),
+                                plot_->yAxis->coordToPixel(keys->data()->at(k)->value));
+            if (QRectF(box.normalized()).contains(drawn))
+                inside.insert({shownObject_, curves_.keySamples[static_cast<std::size_t>(k)].second});
+        }
+    }
+    selection_.selectKeys(inside, true);
+}
+
+void GraphEditorPanel::beginTransform(bool scale)
+{
+    const model::SceneObject* object = selection_.selectedObject();
+    if (transform_ || drag_ || object == nullptr || shownObject_ != object->id)
+        return;
+    KeyTransform transform;
+    transform.selected = selection_.keysOf(object->id);
+    if (transform.selected.empty())
+        return;
+    transform.scale = scale;
+    transform.object = object->id;
+    transform.keys = object->track.keys;
+    // Each selected key's angles as drawn: the unwrapped ones at its sample.
+    for (std::size_t key : transform.selected) {
+        const auto sample = std::find_if(curves_.keySamples.begin(), curves_.keySamples.end(),
+                                         [key](const auto& keySample) { return keySample.second == key; });
+        if (sample == curves_.keySamples.end())
+            return; // the curves are not those of these keys yet
+        Eigen::Vector3d angles;
+        for (int angle = 0; angle < 3; ++angle)
+            angles[angle] = curves_.values[static_cast<std::size_t>(angle)][sample->first];
+        transform.angles.push_back(angles);
+    }
+    transform.angle = lastAngle_;
+    transform.start = pointer_;
+    transform.gesture = std::make_unique<model::Gesture>(document_);
+    transform_ = std::move(transform);
+    plot_->setInteraction(QCP::iRangeDrag, false);
+}
+
+void GraphEditorPanel::updateTransform(const QPointF& pointer)
+{
+    const model::SceneObject* object = document_.object(transform_->object);
+    if (object == nullptr || object->track.keys.size() != transform_->keys.size()) {
+        finishTransform(true); // the keys changed under it (an undo elsewhere): nothing left to move
+        return;
+    }
+    const model::Scene& scene = document_.scene();
+    const auto frame = [&scene](double seconds) { return std::round(seconds * scene.fps) / scene.fps; };
+    const double fromTime = plot_->xAxis->pixelToCoord(transform_->start.x());
+    const double toTime = plot_->xAxis->pixelToCoord(pointer.x());
+    std::optional<std::vector<model::Keyframe>> keys;
+    if (transform_->scale) {
+        // t′ = c + f·(t − c) about the current time c, f the pointer's distance from c over where it began.
+        const double pivot = scene.currentTime;
+        const double factor = std::abs(fromTime - pivot) > 1e-12 ? (toTime - pivot) / (fromTime - pivot) : 1.0;
+        if (factor <= 0.0)
+            return;
+        keys = model::retimedKeys(transform_->keys, transform_->selected,
+                                  [&](double time) { return frame(pivot + factor * (time - pivot)); }, 0.5 / scene.fps);
+        if (!keys)
+            return; // the keys would cross or meet: they stay where they were last
+    } else {
+        const auto [lower, upper] = model::shiftRange(transform_->keys, transform_->selected, 1.0 / scene.fps,
+                                                      scene.startTime, scene.endTime);
+        const double shift = lower <= upper ? std::clamp(frame(toTime - fromTime), lower, upper) : 0.0;
+        keys = model::shiftedKeys(transform_->keys, transform_->selected, shift);
+        if (transform_->angle) {
+            const double raised =
+                plot_->yAxis->pixelToCoord(pointer.y()) - plot_->yAxis->pixelToCoord(transform_->start.y());
+            const EulerConvention convention = chosenConvention(*orderChooser_, *frameChooser_);
+            for (std::size_t i = 0; i < transform_->selected.size(); ++i) {
+                Eigen::Vector3d angles = transform_->angles[i];
+                angles[*transform_->angle] += raised;
+                Eigen::Quaterniond& orientation = (*keys)[transform_->selected[i]].pose.orientation;
+                orientation = alignedWith(quaternionFromEulerAngles(angles * kRadiansPerDegree, convention), orientation);
+            }
+        }
+    }
+    using Edit = model::ReplaceKeyframesCommand::Edit;
+    transform_->gesture->push(new model::ReplaceKeyframesCommand(
+        document_, {{transform_->object, std::move(*keys)}}, transform_->scale ? Edit::Scale : Edit::Move));
+}
+
+void GraphEditorPanel::finishTransform(bool keep)
+{
+    const model::SceneObject* object = document_.object(transform_->object);
+    const bool sameKeys = object != nullptr && object->track.keys.size() == transform_->keys.size();
+    if (!keep && sameKeys && transform_->gesture->hasStep()) {
+        // Back to the keys from before: merged into the gesture's step, which then changes nothing and goes.
+        using Edit = model::ReplaceKeyframesCommand::Edit;
+        transform_->gesture->push(new model::ReplaceKeyframesCommand(
+            document_, {{transform_->object, transform_->keys}}, transform_->scale ? Edit::Scale : Edit::Move));
+    }
+    transform_.reset(); // finishes the gesture
     plot_->setInteraction(QCP::iRangeDrag, true);
 }
 

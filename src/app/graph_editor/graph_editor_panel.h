@@ -7,9 +7,13 @@
 // the convention's gimbal lock are shaded.
 //
 // Dragging a key on an Euler channel up or down changes that angle of the key, the other two kept:
-// one undo step, the moves of one drag merged (model/gesture.h). Home (while the plot has the focus)
-// frames everything shown; F frames the selected key between its neighbours. Drag elsewhere to pan,
-// wheel to zoom.
+// one undo step, the moves of one drag merged (model/gesture.h). Shift+click on a key adds it to the
+// selected keys or takes it out; Shift+drag elsewhere draws a box and adds the keys in it. As in
+// Blender's graph editor, G moves the selected keys with the pointer, in time (whole frames, never
+// crossing or landing on another key) and, on the Euler channel of the key pressed last, in angle;
+// S scales their times about the current frame. A click or Enter keeps the change, one undo step;
+// Esc or a right click puts the keys back. Home (while the plot has the focus) frames everything
+// shown; F frames the selected key between its neighbours. Drag elsewhere to pan, wheel to zoom.
 //
 // The curves come from the document's shared motion of the track (Document::motion), sampled on a
 // job (SelectedTrackSampler): at most every 50 ms while a key is dragged, not at all off screen.
@@ -63,6 +67,13 @@ public:
     const std::vector<QCPItemRect*>& gimbalZones() const { return gimbalZones_; }
     QAction* frameAllAction() const { return frameAll_; }
     QAction* frameSelectedAction() const { return frameSelected_; }
+    QAction* moveKeysAction() const { return moveKeys_; }
+    QAction* scaleKeysAction() const { return scaleKeys_; }
+    // The selected keys drawn apart on the channel's curve.
+    QCPGraph* selectedKeyGraph(model::Channel channel) const
+    {
+        return selectedKeyGraphs_[static_cast<std::size_t>(channel)];
+    }
 
     void frameAll();
     void frameSelectedKey();
@@ -86,6 +97,18 @@ private:
         Eigen::Quaterniond pressOrientation;   // the key as stored at the press
         double pressValue = 0.0;               // the value under the mouse at the press, degrees
     };
+    // G or S in progress: the keys as they were, the selected ones' indices and their Euler angles as
+    // drawn (degrees), and where the pointer was when it began.
+    struct KeyTransform {
+        bool scale = false;
+        std::unique_ptr<model::Gesture> gesture;
+        model::ObjectId object = model::kNoObject;
+        std::vector<model::Keyframe> keys;
+        std::vector<std::size_t> selected;
+        std::vector<Eigen::Vector3d> angles;
+        std::optional<int> angle; // the Euler angle a move changes too
+        QPointF start;
+    };
 
     QWidget* makeChoosers();
     void setUpPlot();
@@ -101,6 +124,12 @@ private:
     void pressPlot(QMouseEvent* event);
     void movePlot(QMouseEvent* event);
     void releasePlot();
+    void showSelectedKeys();
+    void selectKeysIn(const QRect& box);
+    void beginTransform(bool scale);
+    void updateTransform(const QPointF& pointer);
+    // Keeps the transform's change as its undo step, or puts the keys back and leaves none.
+    void finishTransform(bool keep);
     void rescaleValues(bool inTimeRange);
     model::ChannelSettings settings() const;
 
@@ -115,8 +144,11 @@ private:
     QCustomPlot* plot_ = nullptr;
     QAction* frameAll_ = nullptr;
     QAction* frameSelected_ = nullptr;
+    QAction* moveKeys_ = nullptr;
+    QAction* scaleKeys_ = nullptr;
     std::array<QCPGraph*, model::kChannelCount> graphs_{};
     std::array<QCPGraph*, model::kChannelCount> keyGraphs_{};
+    std::array<QCPGraph*, model::kChannelCount> selectedKeyGraphs_{};
     std::vector<QCPItemRect*> gimbalZones_;
     // The curves shown, and the object whose they are.
     model::ChannelCurves curves_;
@@ -124,6 +156,9 @@ private:
     std::vector<double> keyTimes_; // of the drawn keys, increasing
     bool keyMarkersShown_ = false;
     std::optional<KeyDrag> drag_;
+    std::optional<KeyTransform> transform_;
+    QPointF pointer_;          // where the pointer was last over the plot
+    std::optional<int> lastAngle_; // the Euler angle of the key pressed last
     SelectedTrackSampler<model::ChannelCurves> sampler_; // last: waits for its work before the members it uses go
 };
 

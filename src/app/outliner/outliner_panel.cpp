@@ -75,16 +75,25 @@ bool OutlinerPanel::isSmallScene() const
 
 void OutlinerPanel::showSelection()
 {
-    const QModelIndex index = filtered_.mapFromSource(model_.indexOf(selection_.object()));
+    const QModelIndex active = filtered_.mapFromSource(model_.indexOf(selection_.object()));
     QItemSelectionModel* chosen = tree_->selectionModel();
-    if (index.isValid() && chosen->isSelected(index) && chosen->currentIndex() == index)
+    std::vector<model::ObjectId> shown;
+    for (const QModelIndex& row : chosen->selectedRows())
+        shown.push_back(SceneTreeModel::objectAt(filtered_.mapToSource(row)));
+    std::vector<model::ObjectId> selected = selection_.objects();
+    std::sort(shown.begin(), shown.end());
+    std::sort(selected.begin(), selected.end());
+    if (shown == selected && chosen->currentIndex() == active)
         return;
     showingSelection_ = true;
-    if (index.isValid()) {
-        chosen->setCurrentIndex(index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
-        tree_->scrollTo(index); // expands its ancestors
-    } else {
-        chosen->clearSelection();
+    QItemSelection rows;
+    for (model::ObjectId id : selected)
+        if (const QModelIndex index = filtered_.mapFromSource(model_.indexOf(id)); index.isValid())
+            rows.select(index, index);
+    chosen->select(rows, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    if (active.isValid()) {
+        chosen->setCurrentIndex(active, QItemSelectionModel::NoUpdate);
+        tree_->scrollTo(active); // expands its ancestors
     }
     showingSelection_ = false;
 }
@@ -94,15 +103,16 @@ void OutlinerPanel::selectCurrentObject()
     if (showingSelection_)
         return;
     QItemSelectionModel* chosen = tree_->selectionModel();
-    QModelIndex current = chosen->currentIndex();
-    if (!chosen->isSelected(current)) {
-        const QModelIndexList rows = chosen->selectedRows();
-        current = rows.isEmpty() ? QModelIndex() : rows.front();
-    }
-    const model::ObjectId id = SceneTreeModel::objectAt(filtered_.mapToSource(current));
-    // Selecting the object it already has would drop the selected key.
-    if (id != model::kNoObject && id != selection_.object())
-        selection_.selectObject(id);
+    std::vector<model::ObjectId> ids;
+    for (const QModelIndex& row : chosen->selectedRows())
+        ids.push_back(SceneTreeModel::objectAt(filtered_.mapToSource(row)));
+    if (ids.empty())
+        return; // as before: the tree emptied by a click keeps the selection
+    // The row clicked last is the active object, if it is selected.
+    const QModelIndex current = chosen->currentIndex();
+    const model::ObjectId active =
+        chosen->isSelected(current) ? SceneTreeModel::objectAt(filtered_.mapToSource(current)) : model::kNoObject;
+    selection_.selectObjects(ids, active != model::kNoObject ? active : selection_.object());
 }
 
 std::vector<model::ObjectId> OutlinerPanel::selectedObjects() const

@@ -281,7 +281,7 @@ std::optional<QPointF> Viewport::objectScreenPosition(model::ObjectId id) const
     return toScreen(camera_, drawn_.motion().worldPose(id, document_.scene().currentTime).position);
 }
 
-void Viewport::pickAt(const QPointF& position)
+void Viewport::pickAt(const QPointF& position, bool toggle)
 {
     const Ray ray = camera_.ray(position.x(), position.y());
     const model::Scene& scene = document_.scene();
@@ -319,7 +319,10 @@ void Viewport::pickAt(const QPointF& position)
         }
     }
     const std::optional<std::size_t> hit = nearestHit(ray, placements);
-    if (!hit)
+    if (toggle) {
+        if (hit && !keys[*hit])
+            selection_.toggleObject(objects[*hit]);
+    } else if (!hit)
         selection_.selectObject(selection_.object()); // empty space: keep the object, drop the key
     else if (keys[*hit])
         selection_.selectKey(objects[*hit], *keys[*hit]);
@@ -381,7 +384,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
 void Viewport::mouseReleaseEvent(QMouseEvent* event)
 {
     if (drag_.kind == DragKind::Orbit && !drag_.moved && event->button() == Qt::LeftButton)
-        pickAt(event->position());
+        pickAt(event->position(), event->modifiers().testFlag(Qt::ControlModifier));
     handleDrag_.finish(); // ends the drag's undo step
     drag_.kind = DragKind::None;
     setDragging(false);

@@ -8,7 +8,8 @@
 // Mouse: left-drag on a handle moves or turns the selected key (one undo step per drag); left-drag
 // elsewhere orbits; middle-drag or shift+left-drag pans; the wheel zooms. A left click selects the
 // control pose or object under the cursor; a click on empty space keeps the object selected and
-// clears the key selection. The view changes the document only by pushing undo commands.
+// clears the key selection; a Ctrl+click adds the object under the cursor to the selected objects, or
+// takes it out (Shift+drag pans, so Shift cannot). The view changes the document only by pushing undo commands.
 //
 // The widget wires input and the document to its parts: DrawnMotion follows the document,
 // SceneRenderer draws, HandleFrame and HandleDrag place and drag the handles, OrbitCamera looks.
@@ -132,7 +133,9 @@ private:
     std::optional<HandleFrame> handleFrame() const;
     // Whether the selected object's control poses are drawn and can be clicked.
     bool showsControlPoses() const;
-    void pickAt(const QPointF& position);
+    // Selects what is under `position`; with `toggle` (Ctrl held) adds the object hit to the selected
+    // objects, or takes it out.
+    void pickAt(const QPointF& position, bool toggle);
     // The box about what is drawn for the object at scene.objects[index] at the current time.
     Eigen::AlignedBox3d objectBox(std::size_t index) const;
     void updateSkeleton();
