@@ -377,442 +377,522 @@
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="40"/>
+        <location filename="../ui/main_window.ui" line="45"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="41"/>
+        <location filename="../ui/main_window.ui" line="46"/>
         <source>&amp;Panels</source>
         <translation>Bedien&amp;felder</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="64"/>
+        <location filename="../ui/main_window.ui" line="71"/>
         <source>&amp;Motion</source>
         <translation>Be&amp;wegung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="78"/>
+        <location filename="../ui/main_window.ui" line="88"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="79"/>
+        <location filename="../ui/main_window.ui" line="89"/>
         <source>&amp;Add</source>
         <translation>&amp;Hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="83"/>
+        <location filename="../ui/main_window.ui" line="93"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="94"/>
+        <location filename="../ui/main_window.ui" line="104"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="102"/>
+        <location filename="../ui/main_window.ui" line="112"/>
         <source>Edit</source>
         <translation>Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="107"/>
+        <location filename="../ui/main_window.ui" line="117"/>
         <source>Playback</source>
         <translation>Wiedergabe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="119"/>
+        <location filename="../ui/main_window.ui" line="129"/>
         <source>Inspector</source>
         <translation>Inspektor</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="131"/>
+        <location filename="../ui/main_window.ui" line="141"/>
         <source>ScrewBender</source>
         <translation>ScrewBender</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="143"/>
+        <location filename="../ui/main_window.ui" line="153"/>
         <source>Undo History</source>
         <translation>Rückgängig-Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="155"/>
+        <location filename="../ui/main_window.ui" line="165"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="167"/>
+        <location filename="../ui/main_window.ui" line="177"/>
         <source>Smoothness</source>
         <translation>Glätte</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="179"/>
+        <location filename="../ui/main_window.ui" line="189"/>
         <source>Angular Velocity Direction</source>
         <translation>Richtung der Winkelgeschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="191"/>
+        <location filename="../ui/main_window.ui" line="201"/>
         <source>Fit</source>
         <translation>Anpassung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="203"/>
+        <location filename="../ui/main_window.ui" line="213"/>
         <source>Angular Speed</source>
         <translation>Betrag der Winkelgeschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="215"/>
+        <location filename="../ui/main_window.ui" line="225"/>
         <source>Graph Editor</source>
         <translation>Grapheneditor</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="227"/>
+        <location filename="../ui/main_window.ui" line="237"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="228"/>
+        <location filename="../ui/main_window.ui" line="238"/>
         <source>Start a new, empty project</source>
         <translation>Ein neues, leeres Projekt beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="231"/>
+        <location filename="../ui/main_window.ui" line="241"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="232"/>
+        <location filename="../ui/main_window.ui" line="242"/>
         <source>Open a Gyre project</source>
         <translation>Ein Gyre-Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="235"/>
+        <location filename="../ui/main_window.ui" line="245"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="236"/>
+        <location filename="../ui/main_window.ui" line="246"/>
         <source>Save the project</source>
         <translation>Das Projekt speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="239"/>
+        <location filename="../ui/main_window.ui" line="249"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="240"/>
+        <location filename="../ui/main_window.ui" line="250"/>
         <source>Save the project under a new name</source>
         <translation>Das Projekt unter einem neuen Namen speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="243"/>
+        <location filename="../ui/main_window.ui" line="253"/>
         <source>&amp;Import Scene…</source>
         <translation>Szene &amp;importieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="244"/>
+        <location filename="../ui/main_window.ui" line="254"/>
         <source>Add the objects and motion of an FBX, glTF, Collada, OBJ, BVH or other scene file</source>
         <translation>Die Objekte und die Bewegung einer FBX-, glTF-, Collada-, OBJ-, BVH- oder anderen Szenendatei hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="248"/>
+        <location filename="../ui/main_window.ui" line="258"/>
         <source>&amp;Export Scene…</source>
         <translation>Szene &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="249"/>
+        <location filename="../ui/main_window.ui" line="259"/>
         <source>Write the scene with its motion baked to glTF, Collada, FBX or OBJ</source>
         <translation>Die Szene mit gebackener Bewegung als glTF, Collada, FBX oder OBJ schreiben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="253"/>
+        <location filename="../ui/main_window.ui" line="263"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="254"/>
+        <location filename="../ui/main_window.ui" line="264"/>
         <source>Quit Gyre</source>
         <translation>Gyre beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="258"/>
+        <location filename="../ui/main_window.ui" line="268"/>
         <source>Undo &amp;History</source>
         <translation>Rückgängig-&amp;Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="259"/>
+        <location filename="../ui/main_window.ui" line="269"/>
         <source>Show every step of the undo history</source>
         <translation>Jeden Schritt des Rückgängig-Verlaufs zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="263"/>
+        <location filename="../ui/main_window.ui" line="273"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Einstellungen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="264"/>
+        <location filename="../ui/main_window.ui" line="274"/>
         <source>Choose the language Gyre speaks</source>
         <translation>Die Sprache wählen, die Gyre spricht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="270"/>
+        <location filename="../ui/main_window.ui" line="280"/>
         <source>Original Motion as &amp;Ghost</source>
         <translation>Ursprüngliche Bewegung als &amp;Geisterbild</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="271"/>
+        <location filename="../ui/main_window.ui" line="281"/>
         <source>Show the motion as it was when the project was opened or saved, faintly</source>
         <translation>Die Bewegung blass zeigen, wie sie beim Öffnen oder Speichern des Projekts war</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="276"/>
+        <location filename="../ui/main_window.ui" line="286"/>
         <source>Centre &amp;Trajectory</source>
         <translation>&amp;Bahn des Mittelpunkts</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="277"/>
+        <location filename="../ui/main_window.ui" line="287"/>
         <source>Show the path of the selected object&apos;s centre</source>
         <translation>Die Bahn des Mittelpunkts des gewählten Objekts zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="282"/>
+        <location filename="../ui/main_window.ui" line="292"/>
         <source>&amp;Control Poses</source>
         <translation>&amp;Kontrollposen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="283"/>
+        <location filename="../ui/main_window.ui" line="293"/>
         <source>Show the keyframe poses of the selected object in place</source>
         <translation>Die Posen der Schlüsselbilder des gewählten Objekts an Ort und Stelle zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="288"/>
+        <location filename="../ui/main_window.ui" line="298"/>
         <source>&amp;Stroboscopic Trail</source>
         <translation>&amp;Stroboskopspur</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="289"/>
+        <location filename="../ui/main_window.ui" line="299"/>
         <source>Show many copies of the selected object along its subdivided motion</source>
         <translation>Viele Kopien des gewählten Objekts entlang seiner unterteilten Bewegung zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="292"/>
+        <location filename="../ui/main_window.ui" line="303"/>
+        <source>Angular &amp;Momentum</source>
+        <translation>Dreh&amp;impuls</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="304"/>
+        <source>Show the selected object&apos;s angular momentum as an arrow from its centre of mass: in free flight it stands still</source>
+        <translation>Den Drehimpuls des ausgewählten Objekts als Pfeil vom Schwerpunkt zeigen: im freien Flug steht er still</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="308"/>
+        <source>Pri&amp;ncipal Axes</source>
+        <translation>Hau&amp;ptträgheitsachsen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="309"/>
+        <source>Show the selected object&apos;s principal axes of inertia through its centre of mass</source>
+        <translation>Die Hauptträgheitsachsen des ausgewählten Objekts durch seinen Schwerpunkt zeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="312"/>
         <source>&amp;Frame Scene</source>
         <translation>Szene ein&amp;passen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="293"/>
+        <location filename="../ui/main_window.ui" line="313"/>
         <source>Point the camera at the whole scene</source>
         <translation>Die Kamera auf die ganze Szene richten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="297"/>
+        <location filename="../ui/main_window.ui" line="317"/>
         <source>Frame &amp;Selected</source>
         <translation>&amp;Auswahl einpassen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="298"/>
+        <location filename="../ui/main_window.ui" line="318"/>
         <source>Point the camera at the selected object</source>
         <translation>Die Kamera auf das ausgewählte Objekt richten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="302"/>
+        <location filename="../ui/main_window.ui" line="322"/>
         <source>&amp;Front View</source>
         <translation>&amp;Vorderansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="303"/>
+        <location filename="../ui/main_window.ui" line="323"/>
         <source>Look along +Y, Z up</source>
         <translation>Entlang +Y blicken, Z oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="307"/>
+        <location filename="../ui/main_window.ui" line="327"/>
         <source>&amp;Back View</source>
         <translation>&amp;Rückansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="308"/>
+        <location filename="../ui/main_window.ui" line="328"/>
         <source>Look along −Y, Z up</source>
         <translation>Entlang −Y blicken, Z oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="312"/>
+        <location filename="../ui/main_window.ui" line="332"/>
         <source>&amp;Right View</source>
         <translation>Ansicht von r&amp;echts</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="313"/>
+        <location filename="../ui/main_window.ui" line="333"/>
         <source>Look along −X, Z up</source>
         <translation>Entlang −X blicken, Z oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="317"/>
+        <location filename="../ui/main_window.ui" line="337"/>
         <source>&amp;Left View</source>
         <translation>Ansicht von &amp;links</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="318"/>
+        <location filename="../ui/main_window.ui" line="338"/>
         <source>Look along +X, Z up</source>
         <translation>Entlang +X blicken, Z oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="322"/>
+        <location filename="../ui/main_window.ui" line="342"/>
         <source>&amp;Top View</source>
         <translation>Ansicht von &amp;oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="323"/>
+        <location filename="../ui/main_window.ui" line="343"/>
         <source>Look down −Z, Y up</source>
         <translation>Entlang −Z nach unten blicken, Y oben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="327"/>
+        <location filename="../ui/main_window.ui" line="347"/>
         <source>Botto&amp;m View</source>
         <translation>Ansicht von &amp;unten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="328"/>
+        <location filename="../ui/main_window.ui" line="348"/>
         <source>Look up +Z</source>
         <translation>Entlang +Z nach oben blicken</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="333"/>
+        <location filename="../ui/main_window.ui" line="353"/>
         <source>&amp;Orthographic</source>
         <translation>&amp;Orthografisch</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="334"/>
+        <location filename="../ui/main_window.ui" line="354"/>
         <source>Parallel projection instead of perspective</source>
         <translation>Parallelprojektion statt Perspektive</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="339"/>
+        <location filename="../ui/main_window.ui" line="359"/>
         <source>&amp;Wireframe</source>
         <translation>&amp;Drahtgitter</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="340"/>
+        <location filename="../ui/main_window.ui" line="360"/>
         <source>Draw the objects as the edges of their triangles</source>
         <translation>Die Objekte als Kanten ihrer Dreiecke zeichnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="345"/>
+        <location filename="../ui/main_window.ui" line="365"/>
         <source>&amp;X-Ray</source>
         <translation>&amp;Röntgen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="346"/>
+        <location filename="../ui/main_window.ui" line="366"/>
         <source>Draw the objects see-through</source>
         <translation>Die Objekte durchsichtig zeichnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="351"/>
+        <location filename="../ui/main_window.ui" line="371"/>
         <source>&amp;Play</source>
         <translation>&amp;Abspielen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="352"/>
+        <location filename="../ui/main_window.ui" line="372"/>
         <source>Play or pause the animation</source>
         <translation>Die Animation abspielen oder anhalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="356"/>
+        <location filename="../ui/main_window.ui" line="376"/>
         <source>Step &amp;Forward</source>
         <translation>Einen Schritt &amp;vor</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="357"/>
+        <location filename="../ui/main_window.ui" line="377"/>
         <source>One frame later</source>
         <translation>Ein Frame später</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="361"/>
+        <location filename="../ui/main_window.ui" line="381"/>
         <source>Step &amp;Backward</source>
         <translation>Einen Schritt &amp;zurück</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="362"/>
+        <location filename="../ui/main_window.ui" line="382"/>
         <source>One frame earlier</source>
         <translation>Ein Frame früher</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="366"/>
+        <location filename="../ui/main_window.ui" line="386"/>
         <source>Go to &amp;Start</source>
         <translation>Zum A&amp;nfang</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="367"/>
+        <location filename="../ui/main_window.ui" line="387"/>
         <source>Go to the first frame</source>
         <translation>Zum ersten Frame gehen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="371"/>
+        <location filename="../ui/main_window.ui" line="391"/>
         <source>Go to &amp;End</source>
         <translation>Zum &amp;Ende</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="372"/>
+        <location filename="../ui/main_window.ui" line="392"/>
         <source>Go to the last frame</source>
         <translation>Zum letzten Frame gehen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="378"/>
+        <location filename="../ui/main_window.ui" line="398"/>
         <source>&amp;Loop</source>
         <translation>&amp;Schleife</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="379"/>
+        <location filename="../ui/main_window.ui" line="399"/>
         <source>Start again from the beginning at the end</source>
         <translation>Am Ende wieder von vorn beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="382"/>
+        <location filename="../ui/main_window.ui" line="402"/>
         <source>&amp;Add Keyframe</source>
         <translation>Schlüsselbild &amp;hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="383"/>
-        <source>Key the selected object&apos;s pose at the current time</source>
-        <translation>Die Pose des gewählten Objekts zur aktuellen Zeit als Schlüsselbild setzen</translation>
+        <location filename="../ui/main_window.ui" line="403"/>
+        <source>Key every selected object&apos;s pose at the current time</source>
+        <translation>Die Pose jedes ausgewählten Objekts zur aktuellen Zeit als Keyframe setzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="387"/>
+        <location filename="../ui/main_window.ui" line="408"/>
+        <source>Delete the selected keyframes</source>
+        <translation>Die ausgewählten Keyframes löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="407"/>
         <source>&amp;Delete Keyframe</source>
         <translation>Schlüsselbild &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="388"/>
-        <source>Delete the selected keyframe</source>
-        <translation>Das gewählte Schlüsselbild löschen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.ui" line="394"/>
+        <location filename="../ui/main_window.ui" line="414"/>
         <source>&amp;Constrain Keyframe</source>
         <translation>Schlüsselbild &amp;fixieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="395"/>
+        <location filename="../ui/main_window.ui" line="415"/>
         <source>Keep the selected keyframe exactly when fitting, or free it</source>
         <translation>Das gewählte Schlüsselbild bei der Anpassung exakt halten oder freigeben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="399"/>
+        <location filename="../ui/main_window.ui" line="419"/>
         <source>&amp;Euler Filter</source>
         <translation>&amp;Euler-Filter</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="400"/>
+        <location filename="../ui/main_window.ui" line="420"/>
         <source>Make the selected object&apos;s keys continuous: each key&apos;s quaternion in the hemisphere of the key before</source>
         <translation>Die Schlüsselbilder des gewählten Objekts stetig machen: das Quaternion jedes Schlüsselbilds in die Hemisphäre des vorigen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="403"/>
+        <location filename="../ui/main_window.ui" line="423"/>
+        <source>&amp;Next Flight Solution</source>
+        <translation>&amp;Nächste Flugbahn</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="424"/>
+        <source>Fly the current span of a ballistic track by its next free flight, by energy</source>
+        <translation>Den aktuellen Abschnitt einer ballistischen Spur mit dem nächsten freien Flug fliegen, nach Energie geordnet</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="427"/>
+        <source>P&amp;revious Flight Solution</source>
+        <translation>&amp;Vorige Flugbahn</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="428"/>
+        <source>Fly the current span of a ballistic track by its previous free flight, by energy</source>
+        <translation>Den aktuellen Abschnitt einer ballistischen Spur mit dem vorigen freien Flug fliegen, nach Energie geordnet</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="431"/>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="432"/>
+        <source>Copy the selected keys, or with none selected the selected object&apos;s pose</source>
+        <translation>Die ausgewählten Keys kopieren, oder ohne Auswahl die Pose des ausgewählten Objekts</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="436"/>
+        <source>&amp;Paste</source>
+        <translation>&amp;Einfügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="437"/>
+        <source>Paste copied keys or a pose at the current time on the selected objects</source>
+        <translation>Kopierte Keys oder eine Pose zur aktuellen Zeit in die ausgewählten Objekte einfügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="441"/>
+        <source>Select &amp;All Keys</source>
+        <translation>&amp;Alle Keys auswählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="442"/>
+        <source>Select every key of the selected object</source>
+        <translation>Jeden Key des ausgewählten Objekts auswählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="446"/>
+        <source>Select &amp;No Keys</source>
+        <translation>&amp;Keine Keys auswählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="447"/>
+        <source>Deselect every key</source>
+        <translation>Die Auswahl aller Keys aufheben</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="451"/>
         <source>&amp;About Gyre</source>
         <translation>&amp;Über Gyre</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="404"/>
+        <location filename="../ui/main_window.ui" line="452"/>
         <source>Version, licence and the libraries Gyre is built on</source>
         <translation>Version, Lizenz und die Bibliotheken, auf denen Gyre aufbaut</translation>
     </message>
@@ -936,47 +1016,47 @@
 <context>
     <name>gyre::FileError</name>
     <message>
-        <location filename="../src/model/project_file.cpp" line="380"/>
+        <location filename="../src/model/project_file.cpp" line="410"/>
         <source>these %1 keys bring the file past the %2 keys a project may hold</source>
         <translation>mit diesen %1 Schlüsseln hat die Datei mehr als die %2 Schlüssel, die ein Projekt haben darf</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="611"/>
+        <location filename="../src/model/project_file.cpp" line="647"/>
         <source>these %1 times bring the file past the %2 times a project may hold</source>
         <translation>mit diesen %1 Zeiten hat die Datei mehr als die %2 Zeiten, die ein Projekt haben darf</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="383"/>
+        <location filename="../src/model/project_file.cpp" line="413"/>
         <source>the file has no time lists</source>
         <translation>die Datei hat keine Zeitlisten</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="249"/>
+        <location filename="../src/model/project_file.cpp" line="275"/>
         <source>is larger than 1 GiB, the most a project file may hold</source>
         <translation>ist größer als 1 GiB, das Höchstmaß für eine Projektdatei</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="387"/>
+        <location filename="../src/model/project_file.cpp" line="417"/>
         <source>time list %1 holds %2 times for %3 keys</source>
         <translation>Zeitliste %1 enthält %2 Zeiten für %3 Schlüssel</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="587"/>
+        <location filename="../src/model/project_file.cpp" line="623"/>
         <source>a version %1 file starts with &quot;%2&quot; and its version in binary, not with JSON text</source>
         <translation>eine Datei der Version %1 beginnt mit „%2“ und ihrer Version in Binärform, nicht mit JSON-Text</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="674"/>
+        <location filename="../src/model/project_file.cpp" line="710"/>
         <source>the file ends inside its first %1 bytes</source>
         <translation>die Datei endet innerhalb ihrer ersten %1 Bytes</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="679"/>
+        <location filename="../src/model/project_file.cpp" line="715"/>
         <source>a version %1 file is JSON text, not binary</source>
         <translation>eine Datei der Version %1 ist JSON-Text, nicht binär</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="683"/>
+        <location filename="../src/model/project_file.cpp" line="719"/>
         <source>%1 bytes; a header may hold at most %2</source>
         <translation>%1 Bytes; ein Kopf darf höchstens %2 haben</translation>
     </message>
@@ -1032,111 +1112,111 @@
         <translation>die Sperre der automatischen Sicherung kann nicht übernommen werden</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="261"/>
+        <location filename="../src/model/project_file.cpp" line="287"/>
         <source>unknown value &quot;%1&quot;; expected one of %2</source>
         <translation>unbekannter Wert „%1“; erwartet wird einer von %2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="298"/>
+        <location filename="../src/model/project_file.cpp" line="324"/>
         <source>%1 bytes are not a whole number of %2-byte items</source>
         <translation>%1 Bytes sind keine ganze Zahl von %2-Byte-Einträgen</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="350"/>
+        <location filename="../src/model/project_file.cpp" line="376"/>
         <source>a skin has 1 to %1 joints</source>
         <translation>ein Skin hat 1 bis %1 Gelenke</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="416"/>
+        <location filename="../src/model/project_file.cpp" line="446"/>
         <location filename="../src/model/value_checks.cpp" line="156"/>
         <source>a stroke needs at least one point</source>
         <translation>ein Strich braucht mindestens einen Punkt</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="418"/>
+        <location filename="../src/model/project_file.cpp" line="448"/>
         <source>%1 times for %2 points; give none or one per point</source>
         <translation>%1 Zeiten für %2 Punkte; geben Sie keine oder eine je Punkt an</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="445"/>
+        <location filename="../src/model/project_file.cpp" line="475"/>
         <source>these %1 control points bring the file past the %2 keys a project may hold</source>
         <translation>mit diesen %1 Kontrollpunkten hat die Datei mehr als die %2 Schlüssel, die ein Projekt haben darf</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="485"/>
+        <location filename="../src/model/project_file.cpp" line="515"/>
         <location filename="../src/model/value_checks.cpp" line="207"/>
         <source>keys to restore without an applied fit</source>
         <translation>wiederherzustellende Schlüssel ohne angewendete Anpassung</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="506"/>
+        <location filename="../src/model/project_file.cpp" line="538"/>
         <source>the file has no meshes</source>
         <translation>die Datei hat keine Meshes</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="535"/>
+        <location filename="../src/model/project_file.cpp" line="571"/>
         <source>%1 is also the id of objects[%2]</source>
         <translation>%1 ist auch die ID von objects[%2]</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="538"/>
-        <location filename="../src/model/project_file.cpp" line="624"/>
+        <location filename="../src/model/project_file.cpp" line="574"/>
+        <location filename="../src/model/project_file.cpp" line="660"/>
         <source>no object has id %1</source>
         <translation>kein Objekt hat die ID %1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="547"/>
+        <location filename="../src/model/project_file.cpp" line="583"/>
         <source>object %1 is its own ancestor</source>
         <translation>Objekt %1 ist sein eigener Vorfahr</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="560"/>
+        <location filename="../src/model/project_file.cpp" line="596"/>
         <source>object %1 comes after it in the file; parents come before their children</source>
         <translation>Objekt %1 steht in der Datei nach ihm; Eltern stehen vor ihren Kindern</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="581"/>
+        <location filename="../src/model/project_file.cpp" line="617"/>
         <source>expected &quot;%1&quot;, found &quot;%2&quot;; this is not a Gyre project</source>
         <translation>erwartet „%1“, gefunden „%2“; dies ist kein Gyre-Projekt</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="759"/>
+        <location filename="../src/model/project_file.cpp" line="795"/>
         <source>not saved, because its header (the objects&apos; names and settings, the sketches&apos; strokes) would hold %1 bytes, more than the %2 a project may hold</source>
         <translation>nicht gespeichert, weil ihr Kopf (die Namen und Einstellungen der Objekte, die Striche der Skizzen) %1 Bytes hätte, mehr als die %2, die ein Projekt haben darf</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="571"/>
+        <location filename="../src/model/project_file.cpp" line="607"/>
         <source>the file has version %1, newer than this build of Gyre reads (%2 and older); open it with a newer Gyre</source>
         <translation>die Datei hat Version %1, neuer als diese Gyre-Version lesen kann (%2 und älter); öffnen Sie sie mit einem neueren Gyre</translation>
     </message>
     <message>
         <location filename="../src/model/output_target.cpp" line="42"/>
-        <location filename="../src/model/project_file.cpp" line="734"/>
+        <location filename="../src/model/project_file.cpp" line="770"/>
         <source>is a directory, not a file</source>
         <translation>ist ein Verzeichnis, keine Datei</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="737"/>
+        <location filename="../src/model/project_file.cpp" line="773"/>
         <source>cannot open: %1</source>
         <translation>kann nicht geöffnet werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="641"/>
+        <location filename="../src/model/project_file.cpp" line="677"/>
         <source>cannot read: %1</source>
         <translation>kann nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="654"/>
+        <location filename="../src/model/project_file.cpp" line="690"/>
         <source>is empty; a project file holds a JSON object</source>
         <translation>ist leer; eine Projektdatei enthält ein JSON-Objekt</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="647"/>
+        <location filename="../src/model/project_file.cpp" line="683"/>
         <source>not valid JSON: %1 at byte %2</source>
         <translation>kein gültiges JSON: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="752"/>
+        <location filename="../src/model/project_file.cpp" line="788"/>
         <source>not saved, because the file would not read back: %1</source>
         <translation>nicht gespeichert, weil sich die Datei nicht wieder lesen ließe: %1</translation>
     </message>
@@ -1867,6 +1947,86 @@
         <source>mesh &apos;%1&apos;: its bone &apos;%2&apos; is not a node of the scene; it shows in its bind pose</source>
         <translation>Mesh „%1“: sein Knochen „%2“ ist kein Knoten der Szene; es wird in seiner Bindepose gezeigt</translation>
     </message>
+    <message>
+        <location filename="../src/model/key_clipboard.cpp" line="40"/>
+        <source>the text is not keys copied from Gyre</source>
+        <translation>der Text sind keine aus Gyre kopierten Keys</translation>
+    </message>
+    <message>
+        <location filename="../src/model/key_clipboard.cpp" line="42"/>
+        <source>%1 bytes of text are more than the %2 that keys may take</source>
+        <translation>%1 Bytes Text sind mehr als die %2, die Keys einnehmen dürfen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/key_clipboard.cpp" line="69"/>
+        <source>no keys were copied</source>
+        <translation>es wurden keine Keys kopiert</translation>
+    </message>
+    <message>
+        <location filename="../src/model/key_clipboard.cpp" line="71"/>
+        <source>%1 keys are more than the %2 a project may hold</source>
+        <translation>%1 Keys sind mehr als die %2, die ein Projekt enthalten darf</translation>
+    </message>
+    <message>
+        <location filename="../src/model/key_clipboard.cpp" line="73"/>
+        <source>a pose is one object&apos;s one key</source>
+        <translation>eine Pose ist ein Key eines Objekts</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="52"/>
+        <source>the inertia has a value that is not a finite number</source>
+        <translation>der Trägheitstensor hat einen Wert, der keine endliche Zahl ist</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="54"/>
+        <source>the inertia tensor is not symmetric</source>
+        <translation>der Trägheitstensor ist nicht symmetrisch</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="56"/>
+        <source>the inertia tensor is not positive definite: every principal moment must be above 0</source>
+        <translation>der Trägheitstensor ist nicht positiv definit: jedes Hauptträgheitsmoment muss über 0 liegen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="58"/>
+        <source>no body has this inertia: its two smaller principal moments add up to less than the largest</source>
+        <translation>kein Körper hat diese Trägheit: seine zwei kleineren Hauptträgheitsmomente ergeben zusammen weniger als das größte</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="80"/>
+        <source>as typed</source>
+        <translation>wie eingegeben</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="82"/>
+        <source>from the mesh, solid</source>
+        <translation>aus dem Mesh, massiv</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="84"/>
+        <source>from the mesh, as a thin shell: the mesh is not closed</source>
+        <translation>aus dem Mesh, als dünne Schale: das Mesh ist nicht geschlossen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="86"/>
+        <source>from the mesh&apos;s bounding box: the mesh has no area</source>
+        <translation>aus dem Begrenzungsquader des Meshs: das Mesh hat keine Fläche</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="94"/>
+        <source>the mass must be a number above 0</source>
+        <translation>die Masse muss eine Zahl über 0 sein</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="96"/>
+        <source>the centre of mass is not a finite point</source>
+        <translation>der Schwerpunkt ist kein endlicher Punkt</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="117"/>
+        <source>the inertia needs six numbers: Ixx, Iyy, Izz, Ixy, Ixz, Iyz</source>
+        <translation>der Trägheitstensor braucht sechs Zahlen: Ixx, Iyy, Izz, Ixy, Ixz, Iyz</translation>
+    </message>
 </context>
 <context>
     <name>gyre::app::AddObjectActions</name>
@@ -1907,6 +2067,21 @@
         <location filename="../src/app/graph_editor/channel_list_model.cpp" line="76"/>
         <source>position %1</source>
         <translation>Position %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="80"/>
+        <source>L %1 (kg·m²/s)</source>
+        <translation>L %1 (kg·m²/s)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="82"/>
+        <source>|L| (kg·m²/s)</source>
+        <translation>|L| (kg·m²/s)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="84"/>
+        <source>rotational energy (J)</source>
+        <translation>Rotationsenergie (J)</translation>
     </message>
 </context>
 <context>
@@ -2009,62 +2184,82 @@
 <context>
     <name>gyre::app::GraphEditorPanel</name>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="84"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="103"/>
         <source>The channels to plot: check one to show its curve</source>
         <translation>Die darzustellenden Kanäle: einen ankreuzen, um seine Kurve zu zeigen</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="119"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="145"/>
         <source>The order of the Euler angles, as the inspector shows them</source>
         <translation>Die Reihenfolge der Eulerwinkel, wie der Inspektor sie zeigt</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="120"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="146"/>
         <source>Euler &amp;order:</source>
         <translation>Euler-&amp;Reihenfolge:</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="124"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="150"/>
         <source>world frame</source>
         <translation>Weltsystem</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="125"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="151"/>
         <source>object&apos;s frame</source>
         <translation>Objektsystem</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="126"/>
-        <source>The frame the angular velocity&apos;s components are given in</source>
-        <translation>Das System, in dem die Komponenten der Winkelgeschwindigkeit angegeben sind</translation>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="152"/>
+        <source>The frame the angular velocity&apos;s and angular momentum&apos;s components are given in</source>
+        <translation>Das Bezugssystem der Komponenten von Winkelgeschwindigkeit und Drehimpuls</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="127"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="153"/>
         <source>ω &amp;in:</source>
         <translation>ω &amp;im:</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="132"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="158"/>
         <source>Frame &amp;All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="133"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="159"/>
         <source>Show the whole time range and every shown curve (Home)</source>
         <translation>Den ganzen Zeitbereich und jede gezeigte Kurve zeigen (Pos1)</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="134"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="160"/>
         <source>Frame &amp;Selected</source>
         <translation>Auswahl &amp;zeigen</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="136"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="162"/>
         <source>Show the selected key between its neighbours</source>
         <translation>Das gewählte Schlüsselbild zwischen seinen Nachbarn zeigen</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="182"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="170"/>
+        <source>&amp;Move Keys</source>
+        <translation>Keys &amp;verschieben</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="172"/>
+        <source>Move the selected keys with the pointer; click to keep, Esc to cancel</source>
+        <translation>Die ausgewählten Keys mit dem Zeiger verschieben; Klick behält, Esc bricht ab</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="173"/>
+        <source>&amp;Scale Keys</source>
+        <translation>Keys &amp;skalieren</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="175"/>
+        <source>Scale the selected keys&apos; times about the current frame; click to keep, Esc to cancel</source>
+        <translation>Die Zeiten der ausgewählten Keys um das aktuelle Frame skalieren; Klick behält, Esc bricht ab</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="225"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
@@ -2185,82 +2380,82 @@
 <context>
     <name>gyre::app::InspectorWidget</name>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="77"/>
+        <location filename="../src/app/inspector_widget.cpp" line="78"/>
         <source>time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="79"/>
+        <location filename="../src/app/inspector_widget.cpp" line="80"/>
         <source>position x</source>
         <translation>Position x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="79"/>
+        <location filename="../src/app/inspector_widget.cpp" line="80"/>
         <source>position y</source>
         <translation>Position y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="79"/>
+        <location filename="../src/app/inspector_widget.cpp" line="80"/>
         <source>position z</source>
         <translation>Position z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="82"/>
+        <location filename="../src/app/inspector_widget.cpp" line="83"/>
         <source>quaternion w</source>
         <translation>Quaternion w</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="82"/>
+        <location filename="../src/app/inspector_widget.cpp" line="83"/>
         <source>quaternion x</source>
         <translation>Quaternion x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="82"/>
+        <location filename="../src/app/inspector_widget.cpp" line="83"/>
         <source>quaternion y</source>
         <translation>Quaternion y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="82"/>
+        <location filename="../src/app/inspector_widget.cpp" line="83"/>
         <source>quaternion z</source>
         <translation>Quaternion z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="89"/>
+        <location filename="../src/app/inspector_widget.cpp" line="90"/>
         <source>matrix row %1, column %2</source>
         <translation>Matrix Zeile %1, Spalte %2</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <location filename="../src/app/inspector_widget.cpp" line="93"/>
         <source>axis x</source>
         <translation>Achse x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <location filename="../src/app/inspector_widget.cpp" line="93"/>
         <source>axis y</source>
         <translation>Achse y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <location filename="../src/app/inspector_widget.cpp" line="93"/>
         <source>axis z</source>
         <translation>Achse z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <location filename="../src/app/inspector_widget.cpp" line="93"/>
         <source>angle</source>
         <translation>Winkel</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="94"/>
+        <location filename="../src/app/inspector_widget.cpp" line="95"/>
         <source>first angle</source>
         <translation>erster Winkel</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="94"/>
+        <location filename="../src/app/inspector_widget.cpp" line="95"/>
         <source>second angle</source>
         <translation>zweiter Winkel</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="94"/>
+        <location filename="../src/app/inspector_widget.cpp" line="95"/>
         <source>third angle</source>
         <translation>dritter Winkel</translation>
     </message>
@@ -2275,80 +2470,109 @@
         <translation>intrinsisch (mitbewegte Achsen)</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="147"/>
+        <location filename="../src/app/inspector_widget.cpp" line="150"/>
         <source>about %1 (°)</source>
         <translation>um %1 (°)</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="161"/>
+        <location filename="../src/app/inspector_widget.cpp" line="164"/>
         <source>%1, keyframe %2 of %3</source>
         <translation>%1, Schlüsselbild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="195"/>
+        <location filename="../src/app/inspector_widget.cpp" line="198"/>
         <source>Near gimbal lock (%1° from it): the first and third angles turn about almost the same axis, so only their sum (or difference) is determined. Small changes of the rotation can swing them widely.</source>
         <translation>Nahe am Gimbal Lock (kardanische Blockade, %1° entfernt): Der erste und der dritte Winkel drehen fast um dieselbe Achse, daher ist nur ihre Summe (oder Differenz) bestimmt. Kleine Änderungen der Rotation können sie stark ausschlagen lassen.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="230"/>
+        <location filename="../src/app/inspector_widget.cpp" line="240"/>
         <source>The keyframe was not moved: %1.</source>
         <translation>Das Schlüsselbild wurde nicht verschoben: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="241"/>
+        <location filename="../src/app/inspector_widget.cpp" line="251"/>
         <source>The constraint was not changed: %1.</source>
         <translation>Die Fixierung wurde nicht geändert: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="249"/>
+        <location filename="../src/app/inspector_widget.cpp" line="259"/>
         <source>The position was not changed: %1.</source>
         <translation>Die Position wurde nicht geändert: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="261"/>
-        <location filename="../src/app/inspector_widget.cpp" line="284"/>
-        <location filename="../src/app/inspector_widget.cpp" line="310"/>
-        <location filename="../src/app/inspector_widget.cpp" line="333"/>
+        <location filename="../src/app/inspector_widget.cpp" line="271"/>
+        <location filename="../src/app/inspector_widget.cpp" line="294"/>
+        <location filename="../src/app/inspector_widget.cpp" line="320"/>
+        <location filename="../src/app/inspector_widget.cpp" line="343"/>
         <source>The rotation was not changed: %1.</source>
         <translation>Die Rotation wurde nicht geändert: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="266"/>
+        <location filename="../src/app/inspector_widget.cpp" line="276"/>
         <source>The rotation was not changed: the zero quaternion is no rotation.</source>
         <translation>Die Rotation wurde nicht geändert: Das Null-Quaternion ist keine Rotation.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="274"/>
+        <location filename="../src/app/inspector_widget.cpp" line="284"/>
         <source>The quaternion had length %1; it was scaled to length 1.</source>
         <translation>Das Quaternion hatte die Länge %1; es wurde auf Länge 1 skaliert.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="291"/>
+        <location filename="../src/app/inspector_widget.cpp" line="301"/>
         <source>The rotation was not changed: the matrix has determinant %1, so it flattens or mirrors space and is not a rotation.</source>
         <translation>Die Rotation wurde nicht geändert: Die Matrix hat die Determinante %1, sie staucht oder spiegelt also den Raum und ist keine Rotation.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="299"/>
+        <location filename="../src/app/inspector_widget.cpp" line="309"/>
         <source>The matrix was not a rotation (its rows were up to %1 from orthonormal); the nearest rotation was used.</source>
         <translation>Die Matrix war keine Rotation (ihre Zeilen wichen um bis zu %1 von orthonormal ab); die nächstgelegene Rotation wurde verwendet.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="316"/>
+        <location filename="../src/app/inspector_widget.cpp" line="326"/>
         <source>The rotation was not changed: a zero axis names no direction to turn about.</source>
         <translation>Die Rotation wurde nicht geändert: Eine Nullachse gibt keine Drehrichtung an.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="321"/>
+        <location filename="../src/app/inspector_widget.cpp" line="331"/>
         <source>The axis had length %1; it was scaled to length 1.</source>
         <translation>Die Achse hatte die Länge %1; sie wurde auf Länge 1 skaliert.</translation>
     </message>
 </context>
 <context>
+    <name>gyre::app::KeyClipboardActions</name>
+    <message>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="86"/>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="127"/>
+        <source>Cannot paste: %1</source>
+        <translation>Einfügen nicht möglich: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="107"/>
+        <source>Cannot paste: no selected object has the name of a copied one</source>
+        <translation>Einfügen nicht möglich: kein ausgewähltes Objekt trägt den Namen eines kopierten</translation>
+    </message>
+    <message>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="108"/>
+        <source>Cannot paste: no object is selected</source>
+        <translation>Einfügen nicht möglich: kein Objekt ist ausgewählt</translation>
+    </message>
+</context>
+<context>
     <name>gyre::app::KeyframeActions</name>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="58"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="70"/>
         <source>Cannot add a keyframe: %1</source>
         <translation>Schlüsselbild kann nicht hinzugefügt werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/keyframe_actions.cpp" line="123"/>
+        <source>This span has a single free flight</source>
+        <translation>Dieser Abschnitt hat nur einen freien Flug</translation>
+    </message>
+    <message>
+        <location filename="../src/app/keyframe_actions.cpp" line="125"/>
+        <source>Cannot step the flight: %1</source>
+        <translation>Flug kann nicht gewechselt werden: %1</translation>
     </message>
 </context>
 <context>
@@ -2452,179 +2676,273 @@
 <context>
     <name>gyre::app::MainWindow</name>
     <message>
-        <location filename="../src/app/main_window.cpp" line="70"/>
+        <location filename="../src/app/main_window.cpp" line="71"/>
         <source>Gyre projects (*.gyre)</source>
         <translation>Gyre-Projekte (*.gyre)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="170"/>
+        <location filename="../src/app/main_window.cpp" line="180"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="174"/>
+        <location filename="../src/app/main_window.cpp" line="184"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="198"/>
+        <location filename="../src/app/main_window.cpp" line="208"/>
         <source>&lt;opened&gt;</source>
         <translation>&lt;geöffnet&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="273"/>
+        <location filename="../src/app/main_window.cpp" line="285"/>
         <source>Drawing the direction on the sphere needs OpenGL 3.3, which this display does not offer. The speed plot and the fit work without it.</source>
         <translation>Das Zeichnen der Richtung auf der Kugel braucht OpenGL 3.3, das diese Anzeige nicht bietet. Das Geschwindigkeitsdiagramm und die Anpassung funktionieren ohne.</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="292"/>
+        <location filename="../src/app/main_window.cpp" line="304"/>
         <source>The 3D viewport needs OpenGL 3.3, which this display does not offer. Editing, the panels and the timeline work without it.</source>
         <translation>Das 3D-Ansichtsfenster braucht OpenGL 3.3, das diese Anzeige nicht bietet. Bearbeiten, die Bedienfelder und die Zeitleiste funktionieren ohne.</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="342"/>
+        <location filename="../src/app/main_window.cpp" line="357"/>
         <source>Viewport frame rate while something moves, and the time to subdivide the trail: on the worker, and from the request to its arrival</source>
         <translation>Bildrate des Ansichtsfensters, während sich etwas bewegt, und die Zeit zum Unterteilen der Stroboskopspur: im Hintergrund-Thread und von der Anforderung bis zum Eintreffen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="352"/>
+        <location filename="../src/app/main_window.cpp" line="367"/>
         <source>%1 fps · subdivision %2 ms (%3 ms to arrive)</source>
         <translation>%1 fps · Unterteilung %2 ms (%3 ms bis zur Ankunft)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="396"/>
+        <location filename="../src/app/main_window.cpp" line="411"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="398"/>
+        <location filename="../src/app/main_window.cpp" line="413"/>
         <source>%1[*] — Gyre</source>
         <translation>%1[*] — Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="413"/>
+        <location filename="../src/app/main_window.cpp" line="428"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="431"/>
+        <location filename="../src/app/main_window.cpp" line="446"/>
         <source>Cannot open the project</source>
         <translation>Das Projekt kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="454"/>
+        <location filename="../src/app/main_window.cpp" line="469"/>
         <source>L-shaped cycle (ScrewBender)</source>
         <translation>L-förmiger Zyklus (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="455"/>
+        <location filename="../src/app/main_window.cpp" line="470"/>
         <source>Spinning top (sketched angular velocity)</source>
         <translation>Kreisel (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="456"/>
+        <location filename="../src/app/main_window.cpp" line="471"/>
         <source>Letter M (sketched angular velocity)</source>
         <translation>Buchstabe M (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="457"/>
+        <location filename="../src/app/main_window.cpp" line="472"/>
         <source>Hat (sketched angular velocity)</source>
         <translation>Hut (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="458"/>
+        <location filename="../src/app/main_window.cpp" line="473"/>
         <source>Falling leaf (sketched angular velocity)</source>
         <translation>Fallendes Blatt (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="459"/>
+        <location filename="../src/app/main_window.cpp" line="474"/>
         <source>Pen (sketched angular speed)</source>
         <translation>Stift (skizzierter Betrag der Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="460"/>
+        <location filename="../src/app/main_window.cpp" line="475"/>
         <source>Pendulum (ScrewBender)</source>
         <translation>Pendel (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="461"/>
+        <location filename="../src/app/main_window.cpp" line="476"/>
         <source>Spinning block (ScrewBender)</source>
         <translation>Rotierender Block (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="462"/>
+        <location filename="../src/app/main_window.cpp" line="477"/>
         <source>Critter&apos;s non-planar cycle (ScrewBender)</source>
         <translation>Nicht-ebener Zyklus eines Tierchens (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="481"/>
+        <location filename="../src/app/main_window.cpp" line="496"/>
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="494"/>
+        <location filename="../src/app/main_window.cpp" line="509"/>
         <source>Cannot save the project</source>
         <translation>Das Projekt kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="498"/>
+        <location filename="../src/app/main_window.cpp" line="513"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="507"/>
+        <location filename="../src/app/main_window.cpp" line="522"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="507"/>
+        <location filename="../src/app/main_window.cpp" line="522"/>
         <source>The project has unsaved changes. Save them first?</source>
         <translation>Das Projekt hat ungespeicherte Änderungen. Zuerst speichern?</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="546"/>
+        <location filename="../src/app/main_window.cpp" line="561"/>
         <source>About Gyre</source>
         <translation>Über Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="547"/>
+        <location filename="../src/app/main_window.cpp" line="562"/>
         <source>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Edit the rotations of animated rigid objects: every way of writing an orientation, interpolation that behaves, sketched angular velocity, and ScrewBender motions.&lt;/p&gt;&lt;p&gt;Built on Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 and QCustomPlot %8.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Rotationen animierter starrer Objekte bearbeiten: jede Schreibweise einer Orientierung, Interpolation, die sich gut verhält, skizzierte Winkelgeschwindigkeit und ScrewBender-Bewegungen.&lt;/p&gt;&lt;p&gt;Aufgebaut auf Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 und QCustomPlot %8.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="567"/>
+        <location filename="../src/app/main_window.cpp" line="582"/>
         <source>Autosave failed: %1</source>
         <translation>Automatische Sicherung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="576"/>
+        <location filename="../src/app/main_window.cpp" line="591"/>
         <source>an untitled project</source>
         <translation>ein unbenanntes Projekt</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="579"/>
+        <location filename="../src/app/main_window.cpp" line="594"/>
         <source>Recover unsaved work</source>
         <translation>Ungesicherte Arbeit wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="580"/>
+        <location filename="../src/app/main_window.cpp" line="595"/>
         <source>Gyre ended without saving changes to %1 (last copy %2). Recover them?</source>
         <translation>Gyre wurde beendet, ohne Änderungen an %1 zu speichern (letzte Kopie %2). Wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="595"/>
+        <location filename="../src/app/main_window.cpp" line="610"/>
         <source>Cannot recover</source>
         <translation>Wiederherstellen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="570"/>
+        <location filename="../src/app/main_window.cpp" line="585"/>
         <source>Autosave is off: %1</source>
         <translation>Automatische Sicherung ist aus: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="202"/>
+        <location filename="../src/app/main_window.cpp" line="212"/>
         <source>Outliner</source>
         <translation>Gliederung</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::MassPropertiesGroup</name>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="43"/>
+        <source>Body</source>
+        <translation>Körper</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="47"/>
+        <source>Type values</source>
+        <translation>Werte eingeben</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <source>Ixx</source>
+        <translation>Ixx</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <source>Iyy</source>
+        <translation>Iyy</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <source>Izz</source>
+        <translation>Izz</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <source>Ixy</source>
+        <translation>Ixy</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <source>Ixz</source>
+        <translation>Ixz</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <source>Iyz</source>
+        <translation>Iyz</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="67"/>
+        <source>mass</source>
+        <translation>Masse</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
+        <source>centre x</source>
+        <translation>Schwerpunkt x</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
+        <source>centre y</source>
+        <translation>Schwerpunkt y</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
+        <source>centre z</source>
+        <translation>Schwerpunkt z</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="74"/>
+        <source>Mass (kg)</source>
+        <translation>Masse (kg)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="75"/>
+        <source>Centre (m)</source>
+        <translation>Schwerpunkt (m)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="76"/>
+        <source>Inertia (kg·m²)</source>
+        <translation>Trägheit (kg·m²)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="77"/>
+        <source>Principal</source>
+        <translation>Hauptmomente</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="116"/>
+        <source>%1, %2, %3 kg·m²</source>
+        <translation>%1, %2, %3 kg·m²</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="146"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="158"/>
+        <source>Not changed: %1</source>
+        <translation>Nicht geändert: %1</translation>
     </message>
 </context>
 <context>
@@ -2643,7 +2961,7 @@
         <translation>Nach Namen filtern</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/app/outliner/outliner_panel.cpp" line="131"/>
+        <location filename="../src/app/outliner/outliner_panel.cpp" line="141"/>
         <source>Delete %n Objects</source>
         <translation>
             <numerusform>%n Objekt löschen</numerusform>
@@ -2852,47 +3170,52 @@
         <translation>Schraubbewegung (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="45"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="37"/>
+        <source>Ballistic (free flight between keys)</source>
+        <translation>Ballistisch (freier Flug zwischen Keys)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="47"/>
         <source>Four-point</source>
         <translation>Vierpunkt</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="47"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="49"/>
         <source>Four-point B</source>
         <translation>Vierpunkt B</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="49"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="51"/>
         <source>Cubic B-spline</source>
         <translation>Kubischer B-Spline</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="51"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="53"/>
         <source>Jarek</source>
         <translation>Jarek</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="135"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="137"/>
         <source>%1 from %2 keyframes</source>
         <translation>%1 aus %2 Schlüsselbildern</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="136"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="138"/>
         <source>too many to hold, from %1 keyframes</source>
         <translation>zu viele zum Speichern, aus %1 Schlüsselbildern</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="148"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="150"/>
         <source>The interpolation was not changed: %1.</source>
         <translation>Die Interpolation wurde nicht geändert: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="161"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="163"/>
         <source>Interpolate by Screws</source>
         <translation>Per Schraubbewegung interpolieren</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="185"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="187"/>
         <source>The subdivision was not changed: %1.</source>
         <translation>Die Unterteilung wurde nicht geändert: %1.</translation>
     </message>
@@ -3105,13 +3428,13 @@
 <context>
     <name>gyre::app::TimelineWidget</name>
     <message>
-        <location filename="../src/app/timeline_widget.cpp" line="89"/>
-        <location filename="../src/app/timeline_widget.cpp" line="235"/>
+        <location filename="../src/app/timeline_widget.cpp" line="93"/>
+        <location filename="../src/app/timeline_widget.cpp" line="275"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../src/app/timeline_widget.cpp" line="94"/>
+        <location filename="../src/app/timeline_widget.cpp" line="98"/>
         <source>%1 f</source>
         <translation>%1 f</translation>
     </message>
@@ -3260,6 +3583,46 @@
         <location filename="../src/model/commands/apply_euler_filter_command.cpp" line="22"/>
         <source>Apply Euler Filter</source>
         <translation>Euler-Filter anwenden</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/replace_keyframes_command.cpp" line="21"/>
+        <source>Delete Keyframes</source>
+        <translation>Keyframes löschen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/replace_keyframes_command.cpp" line="23"/>
+        <source>Insert Keyframes</source>
+        <translation>Keyframes einfügen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/replace_keyframes_command.cpp" line="25"/>
+        <source>Paste Keyframes</source>
+        <translation>Keyframes einfügen (Zwischenablage)</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/replace_keyframes_command.cpp" line="27"/>
+        <source>Move Keyframes</source>
+        <translation>Keyframes verschieben</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/replace_keyframes_command.cpp" line="31"/>
+        <source>Scale Keyframes</source>
+        <translation>Keyframes skalieren</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/step_ballistic_solution_command.cpp" line="32"/>
+        <source>Step Flight Solution</source>
+        <translation>Flugbahn wechseln</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_mass_override_command.cpp" line="14"/>
+        <source>Set Mass Properties</source>
+        <translation>Masseeigenschaften setzen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_mass_override_command.cpp" line="15"/>
+        <source>Mass From Mesh</source>
+        <translation>Masse aus dem Mesh</translation>
     </message>
 </context>
 <context>

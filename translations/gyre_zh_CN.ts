@@ -377,442 +377,522 @@
         <translation>编辑(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="40"/>
+        <location filename="../ui/main_window.ui" line="45"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="41"/>
+        <location filename="../ui/main_window.ui" line="46"/>
         <source>&amp;Panels</source>
         <translation>面板(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="64"/>
+        <location filename="../ui/main_window.ui" line="71"/>
         <source>&amp;Motion</source>
         <translation>运动(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="78"/>
+        <location filename="../ui/main_window.ui" line="88"/>
         <source>&amp;Object</source>
         <translation>对象(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="79"/>
+        <location filename="../ui/main_window.ui" line="89"/>
         <source>&amp;Add</source>
         <translation>添加(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="83"/>
+        <location filename="../ui/main_window.ui" line="93"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="94"/>
+        <location filename="../ui/main_window.ui" line="104"/>
         <source>File</source>
         <translation>文件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="102"/>
+        <location filename="../ui/main_window.ui" line="112"/>
         <source>Edit</source>
         <translation>编辑</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="107"/>
+        <location filename="../ui/main_window.ui" line="117"/>
         <source>Playback</source>
         <translation>播放</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="119"/>
+        <location filename="../ui/main_window.ui" line="129"/>
         <source>Inspector</source>
         <translation>检查器</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="131"/>
+        <location filename="../ui/main_window.ui" line="141"/>
         <source>ScrewBender</source>
         <translation>ScrewBender</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="143"/>
+        <location filename="../ui/main_window.ui" line="153"/>
         <source>Undo History</source>
         <translation>撤销历史</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="155"/>
+        <location filename="../ui/main_window.ui" line="165"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="167"/>
+        <location filename="../ui/main_window.ui" line="177"/>
         <source>Smoothness</source>
         <translation>平滑度</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="179"/>
+        <location filename="../ui/main_window.ui" line="189"/>
         <source>Angular Velocity Direction</source>
         <translation>角速度方向</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="191"/>
+        <location filename="../ui/main_window.ui" line="201"/>
         <source>Fit</source>
         <translation>拟合</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="203"/>
+        <location filename="../ui/main_window.ui" line="213"/>
         <source>Angular Speed</source>
         <translation>角速度大小</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="215"/>
+        <location filename="../ui/main_window.ui" line="225"/>
         <source>Graph Editor</source>
         <translation>曲线编辑器</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="227"/>
+        <location filename="../ui/main_window.ui" line="237"/>
         <source>&amp;New</source>
         <translation>新建(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="228"/>
+        <location filename="../ui/main_window.ui" line="238"/>
         <source>Start a new, empty project</source>
         <translation>新建一个空项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="231"/>
+        <location filename="../ui/main_window.ui" line="241"/>
         <source>&amp;Open…</source>
         <translation>打开(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="232"/>
+        <location filename="../ui/main_window.ui" line="242"/>
         <source>Open a Gyre project</source>
         <translation>打开 Gyre 项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="235"/>
+        <location filename="../ui/main_window.ui" line="245"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="236"/>
+        <location filename="../ui/main_window.ui" line="246"/>
         <source>Save the project</source>
         <translation>保存项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="239"/>
+        <location filename="../ui/main_window.ui" line="249"/>
         <source>Save &amp;As…</source>
         <translation>另存为(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="240"/>
+        <location filename="../ui/main_window.ui" line="250"/>
         <source>Save the project under a new name</source>
         <translation>以新名称保存项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="243"/>
+        <location filename="../ui/main_window.ui" line="253"/>
         <source>&amp;Import Scene…</source>
         <translation>导入场景(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="244"/>
+        <location filename="../ui/main_window.ui" line="254"/>
         <source>Add the objects and motion of an FBX, glTF, Collada, OBJ, BVH or other scene file</source>
         <translation>添加 FBX、glTF、Collada、OBJ、BVH 或其他场景文件中的对象和运动</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="248"/>
+        <location filename="../ui/main_window.ui" line="258"/>
         <source>&amp;Export Scene…</source>
         <translation>导出场景(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="249"/>
+        <location filename="../ui/main_window.ui" line="259"/>
         <source>Write the scene with its motion baked to glTF, Collada, FBX or OBJ</source>
         <translation>将场景及其烘焙后的运动写出为 glTF、Collada、FBX 或 OBJ</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="253"/>
+        <location filename="../ui/main_window.ui" line="263"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="254"/>
+        <location filename="../ui/main_window.ui" line="264"/>
         <source>Quit Gyre</source>
         <translation>退出 Gyre</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="258"/>
+        <location filename="../ui/main_window.ui" line="268"/>
         <source>Undo &amp;History</source>
         <translation>撤销历史(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="259"/>
+        <location filename="../ui/main_window.ui" line="269"/>
         <source>Show every step of the undo history</source>
         <translation>显示撤销历史中的每一步</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="263"/>
+        <location filename="../ui/main_window.ui" line="273"/>
         <source>&amp;Preferences…</source>
         <translation>首选项(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="264"/>
+        <location filename="../ui/main_window.ui" line="274"/>
         <source>Choose the language Gyre speaks</source>
         <translation>选择 Gyre 使用的语言</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="270"/>
+        <location filename="../ui/main_window.ui" line="280"/>
         <source>Original Motion as &amp;Ghost</source>
         <translation>以虚影显示原始运动(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="271"/>
+        <location filename="../ui/main_window.ui" line="281"/>
         <source>Show the motion as it was when the project was opened or saved, faintly</source>
         <translation>淡淡地显示项目打开或保存时的运动</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="276"/>
+        <location filename="../ui/main_window.ui" line="286"/>
         <source>Centre &amp;Trajectory</source>
         <translation>中心轨迹(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="277"/>
+        <location filename="../ui/main_window.ui" line="287"/>
         <source>Show the path of the selected object&apos;s centre</source>
         <translation>显示所选对象中心的路径</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="282"/>
+        <location filename="../ui/main_window.ui" line="292"/>
         <source>&amp;Control Poses</source>
         <translation>控制姿态(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="283"/>
+        <location filename="../ui/main_window.ui" line="293"/>
         <source>Show the keyframe poses of the selected object in place</source>
         <translation>在原位显示所选对象的关键帧姿态</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="288"/>
+        <location filename="../ui/main_window.ui" line="298"/>
         <source>&amp;Stroboscopic Trail</source>
         <translation>频闪轨迹(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="289"/>
+        <location filename="../ui/main_window.ui" line="299"/>
         <source>Show many copies of the selected object along its subdivided motion</source>
         <translation>沿细分后的运动显示所选对象的多个副本</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="292"/>
+        <location filename="../ui/main_window.ui" line="303"/>
+        <source>Angular &amp;Momentum</source>
+        <translation>角动量(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="304"/>
+        <source>Show the selected object&apos;s angular momentum as an arrow from its centre of mass: in free flight it stands still</source>
+        <translation>将所选物体的角动量显示为从质心出发的箭头：自由飞行时它静止不动</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="308"/>
+        <source>Pri&amp;ncipal Axes</source>
+        <translation>主轴(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="309"/>
+        <source>Show the selected object&apos;s principal axes of inertia through its centre of mass</source>
+        <translation>显示所选物体通过其质心的惯性主轴</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="312"/>
         <source>&amp;Frame Scene</source>
         <translation>显示整个场景(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="293"/>
+        <location filename="../ui/main_window.ui" line="313"/>
         <source>Point the camera at the whole scene</source>
         <translation>将相机对准整个场景</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="297"/>
+        <location filename="../ui/main_window.ui" line="317"/>
         <source>Frame &amp;Selected</source>
         <translation>显示所选对象(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="298"/>
+        <location filename="../ui/main_window.ui" line="318"/>
         <source>Point the camera at the selected object</source>
         <translation>将相机对准所选对象</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="302"/>
+        <location filename="../ui/main_window.ui" line="322"/>
         <source>&amp;Front View</source>
         <translation>前视图(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="303"/>
+        <location filename="../ui/main_window.ui" line="323"/>
         <source>Look along +Y, Z up</source>
         <translation>沿 +Y 方向看,Z 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="307"/>
+        <location filename="../ui/main_window.ui" line="327"/>
         <source>&amp;Back View</source>
         <translation>后视图(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="308"/>
+        <location filename="../ui/main_window.ui" line="328"/>
         <source>Look along −Y, Z up</source>
         <translation>沿 −Y 方向看,Z 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="312"/>
+        <location filename="../ui/main_window.ui" line="332"/>
         <source>&amp;Right View</source>
         <translation>右视图(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="313"/>
+        <location filename="../ui/main_window.ui" line="333"/>
         <source>Look along −X, Z up</source>
         <translation>沿 −X 方向看,Z 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="317"/>
+        <location filename="../ui/main_window.ui" line="337"/>
         <source>&amp;Left View</source>
         <translation>左视图(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="318"/>
+        <location filename="../ui/main_window.ui" line="338"/>
         <source>Look along +X, Z up</source>
         <translation>沿 +X 方向看,Z 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="322"/>
+        <location filename="../ui/main_window.ui" line="342"/>
         <source>&amp;Top View</source>
         <translation>顶视图(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="323"/>
+        <location filename="../ui/main_window.ui" line="343"/>
         <source>Look down −Z, Y up</source>
         <translation>沿 −Z 向下看,Y 朝上</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="327"/>
+        <location filename="../ui/main_window.ui" line="347"/>
         <source>Botto&amp;m View</source>
         <translation>底视图(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="328"/>
+        <location filename="../ui/main_window.ui" line="348"/>
         <source>Look up +Z</source>
         <translation>沿 +Z 向上看</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="333"/>
+        <location filename="../ui/main_window.ui" line="353"/>
         <source>&amp;Orthographic</source>
         <translation>正交投影(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="334"/>
+        <location filename="../ui/main_window.ui" line="354"/>
         <source>Parallel projection instead of perspective</source>
         <translation>使用平行投影而非透视投影</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="339"/>
+        <location filename="../ui/main_window.ui" line="359"/>
         <source>&amp;Wireframe</source>
         <translation>线框(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="340"/>
+        <location filename="../ui/main_window.ui" line="360"/>
         <source>Draw the objects as the edges of their triangles</source>
         <translation>将对象绘制为其三角形的边</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="345"/>
+        <location filename="../ui/main_window.ui" line="365"/>
         <source>&amp;X-Ray</source>
         <translation>X 射线(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="346"/>
+        <location filename="../ui/main_window.ui" line="366"/>
         <source>Draw the objects see-through</source>
         <translation>将对象绘制为半透明</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="351"/>
+        <location filename="../ui/main_window.ui" line="371"/>
         <source>&amp;Play</source>
         <translation>播放(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="352"/>
+        <location filename="../ui/main_window.ui" line="372"/>
         <source>Play or pause the animation</source>
         <translation>播放或暂停动画</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="356"/>
+        <location filename="../ui/main_window.ui" line="376"/>
         <source>Step &amp;Forward</source>
         <translation>前进一帧(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="357"/>
+        <location filename="../ui/main_window.ui" line="377"/>
         <source>One frame later</source>
         <translation>后一帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="361"/>
+        <location filename="../ui/main_window.ui" line="381"/>
         <source>Step &amp;Backward</source>
         <translation>后退一帧(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="362"/>
+        <location filename="../ui/main_window.ui" line="382"/>
         <source>One frame earlier</source>
         <translation>前一帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="366"/>
+        <location filename="../ui/main_window.ui" line="386"/>
         <source>Go to &amp;Start</source>
         <translation>转到开头(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="367"/>
+        <location filename="../ui/main_window.ui" line="387"/>
         <source>Go to the first frame</source>
         <translation>转到第一帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="371"/>
+        <location filename="../ui/main_window.ui" line="391"/>
         <source>Go to &amp;End</source>
         <translation>转到结尾(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="372"/>
+        <location filename="../ui/main_window.ui" line="392"/>
         <source>Go to the last frame</source>
         <translation>转到最后一帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="378"/>
+        <location filename="../ui/main_window.ui" line="398"/>
         <source>&amp;Loop</source>
         <translation>循环(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="379"/>
+        <location filename="../ui/main_window.ui" line="399"/>
         <source>Start again from the beginning at the end</source>
         <translation>到结尾时从头重新开始</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="382"/>
+        <location filename="../ui/main_window.ui" line="402"/>
         <source>&amp;Add Keyframe</source>
         <translation>添加关键帧(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="383"/>
-        <source>Key the selected object&apos;s pose at the current time</source>
-        <translation>在当前时间为所选对象的姿态设置关键帧</translation>
+        <location filename="../ui/main_window.ui" line="403"/>
+        <source>Key every selected object&apos;s pose at the current time</source>
+        <translation>在当前时间为每个所选物体的姿势设置关键帧</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="387"/>
+        <location filename="../ui/main_window.ui" line="408"/>
+        <source>Delete the selected keyframes</source>
+        <translation>删除所选关键帧</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="407"/>
         <source>&amp;Delete Keyframe</source>
         <translation>删除关键帧(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="388"/>
-        <source>Delete the selected keyframe</source>
-        <translation>删除所选关键帧</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.ui" line="394"/>
+        <location filename="../ui/main_window.ui" line="414"/>
         <source>&amp;Constrain Keyframe</source>
         <translation>约束关键帧(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="395"/>
+        <location filename="../ui/main_window.ui" line="415"/>
         <source>Keep the selected keyframe exactly when fitting, or free it</source>
         <translation>拟合时精确保持所选关键帧，或将其释放</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="399"/>
+        <location filename="../ui/main_window.ui" line="419"/>
         <source>&amp;Euler Filter</source>
         <translation>欧拉滤波器(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="400"/>
+        <location filename="../ui/main_window.ui" line="420"/>
         <source>Make the selected object&apos;s keys continuous: each key&apos;s quaternion in the hemisphere of the key before</source>
         <translation>使所选对象的关键帧连续：每个关键帧的四元数位于前一关键帧的半球中</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="403"/>
+        <location filename="../ui/main_window.ui" line="423"/>
+        <source>&amp;Next Flight Solution</source>
+        <translation>下一个飞行解(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="424"/>
+        <source>Fly the current span of a ballistic track by its next free flight, by energy</source>
+        <translation>让弹道轨迹的当前区间按能量顺序采用下一个自由飞行</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="427"/>
+        <source>P&amp;revious Flight Solution</source>
+        <translation>上一个飞行解(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="428"/>
+        <source>Fly the current span of a ballistic track by its previous free flight, by energy</source>
+        <translation>让弹道轨迹的当前区间按能量顺序采用上一个自由飞行</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="431"/>
+        <source>&amp;Copy</source>
+        <translation>复制(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="432"/>
+        <source>Copy the selected keys, or with none selected the selected object&apos;s pose</source>
+        <translation>复制所选关键帧；若未选关键帧，则复制所选物体的姿势</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="436"/>
+        <source>&amp;Paste</source>
+        <translation>粘贴(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="437"/>
+        <source>Paste copied keys or a pose at the current time on the selected objects</source>
+        <translation>在当前时间将复制的关键帧或姿势粘贴到所选物体上</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="441"/>
+        <source>Select &amp;All Keys</source>
+        <translation>选择全部关键帧(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="442"/>
+        <source>Select every key of the selected object</source>
+        <translation>选择所选物体的每个关键帧</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="446"/>
+        <source>Select &amp;No Keys</source>
+        <translation>取消选择关键帧(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="447"/>
+        <source>Deselect every key</source>
+        <translation>取消选择所有关键帧</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.ui" line="451"/>
         <source>&amp;About Gyre</source>
         <translation>关于 Gyre(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.ui" line="404"/>
+        <location filename="../ui/main_window.ui" line="452"/>
         <source>Version, licence and the libraries Gyre is built on</source>
         <translation>版本、许可证以及 Gyre 所基于的库</translation>
     </message>
@@ -936,47 +1016,47 @@
 <context>
     <name>gyre::FileError</name>
     <message>
-        <location filename="../src/model/project_file.cpp" line="380"/>
+        <location filename="../src/model/project_file.cpp" line="410"/>
         <source>these %1 keys bring the file past the %2 keys a project may hold</source>
         <translation>加上这 %1 个关键帧，文件超出项目可容纳的 %2 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="611"/>
+        <location filename="../src/model/project_file.cpp" line="647"/>
         <source>these %1 times bring the file past the %2 times a project may hold</source>
         <translation>加上这 %1 个时间，文件超出项目可容纳的 %2 个时间</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="383"/>
+        <location filename="../src/model/project_file.cpp" line="413"/>
         <source>the file has no time lists</source>
         <translation>文件没有时间列表</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="249"/>
+        <location filename="../src/model/project_file.cpp" line="275"/>
         <source>is larger than 1 GiB, the most a project file may hold</source>
         <translation>大于 1 GiB，超出项目文件的上限</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="387"/>
+        <location filename="../src/model/project_file.cpp" line="417"/>
         <source>time list %1 holds %2 times for %3 keys</source>
         <translation>时间列表 %1 有 %2 个时间，却对应 %3 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="587"/>
+        <location filename="../src/model/project_file.cpp" line="623"/>
         <source>a version %1 file starts with &quot;%2&quot; and its version in binary, not with JSON text</source>
         <translation>版本 %1 的文件以“%2”及二进制的版本号开头，而不是 JSON 文本</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="674"/>
+        <location filename="../src/model/project_file.cpp" line="710"/>
         <source>the file ends inside its first %1 bytes</source>
         <translation>文件在其前 %1 个字节内就结束了</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="679"/>
+        <location filename="../src/model/project_file.cpp" line="715"/>
         <source>a version %1 file is JSON text, not binary</source>
         <translation>版本 %1 的文件是 JSON 文本，不是二进制</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="683"/>
+        <location filename="../src/model/project_file.cpp" line="719"/>
         <source>%1 bytes; a header may hold at most %2</source>
         <translation>%1 字节；文件头最多 %2 字节</translation>
     </message>
@@ -1032,111 +1112,111 @@
         <translation>无法获取自动保存锁</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="261"/>
+        <location filename="../src/model/project_file.cpp" line="287"/>
         <source>unknown value &quot;%1&quot;; expected one of %2</source>
         <translation>未知的值“%1”；应为以下之一：%2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="298"/>
+        <location filename="../src/model/project_file.cpp" line="324"/>
         <source>%1 bytes are not a whole number of %2-byte items</source>
         <translation>%1 字节不是 %2 字节条目的整数倍</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="350"/>
+        <location filename="../src/model/project_file.cpp" line="376"/>
         <source>a skin has 1 to %1 joints</source>
         <translation>蒙皮有 1 到 %1 个关节</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="416"/>
+        <location filename="../src/model/project_file.cpp" line="446"/>
         <location filename="../src/model/value_checks.cpp" line="156"/>
         <source>a stroke needs at least one point</source>
         <translation>笔画至少需要一个点</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="418"/>
+        <location filename="../src/model/project_file.cpp" line="448"/>
         <source>%1 times for %2 points; give none or one per point</source>
         <translation>%1 个时间对应 %2 个点；请不给时间或每个点给一个</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="445"/>
+        <location filename="../src/model/project_file.cpp" line="475"/>
         <source>these %1 control points bring the file past the %2 keys a project may hold</source>
         <translation>加上这 %1 个控制点，文件超出项目可容纳的 %2 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="485"/>
+        <location filename="../src/model/project_file.cpp" line="515"/>
         <location filename="../src/model/value_checks.cpp" line="207"/>
         <source>keys to restore without an applied fit</source>
         <translation>有待恢复的关键帧，却没有已应用的拟合</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="506"/>
+        <location filename="../src/model/project_file.cpp" line="538"/>
         <source>the file has no meshes</source>
         <translation>文件中没有网格</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="535"/>
+        <location filename="../src/model/project_file.cpp" line="571"/>
         <source>%1 is also the id of objects[%2]</source>
         <translation>%1 也是 objects[%2] 的 ID</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="538"/>
-        <location filename="../src/model/project_file.cpp" line="624"/>
+        <location filename="../src/model/project_file.cpp" line="574"/>
+        <location filename="../src/model/project_file.cpp" line="660"/>
         <source>no object has id %1</source>
         <translation>没有 ID 为 %1 的对象</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="547"/>
+        <location filename="../src/model/project_file.cpp" line="583"/>
         <source>object %1 is its own ancestor</source>
         <translation>对象 %1 是它自己的祖先</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="560"/>
+        <location filename="../src/model/project_file.cpp" line="596"/>
         <source>object %1 comes after it in the file; parents come before their children</source>
         <translation>对象 %1 在文件中位于它之后；父对象须在子对象之前</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="581"/>
+        <location filename="../src/model/project_file.cpp" line="617"/>
         <source>expected &quot;%1&quot;, found &quot;%2&quot;; this is not a Gyre project</source>
         <translation>应为“%1”，实际为“%2”；这不是 Gyre 项目</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="759"/>
+        <location filename="../src/model/project_file.cpp" line="795"/>
         <source>not saved, because its header (the objects&apos; names and settings, the sketches&apos; strokes) would hold %1 bytes, more than the %2 a project may hold</source>
         <translation>未保存，因为其文件头（对象的名称和设置、草图的笔画）将有 %1 字节，超过项目可容纳的 %2 字节</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="571"/>
+        <location filename="../src/model/project_file.cpp" line="607"/>
         <source>the file has version %1, newer than this build of Gyre reads (%2 and older); open it with a newer Gyre</source>
         <translation>文件版本为 %1，比此 Gyre 版本可读取的版本（%2 及更早）更新；请用更新的 Gyre 打开</translation>
     </message>
     <message>
         <location filename="../src/model/output_target.cpp" line="42"/>
-        <location filename="../src/model/project_file.cpp" line="734"/>
+        <location filename="../src/model/project_file.cpp" line="770"/>
         <source>is a directory, not a file</source>
         <translation>是目录，不是文件</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="737"/>
+        <location filename="../src/model/project_file.cpp" line="773"/>
         <source>cannot open: %1</source>
         <translation>无法打开：%1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="641"/>
+        <location filename="../src/model/project_file.cpp" line="677"/>
         <source>cannot read: %1</source>
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="654"/>
+        <location filename="../src/model/project_file.cpp" line="690"/>
         <source>is empty; a project file holds a JSON object</source>
         <translation>为空；项目文件应包含一个 JSON 对象</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="647"/>
+        <location filename="../src/model/project_file.cpp" line="683"/>
         <source>not valid JSON: %1 at byte %2</source>
         <translation>不是有效的 JSON：%1（位于第 %2 字节）</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="752"/>
+        <location filename="../src/model/project_file.cpp" line="788"/>
         <source>not saved, because the file would not read back: %1</source>
         <translation>未保存，因为该文件无法被重新读取：%1</translation>
     </message>
@@ -1866,6 +1946,86 @@
         <source>mesh &apos;%1&apos;: its bone &apos;%2&apos; is not a node of the scene; it shows in its bind pose</source>
         <translation>网格“%1”：其骨骼“%2”不是场景中的节点；它以绑定姿势显示</translation>
     </message>
+    <message>
+        <location filename="../src/model/key_clipboard.cpp" line="40"/>
+        <source>the text is not keys copied from Gyre</source>
+        <translation>该文本不是从 Gyre 复制的关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/key_clipboard.cpp" line="42"/>
+        <source>%1 bytes of text are more than the %2 that keys may take</source>
+        <translation>%1 字节的文本超过了关键帧允许的 %2 字节</translation>
+    </message>
+    <message>
+        <location filename="../src/model/key_clipboard.cpp" line="69"/>
+        <source>no keys were copied</source>
+        <translation>没有复制任何关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/key_clipboard.cpp" line="71"/>
+        <source>%1 keys are more than the %2 a project may hold</source>
+        <translation>%1 个关键帧超过了项目可容纳的 %2 个</translation>
+    </message>
+    <message>
+        <location filename="../src/model/key_clipboard.cpp" line="73"/>
+        <source>a pose is one object&apos;s one key</source>
+        <translation>姿势是一个物体的一个关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="52"/>
+        <source>the inertia has a value that is not a finite number</source>
+        <translation>惯性张量含有非有限数值</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="54"/>
+        <source>the inertia tensor is not symmetric</source>
+        <translation>惯性张量不对称</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="56"/>
+        <source>the inertia tensor is not positive definite: every principal moment must be above 0</source>
+        <translation>惯性张量不是正定的：每个主惯性矩都必须大于 0</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="58"/>
+        <source>no body has this inertia: its two smaller principal moments add up to less than the largest</source>
+        <translation>没有物体具有这样的惯性：两个较小的主惯性矩之和小于最大的</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="80"/>
+        <source>as typed</source>
+        <translation>按输入值</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="82"/>
+        <source>from the mesh, solid</source>
+        <translation>来自网格，实心</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="84"/>
+        <source>from the mesh, as a thin shell: the mesh is not closed</source>
+        <translation>来自网格，作为薄壳：网格不封闭</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="86"/>
+        <source>from the mesh&apos;s bounding box: the mesh has no area</source>
+        <translation>来自网格的包围盒：网格没有面积</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="94"/>
+        <source>the mass must be a number above 0</source>
+        <translation>质量必须是大于 0 的数</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="96"/>
+        <source>the centre of mass is not a finite point</source>
+        <translation>质心不是有限点</translation>
+    </message>
+    <message>
+        <location filename="../src/model/object_mass.cpp" line="117"/>
+        <source>the inertia needs six numbers: Ixx, Iyy, Izz, Ixy, Ixz, Iyz</source>
+        <translation>惯性张量需要六个数：Ixx、Iyy、Izz、Ixy、Ixz、Iyz</translation>
+    </message>
 </context>
 <context>
     <name>gyre::app::AddObjectActions</name>
@@ -1906,6 +2066,21 @@
         <location filename="../src/app/graph_editor/channel_list_model.cpp" line="76"/>
         <source>position %1</source>
         <translation>位置 %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="80"/>
+        <source>L %1 (kg·m²/s)</source>
+        <translation>L %1 (kg·m²/s)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="82"/>
+        <source>|L| (kg·m²/s)</source>
+        <translation>|L| (kg·m²/s)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/channel_list_model.cpp" line="84"/>
+        <source>rotational energy (J)</source>
+        <translation>转动能 (J)</translation>
     </message>
 </context>
 <context>
@@ -2008,62 +2183,82 @@
 <context>
     <name>gyre::app::GraphEditorPanel</name>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="84"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="103"/>
         <source>The channels to plot: check one to show its curve</source>
         <translation>要绘制的通道：勾选一个以显示其曲线</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="119"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="145"/>
         <source>The order of the Euler angles, as the inspector shows them</source>
         <translation>欧拉角的顺序，与检查器中显示的相同</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="120"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="146"/>
         <source>Euler &amp;order:</source>
         <translation>欧拉顺序(&amp;O)：</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="124"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="150"/>
         <source>world frame</source>
         <translation>世界坐标系</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="125"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="151"/>
         <source>object&apos;s frame</source>
         <translation>对象坐标系</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="126"/>
-        <source>The frame the angular velocity&apos;s components are given in</source>
-        <translation>角速度分量所在的坐标系</translation>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="152"/>
+        <source>The frame the angular velocity&apos;s and angular momentum&apos;s components are given in</source>
+        <translation>角速度和角动量分量所用的坐标系</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="127"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="153"/>
         <source>ω &amp;in:</source>
         <translation>ω 坐标系(&amp;I)：</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="132"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="158"/>
         <source>Frame &amp;All</source>
         <translation>显示全部(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="133"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="159"/>
         <source>Show the whole time range and every shown curve (Home)</source>
         <translation>显示整个时间范围和所有显示的曲线 (Home)</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="134"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="160"/>
         <source>Frame &amp;Selected</source>
         <translation>显示所选(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="136"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="162"/>
         <source>Show the selected key between its neighbours</source>
         <translation>在相邻关键帧之间显示所选关键帧</translation>
     </message>
     <message>
-        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="182"/>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="170"/>
+        <source>&amp;Move Keys</source>
+        <translation>移动关键帧(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="172"/>
+        <source>Move the selected keys with the pointer; click to keep, Esc to cancel</source>
+        <translation>用指针移动所选关键帧；单击保留，Esc 取消</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="173"/>
+        <source>&amp;Scale Keys</source>
+        <translation>缩放关键帧(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="175"/>
+        <source>Scale the selected keys&apos; times about the current frame; click to keep, Esc to cancel</source>
+        <translation>以当前帧为中心缩放所选关键帧的时间；单击保留，Esc 取消</translation>
+    </message>
+    <message>
+        <location filename="../src/app/graph_editor/graph_editor_panel.cpp" line="225"/>
         <source>time (s)</source>
         <translation>时间 (s)</translation>
     </message>
@@ -2184,82 +2379,82 @@
 <context>
     <name>gyre::app::InspectorWidget</name>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="77"/>
+        <location filename="../src/app/inspector_widget.cpp" line="78"/>
         <source>time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="79"/>
+        <location filename="../src/app/inspector_widget.cpp" line="80"/>
         <source>position x</source>
         <translation>位置 x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="79"/>
+        <location filename="../src/app/inspector_widget.cpp" line="80"/>
         <source>position y</source>
         <translation>位置 y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="79"/>
+        <location filename="../src/app/inspector_widget.cpp" line="80"/>
         <source>position z</source>
         <translation>位置 z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="82"/>
+        <location filename="../src/app/inspector_widget.cpp" line="83"/>
         <source>quaternion w</source>
         <translation>四元数 w</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="82"/>
+        <location filename="../src/app/inspector_widget.cpp" line="83"/>
         <source>quaternion x</source>
         <translation>四元数 x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="82"/>
+        <location filename="../src/app/inspector_widget.cpp" line="83"/>
         <source>quaternion y</source>
         <translation>四元数 y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="82"/>
+        <location filename="../src/app/inspector_widget.cpp" line="83"/>
         <source>quaternion z</source>
         <translation>四元数 z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="89"/>
+        <location filename="../src/app/inspector_widget.cpp" line="90"/>
         <source>matrix row %1, column %2</source>
         <translation>矩阵第 %1 行第 %2 列</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <location filename="../src/app/inspector_widget.cpp" line="93"/>
         <source>axis x</source>
         <translation>轴 x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <location filename="../src/app/inspector_widget.cpp" line="93"/>
         <source>axis y</source>
         <translation>轴 y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <location filename="../src/app/inspector_widget.cpp" line="93"/>
         <source>axis z</source>
         <translation>轴 z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="92"/>
+        <location filename="../src/app/inspector_widget.cpp" line="93"/>
         <source>angle</source>
         <translation>角度</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="94"/>
+        <location filename="../src/app/inspector_widget.cpp" line="95"/>
         <source>first angle</source>
         <translation>第一个角</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="94"/>
+        <location filename="../src/app/inspector_widget.cpp" line="95"/>
         <source>second angle</source>
         <translation>第二个角</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="94"/>
+        <location filename="../src/app/inspector_widget.cpp" line="95"/>
         <source>third angle</source>
         <translation>第三个角</translation>
     </message>
@@ -2274,80 +2469,109 @@
         <translation>内旋（随动轴）</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="147"/>
+        <location filename="../src/app/inspector_widget.cpp" line="150"/>
         <source>about %1 (°)</source>
         <translation>绕 %1（°）</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="161"/>
+        <location filename="../src/app/inspector_widget.cpp" line="164"/>
         <source>%1, keyframe %2 of %3</source>
         <translation>%1，第 %2 个关键帧，共 %3 个</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="195"/>
+        <location filename="../src/app/inspector_widget.cpp" line="198"/>
         <source>Near gimbal lock (%1° from it): the first and third angles turn about almost the same axis, so only their sum (or difference) is determined. Small changes of the rotation can swing them widely.</source>
         <translation>接近万向节锁（相差 %1°）：第一个角和第三个角几乎绕同一根轴旋转，因此只有它们的和（或差）是确定的。旋转的微小变化可能使它们大幅摆动。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="230"/>
+        <location filename="../src/app/inspector_widget.cpp" line="240"/>
         <source>The keyframe was not moved: %1.</source>
         <translation>关键帧未移动：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="241"/>
+        <location filename="../src/app/inspector_widget.cpp" line="251"/>
         <source>The constraint was not changed: %1.</source>
         <translation>约束未更改：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="249"/>
+        <location filename="../src/app/inspector_widget.cpp" line="259"/>
         <source>The position was not changed: %1.</source>
         <translation>位置未更改：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="261"/>
-        <location filename="../src/app/inspector_widget.cpp" line="284"/>
-        <location filename="../src/app/inspector_widget.cpp" line="310"/>
-        <location filename="../src/app/inspector_widget.cpp" line="333"/>
+        <location filename="../src/app/inspector_widget.cpp" line="271"/>
+        <location filename="../src/app/inspector_widget.cpp" line="294"/>
+        <location filename="../src/app/inspector_widget.cpp" line="320"/>
+        <location filename="../src/app/inspector_widget.cpp" line="343"/>
         <source>The rotation was not changed: %1.</source>
         <translation>旋转未更改：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="266"/>
+        <location filename="../src/app/inspector_widget.cpp" line="276"/>
         <source>The rotation was not changed: the zero quaternion is no rotation.</source>
         <translation>旋转未更改：零四元数不表示旋转。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="274"/>
+        <location filename="../src/app/inspector_widget.cpp" line="284"/>
         <source>The quaternion had length %1; it was scaled to length 1.</source>
         <translation>四元数的长度为 %1；已缩放为长度 1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="291"/>
+        <location filename="../src/app/inspector_widget.cpp" line="301"/>
         <source>The rotation was not changed: the matrix has determinant %1, so it flattens or mirrors space and is not a rotation.</source>
         <translation>旋转未更改：矩阵的行列式为 %1，它会压扁或镜像空间，不是旋转。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="299"/>
+        <location filename="../src/app/inspector_widget.cpp" line="309"/>
         <source>The matrix was not a rotation (its rows were up to %1 from orthonormal); the nearest rotation was used.</source>
         <translation>该矩阵不是旋转（其各行与正交归一最多相差 %1）；已改用最接近的旋转。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="316"/>
+        <location filename="../src/app/inspector_widget.cpp" line="326"/>
         <source>The rotation was not changed: a zero axis names no direction to turn about.</source>
         <translation>旋转未更改：零轴没有给出旋转方向。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="321"/>
+        <location filename="../src/app/inspector_widget.cpp" line="331"/>
         <source>The axis had length %1; it was scaled to length 1.</source>
         <translation>轴的长度为 %1；已缩放为长度 1。</translation>
     </message>
 </context>
 <context>
+    <name>gyre::app::KeyClipboardActions</name>
+    <message>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="86"/>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="127"/>
+        <source>Cannot paste: %1</source>
+        <translation>无法粘贴：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="107"/>
+        <source>Cannot paste: no selected object has the name of a copied one</source>
+        <translation>无法粘贴：没有所选物体与复制的物体同名</translation>
+    </message>
+    <message>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="108"/>
+        <source>Cannot paste: no object is selected</source>
+        <translation>无法粘贴：未选择物体</translation>
+    </message>
+</context>
+<context>
     <name>gyre::app::KeyframeActions</name>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="58"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="70"/>
         <source>Cannot add a keyframe: %1</source>
         <translation>无法添加关键帧：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/keyframe_actions.cpp" line="123"/>
+        <source>This span has a single free flight</source>
+        <translation>此区间只有一个自由飞行</translation>
+    </message>
+    <message>
+        <location filename="../src/app/keyframe_actions.cpp" line="125"/>
+        <source>Cannot step the flight: %1</source>
+        <translation>无法切换飞行：%1</translation>
     </message>
 </context>
 <context>
@@ -2451,179 +2675,273 @@
 <context>
     <name>gyre::app::MainWindow</name>
     <message>
-        <location filename="../src/app/main_window.cpp" line="70"/>
+        <location filename="../src/app/main_window.cpp" line="71"/>
         <source>Gyre projects (*.gyre)</source>
         <translation>Gyre 项目 (*.gyre)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="170"/>
+        <location filename="../src/app/main_window.cpp" line="180"/>
         <source>&amp;Undo</source>
         <translation>撤销(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="174"/>
+        <location filename="../src/app/main_window.cpp" line="184"/>
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="198"/>
+        <location filename="../src/app/main_window.cpp" line="208"/>
         <source>&lt;opened&gt;</source>
         <translation>&lt;已打开&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="273"/>
+        <location filename="../src/app/main_window.cpp" line="285"/>
         <source>Drawing the direction on the sphere needs OpenGL 3.3, which this display does not offer. The speed plot and the fit work without it.</source>
         <translation>在球面上绘制方向需要 OpenGL 3.3，而此显示环境不支持。速度图和拟合无需它也能工作。</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="292"/>
+        <location filename="../src/app/main_window.cpp" line="304"/>
         <source>The 3D viewport needs OpenGL 3.3, which this display does not offer. Editing, the panels and the timeline work without it.</source>
         <translation>3D 视口需要 OpenGL 3.3，而此显示环境不支持。编辑、面板和时间轴无需它也能工作。</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="342"/>
+        <location filename="../src/app/main_window.cpp" line="357"/>
         <source>Viewport frame rate while something moves, and the time to subdivide the trail: on the worker, and from the request to its arrival</source>
         <translation>有物体运动时视口的帧率，以及细分频闪轨迹所用的时间：在后台线程中的用时，以及从请求到送达的用时</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="352"/>
+        <location filename="../src/app/main_window.cpp" line="367"/>
         <source>%1 fps · subdivision %2 ms (%3 ms to arrive)</source>
         <translation>%1 fps · 细分 %2 毫秒（%3 毫秒后到达）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="396"/>
+        <location filename="../src/app/main_window.cpp" line="411"/>
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="398"/>
+        <location filename="../src/app/main_window.cpp" line="413"/>
         <source>%1[*] — Gyre</source>
         <translation>%1[*] — Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="413"/>
+        <location filename="../src/app/main_window.cpp" line="428"/>
         <source>Open Project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="431"/>
+        <location filename="../src/app/main_window.cpp" line="446"/>
         <source>Cannot open the project</source>
         <translation>无法打开项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="454"/>
+        <location filename="../src/app/main_window.cpp" line="469"/>
         <source>L-shaped cycle (ScrewBender)</source>
         <translation>L 形循环（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="455"/>
+        <location filename="../src/app/main_window.cpp" line="470"/>
         <source>Spinning top (sketched angular velocity)</source>
         <translation>陀螺（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="456"/>
+        <location filename="../src/app/main_window.cpp" line="471"/>
         <source>Letter M (sketched angular velocity)</source>
         <translation>字母 M（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="457"/>
+        <location filename="../src/app/main_window.cpp" line="472"/>
         <source>Hat (sketched angular velocity)</source>
         <translation>帽子（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="458"/>
+        <location filename="../src/app/main_window.cpp" line="473"/>
         <source>Falling leaf (sketched angular velocity)</source>
         <translation>飘落的树叶（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="459"/>
+        <location filename="../src/app/main_window.cpp" line="474"/>
         <source>Pen (sketched angular speed)</source>
         <translation>笔（草图绘制的角速度大小）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="460"/>
+        <location filename="../src/app/main_window.cpp" line="475"/>
         <source>Pendulum (ScrewBender)</source>
         <translation>摆（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="461"/>
+        <location filename="../src/app/main_window.cpp" line="476"/>
         <source>Spinning block (ScrewBender)</source>
         <translation>旋转的方块（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="462"/>
+        <location filename="../src/app/main_window.cpp" line="477"/>
         <source>Critter&apos;s non-planar cycle (ScrewBender)</source>
         <translation>小动物的非平面循环（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="481"/>
+        <location filename="../src/app/main_window.cpp" line="496"/>
         <source>Save Project As</source>
         <translation>项目另存为</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="494"/>
+        <location filename="../src/app/main_window.cpp" line="509"/>
         <source>Cannot save the project</source>
         <translation>无法保存项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="498"/>
+        <location filename="../src/app/main_window.cpp" line="513"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="507"/>
+        <location filename="../src/app/main_window.cpp" line="522"/>
         <source>Unsaved changes</source>
         <translation>未保存的更改</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="507"/>
+        <location filename="../src/app/main_window.cpp" line="522"/>
         <source>The project has unsaved changes. Save them first?</source>
         <translation>项目有未保存的更改。要先保存吗？</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="546"/>
+        <location filename="../src/app/main_window.cpp" line="561"/>
         <source>About Gyre</source>
         <translation>关于 Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="547"/>
+        <location filename="../src/app/main_window.cpp" line="562"/>
         <source>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Edit the rotations of animated rigid objects: every way of writing an orientation, interpolation that behaves, sketched angular velocity, and ScrewBender motions.&lt;/p&gt;&lt;p&gt;Built on Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 and QCustomPlot %8.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;编辑动画刚体的旋转：各种朝向表示方式、表现良好的插值、草图绘制的角速度，以及 ScrewBender 运动。&lt;/p&gt;&lt;p&gt;基于 Qt %2、Eigen %3.%4.%5、Ceres Solver %6、Assimp %7 和 QCustomPlot %8 构建。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="567"/>
+        <location filename="../src/app/main_window.cpp" line="582"/>
         <source>Autosave failed: %1</source>
         <translation>自动保存失败：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="576"/>
+        <location filename="../src/app/main_window.cpp" line="591"/>
         <source>an untitled project</source>
         <translation>一个未命名项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="579"/>
+        <location filename="../src/app/main_window.cpp" line="594"/>
         <source>Recover unsaved work</source>
         <translation>恢复未保存的工作</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="580"/>
+        <location filename="../src/app/main_window.cpp" line="595"/>
         <source>Gyre ended without saving changes to %1 (last copy %2). Recover them?</source>
         <translation>Gyre 结束时未保存对 %1 的更改（最后一次副本 %2）。要恢复吗？</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="595"/>
+        <location filename="../src/app/main_window.cpp" line="610"/>
         <source>Cannot recover</source>
         <translation>无法恢复</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="570"/>
+        <location filename="../src/app/main_window.cpp" line="585"/>
         <source>Autosave is off: %1</source>
         <translation>自动保存已关闭：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="202"/>
+        <location filename="../src/app/main_window.cpp" line="212"/>
         <source>Outliner</source>
         <translation>大纲</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::MassPropertiesGroup</name>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="43"/>
+        <source>Body</source>
+        <translation>刚体</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="47"/>
+        <source>Type values</source>
+        <translation>输入数值</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <source>Ixx</source>
+        <translation>Ixx</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <source>Iyy</source>
+        <translation>Iyy</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <source>Izz</source>
+        <translation>Izz</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <source>Ixy</source>
+        <translation>Ixy</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <source>Ixz</source>
+        <translation>Ixz</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <source>Iyz</source>
+        <translation>Iyz</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="67"/>
+        <source>mass</source>
+        <translation>质量</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
+        <source>centre x</source>
+        <translation>质心 x</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
+        <source>centre y</source>
+        <translation>质心 y</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
+        <source>centre z</source>
+        <translation>质心 z</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="74"/>
+        <source>Mass (kg)</source>
+        <translation>质量 (kg)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="75"/>
+        <source>Centre (m)</source>
+        <translation>质心 (m)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="76"/>
+        <source>Inertia (kg·m²)</source>
+        <translation>惯性 (kg·m²)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="77"/>
+        <source>Principal</source>
+        <translation>主惯性矩</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="116"/>
+        <source>%1, %2, %3 kg·m²</source>
+        <translation>%1、%2、%3 kg·m²</translation>
+    </message>
+    <message>
+        <location filename="../src/app/mass_properties_group.cpp" line="146"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="158"/>
+        <source>Not changed: %1</source>
+        <translation>未更改：%1</translation>
     </message>
 </context>
 <context>
@@ -2642,7 +2960,7 @@
         <translation>按名称筛选</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/app/outliner/outliner_panel.cpp" line="131"/>
+        <location filename="../src/app/outliner/outliner_panel.cpp" line="141"/>
         <source>Delete %n Objects</source>
         <translation>
             <numerusform>删除 %n 个对象</numerusform>
@@ -2847,47 +3165,52 @@
         <translation>螺旋运动（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="45"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="37"/>
+        <source>Ballistic (free flight between keys)</source>
+        <translation>弹道（关键帧之间自由飞行）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="47"/>
         <source>Four-point</source>
         <translation>四点</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="47"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="49"/>
         <source>Four-point B</source>
         <translation>四点 B</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="49"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="51"/>
         <source>Cubic B-spline</source>
         <translation>三次 B 样条</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="51"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="53"/>
         <source>Jarek</source>
         <translation>Jarek</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="135"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="137"/>
         <source>%1 from %2 keyframes</source>
         <translation>%1，来自 %2 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="136"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="138"/>
         <source>too many to hold, from %1 keyframes</source>
         <translation>过多无法容纳，来自 %1 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="148"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="150"/>
         <source>The interpolation was not changed: %1.</source>
         <translation>插值未更改：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="161"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="163"/>
         <source>Interpolate by Screws</source>
         <translation>以螺旋运动插值</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="185"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="187"/>
         <source>The subdivision was not changed: %1.</source>
         <translation>细分未更改：%1。</translation>
     </message>
@@ -3100,13 +3423,13 @@
 <context>
     <name>gyre::app::TimelineWidget</name>
     <message>
-        <location filename="../src/app/timeline_widget.cpp" line="89"/>
-        <location filename="../src/app/timeline_widget.cpp" line="235"/>
+        <location filename="../src/app/timeline_widget.cpp" line="93"/>
+        <location filename="../src/app/timeline_widget.cpp" line="275"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../src/app/timeline_widget.cpp" line="94"/>
+        <location filename="../src/app/timeline_widget.cpp" line="98"/>
         <source>%1 f</source>
         <translation>%1 帧</translation>
     </message>
@@ -3255,6 +3578,46 @@
         <location filename="../src/model/commands/apply_euler_filter_command.cpp" line="22"/>
         <source>Apply Euler Filter</source>
         <translation>应用欧拉滤波器</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/replace_keyframes_command.cpp" line="21"/>
+        <source>Delete Keyframes</source>
+        <translation>删除关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/replace_keyframes_command.cpp" line="23"/>
+        <source>Insert Keyframes</source>
+        <translation>插入关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/replace_keyframes_command.cpp" line="25"/>
+        <source>Paste Keyframes</source>
+        <translation>粘贴关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/replace_keyframes_command.cpp" line="27"/>
+        <source>Move Keyframes</source>
+        <translation>移动关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/replace_keyframes_command.cpp" line="31"/>
+        <source>Scale Keyframes</source>
+        <translation>缩放关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/step_ballistic_solution_command.cpp" line="32"/>
+        <source>Step Flight Solution</source>
+        <translation>切换飞行解</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_mass_override_command.cpp" line="14"/>
+        <source>Set Mass Properties</source>
+        <translation>设置质量属性</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_mass_override_command.cpp" line="15"/>
+        <source>Mass From Mesh</source>
+        <translation>由网格计算质量</translation>
     </message>
 </context>
 <context>
