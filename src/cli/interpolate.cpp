@@ -125,7 +125,6 @@ void runInterpolate(const QStringList& arguments)
         std::vector<std::string_view> names;
         for (const auto& entry : kInterpolationMethodNames)
             names.push_back(entry.second);
-        names.push_back(kBallistic);
         throw commandLine.error("--method: unknown value '" + methodName + "'; expected " + alternatives(names));
     }
     if (ballistic && !commandLine.isSet(QStringLiteral("inertia")))

@@ -247,6 +247,12 @@ public:
             if (view->isVisible() && !view->visibleRegion().isEmpty())
                 onScreen.push_back(view);
         waitForCurves(onScreen);
+        redraw();
+    }
+
+    // Waits until the viewport has drawn the window as it is.
+    void redraw()
+    {
         auto* viewport = child<app::Viewport>();
         const std::uint64_t framesBefore = viewport->framesDrawn();
         viewport->update();
@@ -429,12 +435,14 @@ private slots:
     {
         GuideWindow guide;
         guide.openSample("spinning-top", 7.0);
+        // The other views first: once the Graph Editor has sampled, they may have drawn the top already.
+        guide.settle();
         auto* editor = guide.child<app::GraphEditorPanel>();
         QSignalSpy updated(editor, &app::GraphEditorPanel::curvesUpdated);
         guide.child<QDockWidget>("graphEditorDock")->show();
         guide.raiseDock("graphEditorDock");
         QVERIFY(updated.wait(10'000));
-        guide.settle();
+        guide.redraw();
         bool found = false;
         const QCPRange spin = editor->graph(model::Channel::EulerThird)->getValueRange(found);
         QVERIFY(found && spin.size() > 3 * 360.0);
