@@ -92,14 +92,6 @@ QJsonObject subdivisionJson(const SubdivisionSettings& settings)
             {"decoupled", settings.decoupled}};
 }
 
-QJsonArray flightSolutionsJson(const std::vector<int>& solutions)
-{
-    QJsonArray array;
-    for (const int solution : solutions)
-        array.append(solution);
-    return array;
-}
-
 QJsonObject strokeJson(const DirectionStroke& stroke)
 {
     return {{"points", arrayJson(stroke.points, [](const Eigen::Vector3d& point) { return json(point); })},
@@ -209,7 +201,7 @@ ProjectLayout::ProjectLayout(const Scene& scene)
             {"mesh", object.mesh ? QJsonValue(meshIndex.at(object.mesh.get())) : QJsonValue()},
             {"interpolation", QString::fromLatin1(interpolationMethodName(object.track.interpolation))},
             {"subdivision", subdivisionJson(object.track.subdivision)},
-            {"flightSolutions", flightSolutionsJson(object.track.flightSolutions)},
+            {"flightSolutions", arrayJson(object.track.flightSolutions, [](int choice) { return QJsonValue(choice); })},
             {"keyframes", keyframes},
             {"sketch", sketchJson(object.track.sketch, fittedCurve, keysBeforeFit)}};
         if (object.massOverride)
