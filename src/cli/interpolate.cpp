@@ -32,10 +32,11 @@ QList<QCommandLineOption> interpolateOptions()
 }
 
 // The keys as a track; screw is the plain polyscrew through them (no subdivision, open).
-model::MotionTrack trackOf(const io::PoseTable& keys, InterpolationMethod method)
+model::MotionTrack trackOf(const io::PoseTable& keys, InterpolationMethod method, const EulerConvention& convention)
 {
     model::MotionTrack track;
     track.interpolation = method;
+    track.rotationMode.convention = convention;
     track.subdivision.levels = 0;
     track.subdivision.cyclic = false;
     track.keys.reserve(keys.rows.size());
@@ -138,12 +139,12 @@ void runInterpolate(const QStringList& arguments)
     const io::PoseTable keys = io::readPoseCsv(commandLine.inputPath(), convention, io::TimeColumn::Required);
     if (keys.rows.size() < 2)
         throw InputError(commandLine.inputPath(), keys.rows.back().line, "interpolate needs at least two keys");
-    const model::MotionTrack track = trackOf(keys, method);
+    const model::MotionTrack track = trackOf(keys, method, convention);
     const model::BakeRange range = checkedOutputRange({track.keys.front().time, track.keys.back().time, fps},
                                                       track.keys.size(), commandLine);
     io::PoseTable frames{io::RotationColumns::Quaternion, true, true, {}};
     for (const model::TimedPose& sample :
-         ballistic ? ballisticSamples(keys, range, commandLine) : model::bakeTrack(track, range, convention))
+         ballistic ? ballisticSamples(keys, range, commandLine) : model::bakeTrack(track, range))
         frames.rows.push_back({sample.time, sample.pose, 0});
     io::writePoseCsv(commandLine.outputPath(), frames);
 }

@@ -16,7 +16,7 @@ SharedTrackMotion::SharedTrackMotion(MotionTrack track, std::shared_ptr<std::ato
 
 const TrackMotion& SharedTrackMotion::motion() const
 {
-    return build(motion_, [this] { return TrackMotion(track_, {}, body_); });
+    return build(motion_, [this] { return TrackMotion(track_, body_); });
 }
 
 const TrackMotion& SharedTrackMotion::motionWithoutFit() const
