@@ -37,11 +37,16 @@ model::MotionTrack trackOf(const io::PoseTable& keys, InterpolationMethod method
     model::MotionTrack track;
     track.interpolation = method;
     track.rotationMode.convention = convention;
+    // Angles read from Euler columns are interpolated as read (0 then 360 is a full turn); others are unwrapped
+    // from the orientations.
+    const bool angles = interpolatesAngles(method) && keys.rotationColumns == io::RotationColumns::Euler;
+    if (angles)
+        track.rotationMode.kind = model::RotationMode::Kind::Euler;
     track.subdivision.levels = 0;
     track.subdivision.cyclic = false;
     track.keys.reserve(keys.rows.size());
     for (const io::PoseRow& row : keys.rows)
-        track.keys.push_back({row.time, row.pose, true});
+        track.keys.push_back({row.time, row.pose, true, angles ? row.eulerAngles : std::nullopt});
     return track;
 }
 
