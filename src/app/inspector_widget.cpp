@@ -162,8 +162,11 @@ void InspectorWidget::showRotationMode(const model::SceneObject* object)
 {
     ui_->rotationModeGroup->setEnabled(object != nullptr);
     const bool euler = object != nullptr && object->track.rotationMode.isEuler();
-    if (object != nullptr) {
+    // Set when another object or mode is shown, not at every refresh: the graph editor's linked choosers may
+    // show another convention meanwhile, which the fields follow (showOrientation).
+    if (object != nullptr && (object->id != modeShown_.first || object->track.rotationMode != modeShown_.second)) {
         const model::RotationMode& mode = object->track.rotationMode;
+        modeShown_ = {object->id, mode};
         ui_->rotationModeCombo->setCurrentIndex(ui_->rotationModeCombo->findData(static_cast<int>(mode.kind)));
         showConvention(*ui_->eulerOrderCombo, *ui_->eulerFrameCombo, mode.convention);
     }

@@ -22,6 +22,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace Ui {
@@ -101,6 +102,8 @@ private:
     NumberFields* axisAngle_ = nullptr;
     NumberFields* eulerAngles_ = nullptr;
     std::optional<TypedRotation> typedRotation_;
+    // The object and rotation mode the Rotation Mode choosers were last set to.
+    std::pair<model::ObjectId, model::RotationMode> modeShown_{model::kNoObject, {}};
 };
 
 } // namespace gyre::app
