@@ -409,7 +409,7 @@ void TstFbxExport::aTwoTurnEulerSpinIsARampToTwoTurns()
     QCOMPARE(z.size(), std::size_t{49});
     for (std::size_t k = 0; k < z.size(); ++k) {
         const double time = static_cast<double>(times[k]) / static_cast<double>(kFbxTicksPerSecond);
-        GYRE_CHECK(std::abs(z[k] - 360.0 * time) < 1e-3, "z at " + str(time));
+        GYRE_CHECK(std::abs(double{z[k]} - 360.0 * time) < 1e-3, "z at " + str(time));
     }
     QVERIFY(std::abs(z[24] - 360.0f) < 1e-3f);
     QVERIFY(std::abs(z.back() - 720.0f) < 1e-3f);
