@@ -24,7 +24,7 @@ namespace gyre::model {
 
 // The most keys a project may hold, its tracks' keyframes and the keys they keep from before a fit
 // together: 2^23, 8,388,608, a ten-minute take at 120 Hz of 116 joints. A key costs 104 bytes in
-// memory, so the keys of a project stay under 873 MB, and up to 89 bytes on the way to gyre-scene-worker,
+// memory, so the keys of a project stay under 873 MB, and up to 93 bytes on the way to gyre-scene-worker,
 // so any project can be exported within the worker's message limit (io/scene_wire.h).
 inline constexpr std::size_t kMaxProjectKeys = std::size_t{1} << 23;
 
