@@ -39,6 +39,12 @@ EulerConvention chosenConvention(const QComboBox& order, const QComboBox& frame)
     return *EulerConvention::parse(order.currentData().toString().toStdString(), angleFrame);
 }
 
+void showConvention(QComboBox& order, QComboBox& frame, const EulerConvention& convention)
+{
+    order.setCurrentIndex(order.findData(QString::fromStdString(convention.order())));
+    frame.setCurrentIndex(frame.findData(static_cast<int>(convention.frame)));
+}
+
 void linkConventionChoosers(QComboBox& order, QComboBox& frame, QComboBox& otherOrder, QComboBox& otherFrame)
 {
     otherOrder.setCurrentIndex(order.currentIndex());

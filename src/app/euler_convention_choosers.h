@@ -14,6 +14,8 @@ namespace gyre::app {
 void fillConventionChoosers(QComboBox& order, QComboBox& frame);
 // The convention the filled choosers show.
 EulerConvention chosenConvention(const QComboBox& order, const QComboBox& frame);
+// Sets the choosers to `convention` (their currentIndexChanged fires, activated does not).
+void showConvention(QComboBox& order, QComboBox& frame, const EulerConvention& convention);
 // Keeps two filled pairs of choosers showing the same convention, whichever one the artist changes.
 void linkConventionChoosers(QComboBox& order, QComboBox& frame, QComboBox& otherOrder, QComboBox& otherFrame);
 

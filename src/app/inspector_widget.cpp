@@ -6,6 +6,7 @@
 #include "model/commands/set_keyframe_time_command.h"
 #include "model/commands/set_keyframe_orientation_command.h"
 #include "model/commands/set_keyframe_position_command.h"
+#include "model/commands/set_rotation_mode_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
 #include "model/value_checks.h"
 #include "ui_inspector_widget.h"
@@ -128,12 +129,19 @@ InspectorWidget::~InspectorWidget() = default;
 void InspectorWidget::setUpConventionChoosers()
 {
     fillConventionChoosers(*ui_->eulerOrderCombo, *ui_->eulerFrameCombo);
+    ui_->rotationModeCombo->addItem(tr("Quaternions"), static_cast<int>(model::RotationMode::Kind::Quaternion));
+    ui_->rotationModeCombo->addItem(tr("Euler angles"), static_cast<int>(model::RotationMode::Kind::Euler));
+    // The choosers show the selected object's mode and convention; the graph editor's, linked to them (main
+    // window), may show another convention for a while, which the fields then follow.
     const auto conventionChanged = [this] {
         updateEulerLabels();
         showSelectedKey();
     };
     connect(ui_->eulerOrderCombo, &QComboBox::currentIndexChanged, this, conventionChanged);
     connect(ui_->eulerFrameCombo, &QComboBox::currentIndexChanged, this, conventionChanged);
+    // activated comes from the artist alone, never from showing the object.
+    for (QComboBox* chooser : {ui_->rotationModeCombo, ui_->eulerOrderCombo, ui_->eulerFrameCombo})
+        connect(chooser, &QComboBox::activated, this, &InspectorWidget::applyRotationMode);
     updateEulerLabels();
 }
 
@@ -150,9 +158,44 @@ void InspectorWidget::updateEulerLabels()
         labels[i]->setText(tr("about %1 (°)").arg(axisLetter(convention.axes[static_cast<std::size_t>(i)])));
 }
 
+void InspectorWidget::showRotationMode(const model::SceneObject* object)
+{
+    ui_->rotationModeGroup->setEnabled(object != nullptr);
+    const bool euler = object != nullptr && object->track.rotationMode.isEuler();
+    // Set when another object or mode is shown, not at every refresh: the graph editor's linked choosers may
+    // show another convention meanwhile, which the fields follow (showOrientation).
+    if (object != nullptr && (object->id != modeShown_.first || object->track.rotationMode != modeShown_.second)) {
+        const model::RotationMode& mode = object->track.rotationMode;
+        modeShown_ = {object->id, mode};
+        ui_->rotationModeCombo->setCurrentIndex(ui_->rotationModeCombo->findData(static_cast<int>(mode.kind)));
+        showConvention(*ui_->eulerOrderCombo, *ui_->eulerFrameCombo, mode.convention);
+    }
+    // In Euler mode the angles the keys store come first, after the key's time; else after the axis-angle.
+    QWidget* before = euler ? ui_->keyframeGroup : ui_->axisAngleGroup;
+    if (ui_->fieldsLayout->indexOf(ui_->eulerGroup) != ui_->fieldsLayout->indexOf(before) + 1) {
+        ui_->fieldsLayout->removeWidget(ui_->eulerGroup);
+        ui_->fieldsLayout->insertWidget(ui_->fieldsLayout->indexOf(before) + 1, ui_->eulerGroup);
+    }
+}
+
+void InspectorWidget::applyRotationMode()
+{
+    tryEdit(tr("The rotation mode was not changed: %1."), [this] {
+        const model::SceneObject* object = selection_.selectedObject();
+        if (object == nullptr)
+            return;
+        model::RotationMode mode;
+        mode.kind = static_cast<model::RotationMode::Kind>(ui_->rotationModeCombo->currentData().toInt());
+        mode.convention = chosenConvention();
+        if (mode != object->track.rotationMode)
+            document_.push(new model::SetRotationModeCommand(document_, object->id, mode));
+    });
+}
+
 void InspectorWidget::showSelectedKey()
 {
     const model::SceneObject* object = selection_.selectedObject();
+    showRotationMode(object);
     const model::Keyframe* key = selection_.selectedKey();
     if (key == nullptr) {
         showNoKey();
@@ -176,9 +219,10 @@ void InspectorWidget::showSelectedKey()
 
 void InspectorWidget::showOrientation(const model::SceneObject& object, std::size_t keyIndex)
 {
-    const Eigen::Quaterniond& q = object.track.keys[keyIndex].pose.orientation;
+    const model::Keyframe& key = object.track.keys[keyIndex];
+    const Eigen::Quaterniond& q = key.pose.orientation;
     const EulerConvention convention = chosenConvention();
-    const auto showFields = [&](NumberFields& fields, const std::vector<double>& converted) {
+    const auto showFields = [&, this](NumberFields& fields, const std::vector<double>& converted) {
         const bool showTyped = typedRotation_ && typedRotation_->object == object.id &&
                                typedRotation_->key == keyIndex && typedRotation_->fields == &fields &&
                                (&fields != eulerAngles_ || typedRotation_->convention == convention) &&
@@ -189,7 +233,9 @@ void InspectorWidget::showOrientation(const model::SceneObject& object, std::siz
     showFields(*matrix_, matrixValues(q.toRotationMatrix()));
     showFields(*axisAngle_, axisAngleValues(axisAngleFromQuaternion(q)));
     const EulerAngles euler = eulerAnglesFromQuaternion(q, convention);
-    const Eigen::Vector3d degrees = euler.angles * kDegreesPerRadian;
+    // In Euler mode the angles as stored (720° stays 720°), while the chooser shows the object's convention.
+    const bool stored = key.eulerAngles && convention == object.track.rotationMode.convention;
+    const Eigen::Vector3d degrees = (stored ? *key.eulerAngles : euler.angles) * kDegreesPerRadian;
     showFields(*eulerAngles_, {degrees.x(), degrees.y(), degrees.z()});
 
     const double lockDistance = euler.gimbalLockDistance * kDegreesPerRadian;
@@ -343,7 +389,18 @@ void InspectorWidget::applyEulerAngles()
     tryEdit(tr("The rotation was not changed: %1."), [this] {
         const std::vector<double> typed = eulerAngles_->values();
         const Eigen::Vector3d radians = Eigen::Vector3d(typed[0], typed[1], typed[2]) / kDegreesPerRadian;
-        setOrientation(*eulerAngles_, typed, quaternionFromEulerAngles(radians, chosenConvention()), QString());
+        const model::Keyframe& key = shownKeyframe();
+        const model::RotationMode& mode = document_.object(shownObject_)->track.rotationMode;
+        if (!key.eulerAngles || mode.convention != chosenConvention()) {
+            setOrientation(*eulerAngles_, typed, quaternionFromEulerAngles(radians, chosenConvention()), QString());
+            return;
+        }
+        // Euler mode: the angles themselves are the key's, so typing 360 stores a full turn.
+        if (radians != *key.eulerAngles)
+            document_.push(new model::SetKeyframeOrientationCommand(document_, shownObject_, *shownKey_, radians));
+        typedRotation_ = TypedRotation{shownObject_, *shownKey_, eulerAngles_, chosenConvention(), typed,
+                                       shownKeyframe().pose.orientation};
+        showSelectedKey();
     });
 }
 

@@ -1,9 +1,11 @@
 #pragma once
-// The Inspector: the selected keyframe of the selected object, its time, constraint flag, position
+// The Inspector: the selected object's rotation mode (quaternion or Euler, and its Euler convention, set by
+// SetRotationModeCommand), and the selected keyframe of the selected object, its time, constraint flag, position
 // and orientation, the orientation shown at once as a quaternion, a rotation matrix, an axis-angle
 // and three Euler angles in a chosen convention, each editable. An edit becomes one undo command on
 // the document, and every field then reads the key back from the document, so the representations
-// always agree. Near gimbal lock of the chosen convention a warning says which angles lost meaning.
+// always agree. In Euler mode the angle fields come first and show the angles the key stores, as typed (720° is
+// two turns). Near gimbal lock of the chosen convention a warning says which angles lost meaning.
 
 #include "app/number_fields.h"
 #include "app/selected_track.h"
@@ -20,6 +22,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace Ui {
@@ -52,6 +55,9 @@ private:
     EulerConvention chosenConvention() const;
     void updateEulerLabels();
     void showSelectedKey();
+    // The object's rotation mode in the choosers, and in Euler mode the angle fields first.
+    void showRotationMode(const model::SceneObject* object);
+    void applyRotationMode();
     void showOrientation(const model::SceneObject& object, std::size_t keyIndex);
     void showNoKey();
     void setKeyFieldsEnabled(bool enabled);
@@ -96,6 +102,8 @@ private:
     NumberFields* axisAngle_ = nullptr;
     NumberFields* eulerAngles_ = nullptr;
     std::optional<TypedRotation> typedRotation_;
+    // The object and rotation mode the Rotation Mode choosers were last set to.
+    std::pair<model::ObjectId, model::RotationMode> modeShown_{model::kNoObject, {}};
 };
 
 } // namespace gyre::app

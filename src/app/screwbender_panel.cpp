@@ -8,6 +8,7 @@
 #include "ui_screwbender_panel.h"
 
 #include <QSignalBlocker>
+#include <QStandardItemModel>
 #include <QUndoCommand>
 
 #include <memory>
@@ -31,6 +32,8 @@ QString methodLabel(InterpolationMethod method)
         return ScrewBenderPanel::tr("Hermite quaternion spline");
     case InterpolationMethod::Euler:
         return ScrewBenderPanel::tr("Euler angles, linearly");
+    case InterpolationMethod::EulerCubic:
+        return ScrewBenderPanel::tr("Euler angles, smooth (automatic tangents)");
     case InterpolationMethod::Screw:
         return ScrewBenderPanel::tr("Screw motion (ScrewBender)");
     case InterpolationMethod::Ballistic:
@@ -123,6 +126,12 @@ void ScrewBenderPanel::showSelectedTrack()
     const SubdivisionSettings& subdivision = track.subdivision;
     ui_->objectTitleLabel->setText(object->name);
     ui_->interpolationCombo->setCurrentIndex(ui_->interpolationCombo->findData(static_cast<int>(track.interpolation)));
+    // In Euler rotation mode only the methods that interpolate the angles keep the turns they hold.
+    auto* methods = qobject_cast<QStandardItemModel*>(ui_->interpolationCombo->model());
+    for (int row = 0; row < methods->rowCount(); ++row) {
+        const auto method = static_cast<InterpolationMethod>(ui_->interpolationCombo->itemData(row).toInt());
+        methods->item(row)->setEnabled(!track.rotationMode.isEuler() || interpolatesAngles(method));
+    }
     ui_->screwOnlyNote->setVisible(track.interpolation != InterpolationMethod::Screw);
     ui_->schemeCombo->setCurrentIndex(ui_->schemeCombo->findData(static_cast<int>(subdivision.scheme)));
     {

@@ -58,7 +58,8 @@ Samples the motion through timed keys (a time column is required, at least two k
 t0 + k/F up to the last key, plus a sample at every key time. Writes time,qw,qx,qy,qz,x,y,z.
 
   --method   slerp, nlerp, euler    orientation by that curve, position linear
-             squad, hermite         orientation by that curve, position cubic Hermite
+             squad, hermite,        orientation by that curve, position cubic Hermite
+             euler-cubic            (euler-cubic: each angle a cubic with automatic tangents)
              screw                  the polyscrew through the key poses
              ballistic              free flight between keys: torque-free rotation that meets
                                     each next key exactly, position on the parabola under gravity
@@ -72,7 +73,9 @@ Options of the ballistic method (the keys are the body's orientations, its origi
   --gravity G   m/s^2, at least 0 (default 9.81)
   --up X,Y,Z    the world's up (default 0,0,1: Gyre is Z-up)
 
-The Euler options say how to read Euler input, and the angles the euler method interpolates.)";
+The Euler options say how to read Euler input, and the angles euler and euler-cubic interpolate: from
+Euler columns the angles as read (0 then 360 is a full turn), from any other columns the orientations'
+angles unwrapped along the keys (the Euler filter).)";
 
 const char* const kSubdivide = R"(Usage: gyre-cli subdivide POSES.csv -o OUT.csv --scheme SCHEME --levels L [--open] [--decoupled] [--order AXES] [--intrinsic|--extrinsic]
 

@@ -33,15 +33,21 @@ QList<QCommandLineOption> interpolateOptions()
 }
 
 // The keys as a track; screw is the plain polyscrew through them (no subdivision, open).
-model::MotionTrack trackOf(const io::PoseTable& keys, InterpolationMethod method)
+model::MotionTrack trackOf(const io::PoseTable& keys, InterpolationMethod method, const EulerConvention& convention)
 {
     model::MotionTrack track;
     track.interpolation = method;
+    track.rotationMode.convention = convention;
+    // Angles read from Euler columns are interpolated as read (0 then 360 is a full turn); others are unwrapped
+    // from the orientations.
+    const bool angles = interpolatesAngles(method) && keys.rotationColumns == io::RotationColumns::Euler;
+    if (angles)
+        track.rotationMode.kind = model::RotationMode::Kind::Euler;
     track.subdivision.levels = 0;
     track.subdivision.cyclic = false;
     track.keys.reserve(keys.rows.size());
     for (const io::PoseRow& row : keys.rows)
-        track.keys.push_back({row.time, row.pose, true});
+        track.keys.push_back({row.time, row.pose, true, -1, angles ? row.eulerAngles : std::nullopt});
     return track;
 }
 
@@ -145,12 +151,12 @@ void runInterpolate(const QStringList& arguments)
     const io::PoseTable keys = io::readPoseCsv(commandLine.inputPath(), convention, io::TimeColumn::Required);
     if (keys.rows.size() < 2)
         throw InputError(commandLine.inputPath(), keys.rows.back().line, "interpolate needs at least two keys");
-    const model::MotionTrack track = trackOf(keys, method);
+    const model::MotionTrack track = trackOf(keys, method, convention);
     const model::BakeRange range = checkedOutputRange({track.keys.front().time, track.keys.back().time, fps},
                                                       track.keys.size(), commandLine);
     io::PoseTable frames{io::RotationColumns::Quaternion, true, true, {}};
     for (const model::TimedPose& sample :
-         ballistic ? ballisticSamples(keys, range, commandLine) : model::bakeTrack(track, range, convention))
+         ballistic ? ballisticSamples(keys, range, commandLine) : model::bakeTrack(track, range))
         frames.rows.push_back({sample.time, sample.pose, 0});
     io::writePoseCsv(commandLine.outputPath(), frames);
 }

@@ -234,19 +234,113 @@ std::vector<Eigen::Quaterniond> rotationsOf(const std::vector<OrientationKey>& k
 
 } // namespace
 
-EulerAngleCurve::EulerAngleCurve(std::vector<OrientationKey> keys, const EulerConvention& convention)
+namespace {
+
+// The automatic slope of one angle at each key (orientation_curves.h): zero at the ends and at extrema, the
+// neighbours' chord (pᵢ₊₁ − pᵢ₋₁)/(tᵢ₊₁ − tᵢ₋₁) elsewhere, at most three times either side's chord slope.
+std::vector<Eigen::Vector3d> automaticSlopes(const std::vector<double>& times, const std::vector<Eigen::Vector3d>& angles)
+{
+    std::vector<Eigen::Vector3d> slopes(angles.size(), Eigen::Vector3d::Zero());
+    for (std::size_t i = 1; i + 1 < angles.size(); ++i) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const double before = (angles[i][axis] - angles[i - 1][axis]) / (times[i] - times[i - 1]);
+            const double after = (angles[i + 1][axis] - angles[i][axis]) / (times[i + 1] - times[i]);
+            if (before * after <= 0.0)
+                continue; // an extremum, or flat on one side
+            const double chord = (angles[i + 1][axis] - angles[i - 1][axis]) / (times[i + 1] - times[i - 1]);
+            const double limit = 3.0 * std::min(std::abs(before), std::abs(after));
+            slopes[i][axis] = std::copysign(std::min(std::abs(chord), limit), chord);
+        }
+    }
+    return slopes;
+}
+
+std::vector<OrientationKey> rotationsOfAngles(const std::vector<EulerAngleCurve::AngleKey>& keys,
+                                              const EulerConvention& convention)
+{
+    std::vector<OrientationKey> rotations;
+    rotations.reserve(keys.size());
+    for (const EulerAngleCurve::AngleKey& key : keys)
+        rotations.push_back({key.time, quaternionFromEulerAngles(key.angles, convention)});
+    return rotations;
+}
+
+std::vector<double> timesOf(const std::vector<OrientationKey>& keys)
+{
+    std::vector<double> times;
+    times.reserve(keys.size());
+    for (const OrientationKey& key : keys)
+        times.push_back(key.time);
+    return times;
+}
+
+} // namespace
+
+EulerAngleCurve::EulerAngleCurve(std::vector<OrientationKey> keys, const EulerConvention& convention, Shape shape)
     : OrientationCurve(std::move(keys))
     , convention_(convention)
+    , shape_(shape)
     , angles_(unwrappedEulerAngles(rotationsOf(keys_), convention))
+    , slopes_(shape == Shape::Cubic ? automaticSlopes(timesOf(keys_), angles_) : std::vector<Eigen::Vector3d>())
 {
+}
+
+EulerAngleCurve::EulerAngleCurve(std::vector<OrientationKey> keys, const EulerConvention& convention, Shape shape,
+                                 std::vector<Eigen::Vector3d> angles)
+    : OrientationCurve(std::move(keys))
+    , convention_(convention)
+    , shape_(shape)
+    , angles_(std::move(angles))
+    , slopes_(shape == Shape::Cubic ? automaticSlopes(timesOf(keys_), angles_) : std::vector<Eigen::Vector3d>())
+{
+}
+
+EulerAngleCurve EulerAngleCurve::throughAngles(std::vector<AngleKey> keys, const EulerConvention& convention,
+                                               Shape shape)
+{
+    std::vector<Eigen::Vector3d> angles;
+    angles.reserve(keys.size());
+    for (const AngleKey& key : keys)
+        angles.push_back(key.angles);
+    return EulerAngleCurve(rotationsOfAngles(keys, convention), convention, shape, std::move(angles));
+}
+
+Eigen::Vector3d EulerAngleCurve::anglesAt(double time) const
+{
+    if (keys_.size() == 1 || time <= startTime())
+        return angles_.front();
+    if (time >= endTime())
+        return angles_.back();
+    const std::size_t segment = segmentAt(keys_, time);
+    const double duration = keys_[segment + 1].time - keys_[segment].time;
+    return anglesInSegment(segment, (time - keys_[segment].time) / duration, duration).first;
+}
+
+std::pair<Eigen::Vector3d, Eigen::Vector3d> EulerAngleCurve::anglesInSegment(std::size_t segment, double u,
+                                                                             double duration) const
+{
+    // Linear: the straight line. Cubic: the Hermite basis, p(u) = h₀₀p₀ + h₁₀·T·m₀ + h₀₁p₁ + h₁₁·T·m₁ with T the
+    // segment's duration and m the slopes at its keys.
+    const Eigen::Vector3d& p0 = angles_[segment];
+    const Eigen::Vector3d& p1 = angles_[segment + 1];
+    if (shape_ == Shape::Linear)
+        return {(1.0 - u) * p0 + u * p1, (p1 - p0) / duration};
+    const Eigen::Vector3d m0 = slopes_[segment] * duration;
+    const Eigen::Vector3d m1 = slopes_[segment + 1] * duration;
+    const double u2 = u * u;
+    const double u3 = u2 * u;
+    const Eigen::Vector3d value = (2 * u3 - 3 * u2 + 1) * p0 + (u3 - 2 * u2 + u) * m0 + (-2 * u3 + 3 * u2) * p1 +
+                                  (u3 - u2) * m1;
+    const Eigen::Vector3d perU =
+        (6 * u2 - 6 * u) * p0 + (3 * u2 - 4 * u + 1) * m0 + (-6 * u2 + 6 * u) * p1 + (3 * u2 - 2 * u) * m1;
+    return {value, perU / duration};
 }
 
 OrientationSample EulerAngleCurve::sampleSegment(std::size_t segment, double u, double duration) const
 {
-    // q = f₁·f₂·f₃ with fₙ = (cos(eₙ/2), sin(eₙ/2)·axisₙ) in multiplication order; each angle is linear
-    // in time, so dfₙ/dt = fₙ·(0, axisₙ/2)·ėₙ and dq/dt follows by the product rule.
-    const Eigen::Vector3d angles = (1.0 - u) * angles_[segment] + u * angles_[segment + 1];
-    const Eigen::Vector3d rates = (angles_[segment + 1] - angles_[segment]) / duration;
+    // q = f₁·f₂·f₃ with fₙ = (cos(eₙ/2), sin(eₙ/2)·axisₙ) in multiplication order, so dfₙ/dt = fₙ·(0, axisₙ/2)·ėₙ
+    // and dq/dt follows by the product rule.
+    const auto [angles, rates] = anglesInSegment(segment, u, duration);
     std::array<int, 3> order{0, 1, 2};
     if (convention_.frame == AngleFrame::Extrinsic)
         order = {2, 1, 0};
@@ -276,6 +370,11 @@ std::optional<InterpolationMethod> parseInterpolationMethod(std::string_view nam
     return valueNamed(kInterpolationMethodNames, name);
 }
 
+bool interpolatesAngles(InterpolationMethod method)
+{
+    return method == InterpolationMethod::Euler || method == InterpolationMethod::EulerCubic;
+}
+
 std::string_view interpolationMethodName(InterpolationMethod method)
 {
     return nameOf(kInterpolationMethodNames, method);
@@ -294,7 +393,9 @@ std::unique_ptr<OrientationCurve> makeOrientationCurve(InterpolationMethod metho
     case InterpolationMethod::Hermite:
         return std::make_unique<HermiteQuaternionSpline>(HermiteQuaternionSpline::throughKeys(std::move(keys)));
     case InterpolationMethod::Euler:
-        return std::make_unique<EulerAngleCurve>(std::move(keys), convention);
+        return std::make_unique<EulerAngleCurve>(std::move(keys), convention, EulerAngleCurve::Shape::Linear);
+    case InterpolationMethod::EulerCubic:
+        return std::make_unique<EulerAngleCurve>(std::move(keys), convention, EulerAngleCurve::Shape::Cubic);
     case InterpolationMethod::Screw:
         throw std::invalid_argument("screw interpolation moves poses, not orientations: use Polyscrew");
     case InterpolationMethod::Ballistic:

@@ -132,37 +132,66 @@ private:
     std::vector<HermiteControlPoint> points_;
 };
 
-// Linear interpolation of three-angle sequences: each key converted to angles in the convention,
-// unwrapped by the Euler filter, and the three angles interpolated linearly.
+// Interpolation of three-angle sequences, each angle on its own over time:
+// - Linear: straight lines between the keys' angles.
+// - Cubic: Hermite cubics with automatic slopes, Blender's "Auto Clamped" Bézier keys: at key i the
+//   slope (pᵢ₊₁ − pᵢ₋₁)/(tᵢ₊₁ − tᵢ₋₁), zero at the first and last key and where pᵢ is a local extremum
+//   (or equals a neighbour), and at most three times either neighbouring chord's slope (Fritsch and
+//   Carlson), so the curve never leaves the range of the two keys it joins: no overshoot.
+// Built from quaternions, the keys' angles are the Euler filter's (unwrappedEulerAngles); built from
+// angles (an object in Euler rotation mode), they are the angles as given, so 0 then 2π is a full turn.
 class EulerAngleCurve final : public OrientationCurve {
 public:
-    EulerAngleCurve(std::vector<OrientationKey> keys, const EulerConvention& convention);
+    enum class Shape { Linear, Cubic };
+
+    EulerAngleCurve(std::vector<OrientationKey> keys, const EulerConvention& convention, Shape shape = Shape::Linear);
+
+    struct AngleKey {
+        double time = 0.0;
+        Eigen::Vector3d angles = Eigen::Vector3d::Zero(); // radians, in the convention, any size
+    };
+    // Throws std::invalid_argument unless there is at least one key and times strictly increase.
+    static EulerAngleCurve throughAngles(std::vector<AngleKey> keys, const EulerConvention& convention, Shape shape);
+
+    // The three angles at `time` (held outside the keys), radians.
+    Eigen::Vector3d anglesAt(double time) const;
+    // The slopes at the keys, rad/s: one per key for Cubic, none for Linear.
+    const std::vector<Eigen::Vector3d>& keySlopes() const { return slopes_; }
 
 private:
+    EulerAngleCurve(std::vector<OrientationKey> keys, const EulerConvention& convention, Shape shape,
+                    std::vector<Eigen::Vector3d> angles);
     OrientationSample sampleSegment(std::size_t segment, double u, double duration) const override;
+    // The angles and their time derivatives inside a segment.
+    std::pair<Eigen::Vector3d, Eigen::Vector3d> anglesInSegment(std::size_t segment, double u, double duration) const;
     EulerConvention convention_;
+    Shape shape_;
     std::vector<Eigen::Vector3d> angles_;
+    std::vector<Eigen::Vector3d> slopes_; // one per key for Cubic, empty for Linear
 };
 
 // Ballistic: every span a rigid body's free flight (core/torque_free.h, fit/ballistic_flight.h), which needs the
 // body's inertia: like Screw, it is no orientation curve.
-enum class InterpolationMethod { Slerp, Nlerp, Squad, Hermite, Euler, Screw, Ballistic };
+enum class InterpolationMethod { Slerp, Nlerp, Squad, Hermite, Euler, EulerCubic, Screw, Ballistic };
 
-inline constexpr NameTable<InterpolationMethod, 7> kInterpolationMethodNames{{
+inline constexpr NameTable<InterpolationMethod, 8> kInterpolationMethodNames{{
     {InterpolationMethod::Slerp, "slerp"},
     {InterpolationMethod::Nlerp, "nlerp"},
     {InterpolationMethod::Squad, "squad"},
     {InterpolationMethod::Hermite, "hermite"},
     {InterpolationMethod::Euler, "euler"},
+    {InterpolationMethod::EulerCubic, "euler-cubic"},
     {InterpolationMethod::Screw, "screw"},
     {InterpolationMethod::Ballistic, "ballistic"},
 }};
 
 std::optional<InterpolationMethod> parseInterpolationMethod(std::string_view name);
+// Euler and EulerCubic: the methods that interpolate angles, not quaternions.
+bool interpolatesAngles(InterpolationMethod method);
 std::string_view interpolationMethodName(InterpolationMethod method);
 
 // The orientation curve of a method; `Screw` (see polyscrew.h) and `Ballistic` are not orientation curves and
-// throw std::invalid_argument. The convention is used by `Euler` only.
+// throw std::invalid_argument. The convention is used by `Euler` and `EulerCubic` only.
 std::unique_ptr<OrientationCurve> makeOrientationCurve(InterpolationMethod method, std::vector<OrientationKey> keys,
                                                        const EulerConvention& convention = {});
 

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <numbers>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -154,6 +155,8 @@ PoseRow PoseCsvParser::readRow(const Layout& layout)
     } catch (const std::invalid_argument& error) {
         throw reader_.errorHere("columns " + joinedNames(names) + ": " + error.what());
     }
+    if (layout.rotationColumns == RotationColumns::Euler)
+        row.eulerAngles = Eigen::Vector3d(values[0], values[1], values[2]) * (std::numbers::pi / 180.0);
     for (std::size_t i = 0; i < layout.positionFields.size(); ++i)
         row.pose.position[static_cast<Eigen::Index>(i)] = header_.number(layout.positionFields[i], kPositionNames[i]);
     return row;

@@ -18,6 +18,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace gyre {
@@ -30,6 +31,8 @@ struct PoseRow {
     double time = 0.0;     // seconds; 0 when the table has no time column
     Pose pose;             // position zero when the table has no position columns
     std::int64_t line = 0; // the 1-based line of the file it was read from; 0 for a row made in memory
+    // The angles as read from Euler columns, radians (720° stays 720°); none for the other column sets.
+    std::optional<Eigen::Vector3d> eulerAngles = std::nullopt;
 };
 
 struct PoseTable {

@@ -176,6 +176,15 @@ void writeTrack(Writer& out, const model::MotionTrack& track)
     out.block(numbers);
     out.block(constrained);
     out.block(flights);
+    // The rotation mode, then the keys' stored angles, three each, in Euler mode alone.
+    out.put<quint8>(track.rotationMode.isEuler());
+    out.string(QString::fromStdString(track.rotationMode.convention.order()));
+    out.put<quint8>(track.rotationMode.convention.frame == AngleFrame::Intrinsic);
+    std::vector<double> angles;
+    for (const model::Keyframe& key : track.keys)
+        if (key.eulerAngles)
+            appendAll(angles, *key.eulerAngles);
+    out.block(angles);
     writeSketch(out, track.sketch);
 }
 
@@ -469,6 +478,22 @@ model::MotionTrack trackIn(Reader& in, const std::string& what)
             throw WireError(what + ": keyframe " + std::to_string(k) + " has a flag that is neither 0 nor 1");
         track.keys[k] = {key[0], Pose{quaternionAt(key + 1), {key[5], key[6], key[7]}}, constrained[k] == 1,
                          std::max(flights[k], -1)};
+    }
+    track.rotationMode.kind = in.flag() ? model::RotationMode::Kind::Euler : model::RotationMode::Kind::Quaternion;
+    const std::string order = in.string("Euler order").toStdString();
+    const AngleFrame frame = in.flag() ? AngleFrame::Intrinsic : AngleFrame::Extrinsic;
+    const std::optional<EulerConvention> convention = EulerConvention::parse(order, frame);
+    if (!convention)
+        throw WireError(what + ": '" + order + "' is not an Euler order");
+    track.rotationMode.convention = *convention;
+    const std::vector<double> angles = in.block<double>("Euler angles", 3);
+    if (angles.size() != (track.rotationMode.isEuler() ? 3 * track.keys.size() : 0))
+        throw WireError(what + ": " + std::to_string(angles.size() / 3) + " angle triples for " +
+                        std::to_string(track.keys.size()) + " keyframes");
+    for (std::size_t k = 0; k < angles.size() / 3; ++k) {
+        track.keys[k].eulerAngles = Eigen::Vector3d(angles[3 * k], angles[3 * k + 1], angles[3 * k + 2]);
+        if (!track.keys[k].eulerAngles->allFinite())
+            throw WireError(what + ": keyframe " + std::to_string(k) + " has angles that are not finite");
     }
     track.sketch = sketchIn(in);
     checked(what, [&] { model::checkTrack(track); });

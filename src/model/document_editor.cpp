@@ -1,5 +1,7 @@
 #include "model/document_editor.h"
 
+#include "model/rotation_mode.h"
+
 #include <algorithm>
 
 namespace gyre::model {
@@ -7,14 +9,22 @@ namespace gyre::model {
 void DocumentEditor::edit(ObjectId object, Changes changes, const std::function<void(Scene&)>& change)
 {
     change(document_.scene_);
+    // The one place where the keys' angles are made to follow their orientations (rotation_mode.h). Undo puts back
+    // values that hold it already, so there this changes nothing.
+    if (changes & (Changes(Change::Keyframes) | Change::TrackSettings))
+        for (SceneObject& edited : document_.scene_.objects)
+            if (object == kNoObject || edited.id == object)
+                keepRotationMode(edited.track);
     document_.notifyChanged(object, changes);
 }
 
 void DocumentEditor::insertObjects(const std::vector<PlacedObject>& objects)
 {
     std::vector<SceneObject>& sceneObjects = document_.scene_.objects;
-    for (const PlacedObject& placed : objects)
-        sceneObjects.insert(sceneObjects.begin() + static_cast<std::ptrdiff_t>(placed.index), placed.object);
+    for (const PlacedObject& placed : objects) {
+        const auto inserted = sceneObjects.insert(sceneObjects.begin() + static_cast<std::ptrdiff_t>(placed.index), placed.object);
+        keepRotationMode(inserted->track);
+    }
     for (const PlacedObject& placed : objects)
         document_.notifyChanged(placed.object.id, Change::Added);
 }

@@ -16,14 +16,14 @@ SharedTrackMotion::SharedTrackMotion(MotionTrack track, std::shared_ptr<std::ato
 
 const TrackMotion& SharedTrackMotion::motion() const
 {
-    return build(motion_, [this] { return TrackMotion(track_, {}, body_); });
+    return build(motion_, [this] { return TrackMotion(track_, body_); });
 }
 
 const TrackMotion& SharedTrackMotion::motionWithoutFit() const
 {
     if (track_.sketch.fittedCurve.empty())
         return motion();
-    return build(withoutFit_, [this] { return TrackMotion(withoutFit(track_), {}, body_); });
+    return build(withoutFit_, [this] { return TrackMotion(withoutFit(track_), body_); });
 }
 
 const TrackMotion& SharedTrackMotion::build(Lazy& lazy, const std::function<TrackMotion()>& make) const

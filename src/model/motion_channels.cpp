@@ -3,6 +3,7 @@
 #include "core/quaternion_math.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 namespace gyre::model {
@@ -79,7 +80,13 @@ ChannelCurves sampleChannels(const TrackMotion& motion, const std::vector<Keyfra
         channel(curves, Channel::KineticEnergy).push_back(0.5 * localVelocity.dot(localMomentum));
     }
 
-    const std::vector<Eigen::Vector3d> angles = unwrappedEulerAngles(rotations, settings.convention);
+    std::optional<Eigen::Vector3d> startAngles;
+    if (settings.keysStoreAngles && !keys.empty()) {
+        const auto after = std::upper_bound(keys.begin(), keys.end(), curves.times.front(),
+                                            [](double time, const Keyframe& key) { return time < key.time; });
+        startAngles = (after == keys.begin() ? keys.front() : *(after - 1)).eulerAngles;
+    }
+    const std::vector<Eigen::Vector3d> angles = unwrappedEulerAngles(rotations, settings.convention, startAngles);
     std::vector<bool> nearLock(count);
     for (std::size_t i = 0; i < count; ++i) {
         for (int c = 0; c < 3; ++c)

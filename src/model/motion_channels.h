@@ -62,6 +62,10 @@ struct ChannelSettings {
     double end = 10.0;
     std::size_t samples = 2000; // evenly spaced from start to end, besides the keys' times
     Eigen::Matrix3d inertia = Eigen::Matrix3d::Identity(); // the body's, in its own frame, kg·m²
+    // The keys store angles in `convention` (a track in Euler rotation mode): the Euler channels then start from
+    // the stored angles of the key at or before the first sample, so that they are the angles the track
+    // interpolates (a 720° spin is a ramp to 720°) and each key sits at its stored angles.
+    bool keysStoreAngles = false;
 };
 
 struct ChannelCurves {

@@ -15,6 +15,7 @@ namespace {
 
 constexpr qint64 kQuaternionBytes = 4 * sizeof(double);
 constexpr qint64 kPositionBytes = 3 * sizeof(double);
+constexpr qint64 kAngleBytes = 3 * sizeof(double);
 constexpr qint64 kVectorBytes = 3 * sizeof(float);
 constexpr std::size_t kMatrixBytes = 16 * sizeof(float);
 constexpr std::size_t kSkinVertexBytes = 4 * sizeof(std::uint16_t) + 4 * sizeof(float);
@@ -62,15 +63,18 @@ std::vector<Eigen::Vector3f> vectorsAt(const char* bytes, std::size_t count)
 qint64 KeyLayout::blockBytes() const
 {
     const auto n = static_cast<qint64>(count);
-    return n * kQuaternionBytes + (position ? 0 : n * kPositionBytes) + (constrained ? 0 : n);
+    return n * kQuaternionBytes + (position ? 0 : n * kPositionBytes) + (constrained ? 0 : n) +
+           (eulerAngles ? n * kAngleBytes : 0);
 }
 
 KeyLayout keyLayoutOf(const std::vector<Keyframe>& keys, std::size_t times)
 {
-    KeyLayout layout{keys.size(), times, std::nullopt, std::nullopt};
+    KeyLayout layout{keys.size(), times, std::nullopt, std::nullopt, false};
     if (keys.empty())
         return layout;
     const Keyframe& first = keys.front();
+    // Every key of a track has angles or none has (rotation_mode.h).
+    layout.eulerAngles = first.eulerAngles.has_value();
     if (std::all_of(keys.begin(), keys.end(), [&](const Keyframe& key) { return key.pose.position == first.pose.position; }))
         layout.position = first.pose.position;
     if (std::all_of(keys.begin(), keys.end(), [&](const Keyframe& key) { return key.constrained == first.constrained; }))
@@ -93,6 +97,9 @@ QByteArray keyBlock(const std::vector<Keyframe>& keys, const KeyLayout& layout)
     if (!layout.constrained)
         for (const Keyframe& key : keys)
             appendValue<quint8>(block, key.constrained ? 1 : 0);
+    if (layout.eulerAngles)
+        for (const Keyframe& key : keys)
+            appendValues(block, key.eulerAngles.value_or(Eigen::Vector3d::Zero()).data(), 3);
     return block;
 }
 
@@ -102,6 +109,7 @@ std::vector<Keyframe> keysFromBlock(const QByteArray& block, const KeyLayout& la
     const char* orientations = block.constData();
     const char* positions = orientations + layout.count * kQuaternionBytes;
     const char* flags = positions + (layout.position ? 0 : layout.count * kPositionBytes);
+    const char* angles = flags + (layout.constrained ? 0 : layout.count);
     std::vector<Keyframe> keys(layout.count);
     for (std::size_t k = 0; k < keys.size(); ++k) {
         Keyframe& key = keys[k];
@@ -130,6 +138,12 @@ std::vector<Keyframe> keysFromBlock(const QByteArray& block, const KeyLayout& la
                 failAtKey(field, k, "constrained",
                           FileError::tr("%1 is neither 0 nor 1").arg(flag).toUtf8().constData());
             key.constrained = flag == 1;
+        }
+        if (layout.eulerAngles) {
+            const char* e = angles + k * kAngleBytes;
+            key.eulerAngles = Eigen::Vector3d(doubleAt(e, 0), doubleAt(e, 1), doubleAt(e, 2));
+            if (!key.eulerAngles->allFinite())
+                failAtKey(field, k, "eulerAngles", FileError::tr("the angles are not finite").toUtf8().constData());
         }
     }
     return keys;

@@ -23,8 +23,8 @@
 namespace gyre::model {
 
 // The most keys a project may hold, its tracks' keyframes and the keys they keep from before a fit
-// together: 2^23, 8,388,608, a ten-minute take at 120 Hz of 116 joints. A key costs 72 bytes in
-// memory, so the keys of a project stay under 604 MB, and 65 bytes on the way to gyre-scene-worker,
+// together: 2^23, 8,388,608, a ten-minute take at 120 Hz of 116 joints. A key costs 104 bytes in
+// memory, so the keys of a project stay under 873 MB, and up to 93 bytes on the way to gyre-scene-worker,
 // so any project can be exported within the worker's message limit (io/scene_wire.h).
 inline constexpr std::size_t kMaxProjectKeys = std::size_t{1} << 23;
 
@@ -34,9 +34,11 @@ struct KeyLayout {
     std::size_t times = 0;                    // the index of the file's time list the keys use
     std::optional<Eigen::Vector3d> position;  // the position of every key, or none: listed
     std::optional<bool> constrained;          // the flag of every key, or none: listed
+    bool eulerAngles = false;                 // the keys' stored angles follow (an Euler-mode track's)
 
     // The block: w, x, y, z per key as float64; then x, y, z per key as float64 unless the
-    // position is the same for all; then one byte 0 or 1 per key unless the flag is.
+    // position is the same for all; then one byte 0 or 1 per key unless the flag is; then, with
+    // eulerAngles, e1, e2, e3 per key as float64 (radians, finite).
     qint64 blockBytes() const;
 };
 

@@ -6,6 +6,8 @@
 #include "model/object_mass.h"
 #include "model/output_target.h"
 #include "model/project_blocks.h"
+#include "model/project_json.h"
+#include "model/rotation_mode.h"
 #include "model/sketch_fit_problem.h"
 #include "model/value_checks.h"
 
@@ -44,83 +46,31 @@ constexpr qint64 kMaxHeaderBytes = qint64{16} << 20;
 
 // ---- writing --------------------------------------------------------------------------------------
 
-QJsonArray numbersJson(std::initializer_list<double> values)
-{
-    QJsonArray array;
-    for (double value : values)
-        array.append(value);
-    return array;
-}
-
-QJsonArray json(const Eigen::Vector3d& v) { return numbersJson({v.x(), v.y(), v.z()}); }
-QJsonArray json(const Eigen::Vector2d& v) { return numbersJson({v.x(), v.y()}); }
-
-template <class Item, class ToJson>
-QJsonArray arrayJson(const std::vector<Item>& items, ToJson toJson)
-{
-    QJsonArray array;
-    for (const Item& item : items)
-        array.append(toJson(item));
-    return array;
-}
-
 } // namespace
 
 QJsonObject keyframeJson(const Keyframe& key)
 {
     const Eigen::Quaterniond& q = key.pose.orientation;
-    return {{"time", key.time},
-            {"orientation", numbersJson({q.w(), q.x(), q.y(), q.z()})},
-            {"position", json(key.pose.position)},
-            {"constrained", key.constrained}};
+    QJsonObject json{{"time", key.time},
+                     {"orientation", numbersJson({q.w(), q.x(), q.y(), q.z()})},
+                     {"position", vectorJson(key.pose.position)},
+                     {"constrained", key.constrained}};
+    if (key.eulerAngles)
+        json.insert("eulerAngles", vectorJson(*key.eulerAngles));
+    return json;
 }
 
 namespace {
 
 QJsonObject keyLayoutJson(const KeyLayout& layout)
 {
-    return {{"count", static_cast<qint64>(layout.count)},
-            {"times", static_cast<qint64>(layout.times)},
-            {"position", layout.position ? QJsonValue(json(*layout.position)) : QJsonValue()},
-            {"constrained", layout.constrained ? QJsonValue(*layout.constrained) : QJsonValue()}};
-}
-
-QJsonObject subdivisionJson(const SubdivisionSettings& settings)
-{
-    return {{"scheme", QString::fromLatin1(subdivisionSchemeName(settings.scheme))},
-            {"levels", settings.levels},
-            {"cyclic", settings.cyclic},
-            {"decoupled", settings.decoupled}};
-}
-
-QJsonObject strokeJson(const DirectionStroke& stroke)
-{
-    return {{"points", arrayJson(stroke.points, [](const Eigen::Vector3d& point) { return json(point); })},
-            {"times", arrayJson(stroke.times, [](double time) { return QJsonValue(time); })}};
-}
-
-QJsonValue windowJson(const std::optional<std::pair<double, double>>& window)
-{
-    return window ? QJsonValue(numbersJson({window->first, window->second})) : QJsonValue(QJsonValue::Null);
-}
-
-QJsonObject sketchJson(const SketchState& sketch, const QJsonObject& fittedCurve, const QJsonObject& keysBeforeFit)
-{
-    return {
-        {"directionStrokes", arrayJson(sketch.directionStrokes, strokeJson)},
-        {"magnitude", arrayJson(sketch.magnitude,
-                                [](const MagnitudePoint& point) {
-                                    return QJsonObject{{"time", point.time}, {"magnitude", point.magnitude}};
-                                })},
-        {"pattern", arrayJson(sketch.pattern, [](const Eigen::Vector2d& point) { return json(point); })},
-        {"patternRepeat", sketch.patternRepeat},
-        {"window", windowJson(sketch.window)},
-        {"alpha", sketch.alpha},
-        {"beta", sketch.beta},
-        {"relativeDelta", sketch.delta},
-        {"fittedCurve", fittedCurve},
-        {"keysBeforeFit", keysBeforeFit},
-    };
+    QJsonObject json{{"count", static_cast<qint64>(layout.count)},
+                     {"times", static_cast<qint64>(layout.times)},
+                     {"position", layout.position ? QJsonValue(vectorJson(*layout.position)) : QJsonValue()},
+                     {"constrained", layout.constrained ? QJsonValue(*layout.constrained) : QJsonValue()}};
+    if (layout.eulerAngles)
+        json.insert("eulerAngles", true);
+    return json;
 }
 
 QJsonValue idJson(ObjectId id) { return id == kNoObject ? QJsonValue() : QJsonValue(static_cast<qint64>(id)); }
@@ -207,6 +157,9 @@ ProjectLayout::ProjectLayout(const Scene& scene)
             {"sketch", sketchJson(object.track.sketch, fittedCurve, keysBeforeFit)}};
         if (object.massOverride)
             entry.insert("massProperties", massPropertiesJson(*object.massOverride));
+        // Absent: quaternion mode in the default convention, as files from before rotation modes read.
+        if (object.track.rotationMode != RotationMode{})
+            entry.insert("rotationMode", rotationModeJson(object.track.rotationMode));
         objects.append(entry);
     }
     QJsonArray times;
@@ -388,6 +341,12 @@ Keyframe keyframeFromJson(const JsonField& field)
     const JsonField position = field.member("position");
     key.pose.position = position.checked([&] { return positionValue(position.vector3()); });
     key.constrained = field.member("constrained").boolean();
+    if (field.has("eulerAngles")) {
+        const JsonField angles = field.member("eulerAngles");
+        key.eulerAngles = angles.vector3();
+        if (!key.eulerAngles->allFinite())
+            angles.fail(FileError::tr("the angles are not finite"));
+    }
     return key;
 }
 
@@ -412,6 +371,7 @@ std::vector<Keyframe> keysIn(const JsonField& field, BlockReading* binary)
         layout.position = position.checked([&] { return positionValue(position.vector3()); });
     if (const JsonField constrained = field.member("constrained"); !constrained.isNull())
         layout.constrained = constrained.boolean();
+    layout.eulerAngles = field.has("eulerAngles") && field.member("eulerAngles").boolean();
     return keysFromBlock(binary->blocks.next(layout.blockBytes(), field), layout, timeList, field);
 }
 
@@ -510,6 +470,25 @@ SketchState sketchIn(const JsonField& field, BlockReading* binary)
     return sketch;
 }
 
+// An Euler-mode track interpolates angles and every key has angles that give its orientation; a quaternion one
+// stores no angles.
+void checkRotationMode(const JsonField& field, const MotionTrack& track)
+{
+    const RotationMode& mode = track.rotationMode;
+    if (mode.isEuler() && !interpolatesAngles(track.interpolation))
+        field.member("interpolation").fail(FileError::tr("an object in Euler rotation mode interpolates euler or euler-cubic"));
+    const JsonField keys = field.member("keyframes");
+    for (std::size_t k = 0; k < track.keys.size(); ++k) {
+        const Keyframe& key = track.keys[k];
+        const JsonField at(QJsonValue(), keys.path() + QLatin1Char('[') + QString::number(k) + QStringLiteral("].eulerAngles"));
+        if (key.eulerAngles.has_value() != mode.isEuler())
+            at.fail(mode.isEuler() ? FileError::tr("an object in Euler rotation mode needs the angles of every key")
+                                   : FileError::tr("angles on an object in quaternion rotation mode"));
+        if (key.eulerAngles && !anglesGiveOrientation(*key.eulerAngles, key.pose.orientation, mode.convention))
+            at.fail(FileError::tr("the angles do not give the key's orientation"));
+    }
+}
+
 ObjectId optionalId(const JsonField& field)
 {
     return field.isNull() ? kNoObject : static_cast<ObjectId>(field.integer(1, kMaxId));
@@ -537,6 +516,9 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
     // Files written before ballistic interpolation take every span's default flight.
     if (field.has("flightSolutions"))
         setFlightSolutions(object.track.keys.edit(), field.member("flightSolutions"));
+    if (field.has("rotationMode"))
+        object.track.rotationMode = rotationModeIn(field.member("rotationMode"));
+    checkRotationMode(field, object.track);
     field.member("subdivision").member("levels").checked([&] {
         checkPoseBudget(object.track.keys.size(), object.track.interpolation, object.track.subdivision);
     });

@@ -3,6 +3,7 @@
 // values that undo commands copy and swap; only the Document (document.h) changes them, through
 // its undo stack.
 
+#include "core/euler_angles.h"
 #include "core/mass_properties.h"
 #include "core/orientation_curves.h"
 #include "core/pose.h"
@@ -33,6 +34,22 @@ struct Keyframe {
     // nearest the hermite motion. Kept on the key so that keys added, deleted or moved elsewhere leave each
     // span's choice with the span.
     int flightSolution = -1;
+    // The three angles as the artist keyed them, radians, in the track's Euler convention, any size (720° is two
+    // turns): present exactly when the track is in Euler rotation mode, and then
+    // pose.orientation == quaternionFromEulerAngles(*eulerAngles, convention) to rounding (rotation_mode.h).
+    std::optional<Eigen::Vector3d> eulerAngles = std::nullopt;
+};
+
+// How a track's keys hold their rotation, as Blender's rotation mode: quaternions (the orientation alone), or
+// Euler angles in a convention (the angles as typed, which the euler interpolations follow, so that 0° then 360°
+// is one turn). The convention also serves a quaternion track: its euler interpolations unwrap the
+// quaternions into it, and the inspector and graph editor show its angles in it.
+struct RotationMode {
+    enum class Kind { Quaternion, Euler };
+    Kind kind = Kind::Quaternion;
+    EulerConvention convention;
+    bool isEuler() const { return kind == Kind::Euler; }
+    bool operator==(const RotationMode&) const = default;
 };
 
 // How a skinned mesh follows its joints (linear blend skinning, model/skinning.h): each position
@@ -95,7 +112,10 @@ struct SketchState {
 
 struct MotionTrack {
     SharedVector<Keyframe> keys;  // strictly increasing times; copies share them (shared_vector.h)
-    InterpolationMethod interpolation = InterpolationMethod::Hermite;
+    InterpolationMethod interpolation = InterpolationMethod::Hermite; // euler or euler-cubic in Euler mode
+    // The object's rotation mode: on its track, since every evaluation of the keys (motion, bake, export,
+    // the worker) takes the track.
+    RotationMode rotationMode;
     SubdivisionSettings subdivision;  // used when interpolation is Screw
     SketchState sketch;
 };

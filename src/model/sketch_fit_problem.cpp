@@ -277,7 +277,7 @@ SketchFitProblem sketchFitProblem(const MotionTrack& track, const MassProperties
     // Checked: the edit window is there.
     const fit::TimeWindow window = *editWindow(track);
     const MotionTrack unfitted = withoutFit(track);
-    const auto keyed = std::make_shared<const TrackMotion>(unfitted, EulerConvention{}, body);
+    const auto keyed = std::make_shared<const TrackMotion>(unfitted, body);
     const bool screw = track.interpolation == InterpolationMethod::Screw;
     std::vector<fit::FitKey> keys;
     keys.reserve(unfitted.keys.size());
@@ -335,7 +335,7 @@ DrawnErrors drawnErrors(const MotionTrack& track, const TrackMotion& motionWitho
                         const MassProperties& body)
 {
     return {drawnError(track, motionWithoutFit),
-            drawnError(track, TrackMotion(withFitApplied(track, applied), EulerConvention{}, body))};
+            drawnError(track, TrackMotion(withFitApplied(track, applied), body))};
 }
 
 double relativeDelta(const MotionTrack& track, double absoluteDelta)

@@ -37,7 +37,8 @@ namespace {
 
 bool hasCubicPositions(InterpolationMethod method)
 {
-    return method == InterpolationMethod::Squad || method == InterpolationMethod::Hermite;
+    return method == InterpolationMethod::Squad || method == InterpolationMethod::Hermite ||
+           method == InterpolationMethod::EulerCubic;
 }
 
 std::vector<PositionKey> positionKeys(const MotionTrack& track)
@@ -52,8 +53,8 @@ std::vector<PositionKey> positionKeys(const MotionTrack& track)
 // An orientation curve with positions to go with it.
 class CurveMotion final : public detail::KeyedMotion {
 public:
-    CurveMotion(const MotionTrack& track, const EulerConvention& eulerConvention)
-        : orientations_(makeOrientationCurve(track.interpolation, orientationKeys(track), eulerConvention))
+    explicit CurveMotion(const MotionTrack& track)
+        : orientations_(orientationCurve(track))
         , positions_(positionKeys(track), hasCubicPositions(track.interpolation) ? PositionCurve::Shape::Cubic
                                                                                  : PositionCurve::Shape::Linear)
     {
@@ -62,6 +63,21 @@ public:
     Pose at(double time) const override { return {orientations_->sample(time).value, positions_.at(time)}; }
 
 private:
+    // In Euler rotation mode the euler interpolations run on the stored angles; otherwise on the orientations.
+    static std::unique_ptr<OrientationCurve> orientationCurve(const MotionTrack& track)
+    {
+        const RotationMode& mode = track.rotationMode;
+        if (!mode.isEuler() || !interpolatesAngles(track.interpolation))
+            return makeOrientationCurve(track.interpolation, orientationKeys(track), mode.convention);
+        std::vector<EulerAngleCurve::AngleKey> keys;
+        keys.reserve(track.keys.size());
+        for (const Keyframe& key : track.keys)
+            keys.push_back({key.time, key.eulerAngles.value_or(Eigen::Vector3d::Zero())});
+        const auto shape = track.interpolation == InterpolationMethod::EulerCubic ? EulerAngleCurve::Shape::Cubic
+                                                                                  : EulerAngleCurve::Shape::Linear;
+        return std::make_unique<EulerAngleCurve>(EulerAngleCurve::throughAngles(std::move(keys), mode.convention, shape));
+    }
+
     static std::vector<OrientationKey> orientationKeys(const MotionTrack& track)
     {
         std::vector<OrientationKey> keys;
@@ -147,8 +163,7 @@ private:
     Pose held_;
 };
 
-std::unique_ptr<const detail::KeyedMotion> keyedMotion(const MotionTrack& track, const EulerConvention& eulerConvention,
-                                                       const MassProperties& body)
+std::unique_ptr<const detail::KeyedMotion> keyedMotion(const MotionTrack& track, const MassProperties& body)
 {
     if (track.keys.empty())
         return nullptr;
@@ -159,7 +174,7 @@ std::unique_ptr<const detail::KeyedMotion> keyedMotion(const MotionTrack& track,
             throw std::invalid_argument("subdivision levels must be between 0 and 31");
         return std::make_unique<ScrewMotion>(track);
     }
-    return std::make_unique<CurveMotion>(track, eulerConvention);
+    return std::make_unique<CurveMotion>(track);
 }
 
 std::optional<HermiteQuaternionSpline> fittedSpline(const SketchState& sketch)
@@ -178,8 +193,8 @@ std::optional<std::pair<double, double>> cycleOf(const MotionTrack& track)
 
 } // namespace
 
-TrackMotion::TrackMotion(const MotionTrack& track, const EulerConvention& eulerConvention, const MassProperties& body)
-    : keyed_(keyedMotion(track, eulerConvention, body))
+TrackMotion::TrackMotion(const MotionTrack& track, const MassProperties& body)
+    : keyed_(keyedMotion(track, body))
     , fitted_(fittedSpline(track.sketch))
     , cycle_(cycleOf(track))
 {
@@ -281,10 +296,9 @@ std::optional<PositionCurve> cubicPositionCurve(const MotionTrack& track)
     return PositionCurve(positionKeys(track), PositionCurve::Shape::Cubic);
 }
 
-std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range,
-                                 const EulerConvention& eulerConvention, const MassProperties& body)
+std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range, const MassProperties& body)
 {
-    const TrackMotion motion(track, eulerConvention, body);
+    const TrackMotion motion(track, body);
     const std::vector<double> times = bakeTimes(keyTimes(track), range);
     std::vector<TimedPose> poses;
     poses.reserve(times.size());

@@ -2,7 +2,9 @@
 // The motion of a track as the project evaluates it: its pose at any time, and a bake at a frame rate.
 //
 // - slerp, nlerp, euler: that orientation curve through the keys, positions linear;
-//   squad, hermite: that orientation curve, positions cubic (PositionCurve::Shape::Cubic).
+//   squad, hermite, euler-cubic: that orientation curve, positions cubic (PositionCurve::Shape::Cubic).
+//   euler and euler-cubic interpolate the keys' stored angles on a track in Euler rotation mode (so 0° then
+//   720° is two turns), and otherwise the orientations unwrapped into the track's convention (the Euler filter).
 //   Before the first key and after the last the end pose is held.
 // - screw: ScrewBender's motion. The key poses are subdivided with track.subdivision and joined by
 //   screws (a polyscrew); time maps to the polyscrew's parameter by the key times' C¹ time map
@@ -41,10 +43,9 @@ class TrackMotion {
 public:
     // Built once, evaluated at many times. Throws std::invalid_argument for key or control-point
     // times that do not strictly increase, a subdivision too large to hold, or a free flight that cannot be
-    // solved. The convention is the one the euler interpolation uses, `body` the one the ballistic one flies
-    // (by default a unit sphere's: objectMassProperties gives an object's).
-    explicit TrackMotion(const MotionTrack& track, const EulerConvention& eulerConvention = {},
-                         const MassProperties& body = {});
+    // solved. `body` is the one the ballistic interpolation flies (by default a unit sphere's:
+    // objectMassProperties gives an object's).
+    explicit TrackMotion(const MotionTrack& track, const MassProperties& body = {});
     ~TrackMotion();
     TrackMotion(TrackMotion&&) noexcept;
     TrackMotion& operator=(TrackMotion&&) noexcept;
@@ -110,8 +111,7 @@ struct TimedPose {
 
 // The track's poses at bakeTimes(its key times, range). Throws std::invalid_argument for a pose that is
 // not unitSample.
-std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range,
-                                 const EulerConvention& eulerConvention = {}, const MassProperties& body = {});
+std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range, const MassProperties& body = {});
 
 std::vector<double> keyTimes(const MotionTrack& track);
 

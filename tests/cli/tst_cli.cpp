@@ -171,6 +171,7 @@ private slots:
     void cubicAndLinearPositions_data();
     void cubicAndLinearPositions();
     void screwFollowsTheGeodesicPerSpan();
+    void eulerInterpolatesTheAnglesAsRead();
 
     void subdivideCycle();
     void subdivideOpen_data();
@@ -347,6 +348,7 @@ void TstCli::cubicAndLinearPositions_data()
     QTest::newRow("euler") << "euler" << false;
     QTest::newRow("squad") << "squad" << true;
     QTest::newRow("hermite") << "hermite" << true;
+    QTest::newRow("euler-cubic") << "euler-cubic" << true;
 }
 
 void TstCli::cubicAndLinearPositions()
@@ -373,6 +375,20 @@ void TstCli::cubicAndLinearPositions()
     }
     QVERIFY((csv.position(4) - expected).norm() < kTolerance);
     QVERIFY(csv.quaternion(4).isApprox(Eigen::Quaterniond::Identity(), kTolerance));
+}
+
+// Keys read from Euler columns keep their angles: 0 then 360 about z (zyx's first angle) is a full turn, a
+// quarter of it at every quarter of the time; from quaternion columns the same keys are one orientation.
+void TstCli::eulerInterpolatesTheAnglesAsRead()
+{
+    const QString in = writeFile("spin.csv", "time,e1,e2,e3\n0,0,0,0\n1,360,0,0\n");
+    const QString out = path("spin-frames.csv");
+    QVERIFY(succeeds({"interpolate", in, "-o", out, "--method", "euler", "--order", "zyx", "--fps", "4"}));
+    const Csv csv = readCsv(out);
+    QCOMPARE(csv.times(), (std::vector<double>{0, 0.25, 0.5, 0.75, 1}));
+    for (std::size_t row = 0; row < csv.rows.size(); ++row)
+        QVERIFY(rotationDistance(csv.quaternion(row), about({0, 0, 1}, 2 * kPi * csv.times()[row])) < kTolerance);
+    QVERIFY(rotationDistance(csv.quaternion(2), about({0, 0, 1}, kPi)) < kTolerance);
 }
 
 // Between keys i and i+1 the screw parameter is p(t) − i, p the key times' C¹ time map (KeyTimeMap,
@@ -667,7 +683,7 @@ void TstCli::badInput_data()
     QTest::newRow("unknown method") << QStringList{"interpolate", "IN", "-o", "OUT", "--method", "cubic", "--fps", "24"}
                                     << keys << 2
                                     << "interpolate: --method: unknown value 'cubic'; expected slerp, nlerp, squad, "
-                                       "hermite, euler, screw or ballistic";
+                                       "hermite, euler, euler-cubic, screw or ballistic";
     QTest::newRow("unknown scheme") << QStringList{"subdivide", "IN", "-o", "OUT", "--scheme", "loop", "--levels", "2"}
                                     << keys << 2
                                     << "subdivide: --scheme: unknown value 'loop'; expected four-point, four-point-b, "

@@ -51,6 +51,9 @@ double stepBound(InterpolationMethod method, const std::vector<OrientationKey>& 
         return 8.0 * keySpeed * kStep;
     case InterpolationMethod::Euler:
         return 3.0 * kPi / shortestSegment * kStep + kSlack;
+    case InterpolationMethod::EulerCubic:
+        // Each angle's slope is at most three times its chords' (orientation_curves.h).
+        return 9.0 * kPi / shortestSegment * kStep + kSlack;
     case InterpolationMethod::Screw:
     case InterpolationMethod::Ballistic:
         break;

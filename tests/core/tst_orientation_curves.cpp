@@ -244,6 +244,7 @@ void TestOrientationCurves::everyCurve()
         QVERIFY(dynamic_cast<const HermiteQuaternionSpline*>(curve.get()) != nullptr);
         break;
     case InterpolationMethod::Euler:
+    case InterpolationMethod::EulerCubic:
         QVERIFY(dynamic_cast<const EulerAngleCurve*>(curve.get()) != nullptr);
         break;
     case InterpolationMethod::Screw:

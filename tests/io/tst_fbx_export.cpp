@@ -21,9 +21,11 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -156,6 +158,53 @@ const FbxNode* propertyEntry(const FbxNode& owner, const std::string& name)
     return nullptr;
 }
 
+// The Lcl Rotation curves of every model that has them: each channel's key times, values (degrees) and flags.
+struct RotationCurves {
+    QString name;
+    std::array<std::vector<std::int64_t>, 3> channelTimes;
+    std::vector<std::vector<float>> angles;
+    std::array<std::vector<std::int32_t>, 3> flags;
+};
+
+std::vector<RotationCurves> rotationCurvesOf(const FbxNode& fbx)
+{
+    const FbxNode& objects = *fbx.child("Objects");
+    // Curves by id, and which curve feeds which channel of which curve node.
+    std::map<std::int64_t, const FbxNode*> byId;
+    for (const FbxNode& o : objects.children)
+        byId[o.scalar<std::int64_t>(0)] = &o;
+    std::map<std::int64_t, std::map<std::string, std::int64_t>> channels; // curve node -> d|X.. -> curve
+    std::map<std::int64_t, std::pair<std::int64_t, std::string>> targets; // curve node -> model, property
+    for (const FbxNode& c : fbx.child("Connections")->children)
+        if (c.text(0) == "OP") {
+            const std::int64_t source = c.scalar<std::int64_t>(1);
+            const std::int64_t destination = c.scalar<std::int64_t>(2);
+            if (byId.at(source)->name == "AnimationCurve")
+                channels[destination][c.text(3)] = source;
+            else
+                targets[source] = {destination, c.text(3)};
+        }
+    std::vector<RotationCurves> result;
+    for (const auto& [curveNode, target] : targets) {
+        if (target.second != "Lcl Rotation")
+            continue;
+        RotationCurves rotation;
+        const std::string modelName = byId.at(target.first)->text(1);
+        rotation.name = QString::fromUtf8(modelName.substr(0, modelName.find('\0')));
+        const auto& curves = channels.at(curveNode);
+        std::size_t axis = 0;
+        for (const char* channel : {"d|X", "d|Y", "d|Z"}) {
+            const FbxNode& curve = *byId.at(curves.at(channel));
+            rotation.channelTimes[axis] = curve.child("KeyTime")->array<std::int64_t>(0);
+            rotation.angles.push_back(curve.child("KeyValueFloat")->array<float>(0));
+            rotation.flags[axis] = curve.child("KeyAttrFlags")->array<std::int32_t>(0);
+            ++axis;
+        }
+        result.push_back(std::move(rotation));
+    }
+    return result;
+}
+
 // --- comparing motion -------------------------------------------------------------------------------
 
 // FBX's Euler XYZ written out independently of Gyre's core: R = Rz(z)·Ry(y)·Rx(x), angles in degrees.
@@ -224,6 +273,7 @@ private slots:
     void everyObjectAtEverySample_data();
     void everyObjectAtEverySample();
     void curvesAreUnwrappedAndPlayTheShortWay();
+    void aTwoTurnEulerSpinIsARampToTwoTurns();
     void frameRateAndSpanAreStored_data();
     void frameRateAndSpanAreStored();
     void aSpanBeyondFbxTicksIsRefused();
@@ -296,42 +346,17 @@ void TstFbxExport::curvesAreUnwrappedAndPlayTheShortWay()
     const model::Scene original = awkwardScene();
     const QString file = path(QStringLiteral("spins.fbx"));
     exportScene(original, file, SceneFormat::Fbx, original.fps);
-    const FbxNode fbx = readFbx(file);
-    const FbxNode& objects = *fbx.child("Objects");
-
-    // Curves by id, and which curve feeds which channel of which curve node.
-    std::map<std::int64_t, const FbxNode*> byId;
-    for (const FbxNode& o : objects.children)
-        byId[o.scalar<std::int64_t>(0)] = &o;
-    std::map<std::int64_t, std::map<std::string, std::int64_t>> channels; // curve node -> d|X.. -> curve
-    std::map<std::int64_t, std::pair<std::int64_t, std::string>> targets; // curve node -> model, property
-    for (const FbxNode& c : fbx.child("Connections")->children)
-        if (c.text(0) == "OP") {
-            const std::int64_t source = c.scalar<std::int64_t>(1);
-            const std::int64_t destination = c.scalar<std::int64_t>(2);
-            if (byId.at(source)->name == "AnimationCurve")
-                channels[destination][c.text(3)] = source;
-            else
-                targets[source] = {destination, c.text(3)};
-        }
-
     int rotationNodes = 0;
-    for (const auto& [curveNode, target] : targets) {
-        if (target.second != "Lcl Rotation")
-            continue;
+    for (const RotationCurves& rotation : rotationCurvesOf(readFbx(file))) {
         ++rotationNodes;
-        const std::string modelName = byId.at(target.first)->text(1);
-        const QString name = QString::fromUtf8(modelName.substr(0, modelName.find('\0')));
-        const auto& curves = channels.at(curveNode);
-        std::vector<std::int64_t> times = byId.at(curves.at("d|X"))->child("KeyTime")->array<std::int64_t>(0);
-        std::vector<std::vector<float>> angles;
-        for (const char* channel : {"d|X", "d|Y", "d|Z"}) {
-            const FbxNode& curve = *byId.at(curves.at(channel));
-            QCOMPARE(curve.child("KeyTime")->array<std::int64_t>(0), times);
-            angles.push_back(curve.child("KeyValueFloat")->array<float>(0));
-            QCOMPARE(curve.child("KeyAttrFlags")->array<std::int32_t>(0), std::vector<std::int32_t>{4}); // linear
+        const QString& name = rotation.name;
+        const std::vector<std::int64_t>& times = rotation.channelTimes[0];
+        const std::vector<std::vector<float>>& angles = rotation.angles;
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            QCOMPARE(rotation.channelTimes[axis], times);
+            QCOMPARE(rotation.flags[axis], std::vector<std::int32_t>{4}); // linear
             for (std::size_t k = 1; k < times.size(); ++k)
-                GYRE_CHECK(std::abs(angles.back()[k] - angles.back()[k - 1]) <= 180.0f,
+                GYRE_CHECK(std::abs(angles[axis][k] - angles[axis][k - 1]) <= 180.0f,
                            name + " jumps at key " + QString::number(k));
         }
         const bool twin = name.startsWith(QStringLiteral("twin"));
@@ -353,6 +378,41 @@ void TstFbxExport::curvesAreUnwrappedAndPlayTheShortWay()
         }
     }
     QCOMPARE(rotationNodes, 3); // the still object has no curves
+}
+
+// An object in Euler rotation mode keyed 0° and 720° about z, 2 s apart, linear in its angles: the exported z
+// curve rises steadily through 360° at the middle to 720°, since it is unwrapped from the frames.
+void TstFbxExport::aTwoTurnEulerSpinIsARampToTwoTurns()
+{
+    model::Scene scene;
+    scene.fps = 24.0;
+    scene.endTime = 2.0;
+    model::SceneObject spin;
+    spin.id = scene.nextObjectId++;
+    spin.name = QStringLiteral("spin");
+    spin.track.rotationMode.kind = model::RotationMode::Kind::Euler;
+    spin.track.interpolation = InterpolationMethod::Euler;
+    for (const double turns : {0.0, 2.0}) {
+        model::Keyframe key;
+        key.time = turns;
+        key.eulerAngles = Eigen::Vector3d(0.0, 0.0, 2.0 * std::numbers::pi * turns);
+        key.pose.orientation = fbxEulerXyz(0.0, 0.0, 360.0 * turns);
+        spin.track.keys.push_back(key);
+    }
+    scene.objects = {spin};
+    const QString file = path(QStringLiteral("two-turns.fbx"));
+    exportScene(scene, file, SceneFormat::Fbx, scene.fps);
+    const std::vector<RotationCurves> curves = rotationCurvesOf(readFbx(file));
+    QCOMPARE(curves.size(), std::size_t{1});
+    const std::vector<float>& z = curves.front().angles[2];
+    const std::vector<std::int64_t>& times = curves.front().channelTimes[2];
+    QCOMPARE(z.size(), std::size_t{49});
+    for (std::size_t k = 0; k < z.size(); ++k) {
+        const double time = static_cast<double>(times[k]) / static_cast<double>(kFbxTicksPerSecond);
+        GYRE_CHECK(std::abs(double{z[k]} - 360.0 * time) < 1e-3, "z at " + str(time));
+    }
+    QVERIFY(std::abs(z[24] - 360.0f) < 1e-3f);
+    QVERIFY(std::abs(z.back() - 720.0f) < 1e-3f);
 }
 
 void TstFbxExport::frameRateAndSpanAreStored_data()

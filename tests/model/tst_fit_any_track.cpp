@@ -221,8 +221,8 @@ void TstFitAnyTrack::aBallisticTrackIsFittedFromTheBodyItFlies()
     sketch.window = std::pair(0.1, 0.4);
     const MassProperties box{3.0, Eigen::Vector3d(0.1, 0.0, -0.2), Eigen::Vector3d(0.5, 2.0, 2.4).asDiagonal()};
     const SketchFitProblem problem = sketchFitProblem(track, box);
-    const TrackMotion flown(track, {}, box);
-    const TrackMotion sphere(track, {}, MassProperties{});
+    const TrackMotion flown(track, box);
+    const TrackMotion sphere(track, MassProperties{});
     double sphereApart = 0.0;
     for (double time = 0.0; time <= 0.5; time += 0.025) {
         QCOMPARE(angle(problem.motionWithoutFit->at(time).orientation, flown.at(time).orientation), 0.0);

@@ -639,7 +639,7 @@ void TstProjectFile::refusesMalformedFiles_data()
     row("index beyond positions", projectWith({"meshes", 0, "indices"}, "AAAAAAEAAAAFAAAA"),
         "meshes[0]: mesh index 5 is beyond its 3 positions");
     row("unknown interpolation", projectWith({"objects", 0, "interpolation"}, "cubic"),
-        "objects[0].interpolation: unknown value \"cubic\"; expected one of slerp, nlerp, squad, hermite, euler, screw, ballistic");
+        "objects[0].interpolation: unknown value \"cubic\"; expected one of slerp, nlerp, squad, hermite, euler, euler-cubic, screw, ballistic");
     row("too many levels", projectWith({"objects", 0, "subdivision", "levels"}, 17),
         "objects[0].subdivision.levels: 17 is outside 0 to 16");
     row("zero fps", projectWith({"fps"}, 0), "fps: 0 is not positive");

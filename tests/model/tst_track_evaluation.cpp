@@ -318,12 +318,12 @@ void TstTrackEvaluation::ballisticFliesTheChosenFlights()
     MassProperties body;
     body.inertia = Eigen::Vector3d(0.6, 1.0, 1.3).asDiagonal();
     body.centre = Eigen::Vector3d(0.1, 0.0, 0.0);
-    const TrackMotion byDefault(track, {}, body);
+    const TrackMotion byDefault(track, body);
     QCOMPARE(byDefault.flightChoices().size(), std::size_t(2));
     const std::size_t count = byDefault.flightChoices()[1].count;
     QVERIFY(count >= 2);
     track.keys.edit()[1].flightSolution = static_cast<int>(byDefault.flightChoices()[1].chosen + 1);
-    const TrackMotion stepped(track, {}, body);
+    const TrackMotion stepped(track, body);
     QCOMPARE(stepped.flightChoices()[0].chosen, byDefault.flightChoices()[0].chosen);
     QCOMPARE(stepped.flightChoices()[1].chosen, (byDefault.flightChoices()[1].chosen + 1) % count);
     QVERIFY(poseDistance(stepped.at(0.3), byDefault.at(0.3)) < kTolerance);

@@ -253,9 +253,13 @@ void GraphEditorPanel::setUpPlot()
 model::ChannelSettings GraphEditorPanel::settings() const
 {
     const model::Scene& scene = document_.scene();
-    return {chosenConvention(*orderChooser_, *frameChooser_),
-            static_cast<model::VelocityFrame>(velocityFrameChooser_->currentData().toInt()), scene.startTime,
-            scene.endTime, kSampleCount};
+    model::ChannelSettings settings{chosenConvention(*orderChooser_, *frameChooser_),
+                                    static_cast<model::VelocityFrame>(velocityFrameChooser_->currentData().toInt()),
+                                    scene.startTime, scene.endTime, kSampleCount};
+    const model::SceneObject* object = document_.object(selection_.object());
+    settings.keysStoreAngles = object != nullptr && object->track.rotationMode.isEuler() &&
+                               object->track.rotationMode.convention == settings.convention;
+    return settings;
 }
 
 void GraphEditorPanel::showCurves(const model::ChannelCurves& curves)
@@ -461,6 +465,13 @@ void GraphEditorPanel::movePlot(QMouseEvent* event)
     Eigen::Vector3d angles = drag_->pressAngles;
     angles[drag_->angle] += plot_->yAxis->pixelToCoord(event->position().y()) - drag_->pressValue;
     const EulerConvention convention = chosenConvention(*orderChooser_, *frameChooser_);
+    const model::SceneObject* object = document_.object(drag_->object);
+    if (object != nullptr && object->track.rotationMode.isEuler() && object->track.rotationMode.convention == convention) {
+        // The angles are the key's own: the drag sets the stored angle, past ±180° if it goes there.
+        drag_->gesture->push(new model::SetKeyframeOrientationCommand(document_, drag_->object, drag_->key,
+                                                                      Eigen::Vector3d(angles * kRadiansPerDegree)));
+        return;
+    }
     // Kept in the stored key's hemisphere: the drag turns the key, it does not flip its sign.
     const Eigen::Quaterniond orientation =
         alignedWith(quaternionFromEulerAngles(angles * kRadiansPerDegree, convention), drag_->pressOrientation);
@@ -580,8 +591,12 @@ void GraphEditorPanel::updateTransform(const QPointF& pointer)
             for (std::size_t i = 0; i < transform_->selected.size(); ++i) {
                 Eigen::Vector3d angles = transform_->angles[i];
                 angles[*transform_->angle] += raised;
-                Eigen::Quaterniond& orientation = (*keys)[transform_->selected[i]].pose.orientation;
-                orientation = alignedWith(quaternionFromEulerAngles(angles * kRadiansPerDegree, convention), orientation);
+                model::Keyframe& key = (*keys)[transform_->selected[i]];
+                key.pose.orientation =
+                    alignedWith(quaternionFromEulerAngles(angles * kRadiansPerDegree, convention), key.pose.orientation);
+                // Angles the key stores in this convention move with it; others follow the orientation (rotation_mode.h).
+                if (key.eulerAngles && settings().keysStoreAngles)
+                    key.eulerAngles = angles * kRadiansPerDegree;
             }
         }
     }

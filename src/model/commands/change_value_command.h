@@ -17,6 +17,8 @@
 #include <Eigen/Geometry>
 
 #include <cstddef>
+#include <optional>
+#include <tuple>
 #include <utility>
 
 namespace gyre::model {
@@ -30,6 +32,13 @@ bool sameValue(const Value& a, const Value& b)
 }
 // Component by component: q and −q are the same rotation but not the same value of the document.
 inline bool sameValue(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) { return a.coeffs() == b.coeffs(); }
+
+// A key's orientation and its stored angles (scene.h's Keyframe).
+using KeyRotation = std::tuple<Eigen::Quaterniond, std::optional<Eigen::Vector3d>>;
+inline bool sameValue(const KeyRotation& a, const KeyRotation& b)
+{
+    return sameValue(std::get<0>(a), std::get<0>(b)) && std::get<1>(a) == std::get<1>(b);
+}
 
 // The object a field belongs to (kNoObject for a field of the scene) and, for a field of a keyframe
 // or stroke, its index.

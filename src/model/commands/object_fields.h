@@ -41,8 +41,11 @@ struct MemberField {
 };
 
 inline constexpr auto keyTime = [](auto& object, std::size_t key) -> auto& { return object.track.keys[key].time; };
-inline constexpr auto keyOrientation = [](auto& object, std::size_t key) -> auto& {
-    return object.track.keys[key].pose.orientation;
+// The orientation with the stored angles, so that undo puts back the angles an edit of the orientation alone
+// changed (rotation_mode.h).
+inline constexpr auto keyOrientation = [](auto& object, std::size_t key) {
+    auto& keyframe = object.track.keys[key];
+    return std::tie(keyframe.pose.orientation, keyframe.eulerAngles);
 };
 inline constexpr auto keyPosition = [](auto& object, std::size_t key) -> auto& {
     return object.track.keys[key].pose.position;
@@ -75,7 +78,7 @@ inline constexpr auto trackKeys = [](auto& object, std::size_t) -> auto& { retur
 
 using KeyframeTimeField = MemberField<keyTime, double, Merge::WithinGesture, Change::Keyframes>;
 using KeyframeOrientationField =
-    MemberField<keyOrientation, Eigen::Quaterniond, Merge::WithinGesture, Change::Keyframes>;
+    MemberField<keyOrientation, KeyRotation, Merge::WithinGesture, Change::Keyframes>;
 using KeyframePositionField = MemberField<keyPosition, Eigen::Vector3d, Merge::WithinGesture, Change::Keyframes>;
 using KeyframesField = MemberField<trackKeys, SharedVector<Keyframe>, Merge::Never, Change::Keyframes>;
 using KeyframeConstraintField = MemberField<keyConstrained, bool, Merge::Never, Change::Keyframes>;
@@ -103,6 +106,13 @@ inline constexpr auto keyframesAndSketch = [](auto& object, std::size_t) {
     return std::tie(object.track.keys, object.track.sketch);
 };
 using KeyframesAndSketchField = MemberField<keyframesAndSketch, std::tuple<SharedVector<Keyframe>, SketchState>, Merge::Never, Change::Keyframes, Change::Sketch>;
+
+// The rotation mode with the keys and the interpolation it converts (SetRotationModeCommand).
+inline constexpr auto trackRotationMode = [](auto& object, std::size_t) {
+    return std::tie(object.track.rotationMode, object.track.keys, object.track.interpolation);
+};
+using RotationModeField = MemberField<trackRotationMode, std::tuple<RotationMode, SharedVector<Keyframe>, InterpolationMethod>,
+                                      Merge::Never, Change::Keyframes, Change::TrackSettings>;
 
 // The parent and, because parents come before their children, the order of all objects.
 struct ParentField {

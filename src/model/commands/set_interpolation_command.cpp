@@ -3,6 +3,8 @@
 #include "model/commands/command_checks.h"
 #include "model/value_checks.h"
 
+#include <stdexcept>
+
 namespace gyre::model {
 
 namespace {
@@ -11,6 +13,9 @@ namespace {
 InterpolationMethod checkedMethod(const Document& document, ObjectId object, InterpolationMethod method)
 {
     const MotionTrack& track = requireObject(document, object).track;
+    // The quaternion methods would lose the turns the angles hold.
+    if (track.rotationMode.isEuler() && !interpolatesAngles(method))
+        throw std::invalid_argument("an object in Euler rotation mode interpolates its angles: euler or euler-cubic");
     checkPoseBudget(track.keys.size(), method, track.subdivision);
     return method;
 }

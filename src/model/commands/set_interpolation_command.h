@@ -7,7 +7,8 @@ namespace gyre::model {
 
 class SetInterpolationCommand final : public ChangeValueCommand<InterpolationField> {
 public:
-    // Throws std::invalid_argument for an unknown object.
+    // Throws std::invalid_argument for an unknown object, or a method other than euler and euler-cubic for an
+    // object in Euler rotation mode.
     SetInterpolationCommand(Document& document, ObjectId object, InterpolationMethod method,
                             QUndoCommand* parent = nullptr);
 };

@@ -1,0 +1,182 @@
+// An object's rotation mode in the real window: the Inspector's Rotation Mode chooser puts the object in Euler
+// mode (one undo step), the angle fields then come first and store what is typed, so two keys typed 0° and 720°
+// about z are two turns; the bake of that spin, unwrapped, grows through 360° at the middle and ends at 720°, as
+// the automatic-tangent cubic written out here says. In the Graph Editor the z channel is a ramp to 720°, and
+// dragging its key sets the stored angle, in one undo step.
+
+#include "app/graph_editor/graph_editor_panel.h"
+#include "app/main_window.h"
+#include "gui_test_support.h"
+#include "inspected_window.h"
+#include "model/commands/import_objects_command.h"
+#include "model/commands/set_time_range_command.h"
+#include "model/track_evaluation.h"
+
+#include <QComboBox>
+#include <QDockWidget>
+#include <QLayout>
+#include <QSignalSpy>
+#include <QTest>
+#include <qcustomplot.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+using namespace gyre;
+using model::Channel;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDegrees = 180.0 / kPi;
+constexpr double kFirst = 0.5; // the keys' times, seconds
+constexpr double kLast = 2.5;
+
+model::SceneObject unturnedBlock()
+{
+    model::SceneObject object;
+    object.id = 1;
+    object.name = QStringLiteral("spinner");
+    for (const double time : {kFirst, kLast})
+        object.track.keys.push_back(model::Keyframe{time, Pose{}, true});
+    return object;
+}
+
+// The z angle of the euler-cubic spin from 0° to 720°: flat at both keys (the first and last), so with
+// u = (t − t₀)/(t₁ − t₀) the Hermite cubic is 720°·(3u² − 2u³).
+double spinDegrees(double time)
+{
+    const double u = std::clamp((time - kFirst) / (kLast - kFirst), 0.0, 1.0);
+    return 720.0 * (3.0 * u * u - 2.0 * u * u * u);
+}
+
+} // namespace
+
+class TestRotationMode : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { test::useTestSettings(); }
+
+    void init()
+    {
+        window_ = std::make_unique<app::MainWindow>();
+        window_->resize(1400, 900);
+        window_->show();
+        window_->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+        window_->playback().pause();
+        model::Document& document = window_->document();
+        auto* import = new model::ImportObjectsCommand(document, {unturnedBlock()});
+        document.push(import);
+        object_ = import->ids().front();
+        document.push(new model::SetTimeRangeCommand(document, model::TimeRange{24.0, 0.0, 3.0}));
+        document.undoStack().clear();
+        window_->selection().selectKey(object_, 0);
+    }
+
+    void cleanup() { window_.reset(); }
+
+    void aSpinTypedInEulerModeBakesTwoTurns()
+    {
+        model::Document& document = window_->document();
+        auto* mode = window_->findChild<QComboBox*>(QStringLiteral("rotationModeCombo"));
+        QVERIFY(mode != nullptr);
+        test::choose(mode, mode->findText(QStringLiteral("Euler angles")));
+        QCOMPARE(document.undoStack().count(), 1);
+        QCOMPARE(document.undoStack().undoText(), QStringLiteral("Set Rotation Mode"));
+        const model::MotionTrack& track = document.object(object_)->track;
+        QVERIFY(track.rotationMode.isEuler());
+        QCOMPARE(track.interpolation, InterpolationMethod::EulerCubic);
+        QCOMPARE(*track.keys[0].eulerAngles, Eigen::Vector3d::Zero());
+
+        // The angle fields come before the quaternion's.
+        auto* euler = window_->findChild<QWidget*>(QStringLiteral("eulerGroup"));
+        auto* quaternion = window_->findChild<QWidget*>(QStringLiteral("quaternionGroup"));
+        QLayout* fields = euler->parentWidget()->layout();
+        QVERIFY(fields->indexOf(euler) < fields->indexOf(quaternion));
+
+        auto* third = window_->findChild<QLineEdit*>(QStringLiteral("euler3Edit"));
+        window_->selection().selectKey(object_, 0);
+        test::enter(third, QStringLiteral("0"));
+        window_->selection().selectKey(object_, 1);
+        test::enter(third, QStringLiteral("720"));
+        QCOMPARE(document.undoStack().count(), 2); // 0 was already stored: no step
+        QCOMPARE(*document.object(object_)->track.keys[1].eulerAngles, Eigen::Vector3d(0.0, 0.0, 720.0 / kDegrees));
+        QCOMPARE(third->text(), QStringLiteral("720"));
+        // The orientation is the identity, two whole turns.
+        QVERIFY(std::abs(std::abs(document.object(object_)->track.keys[1].pose.orientation.w()) - 1.0) < 1e-12);
+
+        const std::vector<model::TimedPose> baked =
+            model::bakeTrack(document.object(object_)->track, {kFirst, kLast, 24.0});
+        std::vector<Eigen::Quaterniond> rotations;
+        for (const model::TimedPose& sample : baked)
+            rotations.push_back(sample.pose.orientation);
+        const std::vector<Eigen::Vector3d> unwrapped = unwrappedEulerAngles(rotations, {});
+        double previous = -1.0;
+        for (std::size_t i = 0; i < baked.size(); ++i) {
+            const double degrees = unwrapped[i].z() * kDegrees;
+            QVERIFY2(std::abs(degrees - spinDegrees(baked[i].time)) < 1e-6, qPrintable(QString::number(baked[i].time)));
+            QVERIFY(degrees >= previous);
+            previous = degrees;
+            QVERIFY(unwrapped[i].head<2>().norm() < 1e-9);
+        }
+        // At the middle a whole turn (the identity) with one turn behind it; at the end two.
+        const auto middle = std::find_if(baked.begin(), baked.end(),
+                                         [](const model::TimedPose& sample) { return sample.time >= 1.5 - 1e-9; });
+        QVERIFY(std::abs(middle->time - 1.5) < 1e-9);
+        QVERIFY(std::abs(unwrapped[static_cast<std::size_t>(middle - baked.begin())].z() * kDegrees - 360.0) < 1e-6);
+        QVERIFY(std::abs(std::abs(middle->pose.orientation.w()) - 1.0) < 1e-12);
+        QVERIFY(std::abs(unwrapped.back().z() * kDegrees - 720.0) < 1e-6);
+
+        document.undoStack().undo();
+        QCOMPARE(*document.object(object_)->track.keys[1].eulerAngles, Eigen::Vector3d::Zero());
+    }
+
+    void draggingAKeyOnAnEulerChannelSetsItsStoredAngle()
+    {
+        model::Document& document = window_->document();
+        auto* mode = window_->findChild<QComboBox*>(QStringLiteral("rotationModeCombo"));
+        test::choose(mode, mode->findText(QStringLiteral("Euler angles")));
+        window_->selection().selectKey(object_, 1);
+        test::enter(window_->findChild<QLineEdit*>(QStringLiteral("euler3Edit")), QStringLiteral("720"));
+        document.undoStack().clear();
+
+        auto* panel = window_->findChild<app::GraphEditorPanel*>();
+        QSignalSpy updated(panel, &app::GraphEditorPanel::curvesUpdated);
+        auto* dock = window_->findChild<QDockWidget*>(QStringLiteral("graphEditorDock"));
+        dock->toggleViewAction()->trigger();
+        dock->raise();
+        QVERIFY(updated.wait(5000));
+        QTRY_VERIFY_WITH_TIMEOUT(panel->graph(Channel::EulerThird)->dataCount() > 0, 5000);
+        // The z channel is the ramp the angles make, its keys at 0° and 720°.
+        const QCPGraph* spin = panel->graph(Channel::EulerThird);
+        for (int sample = 0; sample < spin->dataCount(); ++sample) {
+            const double time = spin->data()->at(sample)->key;
+            QVERIFY2(std::abs(spin->data()->at(sample)->value - spinDegrees(time)) < 1e-6, qPrintable(QString::number(time)));
+        }
+        QVERIFY(std::abs(panel->keyGraph(Channel::EulerThird)->data()->at(1)->value - 720.0) < 1e-6);
+
+        QCustomPlot* plot = panel->plot();
+        const QPointF key = QPointF(plot->xAxis->coordToPixel(kLast), plot->yAxis->coordToPixel(720.0)).toPoint();
+        const QPointF to = key + QPointF(0.0, -30.0);
+        const double raised = plot->yAxis->pixelToCoord(to.y()) - plot->yAxis->pixelToCoord(key.y());
+        QVERIFY(raised > 1.0);
+        test::dragAlong(plot, test::straightPath(key, to, 6));
+        QCOMPARE(document.undoStack().count(), 1);
+        QCOMPARE(document.undoStack().undoText(), QStringLiteral("Rotate Keyframe"));
+        const Eigen::Vector3d stored = *document.object(object_)->track.keys[1].eulerAngles;
+        QVERIFY2(std::abs(stored.z() * kDegrees - (720.0 + raised)) < 1e-6, qPrintable(QString::number(stored.z() * kDegrees)));
+        QVERIFY(stored.head<2>().norm() < 1e-12);
+        document.undoStack().undo();
+        QCOMPARE(*document.object(object_)->track.keys[1].eulerAngles, Eigen::Vector3d(0.0, 0.0, 720.0 / kDegrees));
+    }
+
+private:
+    std::unique_ptr<app::MainWindow> window_;
+    model::ObjectId object_ = model::kNoObject;
+};
+
+QTEST_MAIN(TestRotationMode)
+#include "tst_rotation_mode.moc"
