@@ -7,6 +7,7 @@
 #include "core/quaternion_math.h"
 #include "core/subdivision.h"
 #include "core/number_text.h"
+#include "model/gravity.h"
 #include "model/object_mass.h"
 #include "model/value_checks.h"
 
@@ -106,8 +107,8 @@ private:
 // is held.
 class BallisticMotion final : public detail::KeyedMotion {
 public:
-    BallisticMotion(const MotionTrack& track, const MassProperties& body)
-        : flight_(flightOf(track, body))
+    BallisticMotion(const MotionTrack& track, const MassProperties& body, const Gravity& gravity)
+        : flight_(flightOf(track, body, gravity))
         , held_(track.keys.front().pose)
     {
     }
@@ -124,7 +125,8 @@ public:
     }
 
 private:
-    static std::optional<fit::BallisticFlight> flightOf(const MotionTrack& track, const MassProperties& body)
+    static std::optional<fit::BallisticFlight> flightOf(const MotionTrack& track, const MassProperties& body,
+                                                        const Gravity& gravity)
     {
         if (track.keys.size() < 2)
             return std::nullopt;
@@ -138,6 +140,8 @@ private:
         fit::FlightBody flightBody;
         flightBody.inertia = body.inertia;
         flightBody.centreOfMass = body.centre;
+        flightBody.gravity = gravity.acceleration;
+        flightBody.up = upVector(gravity.up);
         return fit::BallisticFlight(keys, flightBody, choices);
     }
 
@@ -146,12 +150,12 @@ private:
 };
 
 std::unique_ptr<const detail::KeyedMotion> keyedMotion(const MotionTrack& track, const EulerConvention& eulerConvention,
-                                                       const MassProperties& body)
+                                                       const MassProperties& body, const Gravity& gravity)
 {
     if (track.keys.empty())
         return nullptr;
     if (track.interpolation == InterpolationMethod::Ballistic)
-        return std::make_unique<BallisticMotion>(track, body);
+        return std::make_unique<BallisticMotion>(track, body, gravity);
     if (track.interpolation == InterpolationMethod::Screw) {
         if (track.subdivision.levels < 0 || track.subdivision.levels >= 32)
             throw std::invalid_argument("subdivision levels must be between 0 and 31");
@@ -176,8 +180,9 @@ std::optional<std::pair<double, double>> cycleOf(const MotionTrack& track)
 
 } // namespace
 
-TrackMotion::TrackMotion(const MotionTrack& track, const EulerConvention& eulerConvention, const MassProperties& body)
-    : keyed_(keyedMotion(track, eulerConvention, body))
+TrackMotion::TrackMotion(const MotionTrack& track, const EulerConvention& eulerConvention, const MassProperties& body,
+                         const Gravity& gravity)
+    : keyed_(keyedMotion(track, eulerConvention, body, gravity))
     , fitted_(fittedSpline(track.sketch))
     , cycle_(cycleOf(track))
 {
@@ -280,9 +285,10 @@ std::optional<PositionCurve> cubicPositionCurve(const MotionTrack& track)
 }
 
 std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range,
-                                 const EulerConvention& eulerConvention, const MassProperties& body)
+                                 const EulerConvention& eulerConvention, const MassProperties& body,
+                                 const Gravity& gravity)
 {
-    const TrackMotion motion(track, eulerConvention, body);
+    const TrackMotion motion(track, eulerConvention, body, gravity);
     const std::vector<double> times = bakeTimes(keyTimes(track), range);
     std::vector<TimedPose> poses;
     poses.reserve(times.size());
