@@ -5,7 +5,9 @@
 #include "model/commands/apply_fit_result_command.h"
 #include "model/commands/import_objects_command.h"
 #include "model/commands/remove_fit_command.h"
+#include "fit/ballistic_flight.h"
 #include "model/document.h"
+#include "model/object_mass.h"
 #include "model/project_file.h"
 #include "model/track_evaluation.h"
 #include "samples/sample_scenes.h"
@@ -38,6 +40,8 @@ private slots:
     void fitThenRemoveFitTenTimesLeavesTheKeys();
     void screwSamplesAreScrewCycles();
     void meshNormalsPointOutOfTheirTriangles();
+    void theTHandleFlipsAboutItsIntermediateAxis();
+    void flightSamplesKeepTheirMomentumAndEnergy();
 };
 
 namespace {
@@ -46,6 +50,23 @@ namespace {
 // optimiser may fold a call the other build makes at run time), so they are held to 1e-12 here and
 // everything else of a bundled file byte for byte.
 constexpr double kFitTolerance = 1e-12;
+
+// The flight a sample's ballistic track plays (keyed at launch and landing: one span), for its exact ω; the test
+// checks that it is the track's own motion.
+fit::BallisticFlight flightOf(const model::SceneObject& object)
+{
+    const MassProperties body = model::objectMassProperties(object).properties;
+    fit::FlightBody flightBody;
+    flightBody.inertia = body.inertia;
+    flightBody.centreOfMass = body.centre;
+    std::vector<fit::FlightKey> keys;
+    for (const model::Keyframe& key : object.track.keys)
+        keys.push_back({key.time, key.pose});
+    std::vector<std::optional<std::size_t>> choices;
+    for (const int choice : object.track.flightSolutions)
+        choices.push_back(static_cast<std::size_t>(choice));
+    return fit::BallisticFlight(keys, flightBody, choices);
+}
 
 bool closeQuaternions(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b)
 {
@@ -337,6 +358,61 @@ void TstSamples::meshNormalsPointOutOfTheirTriangles()
                     QVERIFY(face.dot(mesh.normals[mesh.indices[i + corner]]) > 0.0f);
             }
         }
+}
+
+// The handle spins about its intermediate principal axis at launch; during the flight that axis turns over
+// (its world direction comes within 30° of the opposite of where it started), and the motion is the track's.
+void TstSamples::theTHandleFlipsAboutItsIntermediateAxis()
+{
+    const model::Scene scene = model::readProject(QDir(QStringLiteral(GYRE_SAMPLES_DIR)).filePath(samples::tHandle().fileName));
+    const model::SceneObject& object = scene.objects.at(0);
+    QCOMPARE(object.track.interpolation, InterpolationMethod::Ballistic);
+    QCOMPARE(object.track.keys.size(), std::size_t{2});
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(model::objectMassProperties(object).properties.inertia);
+    const Eigen::Vector3d intermediate = principal.eigenvectors().col(1); // eigenvalues increase
+    const model::TrackMotion motion(object.track, {}, model::flightBodyOf(object));
+    const double launch = object.track.keys.front().time;
+    const double landing = object.track.keys.back().time;
+    const Eigen::Vector3d start = motion.at(launch).orientation * intermediate;
+    // At launch ω lies within 20° of that axis.
+    QVERIFY(std::abs(motion.angularVelocity(launch + 1e-4).normalized().dot(start)) > std::cos(20.0 * std::numbers::pi / 180.0));
+    double lowest = 1.0;
+    for (int i = 0; i <= 400; ++i) {
+        const double time = launch + (landing - launch) * i / 400.0;
+        lowest = std::min(lowest, (motion.at(time).orientation * intermediate).dot(start));
+    }
+    QVERIFY2(lowest < -std::cos(30.0 * std::numbers::pi / 180.0), qPrintable(QString::number(lowest)));
+}
+
+// Each free-flight sample's angular momentum L = R·I·Rᵀ·ω and energy ½·ω·L stay what they were at launch, relative
+// 1e-9, across the span; and its track plays that flight.
+void TstSamples::flightSamplesKeepTheirMomentumAndEnergy()
+{
+    for (const samples::SampleScene& sample : samples::flightSamples()) {
+        const model::SceneObject& object = sample.scene.objects.at(0);
+        QCOMPARE(object.track.keys.size(), std::size_t{2});
+        const Eigen::Matrix3d inertia = model::objectMassProperties(object).properties.inertia;
+        const fit::BallisticFlight flight = flightOf(object);
+        const model::TrackMotion motion(object.track, {}, model::flightBodyOf(object));
+        const double launch = object.track.keys.front().time;
+        const double landing = object.track.keys.back().time;
+        const auto momentum = [&](double time) {
+            const Eigen::Matrix3d r = flight.at(time).orientation.toRotationMatrix();
+            return Eigen::Vector3d(r * inertia * r.transpose() * flight.angularVelocity(time));
+        };
+        const Eigen::Vector3d l0 = momentum(launch + 1e-9);
+        const double e0 = 0.5 * flight.angularVelocity(launch + 1e-9).dot(l0);
+        QVERIFY(l0.norm() > 0.0);
+        for (int i = 1; i < 200; ++i) {
+            const double time = launch + (landing - launch) * i / 200.0;
+            const Eigen::Vector3d l = momentum(time);
+            QVERIFY2((l - l0).norm() <= 1e-9 * l0.norm(), qPrintable(sample.fileName + QString::number(time)));
+            QVERIFY2(std::abs(0.5 * flight.angularVelocity(time).dot(l) - e0) <= 1e-9 * e0, qPrintable(sample.fileName));
+            const Pose played = motion.at(time);
+            QVERIFY(played.orientation.angularDistance(flight.at(time).orientation) < 1e-12);
+            QVERIFY((played.position - flight.at(time).position).norm() < 1e-12);
+        }
+    }
 }
 
 QTEST_GUILESS_MAIN(TstSamples)
