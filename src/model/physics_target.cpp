@@ -26,7 +26,10 @@ PhysicsTarget physicsTarget(const MotionTrack& track, const TrackMotion& motion,
         throw SketchFitError(
             SketchFitError::tr("the physics target needs at least two keyframes").toStdString());
     const auto [start, end] = *window;
-    const Eigen::Vector3d startVelocity = motion.angularVelocity(start);
+    // At the first key the motion's central difference straddles the held pose before it and reads half the
+    // ω: there it is read kAngularVelocityStep later, a change of ω far below what a sketch shows.
+    const Eigen::Vector3d startVelocity =
+        motion.angularVelocity(std::max(start, track.keys.front().time + kAngularVelocityStep));
     if (!(startVelocity.norm() > 0.0))
         throw SketchFitError(
             SketchFitError::tr("the object is at rest at %1 s, so a free flight from there has no direction")
