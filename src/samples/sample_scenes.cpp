@@ -415,7 +415,7 @@ SampleScene tossedSample(QString fileName, QString objectName, std::shared_ptr<c
     const std::size_t tossed = fit::nearestFlightSolution(solutions, omega);
     if (!((solutions[tossed].startAngularVelocity - omega).norm() <= 1e-6 * omega.norm()))
         throw std::runtime_error(fileName.toStdString() + ": the free flight's solutions do not include the toss");
-    track.flightSolutions = {static_cast<int>(tossed)};
+    track.keys.edit().front().flightSolution = static_cast<int>(tossed);
     const int frames = static_cast<int>(std::ceil((kLaunchTime + flight + kAfterLanding) * kFps));
     return oneObjectScene(std::move(fileName), std::move(objectName), std::move(mesh), std::move(track), frames);
 }
@@ -576,7 +576,7 @@ SampleScene critterCycle()
 SampleScene withFitApplied(SampleScene sample)
 {
     model::MotionTrack& track = sample.scene.objects.front().track;
-    const model::SketchFitProblem problem = model::sketchFitProblem(track);
+    const model::SketchFitProblem problem = model::sketchFitProblem(track, model::flightBodyOf(sample.scene.objects.front()));
     const fit::FitResult result = model::fitSketch(problem);
     if (result.outcome != fit::FitOutcome::Converged)
         throw std::runtime_error(sample.fileName.toStdString() + ": the sketch's fit does not converge");
