@@ -475,6 +475,9 @@ void MainWindow::fillSamplesMenu()
         {tr("Pendulum (ScrewBender)"), QStringLiteral(":/samples/pendulum.gyre")},
         {tr("Spinning block (ScrewBender)"), QStringLiteral(":/samples/spinning-block.gyre")},
         {tr("Critter's non-planar cycle (ScrewBender)"), QStringLiteral(":/samples/critter-cycle.gyre")},
+        {tr("Tossed T-handle (free flight)"), QStringLiteral(":/samples/t-handle.gyre")},
+        {tr("Flipped coin (free flight)"), QStringLiteral(":/samples/flipped-coin.gyre")},
+        {tr("Thrown book (free flight)"), QStringLiteral(":/samples/thrown-book.gyre")},
     };
     for (const auto& [title, path] : samples) {
         QAction* action = ui_->menuOpenSample->addAction(title);

@@ -1,8 +1,10 @@
 #include "app/time_bar.h"
 
+#include "model/commands/set_gravity_command.h"
 #include "model/commands/set_time_range_command.h"
 #include "model/value_checks.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -16,6 +18,8 @@ namespace gyre::app {
 namespace {
 
 constexpr double kLongestRangeSeconds = 1e6;
+// Far past any planet's surface gravity (Jupiter's is 24.8 m/s²).
+constexpr double kStrongestGravity = 1000.0;
 
 QDoubleSpinBox* makeSecondsBox(QWidget* parent)
 {
@@ -38,6 +42,8 @@ TimeBar::TimeBar(model::Document& document, QWidget* parent)
     , fps_(new QDoubleSpinBox(this))
     , startTime_(makeSecondsBox(this))
     , endTime_(makeSecondsBox(this))
+    , gravity_(new QDoubleSpinBox(this))
+    , up_(new QComboBox(this))
 {
     fps_->setRange(1.0, model::kMaxFps);
     fps_->setDecimals(3);
@@ -46,6 +52,16 @@ TimeBar::TimeBar(model::Document& document, QWidget* parent)
     fps_->setObjectName(QStringLiteral("frameRateBox"));
     startTime_->setObjectName(QStringLiteral("startTimeBox"));
     endTime_->setObjectName(QStringLiteral("endTimeBox"));
+    gravity_->setRange(0.0, kStrongestGravity);
+    gravity_->setDecimals(3);
+    gravity_->setSuffix(tr(" m/s²"));
+    gravity_->setKeyboardTracking(false);
+    gravity_->setObjectName(QStringLiteral("gravityBox"));
+    gravity_->setToolTip(tr("How fast the centre of mass of a ballistic track falls"));
+    // In the order of model::UpDirection.
+    up_->addItems({tr("+X"), tr("−X"), tr("+Y"), tr("−Y"), tr("+Z"), tr("−Z")});
+    up_->setObjectName(QStringLiteral("upAxisBox"));
+    up_->setToolTip(tr("The scene's up axis: gravity pulls the other way"));
     currentTime_->setObjectName(QStringLiteral("currentTimeLabel"));
     currentFrame_->setObjectName(QStringLiteral("currentFrameLabel"));
     fps_->setToolTip(tr("Frames per second"));
@@ -60,7 +76,9 @@ TimeBar::TimeBar(model::Document& document, QWidget* parent)
     layout->addWidget(currentTime_);
     layout->addWidget(currentFrame_);
     layout->addStretch();
-    for (auto [label, box] : {std::pair{tr("Rate"), fps_}, std::pair{tr("Start"), startTime_}, std::pair{tr("End"), endTime_}}) {
+    for (auto [label, box] : {std::pair<QString, QWidget*>{tr("Rate"), fps_}, std::pair<QString, QWidget*>{tr("Start"), startTime_},
+                              std::pair<QString, QWidget*>{tr("End"), endTime_}, std::pair<QString, QWidget*>{tr("Gravity"), gravity_},
+                              std::pair<QString, QWidget*>{tr("Up"), up_}}) {
         auto* name = new QLabel(label, this);
         name->setBuddy(box);
         layout->addWidget(name);
@@ -74,14 +92,18 @@ TimeBar::TimeBar(model::Document& document, QWidget* parent)
     });
     connect(endTime_, &QDoubleSpinBox::valueChanged, this,
             [this](double end) { applyTimeRange([end](model::TimeRange& range) { range.endTime = end; }); });
+    connect(gravity_, &QDoubleSpinBox::valueChanged, this, &TimeBar::applyGravity);
+    connect(up_, &QComboBox::currentIndexChanged, this, &TimeBar::applyGravity);
     connect(&document_, &model::Document::currentTimeChanged, this, &TimeBar::showCurrentTime);
     connect(&document_, &model::Document::changed, this, [this](model::ObjectId, model::Changes changes) {
         if (changes & (model::Change::SceneSettings | model::Change::Scene)) {
             showTimeRange();
+            showGravity();
             showCurrentTime();
         }
     });
     showTimeRange();
+    showGravity();
     showCurrentTime();
 }
 
@@ -102,6 +124,22 @@ void TimeBar::showTimeRange()
     fps_->setValue(scene.fps);
     startTime_->setValue(scene.startTime);
     endTime_->setValue(scene.endTime);
+}
+
+void TimeBar::showGravity()
+{
+    const model::Gravity& gravity = document_.scene().gravity;
+    const QSignalBlocker blockGravity(gravity_);
+    const QSignalBlocker blockUp(up_);
+    gravity_->setValue(gravity.acceleration);
+    up_->setCurrentIndex(static_cast<int>(gravity.up));
+}
+
+void TimeBar::applyGravity()
+{
+    const model::Gravity gravity{gravity_->value(), static_cast<model::UpDirection>(up_->currentIndex())};
+    if (gravity != document_.scene().gravity)
+        document_.push(new model::SetGravityCommand(document_, gravity));
 }
 
 template <class Change>

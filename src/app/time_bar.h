@@ -1,11 +1,13 @@
 #pragma once
-// The bar above the timeline: the current time in seconds and frames, and the scene's frame rate and
-// time range, which it edits through SetTimeRangeCommand, one undo step per edited value.
+// The bar above the timeline: the current time in seconds and frames, the scene's frame rate and time
+// range, which it edits through SetTimeRangeCommand, and the scene's gravity and up axis (what a ballistic
+// track falls with), which it edits through SetGravityCommand: one undo step per edited value.
 
 #include "model/document.h"
 
 #include <QWidget>
 
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 
@@ -20,6 +22,8 @@ public:
 private:
     void showCurrentTime();
     void showTimeRange();
+    void showGravity();
+    void applyGravity();
     // Sets the range to the scene's with the value of the edited spin box put in by `change`, or, for
     // a range the document refuses (an end not after the start), shows the scene's range again.
     template <class Change>
@@ -31,6 +35,8 @@ private:
     QDoubleSpinBox* fps_;
     QDoubleSpinBox* startTime_;
     QDoubleSpinBox* endTime_;
+    QDoubleSpinBox* gravity_;
+    QComboBox* up_;
 };
 
 } // namespace gyre::app

@@ -132,7 +132,7 @@ void runBake(const QStringList& arguments)
         checkedOutputRange({scene.startTime, scene.endTime, fps}, object.track.keys.size(), commandLine);
     std::vector<model::TimedPose> samples;
     try {
-        samples = model::bakeTrack(object.track, range, model::flightBodyOf(object));
+        samples = model::bakeTrack(object.track, range, model::flightBodyOf(object), scene.gravity);
     } catch (const std::invalid_argument& problem) {
         throw InputError(commandLine.inputPath(), "the motion of '" + name.toStdString() + "' cannot be baked: " +
                                                       problem.what());

@@ -144,7 +144,8 @@ private:
     Pose startPose(const model::SceneObject& object) const
     {
         try {
-            return model::unitSample(model::TrackMotion(object.track, model::flightBodyOf(object)).at(scene_.startTime), scene_.startTime);
+            const model::TrackMotion motion(object.track, model::flightBodyOf(object), scene_.gravity);
+            return model::unitSample(motion.at(scene_.startTime), scene_.startTime);
         } catch (const std::invalid_argument& error) {
             throw OutputError(path_, FileError::tr("the motion of '%1' cannot be evaluated: %2")
                                          .arg(object.name, QString::fromUtf8(error.what()))
@@ -172,7 +173,7 @@ private:
                                          .arg(kMaxExportSamples)
                                          .toStdString());
         try {
-            return model::bakeTrack(object.track, result_.range, model::flightBodyOf(object));
+            return model::bakeTrack(object.track, result_.range, model::flightBodyOf(object), scene_.gravity);
         } catch (const std::invalid_argument& error) {
             throw OutputError(path_, FileError::tr("the motion of '%1' cannot be baked: %2")
                                          .arg(object.name, QString::fromUtf8(error.what()))

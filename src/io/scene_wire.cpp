@@ -1,5 +1,6 @@
 #include "io/scene_wire.h"
 
+#include "model/gravity.h"
 #include "model/object_mass.h"
 #include "model/skinning.h"
 #include "model/value_checks.h"
@@ -206,6 +207,8 @@ void writeScene(Writer& out, const model::Scene& scene)
     out.put(scene.startTime);
     out.put(scene.endTime);
     out.put(scene.currentTime);
+    out.put(scene.gravity.acceleration);
+    out.put(static_cast<quint8>(scene.gravity.up));
     // Each mesh once, however many objects share it; objects name it by 1-based index, 0 for none.
     std::map<const model::Mesh*, quint64> meshIndex;
     std::vector<const model::Mesh*> meshes;
@@ -525,7 +528,13 @@ model::Scene sceneIn(Reader& in)
     scene.startTime = in.get<double>();
     scene.endTime = in.get<double>();
     scene.currentTime = in.get<double>();
+    scene.gravity.acceleration = in.get<double>();
+    const auto up = in.get<quint8>();
+    if (up > static_cast<quint8>(model::UpDirection::MinusZ))
+        throw WireError("scene: up direction " + std::to_string(up) + " is none of the six axes");
+    scene.gravity.up = static_cast<model::UpDirection>(up);
     checked("scene", [&] {
+        model::checkGravity(scene.gravity);
         model::frameRate(scene.fps);
         model::finiteNumber(scene.currentTime);
         if (!(model::finiteNumber(scene.endTime) >= model::finiteNumber(scene.startTime)))

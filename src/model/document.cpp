@@ -30,12 +30,12 @@ const SceneObject* Document::object(ObjectId id) const { return findObject(scene
 std::shared_ptr<const SharedTrackMotion> Document::motion(ObjectId id) const
 {
     const SceneObject* found = object(id);
-    return found != nullptr ? motions_.motion(*found) : nullptr;
+    return found != nullptr ? motions_.motion(*found, scene_.gravity) : nullptr;
 }
 
 void Document::notifyChanged(ObjectId object, Changes changes)
 {
-    if (changes.testFlag(Change::Scene))
+    if (changes & (Change::Scene | Change::Gravity))
         motions_.clear();
     else if (changes & kMotionChanges)
         motions_.forget(object);

@@ -51,13 +51,15 @@ enum class Change {
     Removed = 1 << 5,       // the object is gone; document.object(id) is null
     SceneSettings = 1 << 6, // fps, time range
     Scene = 1 << 7,         // the whole scene was replaced (clear, load, recover): rebuild from scene()
+    Gravity = 1 << 8,       // the scene's gravity: every ballistic track moves anew (with kNoObject)
 };
 Q_DECLARE_FLAGS(Changes, Change)
 Q_DECLARE_OPERATORS_FOR_FLAGS(Changes)
 
 // The changes after which an object's track moves differently (or is gone), so its motion is rebuilt.
 inline constexpr Changes kMotionChanges =
-    Changes(Change::Keyframes) | Change::TrackSettings | Change::Sketch | Change::Added | Change::Removed | Change::Scene;
+    Changes(Change::Keyframes) | Change::TrackSettings | Change::Sketch | Change::Added | Change::Removed | Change::Scene |
+    Change::Gravity;
 
 // Names one gesture; ids are never handed out twice in a session. kNoGesture: a command alone.
 using GestureId = std::uint64_t;

@@ -163,4 +163,9 @@ Eigen::Vector2d JsonField::vector2() const { return numbers<2>(); }
 Eigen::Vector3d JsonField::vector3() const { return numbers<3>(); }
 Eigen::Vector4d JsonField::vector4() const { return numbers<4>(); }
 
+QString unknownValueMessage(const QString& name, const QString& known)
+{
+    return FileError::tr("unknown value \"%1\"; expected one of %2").arg(name, known);
+}
+
 } // namespace gyre::model

@@ -5,13 +5,17 @@
 // otherwise. The reader walks the format's own shape, never the document's, so nesting the format
 // does not expect costs nothing.
 
+#include "core/name_table.h"
+
 #include <QByteArray>
 #include <QJsonValue>
 #include <QString>
+#include <QStringList>
 
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -74,5 +78,21 @@ private:
     QJsonValue value_;
     QString path_;
 };
+
+// `unknown value "name"; expected one of known`, translated.
+QString unknownValueMessage(const QString& name, const QString& known);
+
+// The value `field` names, one of `names`' strings; else a FieldError listing them.
+template <class Enum, std::size_t N>
+Enum namedValue(const JsonField& field, const NameTable<Enum, N>& names)
+{
+    const QString name = field.string();
+    if (const std::optional<Enum> value = valueNamed(names, name.toStdString()))
+        return *value;
+    QStringList known;
+    for (const auto& entry : names)
+        known.append(QString::fromLatin1(entry.second));
+    field.fail(unknownValueMessage(name, known.join(QStringLiteral(", "))));
+}
 
 } // namespace gyre::model

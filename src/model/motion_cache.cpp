@@ -7,16 +7,17 @@
 namespace gyre::model {
 
 SharedTrackMotion::SharedTrackMotion(MotionTrack track, std::shared_ptr<std::atomic<std::size_t>> builds,
-                                     const MassProperties& body)
+                                     const MassProperties& body, const Gravity& gravity)
     : track_(std::move(track))
     , builds_(std::move(builds))
     , body_(body)
+    , gravity_(gravity)
 {
 }
 
 const TrackMotion& SharedTrackMotion::motion() const
 {
-    return build(motion_, [this] { return TrackMotion(track_, body_); });
+    return build(motion_, [this] { return TrackMotion(track_, body_, gravity_); });
 }
 
 const TrackMotion& SharedTrackMotion::motionWithoutFit() const
@@ -44,11 +45,11 @@ const TrackMotion& SharedTrackMotion::build(Lazy& lazy, const std::function<Trac
     return *lazy.motion;
 }
 
-std::shared_ptr<const SharedTrackMotion> MotionCache::motion(const SceneObject& object)
+std::shared_ptr<const SharedTrackMotion> MotionCache::motion(const SceneObject& object, const Gravity& gravity)
 {
     std::shared_ptr<const SharedTrackMotion>& motion = motions_[object.id];
     if (!motion)
-        motion = std::make_shared<const SharedTrackMotion>(object.track, builds_, flightBodyOf(object));
+        motion = std::make_shared<const SharedTrackMotion>(object.track, builds_, flightBodyOf(object), gravity);
     return motion;
 }
 

@@ -26,9 +26,9 @@ namespace gyre::model {
 class SharedTrackMotion {
 public:
     // `builds`, if not null, counts the builds (MotionCache::builds). `body` is what a ballistic track flies
-    // (flightBodyOf).
+    // (flightBodyOf), under `gravity` (the scene's).
     explicit SharedTrackMotion(MotionTrack track, std::shared_ptr<std::atomic<std::size_t>> builds = nullptr,
-                               const MassProperties& body = {});
+                               const MassProperties& body = {}, const Gravity& gravity = {});
 
     // The track as it was when this was made.
     const MotionTrack& track() const { return track_; }
@@ -53,6 +53,7 @@ private:
     MotionTrack track_;
     std::shared_ptr<std::atomic<std::size_t>> builds_;
     MassProperties body_;
+    Gravity gravity_;
     mutable Lazy motion_;
     mutable Lazy withoutFit_;
 };
@@ -61,11 +62,11 @@ private:
 // what it hands out may go anywhere.
 class MotionCache {
 public:
-    // The object's motion: the one made for it since it was last forgotten, else a new one.
-    std::shared_ptr<const SharedTrackMotion> motion(const SceneObject& object);
+    // The object's motion under `gravity`: the one made for it since it was last forgotten, else a new one.
+    std::shared_ptr<const SharedTrackMotion> motion(const SceneObject& object, const Gravity& gravity);
     // The object's track changed or it is gone.
     void forget(ObjectId id) { motions_.erase(id); }
-    // A new scene.
+    // A new scene, or new gravity.
     void clear() { motions_.clear(); }
     // How many motions were built, on any thread: the hook tests count rebuilds with.
     std::size_t builds() const { return builds_->load(); }

@@ -5,6 +5,7 @@
 #include "model/json_field.h"
 #include "model/object_mass.h"
 #include "model/output_target.h"
+#include "model/gravity.h"
 #include "model/project_blocks.h"
 #include "model/project_json.h"
 #include "model/rotation_mode.h"
@@ -175,6 +176,8 @@ ProjectLayout::ProjectLayout(const Scene& scene)
               {"meshes", meshes},
               {"times", times},
               {"objects", objects}};
+    if (scene.gravity != Gravity{})
+        header.insert("gravity", gravityJson(scene.gravity));
 }
 
 QJsonObject ProjectLayout::keysJson(const std::vector<Keyframe>& keys)
@@ -219,18 +222,6 @@ QByteArray headerBytes(const QJsonObject& header)
 std::string tooLargeMessage()
 {
     return gyre::FileError::tr("is larger than 1 GiB, the most a project file may hold").toStdString();
-}
-
-template <class Enum, std::size_t N>
-Enum named(const JsonField& field, const NameTable<Enum, N>& names)
-{
-    const QString name = field.string();
-    if (const std::optional<Enum> value = valueNamed(names, name.toStdString()))
-        return *value;
-    QStringList known;
-    for (const auto& entry : names)
-        known.append(QString::fromLatin1(entry.second));
-    field.fail(FileError::tr("unknown value \"%1\"; expected one of %2").arg(name, known.join(QStringLiteral(", "))));
 }
 
 // Reads each element, checking that the times `timeOf` gives strictly increase; `timeKey` names the
@@ -378,7 +369,7 @@ std::vector<Keyframe> keysIn(const JsonField& field, BlockReading* binary)
 SubdivisionSettings subdivisionIn(const JsonField& field)
 {
     SubdivisionSettings settings;
-    settings.scheme = named(field.member("scheme"), kSubdivisionSchemeNames);
+    settings.scheme = namedValue(field.member("scheme"), kSubdivisionSchemeNames);
     settings.levels = static_cast<int>(field.member("levels").integer(0, kMaxSubdivisionLevels));
     settings.cyclic = field.member("cyclic").boolean();
     settings.decoupled = field.member("decoupled").boolean();
@@ -510,7 +501,7 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
             mesh.fail(FileError::tr("the file has no meshes"));
         object.mesh = meshes[static_cast<std::size_t>(mesh.integer(0, static_cast<qint64>(meshes.size()) - 1))];
     }
-    object.track.interpolation = named(field.member("interpolation"), kInterpolationMethodNames);
+    object.track.interpolation = namedValue(field.member("interpolation"), kInterpolationMethodNames);
     object.track.subdivision = subdivisionIn(field.member("subdivision"));
     object.track.keys = keysIn(field.member("keyframes"), binary);
     // Files written before ballistic interpolation take every span's default flight.
@@ -611,6 +602,8 @@ Scene sceneIn(const JsonField& root, int version, BlockReading* binary)
     root.member("fps").checked([&] { return frameRate(scene.fps); });
     root.member("endTime").checked([&] { checkTimeRange(scene.fps, scene.startTime, scene.endTime); });
     scene.currentTime = numberIn(root.member("currentTime"), timeValue);
+    if (root.has("gravity"))
+        scene.gravity = gravityIn(root.member("gravity"));
     std::vector<std::shared_ptr<const Mesh>> meshes;
     const std::vector<JsonField> meshFields = root.member("meshes").elements();
     for (const JsonField& mesh : meshFields)

@@ -134,12 +134,23 @@ struct SceneObject {
     std::optional<MassProperties> massOverride = std::nullopt;
 };
 
+// The world axis a scene calls up, with its sign.
+enum class UpDirection { PlusX, MinusX, PlusY, MinusY, PlusZ, MinusZ };
+
+// What a ballistic track's centre of mass falls with: `acceleration` along −up.
+struct Gravity {
+    double acceleration = 9.81;           // m/s², ≥ 0
+    UpDirection up = UpDirection::PlusZ;  // Gyre's world is Z-up
+    bool operator==(const Gravity&) const = default;
+};
+
 struct Scene {
     std::vector<SceneObject> objects;  // parents come before their children
     double fps = 24.0;
     double startTime = 0.0;
     double endTime = 10.0;
     double currentTime = 0.0;
+    Gravity gravity;
     ObjectId nextObjectId = 1;
 };
 

@@ -7,6 +7,7 @@
 #include "core/quaternion_math.h"
 #include "core/subdivision.h"
 #include "core/number_text.h"
+#include "model/gravity.h"
 #include "model/object_mass.h"
 #include "model/value_checks.h"
 
@@ -122,8 +123,8 @@ private:
 // is held.
 class BallisticMotion final : public detail::KeyedMotion {
 public:
-    BallisticMotion(const MotionTrack& track, const MassProperties& body)
-        : flight_(flightOf(track, body))
+    BallisticMotion(const MotionTrack& track, const MassProperties& body, const Gravity& gravity)
+        : flight_(flightOf(track, body, gravity))
         , held_(track.keys.front().pose)
     {
     }
@@ -140,7 +141,8 @@ public:
     }
 
 private:
-    static std::optional<fit::BallisticFlight> flightOf(const MotionTrack& track, const MassProperties& body)
+    static std::optional<fit::BallisticFlight> flightOf(const MotionTrack& track, const MassProperties& body,
+                                                        const Gravity& gravity)
     {
         if (track.keys.size() < 2)
             return std::nullopt;
@@ -156,6 +158,8 @@ private:
         fit::FlightBody flightBody;
         flightBody.inertia = body.inertia;
         flightBody.centreOfMass = body.centre;
+        flightBody.gravity = gravity.acceleration;
+        flightBody.up = upVector(gravity.up);
         return fit::BallisticFlight(keys, flightBody, choices);
     }
 
@@ -163,12 +167,13 @@ private:
     Pose held_;
 };
 
-std::unique_ptr<const detail::KeyedMotion> keyedMotion(const MotionTrack& track, const MassProperties& body)
+std::unique_ptr<const detail::KeyedMotion> keyedMotion(const MotionTrack& track, const MassProperties& body,
+                                                       const Gravity& gravity)
 {
     if (track.keys.empty())
         return nullptr;
     if (track.interpolation == InterpolationMethod::Ballistic)
-        return std::make_unique<BallisticMotion>(track, body);
+        return std::make_unique<BallisticMotion>(track, body, gravity);
     if (track.interpolation == InterpolationMethod::Screw) {
         if (track.subdivision.levels < 0 || track.subdivision.levels >= 32)
             throw std::invalid_argument("subdivision levels must be between 0 and 31");
@@ -193,8 +198,8 @@ std::optional<std::pair<double, double>> cycleOf(const MotionTrack& track)
 
 } // namespace
 
-TrackMotion::TrackMotion(const MotionTrack& track, const MassProperties& body)
-    : keyed_(keyedMotion(track, body))
+TrackMotion::TrackMotion(const MotionTrack& track, const MassProperties& body, const Gravity& gravity)
+    : keyed_(keyedMotion(track, body, gravity))
     , fitted_(fittedSpline(track.sketch))
     , cycle_(cycleOf(track))
 {
@@ -296,9 +301,10 @@ std::optional<PositionCurve> cubicPositionCurve(const MotionTrack& track)
     return PositionCurve(positionKeys(track), PositionCurve::Shape::Cubic);
 }
 
-std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range, const MassProperties& body)
+std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range, const MassProperties& body,
+                                 const Gravity& gravity)
 {
-    const TrackMotion motion(track, body);
+    const TrackMotion motion(track, body, gravity);
     const std::vector<double> times = bakeTimes(keyTimes(track), range);
     std::vector<TimedPose> poses;
     poses.reserve(times.size());

@@ -15,7 +15,8 @@
 // - ballistic: every span between two keys the free flight of the body (`body`: its inertia and centre of mass
 //   in the object's frame) that meets both keys (fit/ballistic_flight.h), each span's solution its first
 //   key's flightSolution (by kinetic energy) or the one nearest the hermite motion; the centre of mass on the
-//   parabola under 9.81 m/s² along +Z (Gyre's up). Each span is solved when the motion is built.
+//   parabola under `gravity` (the scene's: by default 9.81 m/s² along −Z, Gyre's world being Z-up). Each span
+//   is solved when the motion is built.
 // - A fit (track.sketch.fittedCurve non-empty) gives the orientation inside the span of its control
 //   points, by the normalised HermiteQuaternionSpline through them; outside, and for positions, the
 //   interpolation above. On a cyclic screw track the fit repeats with the cycle, as the motion does.
@@ -44,8 +45,8 @@ public:
     // Built once, evaluated at many times. Throws std::invalid_argument for key or control-point
     // times that do not strictly increase, a subdivision too large to hold, or a free flight that cannot be
     // solved. `body` is the one the ballistic interpolation flies (by default a unit sphere's:
-    // objectMassProperties gives an object's).
-    explicit TrackMotion(const MotionTrack& track, const MassProperties& body = {});
+    // objectMassProperties gives an object's), under `gravity`.
+    explicit TrackMotion(const MotionTrack& track, const MassProperties& body = {}, const Gravity& gravity = {});
     ~TrackMotion();
     TrackMotion(TrackMotion&&) noexcept;
     TrackMotion& operator=(TrackMotion&&) noexcept;
@@ -111,7 +112,8 @@ struct TimedPose {
 
 // The track's poses at bakeTimes(its key times, range). Throws std::invalid_argument for a pose that is
 // not unitSample.
-std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range, const MassProperties& body = {});
+std::vector<TimedPose> bakeTrack(const MotionTrack& track, const BakeRange& range, const MassProperties& body = {},
+                                 const Gravity& gravity = {});
 
 std::vector<double> keyTimes(const MotionTrack& track);
 

@@ -1,6 +1,9 @@
 #include "samples/sample_scenes.h"
 
+#include "core/torque_free.h"
 #include "fit/angular_velocity_fit.h"
+#include "fit/ballistic_flight.h"
+#include "model/object_mass.h"
 #include "model/sketch_fit_problem.h"
 #include "model/commands/apply_fit_result_command.h"
 
@@ -185,6 +188,40 @@ std::shared_ptr<const Mesh> blockMesh()
     return std::make_shared<const Mesh>(prismMesh({{-0.6f, -0.3f}, {0.6f, -0.3f}, {0.6f, 0.3f}, {-0.6f, 0.3f}}, 0.4f));
 }
 
+// A box of `size` centred on `centre`.
+Mesh boxMesh(const Eigen::Vector3f& size, const Eigen::Vector3f& centre)
+{
+    const float x = 0.5f * size.x();
+    const float y = 0.5f * size.y();
+    Mesh mesh = prismMesh({{-x, -y}, {x, -y}, {x, y}, {-x, y}}, size.z());
+    for (Eigen::Vector3f& position : mesh.positions)
+        position += centre;
+    return mesh;
+}
+
+// A T-handle in the xy plane: a bar 1.2 long along x on top of a stem 0.5 long along y, both 0.15 thick. Its
+// principal moments are about 0.0016, 0.0034 and 0.0049 kg·m² (water's density), well apart: the middle one,
+// about the stem's axis, is the unstable one.
+std::shared_ptr<const Mesh> tHandleMesh()
+{
+    Mesh mesh = boxMesh({1.2f, 0.15f, 0.15f}, {0.0f, 0.325f, 0.0f});
+    append(mesh, boxMesh({0.15f, 0.5f, 0.15f}, {0.0f, 0.0f, 0.0f}));
+    return std::make_shared<const Mesh>(std::move(mesh));
+}
+
+// A coin 0.24 across and 0.02 thick, its faces along ±z.
+std::shared_ptr<const Mesh> coinMesh()
+{
+    return std::make_shared<const Mesh>(
+        latheMesh({{0.0f, -0.01f}, {0.12f, -0.01f}, {0.12f, 0.01f}, {0.0f, 0.01f}}, 48));
+}
+
+// A book 0.17 × 0.24 × 0.04.
+std::shared_ptr<const Mesh> bookMesh()
+{
+    return std::make_shared<const Mesh>(boxMesh({0.17f, 0.24f, 0.04f}, Eigen::Vector3f::Zero()));
+}
+
 // A seated animal-ish figure on the origin: a round body 1.0 across and a head 0.7 across on it.
 std::shared_ptr<const Mesh> critterMesh()
 {
@@ -344,6 +381,43 @@ model::MotionTrack screwCycle(const std::vector<Pose>& poses, SubdivisionScheme 
 int twoCyclesOfFrames(const model::MotionTrack& track)
 {
     return static_cast<int>(2 * track.keys.size() * kFps);
+}
+
+// When a tossed body leaves the hand and how long before the scene ends after it lands, seconds.
+constexpr double kLaunchTime = 0.5;
+constexpr double kAfterLanding = 0.5;
+
+// A body tossed from 1 m up at x = −1 with `spin` (in its own frame) and caught at x = 1 `flight` seconds later:
+// a ballistic track keyed at launch and landing only. The landing orientation is where the torque-free motion of
+// the mesh's body takes it, and the span's solution is the one that flies it; std::runtime_error if the shooting
+// solve does not offer that flight.
+SampleScene tossedSample(QString fileName, QString objectName, std::shared_ptr<const Mesh> mesh,
+                         const Eigen::Quaterniond& launch, const Eigen::Vector3d& spin, double flight)
+{
+    model::SceneObject probe;
+    probe.mesh = mesh;
+    const MassProperties body = model::objectMassProperties(probe).properties;
+    const Eigen::Vector3d omega = launch * spin;
+    const Eigen::Quaterniond landing = TorqueFreeMotion(body.inertia, launch, omega, flight).orientation(flight);
+
+    model::MotionTrack track;
+    track.interpolation = InterpolationMethod::Ballistic;
+    track.keys.push_back(Keyframe{kLaunchTime, Pose{launch, {-1.0, 0.0, 1.0}}, true});
+    track.keys.push_back(Keyframe{kLaunchTime + flight, Pose{landing, {1.0, 0.0, 1.0}}, true});
+    // The solutions the track will offer, as TrackMotion finds them (the default gravity's, which they do not
+    // depend on).
+    fit::FlightBody flightBody;
+    flightBody.inertia = body.inertia;
+    flightBody.centreOfMass = body.centre;
+    const fit::BallisticFlight solved({{track.keys[0].time, track.keys[0].pose}, {track.keys[1].time, track.keys[1].pose}},
+                                      flightBody);
+    const std::vector<fit::FlightSolution>& solutions = solved.spans().front().solutions;
+    const std::size_t tossed = fit::nearestFlightSolution(solutions, omega);
+    if (!((solutions[tossed].startAngularVelocity - omega).norm() <= 1e-6 * omega.norm()))
+        throw std::runtime_error(fileName.toStdString() + ": the free flight's solutions do not include the toss");
+    track.keys.edit().front().flightSolution = static_cast<int>(tossed);
+    const int frames = static_cast<int>(std::ceil((kLaunchTime + flight + kAfterLanding) * kFps));
+    return oneObjectScene(std::move(fileName), std::move(objectName), std::move(mesh), std::move(track), frames);
 }
 
 } // namespace
@@ -522,6 +596,36 @@ std::vector<SampleScene> sketchedSamples()
     return samples;
 }
 
+SampleScene tHandle()
+{
+    // One turn a second about the stem (y, the intermediate axis), tilted 18° toward the bar (x, the axis of least
+    // moment): the tilt grows until the handle turns over, the Dzhanibekov effect, within the one-second flight.
+    // A smaller tilt needs more turns to grow, and flights of more turns are not among the least-energy ones the
+    // ballistic track offers.
+    return tossedSample(QStringLiteral("t-handle.gyre"), QStringLiteral("T-handle"), tHandleMesh(),
+                        Eigen::Quaterniond::Identity(), {2.0, 2.0 * std::numbers::pi, 0.0}, 1.0);
+}
+
+SampleScene flippedCoin()
+{
+    // Flipped end over end about a diameter (x) at two turns a second, with a little spin about its face's normal.
+    return tossedSample(QStringLiteral("flipped-coin.gyre"), QStringLiteral("Coin"), coinMesh(),
+                        Eigen::Quaterniond::Identity(), {4.0 * std::numbers::pi, 0.0, 1.0}, 0.6);
+}
+
+SampleScene thrownBook()
+{
+    // Thrown flat, spinning about its shortest side (the axis of largest moment, stable) with a wobble about
+    // its spine.
+    return tossedSample(QStringLiteral("thrown-book.gyre"), QStringLiteral("Book"), bookMesh(),
+                        Eigen::Quaterniond::Identity(), {0.6, 0.3, 1.5 * std::numbers::pi}, 0.8);
+}
+
+std::vector<SampleScene> flightSamples()
+{
+    return {tHandle(), flippedCoin(), thrownBook()};
+}
+
 std::vector<SampleScene> allSamples()
 {
     std::vector<SampleScene> samples;
@@ -530,6 +634,8 @@ std::vector<SampleScene> allSamples()
     samples.push_back(pendulum());
     samples.push_back(spinningBlock());
     samples.push_back(critterCycle());
+    for (SampleScene& flight : flightSamples())
+        samples.push_back(std::move(flight));
     return samples;
 }
 

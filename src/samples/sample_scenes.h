@@ -38,6 +38,14 @@ SampleScene pendulum();
 SampleScene spinningBlock();
 SampleScene critterCycle();
 
+// Issue 24's free flights, each a ballistic track keyed at launch and landing only, its body's mass properties
+// from its mesh: a T-handle tossed spinning about its intermediate axis, which flips (the Dzhanibekov effect); a
+// coin flipped end over end; a book thrown flat.
+SampleScene tHandle();
+SampleScene flippedCoin();
+SampleScene thrownBook();
+std::vector<SampleScene> flightSamples();
+
 // The five sketched samples above, as keyed and sketched, before any fit.
 std::vector<SampleScene> sketchedSamples();
 
@@ -48,7 +56,7 @@ std::vector<SampleScene> sketchedSamples();
 SampleScene withFitApplied(SampleScene sample);
 
 // Every bundled sample as gyre-samples writes it: the sketched ones with their fit applied, then
-// ScrewBender's.
+// ScrewBender's, then the free flights.
 std::vector<SampleScene> allSamples();
 
 } // namespace gyre::samples

@@ -9,6 +9,7 @@
 #include "app/sketch/fit_panel.h"
 #include "app/sketch/fit_progress.h"
 #include "app/viewport/viewport.h"
+#include "core/torque_free.h"
 #include "gui_test_support.h"
 #include "model/sketch_fit_problem.h"
 #include "model/commands/add_keyframe_command.h"
@@ -22,6 +23,7 @@
 #include "model/commands/set_keyframe_orientation_command.h"
 #include "model/commands/set_keyframe_time_command.h"
 #include "model/commands/set_magnitude_curve_command.h"
+#include "model/commands/set_mass_override_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
 #include "model/document.h"
 #include "model/gesture.h"
@@ -40,6 +42,7 @@
 #include <QTest>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -90,6 +93,46 @@ model::DirectionStroke tiltingStroke(double start, double end, double tilt)
         stroke.times.push_back(time);
     }
     return stroke;
+}
+
+// The world angular velocity of the torque-free motion from orientation q0 and world ω0 after each of
+// `times` (from 0, increasing), by fixed-step RK4 of Euler's equations in the body frame,
+//     I·ω̇ = (I·ω)×ω,   q̇ = ½·q⊗(0, ω),
+// at steps of at most `step` seconds; independent of core/torque_free's integrator.
+std::vector<Eigen::Vector3d> eulerRk4(const Eigen::Matrix3d& inertia, const Eigen::Quaterniond& q0,
+                                      const Eigen::Vector3d& worldOmega0, const std::vector<double>& times, double step)
+{
+    using State = Eigen::Matrix<double, 7, 1>; // ω body x, y, z; q w, x, y, z
+    const Eigen::Matrix3d inverse = inertia.inverse();
+    const auto rate = [&](const State& s) {
+        const Eigen::Vector3d omega = s.head<3>();
+        const Eigen::Quaterniond q(s[3], s[4], s[5], s[6]);
+        const Eigen::Quaterniond dq = q * Eigen::Quaterniond(0.0, omega.x(), omega.y(), omega.z());
+        State d;
+        d.head<3>() = inverse * (inertia * omega).cross(omega);
+        d.tail<4>() = 0.5 * Eigen::Vector4d(dq.w(), dq.x(), dq.y(), dq.z());
+        return d;
+    };
+    State state;
+    state.head<3>() = q0.conjugate() * worldOmega0;
+    state.tail<4>() << q0.w(), q0.x(), q0.y(), q0.z();
+    std::vector<Eigen::Vector3d> result;
+    double now = 0.0;
+    for (const double time : times) {
+        const int steps = std::max(1, static_cast<int>(std::ceil((time - now) / step)));
+        const double h = (time - now) / steps;
+        for (int i = 0; i < steps && h > 0.0; ++i) {
+            const State k1 = rate(state);
+            const State k2 = rate(state + 0.5 * h * k1);
+            const State k3 = rate(state + 0.5 * h * k2);
+            const State k4 = rate(state + h * k3);
+            state += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+        }
+        now = time;
+        const Eigen::Quaterniond q = Eigen::Quaterniond(state[3], state[4], state[5], state[6]).normalized();
+        result.push_back(q * Eigen::Vector3d(state.head<3>()));
+    }
+    return result;
 }
 
 double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
@@ -360,6 +403,54 @@ private slots:
         QVERIFY(track().keys.front().pose.position.isZero());
         viewport.setPreviewTrack(object_, std::nullopt);
         QTRY_VERIFY((*viewport.objectScreenPosition(object_) - drawn).manhattanLength() < 0.5);
+    }
+
+    // Set physics target replaces the strokes and the magnitude curve, in one undo step, by the ω of the free
+    // flight from the motion at the window's start (1 s): here a spin about z of a body whose principal axes are
+    // not z, so it tumbles. Checked against the test's own RK4 (steps of 1e-4 s: its error is far below 1e-8).
+    void physicsTargetIsTheFreeFlightsOmegaInOneStep()
+    {
+        MassProperties body;
+        body.inertia = inertiaTensor(1.0, 2.0, 2.5, 0.2, 0.3, -0.1);
+        document_->push(new model::SetMassOverrideCommand(*document_, object_, body));
+        QUndoStack& stack = document_->undoStack();
+        const model::SketchState before = track().sketch;
+        const int stepsBefore = stack.count();
+        QTest::mouseClick(button("physicsTargetButton"), Qt::LeftButton);
+        QCOMPARE(stack.count(), stepsBefore + 1);
+        QCOMPARE(stack.undoText(), QStringLiteral("Set Physics Target"));
+
+        const model::SketchState& sketch = track().sketch;
+        QCOMPARE(sketch.directionStrokes.size(), std::size_t{1});
+        const model::DirectionStroke& stroke = sketch.directionStrokes.front();
+        QCOMPARE(stroke.times.size(), stroke.points.size());
+        QCOMPARE(sketch.magnitude.size(), stroke.points.size());
+        // One sample a frame (24 fps) over the window's 2 s.
+        QCOMPARE(stroke.points.size(), std::size_t{49});
+        QCOMPARE(stroke.times.front(), 1.0);
+        QCOMPARE(stroke.times.back(), 3.0);
+
+        const model::TrackMotion motion(track());
+        std::vector<double> elapsed;
+        for (const double time : stroke.times)
+            elapsed.push_back(time - 1.0);
+        const std::vector<Eigen::Vector3d> expected =
+            eulerRk4(body.inertia, motion.at(1.0).orientation, motion.angularVelocity(1.0), elapsed, 1e-4);
+        double turned = 0.0; // how far ω's direction wanders: the target is not the steady spin
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+            QVERIFY2(angleBetween(stroke.points[i], expected[i]) < 1e-8, qPrintable(QString::number(stroke.times[i])));
+            QCOMPARE(sketch.magnitude[i].time, stroke.times[i]);
+            QVERIFY(std::abs(sketch.magnitude[i].magnitude - expected[i].norm()) < 1e-8 * expected[i].norm());
+            turned = std::max(turned, angleBetween(stroke.points[i], Eigen::Vector3d::UnitZ()));
+        }
+        QVERIFY(turned > 0.1);
+
+        stack.undo();
+        QCOMPARE(track().sketch.directionStrokes, before.directionStrokes);
+        QCOMPARE(track().sketch.magnitude, before.magnitude);
+        // The fit runs on the new target as on any sketch.
+        stack.redo();
+        QVERIFY(button("fitButton")->isEnabled());
     }
 
     void removeFitTakesTheCurveAwayInOneStep()

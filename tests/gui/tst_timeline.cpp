@@ -8,9 +8,13 @@
 #include "app/timeline_widget.h"
 #include "gui_test_support.h"
 #include "model/commands/add_keyframe_command.h"
+#include "model/commands/replace_keyframes_command.h"
+#include "model/commands/set_interpolation_command.h"
 #include "model/commands/set_time_range_command.h"
+#include "model/object_mass.h"
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QImage>
 #include <QMouseEvent>
@@ -140,6 +144,65 @@ private slots:
         window_->document().undoStack().undo();
         QCOMPARE(window_->document().scene().endTime, 6.0);
         QCOMPARE(end->value(), 6.0);
+    }
+
+    // The time bar sets g and the up axis, one undo step each; a ballistic track's centre of mass then
+    // follows x(t) = x0 + v0·t + ½·g⃗·t², g⃗ = −g·up, through both keys' centres.
+    void theTimeBarSetsGravityAndABallisticCentreFollowsIt()
+    {
+        model::Document& document = window_->document();
+        const model::ObjectId id = window_->selection().object();
+        QVERIFY(id != model::kNoObject);
+        const Pose launch{Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.0, 0.0, 1.0)};
+        const Pose landing{Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d(1.0, 2.0, 3.0).normalized())),
+                           Eigen::Vector3d(2.0, -1.0, 0.5)};
+        document.push(new model::ReplaceKeyframesCommand(document, {{id, {{1.0, launch}, {2.5, landing}}}},
+                                                         model::ReplaceKeyframesCommand::Edit::Paste));
+        document.push(new model::SetInterpolationCommand(document, id, InterpolationMethod::Ballistic));
+
+        auto* gravity = window_->findChild<QDoubleSpinBox*>(QStringLiteral("gravityBox"));
+        auto* up = window_->findChild<QComboBox*>(QStringLiteral("upAxisBox"));
+        QVERIFY(gravity != nullptr && up != nullptr);
+        QCOMPARE(gravity->value(), 9.81);
+        QCOMPARE(up->currentIndex(), static_cast<int>(model::UpDirection::PlusZ));
+        QUndoStack& stack = document.undoStack();
+        const int stepsBefore = stack.count();
+        gravity->setFocus();
+        gravity->selectAll();
+        QTest::keyClicks(gravity, QStringLiteral("3.7"));
+        QTest::keyClick(gravity, Qt::Key_Return);
+        QCOMPARE(document.scene().gravity.acceleration, 3.7);
+        QCOMPARE(stack.count(), stepsBefore + 1);
+        up->setFocus();
+        QTest::keyClick(up, Qt::Key_Up); // from +Z to −Y
+        QCOMPARE(document.scene().gravity.up, model::UpDirection::MinusY);
+        QCOMPARE(stack.count(), stepsBefore + 2);
+
+        const model::SceneObject& object = *document.object(id);
+        const Eigen::Vector3d centreOfMass = model::objectMassProperties(object).properties.centre;
+        const auto centreAt = [&](double time) {
+            const Pose pose = document.motion(id)->motion().at(time);
+            return Eigen::Vector3d(pose.position + pose.orientation * centreOfMass);
+        };
+        const Eigen::Vector3d x0 = launch.position + launch.orientation * centreOfMass;
+        const Eigen::Vector3d x1 = landing.position + landing.orientation * centreOfMass;
+        const auto parabola = [&](const Eigen::Vector3d& acceleration, double t) {
+            const double duration = 1.5;
+            const Eigen::Vector3d v0 = (x1 - x0 - 0.5 * acceleration * duration * duration) / duration;
+            return Eigen::Vector3d(x0 + v0 * t + 0.5 * acceleration * t * t);
+        };
+        for (const double t : {0.3, 0.75, 1.2}) {
+            const Eigen::Vector3d expected = parabola(Eigen::Vector3d(0.0, 3.7, 0.0), t);
+            QVERIFY2((centreAt(1.0 + t) - expected).norm() < 1e-9, qPrintable(QString::number(t)));
+        }
+
+        // Undone, the centre falls along −Z at 3.7 m/s² again; twice, at 9.81 m/s².
+        stack.undo();
+        QCOMPARE(up->currentIndex(), static_cast<int>(model::UpDirection::PlusZ));
+        QVERIFY((centreAt(1.75) - parabola(Eigen::Vector3d(0.0, 0.0, -3.7), 0.75)).norm() < 1e-9);
+        stack.undo();
+        QCOMPARE(gravity->value(), 9.81);
+        QVERIFY((centreAt(1.75) - parabola(Eigen::Vector3d(0.0, 0.0, -9.81), 0.75)).norm() < 1e-9);
     }
 
     void movingTheCurrentTimeRedrawsOnlyTheCursor()

@@ -46,6 +46,7 @@
 #include <qcustomplot.h>
 
 #include <algorithm>
+#include <limits>
 #include <cstdint>
 #include <initializer_list>
 #include <memory>
@@ -448,6 +449,51 @@ private slots:
         QVERIFY(found && spin.size() > 3 * 360.0);
         QCOMPARE(editor->keyGraph(model::Channel::EulerThird)->dataCount(), int(guide.track().keys.size()));
         guide.picture(QStringLiteral("guide-graph-editor.png"));
+    }
+
+    // Each free-flight sample's angular momentum and energy in the Graph Editor: flat across the flight, however
+    // the body tumbles.
+    void showsTheFlightSamplesAngularMomentum_data()
+    {
+        QTest::addColumn<QString>("entry");
+        QTest::addColumn<QString>("image");
+        QTest::newRow("t-handle") << QStringLiteral("t-handle") << QStringLiteral("guide-t-handle.png");
+        QTest::newRow("flipped-coin") << QStringLiteral("flipped-coin") << QStringLiteral("guide-flipped-coin.png");
+        QTest::newRow("thrown-book") << QStringLiteral("thrown-book") << QStringLiteral("guide-thrown-book.png");
+    }
+    void showsTheFlightSamplesAngularMomentum()
+    {
+        QFETCH(QString, entry);
+        QFETCH(QString, image);
+        GuideWindow guide;
+        guide.openSample(qPrintable(entry), 1.0);
+        guide.settle();
+        auto* editor = guide.child<app::GraphEditorPanel>();
+        for (std::size_t channel = 0; channel < model::kChannelCount; ++channel)
+            editor->channels().setShown(static_cast<model::Channel>(channel), false);
+        using model::Channel;
+        for (const Channel channel : {Channel::AngularMomentumX, Channel::AngularMomentumY, Channel::AngularMomentumZ,
+                                      Channel::AngularMomentumMagnitude, Channel::KineticEnergy})
+            editor->channels().setShown(channel, true);
+        QSignalSpy updated(editor, &app::GraphEditorPanel::curvesUpdated);
+        guide.child<QDockWidget>("graphEditorDock")->show();
+        guide.raiseDock("graphEditorDock");
+        QVERIFY(updated.count() > 0 || updated.wait(10'000));
+        guide.redraw();
+        // |L| in flight: the same at every sample between the keys.
+        const std::vector<model::Keyframe>& keys = guide.track().keys;
+        QCOMPARE(keys.size(), std::size_t{2});
+        double lowest = std::numeric_limits<double>::infinity();
+        double highest = 0.0;
+        for (auto point = editor->graph(Channel::AngularMomentumMagnitude)->data()->constBegin();
+             point != editor->graph(Channel::AngularMomentumMagnitude)->data()->constEnd(); ++point)
+            if (point->key > keys.front().time + 0.01 && point->key < keys.back().time - 0.01) {
+                lowest = std::min(lowest, point->value);
+                highest = std::max(highest, point->value);
+            }
+        QVERIFY(highest > 0.0);
+        QVERIFY2(highest - lowest <= 1e-6 * highest, qPrintable(QString::number(highest - lowest)));
+        guide.picture(image);
     }
 
     // The spinning block as it opens; then Decoupled, for comparison, ticked: one undo step, the track

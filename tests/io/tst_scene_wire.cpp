@@ -17,8 +17,8 @@ using namespace gyre::io::wire;
 namespace {
 
 // The offset of the first object count in a scene message: header (magic, version, kind: 7 bytes),
-// four times (32), the mesh count (8).
-constexpr qsizetype kObjectCountOffset = 7 + 32 + 8;
+// four times (32), the gravity (8) and its up axis (1), the mesh count (8).
+constexpr qsizetype kObjectCountOffset = 7 + 32 + 9 + 8;
 
 model::Keyframe key(double time, double angle, bool constrained = true)
 {
@@ -42,6 +42,7 @@ model::Scene richScene()
     scene.startTime = -0.5;
     scene.endTime = 7.25;
     scene.currentTime = 1.0 / 3.0;
+    scene.gravity = {3.71, model::UpDirection::PlusY};
     model::SceneObject root{4, QStringLiteral("root ünïcode"), triangle, model::kNoObject, {}};
     root.track.keys = {key(-0.5, 0.1), key(1.0 / 3.0, 2.5, false), key(7.25, -3.0)};
     root.track.interpolation = InterpolationMethod::Screw;
@@ -172,6 +173,7 @@ private slots:
         QCOMPARE(received->locale, sent.locale);
         QCOMPARE(received->format, sent.format);
         QCOMPARE(received->fps, sent.fps);
+        QCOMPARE(received->scene.gravity, sent.scene.gravity);
         QCOMPARE(model::projectBytes(received->scene), model::projectBytes(sent.scene));
     }
 

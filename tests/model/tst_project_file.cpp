@@ -356,6 +356,11 @@ void TstProjectFile::ballisticTracksKeepTheirFlightChoices()
     for (Keyframe& key : scene.objects.front().track.keys.edit())
         key.flightSolution = -1;
     QVERIFY(written(scene).isEmpty());
+    // The scene's gravity: saved when set, and absent (today's default) when it is the default.
+    QCOMPARE(readProject(path).gravity, Gravity{});
+    scene.gravity = {1.62, UpDirection::MinusY};
+    writeProject(path, scene);
+    QCOMPARE(readProject(path).gravity, (Gravity{1.62, UpDirection::MinusY}));
 }
 
 void TstProjectFile::numbersReadBackToTheSameBits()
@@ -591,6 +596,10 @@ void TstProjectFile::refusesMalformedFiles_data()
     const auto mass = [](double value, QJsonArray inertia) {
         return QJsonObject{{"mass", value}, {"centre", array({0, 0, 0})}, {"inertia", inertia}};
     };
+    row("negative gravity", projectWith({"gravity"}, QJsonObject{{"acceleration", -9.81}, {"up", "+z"}}),
+        "gravity.acceleration: -9.81 is negative");
+    row("an up that is no axis", projectWith({"gravity"}, QJsonObject{{"acceleration", 9.81}, {"up", "z"}}),
+        "gravity.up: unknown value \"z\"; expected one of +x, -x, +y, -y, +z, -z");
     row("a body that cannot be", projectWith({"objects", 0, "massProperties"}, mass(1.5, array({1, 1, 3, 0, 0, 0}))),
         "objects[0].massProperties: no body has this inertia");
     row("no mass", projectWith({"objects", 0, "massProperties"}, mass(0, array({1, 1, 1, 0, 0, 0}))),

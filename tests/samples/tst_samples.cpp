@@ -6,6 +6,7 @@
 #include "model/commands/import_objects_command.h"
 #include "model/commands/remove_fit_command.h"
 #include "model/document.h"
+#include "model/object_mass.h"
 #include "model/project_file.h"
 #include "model/track_evaluation.h"
 #include "samples/sample_scenes.h"
@@ -38,6 +39,8 @@ private slots:
     void fitThenRemoveFitTenTimesLeavesTheKeys();
     void screwSamplesAreScrewCycles();
     void meshNormalsPointOutOfTheirTriangles();
+    void theTHandleFlipsAboutItsIntermediateAxis();
+    void flightSamplesKeepTheirMomentumAndEnergy();
 };
 
 namespace {
@@ -337,6 +340,63 @@ void TstSamples::meshNormalsPointOutOfTheirTriangles()
                     QVERIFY(face.dot(mesh.normals[mesh.indices[i + corner]]) > 0.0f);
             }
         }
+}
+
+// The handle spins about its intermediate principal axis at launch; during the flight that axis turns over
+// (its world direction comes within 30° of the opposite of where it started), and the motion is the track's.
+void TstSamples::theTHandleFlipsAboutItsIntermediateAxis()
+{
+    const model::Scene scene = model::readProject(QDir(QStringLiteral(GYRE_SAMPLES_DIR)).filePath(samples::tHandle().fileName));
+    const model::SceneObject& object = scene.objects.at(0);
+    QCOMPARE(object.track.interpolation, InterpolationMethod::Ballistic);
+    QCOMPARE(object.track.keys.size(), std::size_t{2});
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(model::objectMassProperties(object).properties.inertia);
+    const Eigen::Vector3d intermediate = principal.eigenvectors().col(1); // eigenvalues increase
+    const model::TrackMotion motion(object.track, {}, model::flightBodyOf(object));
+    const double launch = object.track.keys.front().time;
+    const double landing = object.track.keys.back().time;
+    const Eigen::Vector3d start = motion.at(launch).orientation * intermediate;
+    // At launch ω lies within 20° of that axis.
+    QVERIFY(std::abs(motion.angularVelocity(launch + 1e-4).normalized().dot(start)) > std::cos(20.0 * std::numbers::pi / 180.0));
+    double lowest = 1.0;
+    for (int i = 0; i <= 400; ++i) {
+        const double time = launch + (landing - launch) * i / 400.0;
+        lowest = std::min(lowest, (motion.at(time).orientation * intermediate).dot(start));
+    }
+    QVERIFY2(lowest < -std::cos(30.0 * std::numbers::pi / 180.0), qPrintable(QString::number(lowest)));
+}
+
+// Each free-flight sample's angular momentum L = R·I·Rᵀ·ω and energy ½·ω·L stay what they were just after launch,
+// relative 1e-9, across the span: ω read from the orientations (TrackMotion's central difference), not from the
+// flight's own state.
+void TstSamples::flightSamplesKeepTheirMomentumAndEnergy()
+{
+    for (const samples::SampleScene& sample : samples::flightSamples()) {
+        const model::SceneObject& object = sample.scene.objects.at(0);
+        QCOMPARE(object.track.keys.size(), std::size_t{2});
+        const Eigen::Matrix3d inertia = model::objectMassProperties(object).properties.inertia;
+        const model::TrackMotion motion(object.track, {}, model::flightBodyOf(object));
+        const double launch = object.track.keys.front().time;
+        const double landing = object.track.keys.back().time;
+        const auto momentum = [&](double time) {
+            const Eigen::Matrix3d r = motion.at(time).orientation.toRotationMatrix();
+            return Eigen::Vector3d(r * inertia * r.transpose() * motion.angularVelocity(time));
+        };
+        const double first = launch + (landing - launch) / 200.0;
+        const Eigen::Vector3d l0 = momentum(first);
+        const double e0 = 0.5 * motion.angularVelocity(first).dot(l0);
+        QVERIFY(l0.norm() > 0.0);
+        for (int i = 2; i < 200; ++i) {
+            const double time = launch + (landing - launch) * i / 200.0;
+            const Eigen::Vector3d l = momentum(time);
+            QVERIFY2((l - l0).norm() <= 1e-9 * l0.norm(),
+                     qPrintable(sample.fileName + QStringLiteral(" L at ") + QString::number(time) + QStringLiteral(": ") +
+                                QString::number((l - l0).norm() / l0.norm())));
+            const double energy = 0.5 * motion.angularVelocity(time).dot(l);
+            QVERIFY2(std::abs(energy - e0) <= 1e-9 * e0,
+                     qPrintable(sample.fileName + QStringLiteral(" E: ") + QString::number(std::abs(energy - e0) / e0)));
+        }
+    }
 }
 
 QTEST_GUILESS_MAIN(TstSamples)

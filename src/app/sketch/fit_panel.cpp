@@ -1,9 +1,12 @@
 #include "app/sketch/fit_panel.h"
 
+#include "model/object_mass.h"
+#include "model/physics_target.h"
 #include "model/sketch_fit_problem.h"
 #include "model/commands/remove_fit_command.h"
 #include "model/commands/set_fit_parameter_command.h"
 #include "model/commands/set_fit_window_command.h"
+#include "model/commands/set_physics_target_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
 #include "ui_fit_panel.h"
 
@@ -11,6 +14,7 @@
 #include <QStyle>
 
 #include <stdexcept>
+#include <utility>
 
 namespace gyre::app {
 
@@ -60,6 +64,7 @@ FitPanel::FitPanel(model::Document& document, Selection& selection, FitControlle
     connect(ui_->fitButton, &QPushButton::clicked, &controller_, &FitController::fitSelected);
     connect(ui_->cancelButton, &QPushButton::clicked, &controller_, &FitController::cancel);
     connect(ui_->removeFitButton, &QPushButton::clicked, this, &FitPanel::removeFit);
+    connect(ui_->physicsTargetButton, &QPushButton::clicked, this, &FitPanel::setPhysicsTarget);
     connect(ui_->liveCheck, &QCheckBox::clicked, &controller_, &FitController::setLive);
     connect(&controller_, &FitController::liveChanged, ui_->liveCheck, &QCheckBox::setChecked);
     connect(&controller_, &FitController::fitStarted, this, [this] {
@@ -200,6 +205,7 @@ void FitPanel::updateButtons()
     ui_->fitButton->setEnabled(fittable_ && !controller_.isFitting());
     ui_->cancelButton->setEnabled(controller_.isFitting());
     ui_->removeFitButton->setEnabled(object != nullptr && !object->track.sketch.fittedCurve.empty());
+    ui_->physicsTargetButton->setEnabled(object != nullptr && object->track.keys.size() >= 2);
 }
 
 void FitPanel::setParameter(model::FitParameter parameter, double value)
@@ -246,6 +252,20 @@ void FitPanel::removeFit()
     if (object == nullptr)
         return;
     push([&] { return new model::RemoveFitCommand(document_, object->id); });
+}
+
+void FitPanel::setPhysicsTarget()
+{
+    const model::SceneObject* object = selection_.selectedObject();
+    if (object == nullptr)
+        return;
+    push([&] {
+        // From the motion as it plays now, its applied fit included.
+        const model::TrackMotion& motion = document_.motion(object->id)->motion();
+        model::PhysicsTarget target = model::physicsTarget(
+            object->track, motion, model::objectMassProperties(*object).properties, document_.scene().fps);
+        return new model::SetPhysicsTargetCommand(document_, object->id, std::move(target));
+    });
 }
 
 void FitPanel::push(const std::function<QUndoCommand*()>& makeCommand)

@@ -59,6 +59,7 @@ private:
     void setWindow(std::optional<std::pair<double, double>> window);
     void toggleConstraint(QTableWidgetItem* item);
     void removeFit();
+    void setPhysicsTarget();
     // Pushes `command` as one undo step; a command the document refuses is reported in the panel.
     void push(const std::function<QUndoCommand*()>& makeCommand);
     void showStatus(const QString& message);

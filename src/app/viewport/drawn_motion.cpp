@@ -70,10 +70,12 @@ std::optional<Pose> DrawnMotion::originalWorldPose(model::ObjectId id, double ti
 void DrawnMotion::setPreviewTrack(model::ObjectId object, std::optional<model::MotionTrack> track)
 {
     previewObject_ = object;
-    // A ballistic track flies the object's body.
-    const model::SceneObject* previewed = model::findObject(document_.scene(), object);
+    // A ballistic track flies the object's body under the scene's gravity.
+    const model::Scene& scene = document_.scene();
+    const model::SceneObject* previewed = model::findObject(scene, object);
     previewMotion_ = track ? std::make_shared<const model::SharedTrackMotion>(
-                                 std::move(*track), nullptr, previewed ? model::flightBodyOf(*previewed) : MassProperties{})
+                                 std::move(*track), nullptr, previewed ? model::flightBodyOf(*previewed) : MassProperties{},
+                                 scene.gravity)
                            : nullptr;
     rebuildMotionInBackground();
 }

@@ -101,6 +101,13 @@ inline constexpr auto sketchPattern = [](auto& object, std::size_t) {
 using PatternField =
     MemberField<sketchPattern, std::tuple<std::vector<Eigen::Vector2d>, int>, Merge::WithinGesture, Change::Sketch>;
 
+// The sketch's target: its direction strokes and magnitude curve, replaced together.
+inline constexpr auto sketchStrokesAndMagnitude = [](auto& object, std::size_t) {
+    return std::tie(object.track.sketch.directionStrokes, object.track.sketch.magnitude);
+};
+using SketchTargetField = MemberField<sketchStrokesAndMagnitude, std::tuple<std::vector<DirectionStroke>, std::vector<MagnitudePoint>>,
+                                      Merge::Never, Change::Sketch>;
+
 // The keyframes and the sketch together: what a retiming or an applied fit changes.
 inline constexpr auto keyframesAndSketch = [](auto& object, std::size_t) {
     return std::tie(object.track.keys, object.track.sketch);
@@ -147,6 +154,15 @@ struct TimeRangeField {
     static constexpr bool kMerges = true;
     static Value get(const Scene& scene, const FieldTarget& target);
     static void set(Scene& scene, const FieldTarget& target, Value value);
+};
+
+// The scene's gravity; every ballistic track flies anew.
+struct GravityField {
+    using Value = Gravity;
+    static constexpr Changes kChanges = Changes(Change::SceneSettings) | Change::Gravity;
+    static constexpr bool kMerges = true;
+    static Value get(const Scene& scene, const FieldTarget&) { return scene.gravity; }
+    static void set(Scene& scene, const FieldTarget&, Value value) { scene.gravity = value; }
 };
 
 struct KeyframeList {
