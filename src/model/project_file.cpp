@@ -43,17 +43,6 @@ constexpr qint64 kMaxHeaderBytes = qint64{16} << 20;
 
 // ---- writing --------------------------------------------------------------------------------------
 
-QJsonArray numbersJson(std::initializer_list<double> values)
-{
-    QJsonArray array;
-    for (double value : values)
-        array.append(value);
-    return array;
-}
-
-QJsonArray json(const Eigen::Vector3d& v) { return numbersJson({v.x(), v.y(), v.z()}); }
-QJsonArray json(const Eigen::Vector2d& v) { return numbersJson({v.x(), v.y()}); }
-
 template <class Item, class ToJson>
 QJsonArray arrayJson(const std::vector<Item>& items, ToJson toJson)
 {
@@ -62,6 +51,10 @@ QJsonArray arrayJson(const std::vector<Item>& items, ToJson toJson)
         array.append(toJson(item));
     return array;
 }
+
+QJsonArray numbersJson(std::initializer_list<double> values) { return arrayJson(std::vector(values), [](double v) { return QJsonValue(v); }); }
+QJsonArray json(const Eigen::Vector3d& v) { return numbersJson({v.x(), v.y(), v.z()}); }
+QJsonArray json(const Eigen::Vector2d& v) { return numbersJson({v.x(), v.y()}); }
 
 } // namespace
 
@@ -206,6 +199,8 @@ ProjectLayout::ProjectLayout(const Scene& scene)
             {"sketch", sketchJson(object.track.sketch, fittedCurve, keysBeforeFit)}};
         if (object.massOverride)
             entry.insert("massProperties", massPropertiesJson(*object.massOverride));
+        if (object.empty)
+            entry.insert("empty", true);
         objects.append(entry);
     }
     QJsonArray times;
@@ -523,6 +518,7 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
     object.parent = optionalId(field.member("parent"));
     // Files written before objects could be hidden show every object.
     object.visible = !field.has("visible") || field.member("visible").boolean();
+    object.empty = field.has("empty") && field.member("empty").boolean();
     if (field.has("massProperties"))
         object.massOverride = massPropertiesIn(field.member("massProperties"));
     if (const JsonField mesh = field.member("mesh"); !mesh.isNull()) {
