@@ -103,9 +103,6 @@ struct SceneObject {
     ObjectId id = kNoObject;
     QString name;
     std::shared_ptr<const Mesh> mesh;  // null: the viewport draws a default shape, or plain axes for an empty
-    // Blender's Empty: an object that is only a frame (a pivot, a target), drawn as its three axes, never
-    // a joint (app/viewport/skeleton.h). Its mesh is null.
-    bool empty = false;
     ObjectId parent = kNoObject;
     MotionTrack track;
     // Drawn and pickable in the viewport (Blender's eye in the outliner). It hides the object alone, not
@@ -114,6 +111,9 @@ struct SceneObject {
     // The body's mass, centre of mass and inertia as the artist typed them; none: from the mesh
     // (model::objectMassProperties).
     std::optional<MassProperties> massOverride = std::nullopt;
+    // Blender's Empty: an object that is only a frame (a pivot, a target), drawn as its three axes, never
+    // a joint (app/viewport/skeleton.h). Its mesh is null.
+    bool empty = false;
 };
 
 struct Scene {
