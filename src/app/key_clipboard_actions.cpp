@@ -48,7 +48,14 @@ void KeyClipboardActions::copy()
         if (object == nullptr)
             return;
         clipboard.pose = true;
-        clipboard.objects.push_back({object->name, {{0.0, document_.motion(object->id)->motion().at(time), true}}});
+        try {
+            clipboard.objects.push_back({object->name, {{0.0, document_.motion(object->id)->motion().at(time), true}}});
+        } catch (const std::invalid_argument& error) {
+            // A motion that cannot be built (a free flight with no solution) has no pose to copy.
+            statusBar_->showMessage(tr("Cannot copy the pose: %1").arg(QString::fromUtf8(error.what())),
+                                    kMessageMilliseconds);
+            return;
+        }
     } else {
         double first = std::numeric_limits<double>::infinity();
         for (const auto& [id, key] : selection_.keys())

@@ -54,17 +54,18 @@ void KeyframeActions::addKeyframes()
 {
     const double time = document_.scene().currentTime;
     model::ObjectKeys keys;
-    for (model::ObjectId id : selection_.objects()) {
-        const auto& existing = document_.object(id)->track.keys;
-        if (std::any_of(existing.begin(), existing.end(), [time](const model::Keyframe& key) { return key.time == time; }))
-            continue;
-        // The key holds the pose the object has now, so keying changes nothing but the keys.
-        const model::Keyframe key{time, document_.motion(id)->motion().at(time), true};
-        keys.emplace_back(id, model::withKeys(existing, {key}));
-    }
-    if (keys.empty())
-        return;
     try {
+        for (model::ObjectId id : selection_.objects()) {
+            const auto& existing = document_.object(id)->track.keys;
+            if (std::any_of(existing.begin(), existing.end(), [time](const model::Keyframe& key) { return key.time == time; }))
+                continue;
+            // The key holds the pose the object has now, so keying changes nothing but the keys. A motion that
+            // cannot be built (a free flight with no solution) throws here.
+            const model::Keyframe key{time, document_.motion(id)->motion().at(time), true};
+            keys.emplace_back(id, model::withKeys(existing, {key}));
+        }
+        if (keys.empty())
+            return;
         document_.push(new model::ReplaceKeyframesCommand(document_, keys, model::ReplaceKeyframesCommand::Edit::Insert));
     } catch (const std::invalid_argument& error) {
         statusBar_->showMessage(tr("Cannot add a keyframe: %1").arg(QString::fromUtf8(error.what())),

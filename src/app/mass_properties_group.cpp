@@ -16,7 +16,7 @@ namespace gyre::app {
 
 namespace {
 
-// Masses and moments of hand-sized to human-sized bodies read to the gram and the g·cm² in six places.
+// Masses and moments of hand-sized to human-sized bodies in six places: to the milligram and the 10 g·cm².
 constexpr int kMassDecimals = 6;
 
 std::vector<QLineEdit*> lineEdits(int count, QWidget* parent)
@@ -106,13 +106,13 @@ void MassPropertiesGroup::showSelectedObject()
     }
     const model::ObjectMass mass = model::objectMassProperties(*object);
     const MassProperties& properties = mass.properties;
-    const Eigen::Matrix3d& inertia = properties.inertia;
     source_->setText(model::massSourceText(mass.source));
     typed_->setChecked(typed);
     mass_->show({properties.mass});
     centre_->show({properties.centre.x(), properties.centre.y(), properties.centre.z()});
-    inertia_->show({inertia(0, 0), inertia(1, 1), inertia(2, 2), inertia(0, 1), inertia(0, 2), inertia(1, 2)});
-    const Eigen::Vector3d moments = principalAxes(inertia).moments;
+    const InertiaComponents inertia = inertiaComponents(properties.inertia);
+    inertia_->show(std::vector<double>(inertia.begin(), inertia.end()));
+    const Eigen::Vector3d moments = principalAxes(properties.inertia).moments;
     principal_->setText(tr("%1, %2, %3 kg·m²")
                             .arg(roundedNumberText(moments[0], kMassDecimals), roundedNumberText(moments[1], kMassDecimals),
                                  roundedNumberText(moments[2], kMassDecimals)));
@@ -133,13 +133,19 @@ void MassPropertiesGroup::applyFields()
     if (!object || !object->massOverride)
         return;
     try {
+        const MassProperties& before = *object->massOverride;
         MassProperties typed;
         typed.mass = mass_->values()[0];
         const std::vector<double> centre = centre_->values();
         typed.centre = Eigen::Vector3d(centre[0], centre[1], centre[2]);
         const std::vector<double> moments = inertia_->values();
-        typed.inertia << moments[0], moments[3], moments[4], moments[3], moments[1], moments[5], moments[4], moments[5],
-            moments[2];
+        InertiaComponents components;
+        std::copy(moments.begin(), moments.end(), components.begin());
+        typed.inertia = inertiaTensor(components);
+        // A new mass alone is the same shape, denser or lighter: the inertia scales with it, I ∝ m. Without this the
+        // mass would change nothing the motion uses, which only the inertia and the centre do.
+        if (typed.mass != before.mass && !inertia_->isEdited() && before.mass > 0.0 && typed.mass > 0.0)
+            typed.inertia = before.inertia * (typed.mass / before.mass);
         setOverride(typed);
     } catch (const std::invalid_argument& error) {
         showSelectedObject();
@@ -152,7 +158,7 @@ void MassPropertiesGroup::setOverride(const std::optional<MassProperties>& prope
 {
     message_->hide();
     try {
-        document_.undoStack().push(new model::SetMassOverrideCommand(document_, selectedTrack_.object(), properties));
+        document_.push(new model::SetMassOverrideCommand(document_, selectedTrack_.object(), properties));
     } catch (const std::invalid_argument& error) {
         showSelectedObject();
         message_->setText(tr("Not changed: %1").arg(QString::fromUtf8(error.what())));

@@ -50,8 +50,11 @@ Eigen::Vector3d positionAt(const std::vector<Eigen::Vector3f>& positions, std::u
 }
 
 // The index of each position's weld: positions within `tolerance` of an earlier one share its index.
-// A grid of cells `tolerance` wide finds them, looking in the 27 cells around each position.
-std::vector<std::uint32_t> weldedIndices(const std::vector<Eigen::Vector3f>& positions, double tolerance)
+// A grid of cells `tolerance` wide finds them, looking in the 27 cells around each position. Cells count
+// from `low`, the positions' lowest corner, so that a small mesh far from the origin still has cell
+// indices of at most size/tolerance, which an int holds.
+std::vector<std::uint32_t> weldedIndices(const std::vector<Eigen::Vector3f>& positions, const Eigen::Vector3d& low,
+                                         double tolerance)
 {
     struct CellHash {
         std::size_t operator()(const Eigen::Vector3i& cell) const
@@ -68,7 +71,7 @@ std::vector<std::uint32_t> weldedIndices(const std::vector<Eigen::Vector3f>& pos
     std::vector<Eigen::Vector3d> representatives;
     for (std::size_t i = 0; i < positions.size(); ++i) {
         const Eigen::Vector3d point = positions[i].cast<double>();
-        const Eigen::Vector3i cell = (point / tolerance).array().floor().cast<int>();
+        const Eigen::Vector3i cell = ((point - low) / tolerance).array().floor().cast<int>();
         std::optional<std::uint32_t> found;
         for (int dx = -1; dx <= 1 && !found; ++dx)
             for (int dy = -1; dy <= 1 && !found; ++dy)
@@ -90,35 +93,6 @@ std::vector<std::uint32_t> weldedIndices(const std::vector<Eigen::Vector3f>& pos
         welded[i] = *found;
     }
     return welded;
-}
-
-// Whether every edge, its ends welded by position (faces with their own vertices, or a seam whose
-// copies differ by float rounding, still join), is run once in each direction.
-bool isClosed(const std::vector<Eigen::Vector3f>& positions, const std::vector<std::uint32_t>& indices)
-{
-    Eigen::Vector3f low = positions.front(), high = positions.front();
-    for (const Eigen::Vector3f& position : positions) {
-        low = low.cwiseMin(position);
-        high = high.cwiseMax(position);
-    }
-    const double size = (high - low).cast<double>().norm();
-    if (!(size > 0.0))
-        return false;
-    const std::vector<std::uint32_t> weldedIndex = weldedIndices(positions, kWeldTolerance * size);
-    // Each directed edge counts +1, its reverse −1: closed and consistently wound iff every sum is 0.
-    std::unordered_map<std::uint64_t, int> balance;
-    for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
-        for (int corner = 0; corner < 3; ++corner) {
-            const std::uint64_t from = weldedIndex[indices[t + corner]];
-            const std::uint64_t to = weldedIndex[indices[t + (corner + 1) % 3]];
-            if (from == to)
-                continue;
-            if (from < to)
-                ++balance[from << 32 | to];
-            else
-                --balance[to << 32 | from];
-        }
-    return !balance.empty() && std::all_of(balance.begin(), balance.end(), [](const auto& edge) { return edge.second == 0; });
 }
 
 Moments solidMoments(const std::vector<Eigen::Vector3f>& positions, const std::vector<std::uint32_t>& indices)
@@ -179,6 +153,35 @@ Moments boxMoments(const std::vector<Eigen::Vector3f>& positions)
 
 } // namespace
 
+bool isClosedMesh(const std::vector<Eigen::Vector3f>& positions, const std::vector<std::uint32_t>& indices)
+{
+    if (positions.empty())
+        return false;
+    Eigen::Vector3f low = positions.front(), high = positions.front();
+    for (const Eigen::Vector3f& position : positions) {
+        low = low.cwiseMin(position);
+        high = high.cwiseMax(position);
+    }
+    const double size = (high - low).cast<double>().norm();
+    if (!(size > 0.0))
+        return false;
+    const std::vector<std::uint32_t> weldedIndex = weldedIndices(positions, low.cast<double>(), kWeldTolerance * size);
+    // Each directed edge counts +1, its reverse −1: closed and consistently wound iff every sum is 0.
+    std::unordered_map<std::uint64_t, int> balance;
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
+        for (int corner = 0; corner < 3; ++corner) {
+            const std::uint64_t from = weldedIndex[indices[t + corner]];
+            const std::uint64_t to = weldedIndex[indices[t + (corner + 1) % 3]];
+            if (from == to)
+                continue;
+            if (from < to)
+                ++balance[from << 32 | to];
+            else
+                --balance[to << 32 | from];
+        }
+    return !balance.empty() && std::all_of(balance.begin(), balance.end(), [](const auto& edge) { return edge.second == 0; });
+}
+
 MeshMass meshMassProperties(const std::vector<Eigen::Vector3f>& positions, const std::vector<std::uint32_t>& indices,
                             double density)
 {
@@ -195,7 +198,7 @@ MeshMass meshMassProperties(const std::vector<Eigen::Vector3f>& positions, const
 
     MeshMass result;
     Moments moments;
-    if (isClosed(positions, indices) && (moments = solidMoments(positions, indices)).mass > 0.0) {
+    if (isClosedMesh(positions, indices) && (moments = solidMoments(positions, indices)).mass > 0.0) {
         result.model = MassModel::Solid;
         moments.scale(density);
     } else if ((moments = shellMoments(positions, indices)).mass > 0.0) {
@@ -233,6 +236,18 @@ InertiaProblem inertiaProblem(const Eigen::Matrix3d& inertia)
     if (moments[0] + moments[1] < moments[2] * (1.0 - 1e-9))
         return InertiaProblem::NoSuchBody;
     return InertiaProblem::None;
+}
+
+Eigen::Matrix3d inertiaTensor(const InertiaComponents& c)
+{
+    Eigen::Matrix3d inertia;
+    inertia << c[0], c[3], c[4], c[3], c[1], c[5], c[4], c[5], c[2];
+    return inertia;
+}
+
+InertiaComponents inertiaComponents(const Eigen::Matrix3d& inertia)
+{
+    return {inertia(0, 0), inertia(1, 1), inertia(2, 2), inertia(0, 1), inertia(0, 2), inertia(1, 2)};
 }
 
 } // namespace gyre

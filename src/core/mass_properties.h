@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -50,6 +51,11 @@ inline constexpr double kDefaultDensity = 1000.0;
 MeshMass meshMassProperties(const std::vector<Eigen::Vector3f>& positions, const std::vector<std::uint32_t>& indices,
                             double density = kDefaultDensity);
 
+// Whether the mesh is closed: every edge, its ends welded by position within 1e-5 of the mesh's size (faces
+// with their own vertices, or a seam whose copies differ by float rounding, still join), run once in each
+// direction. Indices must be within the positions and a multiple of three.
+bool isClosedMesh(const std::vector<Eigen::Vector3f>& positions, const std::vector<std::uint32_t>& indices);
+
 // Principal moments (increasing) and the rotation from the principal frame to the body frame (its
 // columns the principal axes, a right-handed frame).
 struct PrincipalAxes {
@@ -62,5 +68,11 @@ PrincipalAxes principalAxes(const Eigen::Matrix3d& inertia);
 // principal moments meet the triangle inequality I₁ + I₂ ≥ I₃ (relative tolerance 1e-9).
 enum class InertiaProblem { None, NotFinite, NotSymmetric, NotPositiveDefinite, NoSuchBody };
 InertiaProblem inertiaProblem(const Eigen::Matrix3d& inertia);
+
+// A symmetric tensor as six numbers, in the order the project file, the inspector and `gyre-cli --inertia`
+// give them: Ixx, Iyy, Izz, Ixy, Ixz, Iyz.
+using InertiaComponents = std::array<double, 6>;
+Eigen::Matrix3d inertiaTensor(const InertiaComponents& components);
+InertiaComponents inertiaComponents(const Eigen::Matrix3d& inertia);
 
 } // namespace gyre

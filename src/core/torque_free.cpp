@@ -54,13 +54,6 @@ bool finite(const Eigen::Vector3d& v) { return v.allFinite(); }
 
 } // namespace
 
-Eigen::Matrix3d inertiaTensor(double ixx, double iyy, double izz, double ixy, double ixz, double iyz)
-{
-    Eigen::Matrix3d inertia;
-    inertia << ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz;
-    return inertia;
-}
-
 namespace {
 
 // The tensor's principal frame, after inertiaProblem has passed it. Callers that show the reason check first
@@ -109,8 +102,10 @@ TorqueFreeMotion::TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::
     integrate(tolerance);
 }
 
-// The Dormand–Prince integration of p = q·V, the first stage of each step the last of the one before. The
-// stages run on plain arrays: this loop is all a span's solve does, thousands of times.
+// The Dormand–Prince integration of p = q·V: seven rate evaluations a step. The first stage is not the last of
+// the step before (Dormand–Prince's "first same as last"): that one is at the step's unnormalised end, and each
+// accepted p is normalised. The stages run on plain arrays: this loop is all a span's solve does, thousands of
+// times.
 void TorqueFreeMotion::integrate(double tolerance)
 {
     Eigen::Vector4d p = vectorOf(start_ * axes_);

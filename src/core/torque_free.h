@@ -23,10 +23,6 @@
 
 namespace gyre {
 
-// The symmetric 3×3 tensor of the six components, as `gyre-cli --inertia` gives them.
-Eigen::Matrix3d inertiaTensor(double ixx, double iyy, double izz, double ixy = 0.0, double ixz = 0.0,
-                              double iyz = 0.0);
-
 // The per-step error tolerance of the integration (on the unit quaternion): far below 1e-9 of any quantity
 // over a span of thousands of steps.
 inline constexpr double kTorqueFreeTolerance = 1e-12;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -45,11 +46,17 @@ public:
         return r.allFinite();
     }
 
+    // NaN where the flight cannot be integrated (a seed that wandered to a spin past the step budget): Ceres
+    // then takes the step as failed, and no exception unwinds through ceres::Solve.
     Eigen::Vector3d endError(const Eigen::Vector3d& omega, double tolerance) const
     {
-        const TorqueFreeMotion motion(span_.inertia, span_.start, omega, span_.duration,
-                                      TorqueFreeMotion::Solver::Automatic, tolerance);
-        return quatLog(motion.orientation(span_.duration).conjugate() * span_.end);
+        try {
+            const TorqueFreeMotion motion(span_.inertia, span_.start, omega, span_.duration,
+                                          TorqueFreeMotion::Solver::Automatic, tolerance);
+            return quatLog(motion.orientation(span_.duration).conjugate() * span_.end);
+        } catch (const std::invalid_argument&) {
+            return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+        }
     }
 
 private:

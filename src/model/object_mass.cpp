@@ -100,11 +100,10 @@ void checkMassProperties(const MassProperties& properties)
 
 QJsonObject massPropertiesJson(const MassProperties& properties)
 {
-    const Eigen::Matrix3d& inertia = properties.inertia;
+    const InertiaComponents inertia = inertiaComponents(properties.inertia);
     return {{"mass", properties.mass},
             {"centre", QJsonArray{properties.centre.x(), properties.centre.y(), properties.centre.z()}},
-            {"inertia", QJsonArray{inertia(0, 0), inertia(1, 1), inertia(2, 2), inertia(0, 1), inertia(0, 2),
-                                   inertia(1, 2)}}};
+            {"inertia", QJsonArray{inertia[0], inertia[1], inertia[2], inertia[3], inertia[4], inertia[5]}}};
 }
 
 MassProperties massPropertiesIn(const JsonField& field)
@@ -115,8 +114,10 @@ MassProperties massPropertiesIn(const JsonField& field)
     const std::vector<JsonField> moments = field.member("inertia").elements();
     if (moments.size() != 6)
         field.member("inertia").fail(FileError::tr("the inertia needs six numbers: Ixx, Iyy, Izz, Ixy, Ixz, Iyz"));
-    const auto at = [&](std::size_t index) { return moments[index].number(); };
-    properties.inertia << at(0), at(3), at(4), at(3), at(1), at(5), at(4), at(5), at(2);
+    InertiaComponents components;
+    for (std::size_t i = 0; i < components.size(); ++i)
+        components[i] = moments[i].number();
+    properties.inertia = inertiaTensor(components);
     field.checked([&] { checkMassProperties(properties); });
     return properties;
 }

@@ -5,6 +5,7 @@
 
 #include "cli_test_support.h"
 #include "core/core_test_support.h"
+#include "core/mass_properties.h"
 #include "core/torque_free.h"
 
 #include <QTest>
@@ -60,7 +61,7 @@ void TstCliBallistic::framesFlyBetweenTheKeys()
     QVERIFY(angleBetween(csv.quaternion(last), Eigen::Quaterniond(0.5, 0.5, -0.5, 0.5)) < 1e-10);
     QVERIFY((csv.position(last) - Eigen::Vector3d(2, 0, 1.5)).norm() < 1e-9);
 
-    const Eigen::Matrix3d inertia = inertiaTensor(0.5, 1.0, 1.3, 0.1, 0.0, -0.05);
+    const Eigen::Matrix3d inertia = inertiaTensor({0.5, 1.0, 1.3, 0.1, 0.0, -0.05});
     const auto momentum = [&](std::size_t i) {
         const Eigen::Matrix3d r = csv.quaternion(i).normalized().toRotationMatrix();
         return Eigen::Vector3d(r * inertia * r.transpose() * omegaAt(csv, i));
@@ -80,7 +81,7 @@ void TstCliBallistic::framesFlyBetweenTheKeys()
 
 void TstCliBallistic::solutionsByEnergy()
 {
-    const Eigen::Matrix3d inertia = inertiaTensor(0.5, 1.0, 1.3);
+    const Eigen::Matrix3d inertia = inertiaTensor({0.5, 1.0, 1.3});
     double previous = 0.0;
     for (int k = 0; k < 3; ++k) {
         const QString out = path(QStringLiteral("solution%1.csv").arg(k));

@@ -307,9 +307,12 @@ private slots:
         QVERIFY(document.object(inspected.object())->massOverride == fromMesh);
         QVERIFY(!mass->isReadOnly());
 
+        // A new mass alone keeps the shape: the inertia scales with it.
         enter(mass, QStringLiteral("2.5"));
         QCOMPARE(document.object(inspected.object())->massOverride->mass, 2.5);
         QCOMPARE(inspected.undoSteps(), steps + 2);
+        const Eigen::Matrix3d scaled = fromMesh.inertia * (2.5 / fromMesh.mass);
+        QVERIFY((document.object(inspected.object())->massOverride->inertia - scaled).norm() <= 1e-12 * scaled.norm());
 
         // Moments 1, 1, 3: the two smaller add up to less than the largest.
         const std::pair<const char*, const char*> moments[] = {
@@ -321,7 +324,7 @@ private slots:
         QVERIFY(!inspected.child<QLabel>("massMessageLabel")->isHidden());
         QVERIFY2(inspected.child<QLabel>("massMessageLabel")->text().contains(QStringLiteral("no body has this inertia")),
                  qPrintable(inspected.child<QLabel>("massMessageLabel")->text()));
-        QCOMPARE(document.object(inspected.object())->massOverride->inertia, fromMesh.inertia);
+        QVERIFY((document.object(inspected.object())->massOverride->inertia - scaled).norm() <= 1e-12 * scaled.norm());
 
         // Unticking goes back to the mesh's, one more step; undoing it brings the typed mass back.
         scrollArea->ensureWidgetVisible(inspected.child<QCheckBox>("massTypedCheck"));

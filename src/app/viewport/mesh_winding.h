@@ -15,8 +15,9 @@ enum class MeshWinding {
     Clockwise,        // closed, wound the other way (inside out)
 };
 
-// Vertices at one position count as one, as a flat-shaded mesh repeats them per face. The side is
-// the sign of the enclosed volume, V = Σ a·(b×c)/6 over the triangles (a, b, c).
+// Closed as the mass properties count it (isClosedMesh, core/mass_properties.h): vertices at one position,
+// to rounding, count as one, as a flat-shaded mesh repeats them per face. The side is the sign of the
+// enclosed volume, V = Σ a·(b×c)/6 over the triangles (a, b, c).
 MeshWinding meshWinding(const model::Mesh& mesh);
 
 } // namespace gyre::app
