@@ -238,7 +238,8 @@ model::SketchFitProblem sketchProblem(const VerbCommandLine& commandLine, const 
                                       const std::string& refusal)
 {
     try {
-        return model::sketchFitProblem(track);
+        // Keys from a pose file: a hermite track, which flies no body.
+        return model::sketchFitProblem(track, MassProperties{});
     } catch (const std::invalid_argument& problem) {
         throw InputError(commandLine.inputPath(), refusal + problem.what());
     }
@@ -337,7 +338,7 @@ void fitAndWrite(const VerbCommandLine& commandLine, const model::MotionTrack& t
     }
     const bool sketched = !track.sketch.directionStrokes.empty() || !track.sketch.magnitude.empty();
     const QByteArray report = reportJson(result, problem.settings,
-                                         sketched ? std::optional(model::drawnErrors(track, *problem.motionWithoutFit, applied))
+                                         sketched ? std::optional(model::drawnErrors(track, *problem.motionWithoutFit, applied, MassProperties{}))
                                                   : std::nullopt);
     OutputTarget framesFile(commandLine.outputPath());
     OutputTarget reportFile(commandLine.requiredValue(kReport));

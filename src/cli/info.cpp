@@ -46,7 +46,7 @@ std::string rounded(double value, double zero = 0.0)
     return text;
 }
 
-// "    mass 0.332 kg (from the mesh, solid), centre (0, 0, 0.1) m, principal moments 0.01, 0.02, 0.02 kg·m²"
+// "    mass 635.8 kg (from the mesh, solid), centre (0, 0, 0.6551) m, principal moments 74.51, 74.51, 103.3 kg·m²"
 std::string massLine(const SceneObject& object)
 {
     // A mesh's float positions put the centre of a symmetric body a few 1e-8 m off its axis.

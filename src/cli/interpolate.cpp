@@ -9,6 +9,7 @@
 #include "io/pose_csv.h"
 #include "model/object_mass.h"
 #include "model/track_evaluation.h"
+#include "model/value_checks.h"
 
 #include <optional>
 #include <stdexcept>
@@ -51,8 +52,9 @@ Eigen::Matrix3d inertiaOption(const VerbCommandLine& commandLine)
     if (n.size() != 3 && n.size() != 6)
         throw commandLine.error("--inertia: give 3 numbers (Ixx,Iyy,Izz) or 6 (Ixx,Iyy,Izz,Ixy,Ixz,Iyz), not " +
                                 std::to_string(n.size()));
-    const Eigen::Matrix3d inertia =
-        n.size() == 3 ? inertiaTensor(n[0], n[1], n[2]) : inertiaTensor(n[0], n[1], n[2], n[3], n[4], n[5]);
+    InertiaComponents components{};
+    std::copy(n.begin(), n.end(), components.begin()); // the products of inertia 0 when three are given
+    const Eigen::Matrix3d inertia = inertiaTensor(components);
     try {
         model::checkMassProperties({1.0, Eigen::Vector3d::Zero(), inertia});
     } catch (const std::invalid_argument& problem) {
@@ -85,6 +87,11 @@ fit::FlightBody flightBody(const VerbCommandLine& commandLine)
 std::vector<model::TimedPose> ballisticSamples(const io::PoseTable& keys, const model::BakeRange& range,
                                                const VerbCommandLine& commandLine)
 {
+    try {
+        model::checkPoseBudget(keys.rows.size(), InterpolationMethod::Ballistic, {});
+    } catch (const std::invalid_argument& problem) {
+        throw InputError(commandLine.inputPath(), problem.what());
+    }
     const fit::FlightBody body = flightBody(commandLine);
     std::vector<fit::FlightKey> flightKeys;
     std::vector<double> times;

@@ -74,10 +74,4 @@ Pose BallisticFlight::at(double time) const
     return {orientation, centre - orientation * body_.centreOfMass};
 }
 
-Eigen::Vector3d BallisticFlight::angularVelocity(double time) const
-{
-    const Span* span = spanAt(time);
-    return span ? span->motion.angularVelocity(time - span->startTime) : Eigen::Vector3d::Zero();
-}
-
 } // namespace gyre::fit

@@ -51,7 +51,6 @@ public:
                     const std::vector<std::optional<std::size_t>>& choices = {});
 
     Pose at(double time) const;
-    Eigen::Vector3d angularVelocity(double time) const;  // world, rad/s; zero where the pose is held
     const std::vector<Span>& spans() const { return spans_; }
 
 private:

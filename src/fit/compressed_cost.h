@@ -10,7 +10,8 @@
 //
 // For the fit's segments (m = 8 residuals a node, 4 to 64 nodes; n = 16) this shrinks the Jacobian
 // Ceres stores and walks several times an iteration from 80×16 to 17×16 at 10 nodes, and keeps the
-// full one in a scratch buffer of a few kilobytes that stays in the first-level cache.
+// full one in one scratch buffer per thread, reused by every segment: m×(2n+1) doubles, 21 KB at 10 nodes
+// and 135 KB at 64.
 //
 // r̃ is r turned by Qᵀ, so r̃ is only defined together with its Jacobian: evaluated without Jacobians,
 // the residuals are (|r|, 0, …, 0), of the same squared norm. That is all Ceres' trust-region

@@ -1,5 +1,6 @@
 #include "io/scene_wire.h"
 
+#include "model/object_mass.h"
 #include "model/skinning.h"
 #include "model/value_checks.h"
 
@@ -159,20 +160,35 @@ void writeTrack(Writer& out, const model::MotionTrack& track)
     out.put<qint32>(track.subdivision.levels);
     out.put<quint8>(track.subdivision.cyclic);
     out.put<quint8>(track.subdivision.decoupled);
-    out.block(std::vector<qint32>(track.flightSolutions.begin(), track.flightSolutions.end()));
     std::vector<double> numbers;
     numbers.reserve(track.keys.size() * kKeyNumbers);
     std::vector<quint8> constrained;
     constrained.reserve(track.keys.size());
+    std::vector<qint32> flights;
+    flights.reserve(track.keys.size());
     for (const model::Keyframe& key : track.keys) {
         numbers.push_back(key.time);
         appendQuaternion(numbers, key.pose.orientation);
         appendAll(numbers, key.pose.position);
         constrained.push_back(key.constrained);
+        flights.push_back(key.flightSolution);
     }
     out.block(numbers);
     out.block(constrained);
+    out.block(flights);
     writeSketch(out, track.sketch);
+}
+
+// A flag, then the mass, the centre and the six inertia components (zeros when the mass comes from the mesh).
+void writeMassOverride(Writer& out, const std::optional<MassProperties>& typed)
+{
+    const MassProperties properties = typed.value_or(MassProperties{});
+    std::vector<double> numbers{properties.mass};
+    appendAll(numbers, properties.centre);
+    const InertiaComponents inertia = inertiaComponents(properties.inertia);
+    numbers.insert(numbers.end(), inertia.begin(), inertia.end());
+    out.put<quint8>(typed.has_value());
+    out.block(numbers);
 }
 
 void writeScene(Writer& out, const model::Scene& scene)
@@ -197,6 +213,7 @@ void writeScene(Writer& out, const model::Scene& scene)
         out.put<quint64>(object.parent);
         out.put<quint64>(object.mesh ? meshIndex.at(object.mesh.get()) : 0);
         writeTrack(out, object.track);
+        writeMassOverride(out, object.massOverride);
     }
 }
 
@@ -439,23 +456,41 @@ model::MotionTrack trackIn(Reader& in, const std::string& what)
     track.subdivision.levels = in.get<qint32>();
     track.subdivision.cyclic = in.flag();
     track.subdivision.decoupled = in.flag();
-    for (const qint32 solution : in.block<qint32>("flight solutions"))
-        track.flightSolutions.push_back(std::max(solution, -1));
     const std::vector<double> numbers = in.block<double>("keyframes", kKeyNumbers);
     const std::vector<quint8> constrained = in.block<quint8>("keyframe flags");
-    if (constrained.size() * kKeyNumbers != numbers.size())
-        throw WireError(what + ": " + std::to_string(constrained.size()) + " flags for " +
-                        std::to_string(numbers.size() / kKeyNumbers) + " keyframes");
+    const std::vector<qint32> flights = in.block<qint32>("keyframe flights");
+    if (constrained.size() * kKeyNumbers != numbers.size() || flights.size() != constrained.size())
+        throw WireError(what + ": " + std::to_string(constrained.size()) + " flags and " + std::to_string(flights.size()) +
+                        " flight choices for " + std::to_string(numbers.size() / kKeyNumbers) + " keyframes");
     track.keys.resize(constrained.size());
     for (std::size_t k = 0; k < track.keys.size(); ++k) {
         const double* key = &numbers[k * kKeyNumbers];
         if (constrained[k] > 1)
             throw WireError(what + ": keyframe " + std::to_string(k) + " has a flag that is neither 0 nor 1");
-        track.keys[k] = {key[0], Pose{quaternionAt(key + 1), {key[5], key[6], key[7]}}, constrained[k] == 1};
+        track.keys[k] = {key[0], Pose{quaternionAt(key + 1), {key[5], key[6], key[7]}}, constrained[k] == 1,
+                         std::max(flights[k], -1)};
     }
     track.sketch = sketchIn(in);
     checked(what, [&] { model::checkTrack(track); });
     return track;
+}
+
+std::optional<MassProperties> massOverrideIn(Reader& in, const std::string& what)
+{
+    const bool typed = in.flag();
+    const std::vector<double> numbers = in.block<double>("mass properties");
+    if (numbers.size() != 10)
+        throw WireError(what + ": " + std::to_string(numbers.size()) + " mass property numbers, not 10");
+    if (!typed)
+        return std::nullopt;
+    MassProperties properties;
+    properties.mass = numbers[0];
+    properties.centre = Eigen::Vector3d(numbers[1], numbers[2], numbers[3]);
+    InertiaComponents inertia;
+    std::copy(numbers.begin() + 4, numbers.end(), inertia.begin());
+    properties.inertia = inertiaTensor(inertia);
+    checked(what + " mass properties", [&] { model::checkMassProperties(properties); });
+    return properties;
 }
 
 model::Scene sceneIn(Reader& in)
@@ -495,6 +530,7 @@ model::Scene sceneIn(Reader& in)
         if (mesh > 0)
             object.mesh = meshes[mesh - 1];
         object.track = trackIn(in, what);
+        object.massOverride = massOverrideIn(in, what);
         scene.nextObjectId = std::max(scene.nextObjectId, object.id + 1);
     }
     // A skin's joints are objects of the scene, anywhere in it.

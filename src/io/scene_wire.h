@@ -23,8 +23,8 @@ namespace gyre::io::wire {
 
 inline constexpr quint32 kMagic = 0x57535947; // "GYSW" read as little-endian bytes
 // 2: import options (takes, frame rate, unit, up axis, time origin); the takes, settings and time shift
-// of an import. 3: each mesh's skin.
-inline constexpr quint16 kVersion = 3;
+// of an import. 3: each mesh's skin. 4: each object's typed mass properties.
+inline constexpr quint16 kVersion = 4;
 
 // The largest request or reply either side accepts: more is not a scene Gyre could hold.
 inline constexpr qint64 kMaxMessageBytes = qint64{1} << 30;

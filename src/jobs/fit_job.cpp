@@ -39,13 +39,13 @@ FitJob::FitJob(QObject* parent)
 
 FitJob::~FitJob() = default;
 
-void FitJob::request(model::ObjectId object, model::MotionTrack track)
+void FitJob::request(model::ObjectId object, model::MotionTrack track, const MassProperties& body)
 {
     object_ = object;
-    job_.post([input = std::move(track)](const JobRun<FitJobProgress>& run) {
+    job_.post([input = std::move(track), body](const JobRun<FitJobProgress>& run) {
         QElapsedTimer clock;
         clock.start();
-        const model::SketchFitProblem problem = model::sketchFitProblem(input);
+        const model::SketchFitProblem problem = model::sketchFitProblem(input, body);
         const int maxRounds = problem.settings.maxRounds;
         int reportedRound = 0;
         QElapsedTimer sinceReport;
@@ -63,7 +63,7 @@ void FitJob::request(model::ObjectId object, model::MotionTrack track)
         // A fit stopped early answers nothing: its request is cancelled or superseded.
         run.throwIfStopped();
         model::FitResult applied = model::appliedFitResult(input, result);
-        const model::DrawnErrors drawnErrors = model::drawnErrors(input, *problem.motionWithoutFit, applied);
+        const model::DrawnErrors drawnErrors = model::drawnErrors(input, *problem.motionWithoutFit, applied, body);
         const FitSummary summary = summaryOf(result, drawnErrors, static_cast<double>(clock.nsecsElapsed()) * 1e-9);
         return Answer{input, std::move(applied), summary};
     });

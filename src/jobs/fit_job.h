@@ -50,8 +50,9 @@ public:
     explicit FitJob(QObject* parent = nullptr);
     ~FitJob() override;
 
-    // Fits `track`, the track of `object` as it is now, in place of any fit requested before.
-    void request(model::ObjectId object, model::MotionTrack track);
+    // Fits `track`, the track of `object` as it is now, in place of any fit requested before; `body` is what a
+    // ballistic track flies (model::flightBodyOf).
+    void request(model::ObjectId object, model::MotionTrack track, const MassProperties& body);
     // Stops the newest request's fit: it is answered by cancelled. Does nothing when no fit is running.
     void cancel();
     // Whether the newest request is still unanswered.

@@ -1,5 +1,7 @@
 #include "jobs/scene_file_jobs.h"
 
+#include "model/object_mass.h"
+
 namespace gyre::jobs {
 
 SceneFileJobs::SceneFileJobs(QObject* parent)
@@ -23,7 +25,12 @@ bool SceneFileJobs::startImport(const QString& path, const io::ImportOptions& op
     // A cancelled import's worker is killed, and the job answers cancelled whatever it then throws
     // (SceneWorkerCancelled).
     import_.post([path, options, limits = limits_](const JobRun<NoProgress>& run) {
-        return std::make_shared<const io::SceneImport>(io::importSceneInWorker(path, options, limits, &run.stopFlag()));
+        auto imported = std::make_shared<const io::SceneImport>(io::importSceneInWorker(path, options, limits, &run.stopFlag()));
+        // Each mesh's mass properties here, once (model/object_mass.h keeps them while the mesh lives), not on the
+        // interface's thread when the inspector or a ballistic track first asks for a large mesh's.
+        for (const model::SceneObject& object : imported->scene.objects)
+            model::objectMassProperties(object);
+        return imported;
     });
     return true;
 }

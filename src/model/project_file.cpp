@@ -1,5 +1,6 @@
 #include "model/project_file.h"
 
+#include "model/flight_choices.h"
 #include "model/input_error.h"
 #include "model/json_field.h"
 #include "model/object_mass.h"
@@ -194,7 +195,7 @@ ProjectLayout::ProjectLayout(const Scene& scene)
             {"mesh", object.mesh ? QJsonValue(meshIndex.at(object.mesh.get())) : QJsonValue()},
             {"interpolation", QString::fromLatin1(interpolationMethodName(object.track.interpolation))},
             {"subdivision", subdivisionJson(object.track.subdivision)},
-            {"flightSolutions", arrayJson(object.track.flightSolutions, [](int choice) { return QJsonValue(choice); })},
+            {"flightSolutions", arrayJson(flightSolutions(object.track.keys), [](int choice) { return QJsonValue(choice); })},
             {"keyframes", keyframes},
             {"sketch", sketchJson(object.track.sketch, fittedCurve, keysBeforeFit)}};
         if (object.massOverride)
@@ -528,11 +529,10 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
     }
     object.track.interpolation = named(field.member("interpolation"), kInterpolationMethodNames);
     object.track.subdivision = subdivisionIn(field.member("subdivision"));
+    object.track.keys = keysIn(field.member("keyframes"), binary);
     // Files written before ballistic interpolation take every span's default flight.
     if (field.has("flightSolutions"))
-        for (const JsonField& choice : field.member("flightSolutions").elements())
-            object.track.flightSolutions.push_back(static_cast<int>(choice.integer(-1, std::numeric_limits<int>::max())));
-    object.track.keys = keysIn(field.member("keyframes"), binary);
+        setFlightSolutions(object.track.keys.edit(), field.member("flightSolutions"));
     field.member("subdivision").member("levels").checked([&] {
         checkPoseBudget(object.track.keys.size(), object.track.interpolation, object.track.subdivision);
     });

@@ -28,6 +28,11 @@ struct Keyframe {
     double time = 0.0;  // seconds
     Pose pose;          // the object's local transform, relative to its parent
     bool constrained = true;  // kept exactly by the angular-velocity fit unless freed
+    // On a ballistic track, the free flight chosen for the span from this key to the next: its index by kinetic
+    // energy (fit/ballistic_flight.h, taken modulo the span's count), or negative for the default, the flight
+    // nearest the hermite motion. Kept on the key so that keys added, deleted or moved elsewhere leave each
+    // span's choice with the span.
+    int flightSolution = -1;
 };
 
 // How a skinned mesh follows its joints (linear blend skinning, model/skinning.h): each position
@@ -92,10 +97,6 @@ struct MotionTrack {
     SharedVector<Keyframe> keys;  // strictly increasing times; copies share them (shared_vector.h)
     InterpolationMethod interpolation = InterpolationMethod::Hermite;
     SubdivisionSettings subdivision;  // used when interpolation is Screw
-    // Used when interpolation is Ballistic: for span i (key i to key i + 1), the index by kinetic energy of its
-    // chosen free flight (fit/ballistic_flight.h, taken modulo the span's count), or negative (and for spans past
-    // the end) the default, the flight nearest the hermite motion.
-    std::vector<int> flightSolutions;
     SketchState sketch;
 };
 

@@ -270,14 +270,14 @@ void checkSketchFittable(const MotionTrack& track)
     }
 }
 
-SketchFitProblem sketchFitProblem(const MotionTrack& track)
+SketchFitProblem sketchFitProblem(const MotionTrack& track, const MassProperties& body)
 {
     checkSketchFittable(track);
     const SketchState& sketch = track.sketch;
     // Checked: the edit window is there.
     const fit::TimeWindow window = *editWindow(track);
     const MotionTrack unfitted = withoutFit(track);
-    const auto keyed = std::make_shared<const TrackMotion>(unfitted);
+    const auto keyed = std::make_shared<const TrackMotion>(unfitted, EulerConvention{}, body);
     const bool screw = track.interpolation == InterpolationMethod::Screw;
     std::vector<fit::FitKey> keys;
     keys.reserve(unfitted.keys.size());
@@ -331,15 +331,18 @@ double drawnError(const MotionTrack& track, const TrackMotion& motion)
     return sum;
 }
 
-DrawnErrors drawnErrors(const MotionTrack& track, const TrackMotion& motionWithoutFit, const FitResult& applied)
+DrawnErrors drawnErrors(const MotionTrack& track, const TrackMotion& motionWithoutFit, const FitResult& applied,
+                        const MassProperties& body)
 {
-    return {drawnError(track, motionWithoutFit), drawnError(track, TrackMotion(withFitApplied(track, applied)))};
+    return {drawnError(track, motionWithoutFit),
+            drawnError(track, TrackMotion(withFitApplied(track, applied), EulerConvention{}, body))};
 }
 
 double relativeDelta(const MotionTrack& track, double absoluteDelta)
 {
     try {
-        const SketchFitProblem problem = sketchFitProblem(track);
+        // An absolute δ is from a file older than ballistic tracks: no track here flies a body.
+        const SketchFitProblem problem = sketchFitProblem(track, MassProperties{});
         return fit::relativeFragmentError(absoluteDelta, fit::targetMeanSquare(problem.target, *problem.settings.window,
                                                                                problem.settings.fragmentSeconds));
     } catch (const std::invalid_argument&) {

@@ -76,9 +76,10 @@ std::vector<std::vector<fit::TimedVector>> timedStrokes(const MotionTrack& track
 // edit (the fit panel's Fit button). sketchFitProblem makes them first.
 void checkSketchFittable(const MotionTrack& track);
 
-// The fit of the track's sketch, from withoutFit(track). Throws SketchFitError where
-// checkSketchFittable does, and for a direction stroke the fit cannot follow.
-SketchFitProblem sketchFitProblem(const MotionTrack& track);
+// The fit of the track's sketch, from withoutFit(track), `body` the one a ballistic track flies (flightBodyOf,
+// track_evaluation.h). Throws SketchFitError where checkSketchFittable does, and for a direction stroke the fit
+// cannot follow.
+SketchFitProblem sketchFitProblem(const MotionTrack& track, const MassProperties& body);
 
 // What ApplyFitResultCommand applies for `result`, a fit of sketchFitProblem(track): the fitted
 // control points, and the keys the fit read (withoutFit(track)'s), the freed ones turned to their
@@ -103,7 +104,8 @@ struct DrawnErrors {
     double before = 0.0;
     double after = 0.0;
 };
-DrawnErrors drawnErrors(const MotionTrack& track, const TrackMotion& motionWithoutFit, const FitResult& applied);
+DrawnErrors drawnErrors(const MotionTrack& track, const TrackMotion& motionWithoutFit, const FitResult& applied,
+                        const MassProperties& body);
 
 // The relative δ (fit::FitSettings::delta) that puts the fit's threshold for `track` where an
 // absolute δ in rad²/s, as project files stored it before they stored a relative one, put it:

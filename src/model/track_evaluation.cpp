@@ -133,8 +133,10 @@ private:
         for (const Keyframe& key : track.keys)
             keys.push_back({key.time, key.pose});
         std::vector<std::optional<std::size_t>> choices;
-        for (const int choice : track.flightSolutions)
+        for (std::size_t i = 0; i + 1 < track.keys.size(); ++i) {
+            const int choice = track.keys[i].flightSolution;
             choices.push_back(choice >= 0 ? std::optional<std::size_t>(static_cast<std::size_t>(choice)) : std::nullopt);
+        }
         fit::FlightBody flightBody;
         flightBody.inertia = body.inertia;
         flightBody.centreOfMass = body.centre;

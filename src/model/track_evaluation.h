@@ -11,8 +11,8 @@
 //   to the first, lasts the mean of the other spans, so the period is T = n·(tₙ₋₁ − t₀)/(n − 1) for
 //   n keys.
 // - ballistic: every span between two keys the free flight of the body (`body`: its inertia and centre of mass
-//   in the object's frame) that meets both keys (fit/ballistic_flight.h), the solution of span i the track's
-//   flightSolutions[i] (by kinetic energy) or the one nearest the hermite motion; the centre of mass on the
+//   in the object's frame) that meets both keys (fit/ballistic_flight.h), each span's solution its first
+//   key's flightSolution (by kinetic energy) or the one nearest the hermite motion; the centre of mass on the
 //   parabola under 9.81 m/s² along +Z (Gyre's up). Each span is solved when the motion is built.
 // - A fit (track.sketch.fittedCurve non-empty) gives the orientation inside the span of its control
 //   points, by the normalised HermiteQuaternionSpline through them; outside, and for positions, the

@@ -215,6 +215,9 @@ void checkSubdivision(const SubdivisionSettings& settings)
 
 void checkPoseBudget(std::size_t keyCount, InterpolationMethod interpolation, const SubdivisionSettings& settings)
 {
+    if (interpolation == InterpolationMethod::Ballistic && keyCount > kMaxBallisticKeys)
+        refuse(FileError::tr("%1 keys on a ballistic track, which solves a free flight for each span; it may hold %2")
+                   .arg(count(static_cast<double>(keyCount)), count(static_cast<double>(kMaxBallisticKeys))));
     if (interpolation != InterpolationMethod::Screw)
         return;
     checkSubdivision(settings);

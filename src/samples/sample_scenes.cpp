@@ -502,7 +502,7 @@ SampleScene critterCycle()
 SampleScene withFitApplied(SampleScene sample)
 {
     model::MotionTrack& track = sample.scene.objects.front().track;
-    const model::SketchFitProblem problem = model::sketchFitProblem(track);
+    const model::SketchFitProblem problem = model::sketchFitProblem(track, model::flightBodyOf(sample.scene.objects.front()));
     const fit::FitResult result = model::fitSketch(problem);
     if (result.outcome != fit::FitOutcome::Converged)
         throw std::runtime_error(sample.fileName.toStdString() + ": the sketch's fit does not converge");

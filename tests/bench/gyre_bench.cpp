@@ -379,7 +379,7 @@ void BM_FitSpinningTopSample(benchmark::State& state)
     const gyre::model::MotionTrack track = gyre::samples::spinningTop().scene.objects.front().track;
     gyre::fit::FitResult result;
     for (auto _ : state) {
-        const gyre::model::SketchFitProblem problem = gyre::model::sketchFitProblem(track);
+        const gyre::model::SketchFitProblem problem = gyre::model::sketchFitProblem(track, {});
         result = gyre::model::fitSketch(problem);
         benchmark::DoNotOptimize(result.controlPoints.data());
     }

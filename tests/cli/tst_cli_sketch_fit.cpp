@@ -74,7 +74,7 @@ model::Scene sceneOf(const model::MotionTrack& track)
 // What the app's Fit does to the track: the fit of its sketch, applied; baked over its keys' span.
 std::vector<model::TimedPose> appFit(const model::MotionTrack& track)
 {
-    const model::SketchFitProblem problem = model::sketchFitProblem(track);
+    const model::SketchFitProblem problem = model::sketchFitProblem(track, {});
     const fit::FitResult result = model::fitSketch(problem);
     const model::MotionTrack fitted = model::withFitApplied(track, model::appliedFitResult(track, result));
     return model::bakeTrack(fitted, {track.keys.front().time, track.keys.back().time, kFps});

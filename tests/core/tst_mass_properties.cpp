@@ -204,8 +204,9 @@ void TestMassProperties::openMeshIsAThinShell()
     const TestMesh mesh{{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {0, 1, 2, 0, 2, 3}};
     const MeshMass result = meshMassProperties(mesh.positions, mesh.indices, 1000.0);
     QCOMPARE(result.model, MassModel::Shell);
-    const double area = 4.0;
-    const double mass = 1000.0 * std::pow(area, 1.5) / (6.0 * std::sqrt(std::numbers::pi));
+    // As heavy as the solid sphere of its area would be: 4πr² = 4 gives r = 1/√π, m = ρ·(4/3)πr³.
+    const double radius = 1.0 / std::sqrt(std::numbers::pi);
+    const double mass = 1000.0 * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
     QVERIFY(std::abs(result.properties.mass - mass) <= 1e-12 * mass);
     QVERIFY(close(result.properties.centre, Eigen::Vector3d::Zero(), 1e-12));
     const Eigen::Matrix3d expected = Eigen::Vector3d(mass * 4 / 12, mass * 4 / 12, mass * 4 / 6).asDiagonal();

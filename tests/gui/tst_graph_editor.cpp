@@ -266,7 +266,7 @@ private slots:
 
     // Shift+click selects keys 1 and 2 of the spin; G moves them 6 frames later and raises their z angle
     // with the pointer, one undo step; Esc puts them back with no step; S with the current time at 3 s
-    // halves their distance from it; a Shift+drag box adds key 3.
+    // halves their distance from it, and cannot take them before the scene's start; a Shift+drag box adds key 3.
     void gAndSMoveAndScaleTheSelectedKeys()
     {
         model::Document& document = window_->document();
@@ -333,6 +333,16 @@ private slots:
         QCOMPARE(keys()[3].time, 3.0);
         stack.undo();
         QVERIFY(updated.wait(5000));
+
+        // S that would take key 1 before the scene's start (3 − 3·(3 − 1) = −3 s): the keys stay; Esc leaves no step.
+        QCOMPARE(document.scene().startTime, 0.0);
+        test::sendMove(plot, at(2.0, 180.0), Qt::NoButton);
+        QTest::keyClick(plot, Qt::Key_S);
+        test::sendMove(plot, at(0.0, 180.0), Qt::NoButton);
+        QCOMPARE(keys()[1].time, 1.0);
+        QCOMPARE(keys()[2].time, 2.0);
+        QTest::keyClick(plot, Qt::Key_Escape);
+        QCOMPARE(stack.index(), steps);
 
         // A Shift+drag box about the key at 3 s adds it.
         const QPoint corner = at(3.0, 360.0);

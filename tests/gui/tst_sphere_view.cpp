@@ -419,7 +419,7 @@ private slots:
         document_->loadAsUntitled(QStringLiteral(":/samples/spinning-top.gyre"));
         QVERIFY(selection_->selectedObject() != nullptr);
         const model::ObjectId top = selection_->object();
-        const model::SketchFitProblem problem = model::sketchFitProblem(document_->object(top)->track);
+        const model::SketchFitProblem problem = model::sketchFitProblem(document_->object(top)->track, {});
         const fit::FitResult result = model::fitSketch(problem);
         document_->push(
             new model::ApplyFitResultCommand(*document_, top, model::appliedFitResult(document_->object(top)->track, result)));

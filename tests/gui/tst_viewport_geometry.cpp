@@ -17,6 +17,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <algorithm>
 #include <numbers>
 #include <random>
 
@@ -123,7 +124,10 @@ private slots:
         const Eigen::Vector3d centre = pose.apply(Eigen::Vector3d(0.1, 0.2, 0.3));
         QVERIFY((point(0) - centre).norm() < 1e-6);
         QVERIFY((point(1) - point(0)).normalized().dot(momentum.normalized()) > 1.0 - 1e-4);
-        const double expectedLength = app::momentumArrowLength(momentum.norm(), mass, 1.0);
+        // Two body radii for one turn a second about the largest principal axis, the box's about its
+        // shortest side: I₃ = m/12·(0.8² + 0.5²), capped at six.
+        const double largestMoment = mass.mass / 12.0 * (size.x() * size.x() + size.z() * size.z());
+        const double expectedLength = std::min(2.0 * momentum.norm() / (2.0 * std::numbers::pi * largestMoment), 6.0);
         QVERIFY(std::abs((point(1) - point(0)).norm() - expectedLength) < 3.0 / (cells * cells) * expectedLength);
 
         lines.clear();

@@ -62,6 +62,8 @@ model::Scene richScene()
     child.track.keys = {key(0.0, 0.7)};
     model::SceneObject other{2, QString(), bare, model::kNoObject, {}};
     other.track.keys = {key(1.0, 1.0), key(2.0, 1.5)};
+    // Typed mass properties, which a ballistic export flies (not the mesh's).
+    other.massOverride = MassProperties{2.5, {0.1, -0.2, 0.3}, inertiaTensor({0.5, 0.75, 1.0, 0.01, -0.02, 0.03})};
     model::SceneObject empty{3, QStringLiteral("no mesh"), nullptr, 9, {}};
     empty.track.keys = {key(0.0, 0.0)};
     scene.objects = {root, child, other, empty};
@@ -320,6 +322,9 @@ private slots:
         mesh->indices.back() = 4; // one past the last position
         badMesh.objects[2].mesh = mesh;
         QTest::newRow("index past the positions") << importReplyOf(badMesh) << QByteArray("mesh:");
+        model::Scene noSuchBody = richScene();
+        noSuchBody.objects[2].massOverride->inertia = inertiaTensor({0.1, 0.1, 1.0, 0.0, 0.0, 0.0});
+        QTest::newRow("inertia no body has") << importReplyOf(noSuchBody) << QByteArray("object 2 mass properties:");
         model::Scene badRate = richScene();
         badRate.fps = 0.0;
         QTest::newRow("frame rate 0") << importReplyOf(badRate) << QByteArray("scene:");

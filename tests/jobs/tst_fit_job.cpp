@@ -120,14 +120,14 @@ private slots:
         jobs::FitJob job;
         Answers answers(job);
         const model::MotionTrack track = tiltedSpin();
-        job.request(7, track);
+        job.request(7, track, {});
         QVERIFY(job.isRunning());
         QTRY_VERIFY_WITH_TIMEOUT(answers.count() == 1, kFitTimeoutMilliseconds);
         QVERIFY(!job.isRunning());
         QCOMPARE(answers.results.size(), std::size_t{1});
         QVERIFY(model::sameFitInput(answers.finishedInputs.front(), track));
 
-        const model::SketchFitProblem problem = model::sketchFitProblem(track);
+        const model::SketchFitProblem problem = model::sketchFitProblem(track, {});
         const fit::FitResult direct = model::fitSketch(problem);
         QVERIFY(!answers.results.front().curve.empty());
         QVERIFY(sameResult(answers.results.front(), model::appliedFitResult(track, direct)));
@@ -137,7 +137,7 @@ private slots:
         QCOMPARE(summary.rounds, direct.rounds);
         QCOMPARE(summary.iterations, direct.iterations);
         QCOMPARE(summary.largestRelativeError, direct.largestRelativeError);
-        const model::DrawnErrors drawn = model::drawnErrors(track, *problem.motionWithoutFit, model::appliedFitResult(track, direct));
+        const model::DrawnErrors drawn = model::drawnErrors(track, *problem.motionWithoutFit, model::appliedFitResult(track, direct), {});
         QCOMPARE(summary.drawnErrors.before, drawn.before);
         QCOMPARE(summary.drawnErrors.after, drawn.after);
         QVERIFY(drawn.after < drawn.before);
@@ -155,7 +155,7 @@ private slots:
     {
         jobs::FitJob job;
         Answers answers(job);
-        job.request(3, slowToFit());
+        job.request(3, slowToFit(), {});
         QTRY_VERIFY_WITH_TIMEOUT(!answers.progress.empty(), kFitTimeoutMilliseconds);
         job.cancel();
         QTRY_VERIFY_WITH_TIMEOUT(answers.count() == 1, kFitTimeoutMilliseconds);
@@ -169,11 +169,11 @@ private slots:
     {
         jobs::FitJob job;
         Answers answers(job);
-        job.request(1, slowToFit());
+        job.request(1, slowToFit(), {});
         QTRY_VERIFY_WITH_TIMEOUT(!answers.progress.empty(), kFitTimeoutMilliseconds);
         model::MotionTrack newer = tiltedSpin();
         newer.sketch.alpha = 0.004;
-        job.request(2, newer);
+        job.request(2, newer, {});
         QTRY_VERIFY_WITH_TIMEOUT(answers.count() == 1, kFitTimeoutMilliseconds);
         QTest::qWait(200);
         QCOMPARE(answers.count(), std::size_t{1});
@@ -188,7 +188,7 @@ private slots:
         unsketched.sketch = {};
         QString expected;
         try {
-            model::sketchFitProblem(unsketched);
+            model::sketchFitProblem(unsketched, {});
         } catch (const model::SketchFitError& error) {
             expected = QString::fromUtf8(error.what());
         }
@@ -196,7 +196,7 @@ private slots:
 
         jobs::FitJob job;
         Answers answers(job);
-        job.request(5, unsketched);
+        job.request(5, unsketched, {});
         QTRY_VERIFY_WITH_TIMEOUT(answers.count() == 1, kFitTimeoutMilliseconds);
         QCOMPARE(answers.failures, std::vector<QString>{expected});
     }

@@ -32,6 +32,8 @@
 #include "model/commands/set_pattern_command.h"
 #include "model/commands/set_subdivision_command.h"
 #include "model/commands/set_time_range_command.h"
+#include "model/commands/replace_keyframes_command.h"
+#include "model/key_edits.h"
 #include "model/commands/step_ballistic_solution_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
 #include "model/gesture.h"
@@ -267,7 +269,8 @@ void TstCommands::trackSettings()
 }
 
 // Next and previous flight step the span at the time given, one undo step each, wrapping around its count;
-// the other span keeps its flight, and a track that is not ballistic has nothing to step.
+// the other span keeps its flight, and a track that is not ballistic has nothing to step. A key added in an
+// earlier span leaves the stepped span's flight with that span, now the third.
 void TstCommands::stepBallisticSolutionCyclesOneSpan()
 {
     Document document;
@@ -279,18 +282,25 @@ void TstCommands::stepBallisticSolutionCyclesOneSpan()
     QCOMPARE(before.size(), std::size_t(2));
     const std::size_t count = before[1].count;
     QVERIFY(count >= 2);
-    const std::optional<std::vector<int>> next = StepBallisticSolutionCommand::stepped(document, id, 1.5, 1);
+    const std::optional<SharedVector<Keyframe>> next = StepBallisticSolutionCommand::stepped(document, id, 1.5, 1);
     QVERIFY(next.has_value());
     const int steps = document.undoStack().count();
     document.undoStack().push(new StepBallisticSolutionCommand(document, id, *next));
     QCOMPARE(document.undoStack().count(), steps + 1);
     QCOMPARE(choices()[1].chosen, (before[1].chosen + 1) % count);
     QCOMPARE(choices()[0].chosen, before[0].chosen);
+    const std::size_t stepped = choices()[1].chosen;
+    const Keyframe between{0.5, document.motion(id)->motion().at(0.5), true};
+    document.undoStack().push(new ReplaceKeyframesCommand(
+        document, {{id, withKeys(document.object(id)->track.keys, {between})}}, ReplaceKeyframesCommand::Edit::Insert));
+    QCOMPARE(choices().size(), std::size_t(3));
+    QCOMPARE(choices()[2].chosen, stepped);
+    document.undoStack().undo();
     document.undoStack().undo();
     QCOMPARE(choices()[1].chosen, before[1].chosen);
-    const std::optional<std::vector<int>> previous = StepBallisticSolutionCommand::stepped(document, id, 1.5, -1);
+    const std::optional<SharedVector<Keyframe>> previous = StepBallisticSolutionCommand::stepped(document, id, 1.5, -1);
     QVERIFY(previous.has_value());
-    QCOMPARE((*previous)[1], static_cast<int>((before[1].chosen + count - 1) % count));
+    QCOMPARE((*previous)[1].flightSolution, static_cast<int>((before[1].chosen + count - 1) % count));
     QVERIFY(!StepBallisticSolutionCommand::stepped(document, id + 1, 0.5, 1).has_value());
 }
 
@@ -326,6 +336,9 @@ void TstCommands::budgetsRefuseUnboundedTracks()
                     "1,000 keys at 16 levels make 65,536,000 poses"));
     hermite.track.interpolation = InterpolationMethod::Screw;
     QVERIFY(refuses([&] { ImportObjectsCommand(document, {hermite}); }, "1,000 keys at 16 levels make 65,536,000 poses"));
+    // A ballistic track solves a free flight for each span: 64 keys at most.
+    QVERIFY(refuses([&] { SetInterpolationCommand(document, hermiteId, InterpolationMethod::Ballistic); },
+                    "1,000 keys on a ballistic track, which solves a free flight for each span; it may hold 64"));
 
     // Fitted curves without a direction, and times past the bound.
     const Eigen::Quaterniond still(0, 0, 0, 0);
@@ -702,7 +715,11 @@ void TstCommands::signalsSayWhatChanged_data()
     row("interpolation", [](Document& d) { return new SetInterpolationCommand(d, 2, InterpolationMethod::Squad); },
         {"TrackSettings:2"});
     row("subdivision", [](Document& d) { return new SetSubdivisionCommand(d, 2, {}); }, {"TrackSettings:2"});
-    row("flight solution", [](Document& d) { return new StepBallisticSolutionCommand(d, 2, {1}); }, {"TrackSettings:2"});
+    row("flight solution", [](Document& d) {
+        SharedVector<Keyframe> keys = d.object(2)->track.keys;
+        keys.edit().front().flightSolution = 1;
+        return new StepBallisticSolutionCommand(d, 2, keys);
+    }, {"Keyframes:2"});
     row("add stroke", [](Document& d) { return new AddStrokeCommand(d, 2, {{Eigen::Vector3d::UnitX()}, {}}); },
         {"Sketch:2"});
     row("erase stroke", [](Document& d) { return new EraseStrokeCommand(d, 2, 0); }, {"Sketch:2"});

@@ -10,6 +10,7 @@
 #include <QObject>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -65,7 +66,7 @@ SketchState tumbleAxisSketch()
 
 MotionTrack fitted(const MotionTrack& track)
 {
-    const fit::FitResult result = fitSketch(sketchFitProblem(track));
+    const fit::FitResult result = fitSketch(sketchFitProblem(track, {}));
     return withFitApplied(track, appliedFitResult(track, result));
 }
 
@@ -85,6 +86,7 @@ private slots:
     void aScrewTrackKeepsItsKeysAndPositions();
     void aCyclicScrewTrackRepeatsItsFit();
     void drawnErrorMeasuresOnlyWhatWasDrawn();
+    void aBallisticTrackIsFittedFromTheBodyItFlies();
 };
 
 void TstFitAnyTrack::everyInterpolationIsFittedFromItsOwnMotion_data()
@@ -108,7 +110,7 @@ void TstFitAnyTrack::everyInterpolationIsFittedFromItsOwnMotion()
 {
     QFETCH(MotionTrack, track);
     track.sketch = tumbleAxisSketch();
-    const SketchFitProblem problem = sketchFitProblem(track);
+    const SketchFitProblem problem = sketchFitProblem(track, {});
     const fit::FitResult result = fitSketch(problem);
     const FitResult applied = appliedFitResult(track, result);
     const TrackMotion keyed(track);
@@ -128,7 +130,7 @@ void TstFitAnyTrack::everyInterpolationIsFittedFromItsOwnMotion()
         if (key.time > kWindowStart && key.time < kWindowEnd)
             QVERIFY(angle(edited.at(key.time).orientation, keyed.at(key.time).orientation) < 1e-12);
 
-    const DrawnErrors drawn = drawnErrors(track, *problem.motionWithoutFit, applied);
+    const DrawnErrors drawn = drawnErrors(track, *problem.motionWithoutFit, applied, {});
     QVERIFY2(drawn.after < 0.7 * drawn.before, qPrintable(QStringLiteral("%1 → %2").arg(drawn.before).arg(drawn.after)));
 }
 
@@ -141,7 +143,7 @@ void TstFitAnyTrack::aScrewTrackKeepsItsKeysAndPositions()
     track.subdivision.scheme = SubdivisionScheme::BSpline;
     track.sketch = tumbleAxisSketch();
     track.keys[4].constrained = false;
-    const SketchFitProblem problem = sketchFitProblem(track);
+    const SketchFitProblem problem = sketchFitProblem(track, {});
     const TrackMotion keyed(track);
     QVERIFY(problem.initialMotion);
     QVERIFY(angle(problem.keys[3].rotation, keyed.at(1.5).orientation) < 1e-15);
@@ -205,6 +207,28 @@ void TstFitAnyTrack::drawnErrorMeasuresOnlyWhatWasDrawn()
 
     // Nothing sketched: nothing to measure.
     QCOMPARE(drawnError(spin, motion), 0.0);
+}
+
+// A ballistic track's fit starts from the free flight of the body it is given, the one the document plays
+// (flightBodyOf), not from a default body's: a long flat box flies differently from a unit sphere between
+// the same keys, and the fit's motion through the keys is the box's at every time.
+void TstFitAnyTrack::aBallisticTrackIsFittedFromTheBodyItFlies()
+{
+    MotionTrack track = tumble(InterpolationMethod::Ballistic);
+    track.keys.resize(2); // one span, 0 to 0.5 s: each motion below solves one flight
+    SketchState& sketch = track.sketch;
+    sketch.directionStrokes = {{{Eigen::Vector3d::UnitZ(), Eigen::Vector3d(0, 1, 1).normalized()}, {0.15, 0.35}}};
+    sketch.window = std::pair(0.1, 0.4);
+    const MassProperties box{3.0, Eigen::Vector3d(0.1, 0.0, -0.2), Eigen::Vector3d(0.5, 2.0, 2.4).asDiagonal()};
+    const SketchFitProblem problem = sketchFitProblem(track, box);
+    const TrackMotion flown(track, {}, box);
+    const TrackMotion sphere(track, {}, MassProperties{});
+    double sphereApart = 0.0;
+    for (double time = 0.0; time <= 0.5; time += 0.025) {
+        QCOMPARE(angle(problem.motionWithoutFit->at(time).orientation, flown.at(time).orientation), 0.0);
+        sphereApart = std::max(sphereApart, angle(sphere.at(time).orientation, flown.at(time).orientation));
+    }
+    QVERIFY2(sphereApart > 1e-3, qPrintable(QString::number(sphereApart)));
 }
 
 QTEST_GUILESS_MAIN(TstFitAnyTrack)

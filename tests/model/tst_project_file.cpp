@@ -338,19 +338,25 @@ void TstProjectFile::ballisticTracksKeepTheirFlightChoices()
     object.id = 1;
     object.name = QStringLiteral("coin");
     object.track.interpolation = InterpolationMethod::Ballistic;
-    object.track.keys = {{0.0, {}, true}, {0.5, {}, true}, {1.0, {}, true}, {1.5, {}, true}};
-    object.track.flightSolutions = {2, -1, 1};
+    object.track.keys = {{0.0, {}, true, 2}, {0.5, {}, true, -1}, {1.0, {}, true, 1}, {1.5, {}, true, -1}};
     scene.objects.push_back(object);
     scene.nextObjectId = 2;
     const QString path = directory_.filePath(QStringLiteral("ballistic.gyre"));
     writeProject(path, scene);
     const Scene loaded = readProject(path);
     QCOMPARE(loaded.objects.front().track.interpolation, InterpolationMethod::Ballistic);
-    QCOMPARE(loaded.objects.front().track.flightSolutions, (std::vector<int>{2, -1, 1}));
-    // A track that never chose keeps no choices.
-    scene.objects.front().track.flightSolutions.clear();
-    writeProject(path, scene);
-    QVERIFY(readProject(path).objects.front().track.flightSolutions.empty());
+    std::vector<int> choices;
+    for (const Keyframe& key : loaded.objects.front().track.keys)
+        choices.push_back(key.flightSolution);
+    QCOMPARE(choices, (std::vector<int>{2, -1, 1, -1}));
+    const auto written = [](const Scene& saved) {
+        return headerOf(projectBytes(saved)).value("objects")[0].toObject().value("flightSolutions").toArray();
+    };
+    QCOMPARE(written(loaded), (QJsonArray{2, -1, 1}));
+    // A track that never chose writes no choices.
+    for (Keyframe& key : scene.objects.front().track.keys.edit())
+        key.flightSolution = -1;
+    QVERIFY(written(scene).isEmpty());
 }
 
 void TstProjectFile::emptiesStayEmpties()
@@ -600,6 +606,10 @@ void TstProjectFile::refusesMalformedFiles_data()
         "objects[0].keyframes[0].orientation: the quaternion has length 2; it must have length 1");
     row("three numbers for four", projectWith({"objects", 0, "keyframes", 0, "orientation"}, array({1, 0, 0})),
         "objects[0].keyframes[0].orientation: expected 4 numbers, found 3");
+    row("a flight choice past the spans", projectWith({"objects", 0, "flightSolutions"}, QJsonArray{0, -1, 1}),
+        "objects[0].flightSolutions: 3 flight choices for 2 spans between the keys: one a span at most");
+    row("a flight choice below -1", projectWith({"objects", 0, "flightSolutions"}, QJsonArray{-2}),
+        "objects[0].flightSolutions[0]:");
     const auto mass = [](double value, QJsonArray inertia) {
         return QJsonObject{{"mass", value}, {"centre", array({0, 0, 0})}, {"inertia", inertia}};
     };

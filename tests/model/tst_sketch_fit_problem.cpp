@@ -171,7 +171,7 @@ void TstSketchFitProblem::targetFollowsStrokesAndKeepsTheMotionElsewhere()
     MotionTrack track = steadySpin();
     track.sketch.window = std::pair(0.5, 3.5);
     track.sketch.directionStrokes.push_back(timedStroke(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 1.0, 3.0));
-    const SketchFitProblem problem = sketchFitProblem(track);
+    const SketchFitProblem problem = sketchFitProblem(track, {});
 
     // Half way along the great arc from x to y.
     const Eigen::Vector3d middle = problem.target.at(2.0);
@@ -191,7 +191,7 @@ void TstSketchFitProblem::laterStrokeWinsWhereStrokesOverlap()
     MotionTrack track = steadySpin();
     track.sketch.directionStrokes.push_back(timedStroke(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 1.0, 3.0));
     track.sketch.directionStrokes.push_back(timedStroke(Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(), 1.5, 2.5));
-    const SketchFitProblem problem = sketchFitProblem(track);
+    const SketchFitProblem problem = sketchFitProblem(track, {});
     QVERIFY(angleBetween(problem.target.at(2.0), Eigen::Vector3d(1, 0, 1)) < 1e-6);
     // Before the later stroke starts, the earlier one: at 1.25 s an eighth of the way from x to y.
     const double turned = (1.25 - 1.0) / (3.0 - 1.0) * std::numbers::pi / 2.0;
@@ -202,7 +202,7 @@ void TstSketchFitProblem::sketchedMagnitudeSetsTheSpeed()
 {
     MotionTrack track = steadySpin();
     track.sketch.magnitude = {{1.0, 2.0}, {3.0, 4.0}};
-    const SketchFitProblem problem = sketchFitProblem(track);
+    const SketchFitProblem problem = sketchFitProblem(track, {});
     const Eigen::Vector3d omega = problem.target.at(2.0);
     QVERIFY(std::abs(omega.norm() - 3.0) < 1e-9);
     QVERIFY(angleBetween(omega, Eigen::Vector3d::UnitZ()) < 1e-6);
@@ -219,7 +219,7 @@ void TstSketchFitProblem::settingsComeFromTheSketch()
     track.sketch.beta = 2.0;
     track.sketch.delta = 0.3;
     track.sketch.window = std::pair(0.5, 3.5);
-    const SketchFitProblem problem = sketchFitProblem(track);
+    const SketchFitProblem problem = sketchFitProblem(track, {});
     QCOMPARE(problem.settings.alpha, 0.004);
     QCOMPARE(problem.settings.beta, 2.0);
     QCOMPARE(problem.settings.delta, 0.3);
@@ -234,12 +234,12 @@ void TstSketchFitProblem::settingsComeFromTheSketch()
 void TstSketchFitProblem::refusesWhatCannotBeFitted()
 {
     MotionTrack track = steadySpin();
-    QVERIFY(refusesWith([&] { sketchFitProblem(track); }, "Nothing is sketched"));
+    QVERIFY(refusesWith([&] { sketchFitProblem(track, {}); }, "Nothing is sketched"));
     track.sketch.magnitude = {{1.0, 2.0}, {3.0, 4.0}};
     track.sketch.window = std::pair(5.0, 6.0);
-    QVERIFY(refusesWith([&] { sketchFitProblem(track); }, "window"));
+    QVERIFY(refusesWith([&] { sketchFitProblem(track, {}); }, "window"));
     track.keys.resize(1);
-    QVERIFY(refusesWith([&] { sketchFitProblem(track); }, "two keyframes"));
+    QVERIFY(refusesWith([&] { sketchFitProblem(track, {}); }, "two keyframes"));
 }
 
 void TstSketchFitProblem::appliedResultKeepsConstrainedKeysAndLeansTowardsTheSketch()
@@ -253,7 +253,7 @@ void TstSketchFitProblem::appliedResultKeepsConstrainedKeysAndLeansTowardsTheSke
     track.sketch.directionStrokes.push_back(timedStroke(tilted, tilted, 1.0, 3.0));
     track.sketch.directionStrokes.back().points = {tilted, Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitZ()) * tilted};
 
-    const SketchFitProblem problem = sketchFitProblem(track);
+    const SketchFitProblem problem = sketchFitProblem(track, {});
     const fit::FitResult result = model::fitSketch(problem);
     const FitResult applied = appliedFitResult(track, result);
 
@@ -280,13 +280,13 @@ void TstSketchFitProblem::cheapChecksRefuseAsTheProblemDoes()
 {
     const auto sameRefusal = [](const MotionTrack& track, const char* words) {
         return refusesWith([&] { checkSketchFittable(track); }, words)
-               && refusesWith([&] { sketchFitProblem(track); }, words);
+               && refusesWith([&] { sketchFitProblem(track, {}); }, words);
     };
     MotionTrack track = steadySpin();
     QVERIFY(sameRefusal(track, "Nothing is sketched"));
     track.sketch.magnitude = {{1.0, 2.0}, {3.0, 4.0}};
     checkSketchFittable(track);
-    sketchFitProblem(track);
+    sketchFitProblem(track, {});
     track.sketch.pattern = {{0, 0}, {1, 0}};
     track.sketch.patternRepeat = 1 << 20;
     QVERIFY(sameRefusal(track, "pattern"));
@@ -302,13 +302,13 @@ void TstSketchFitProblem::cheapChecksRefuseAsTheProblemDoes()
 void TstSketchFitProblem::fittingAgainStartsFromTheKeysBeforeTheFit()
 {
     const MotionTrack track = tiltedSpinWithAFreeKey();
-    const SketchFitProblem first = sketchFitProblem(track);
+    const SketchFitProblem first = sketchFitProblem(track, {});
     const FitResult applied = appliedFitResult(track, fitSketch(first));
     const MotionTrack fitted = withFitApplied(track, applied);
     QVERIFY(fitted.keys[2].pose.orientation.coeffs() != track.keys[2].pose.orientation.coeffs()); // the fit turned it
     QCOMPARE(fitted.sketch.keysBeforeFit.size(), std::size_t{1});
 
-    const SketchFitProblem again = sketchFitProblem(fitted);
+    const SketchFitProblem again = sketchFitProblem(fitted, {});
     QCOMPARE(again.keys.size(), first.keys.size());
     for (std::size_t i = 0; i < first.keys.size(); ++i)
         QVERIFY2(again.keys[i].rotation.coeffs() == first.keys[i].rotation.coeffs(), qPrintable(QString::number(i)));
@@ -331,7 +331,7 @@ void TstSketchFitProblem::fittingAgainStartsFromTheKeysBeforeTheFit()
 void TstSketchFitProblem::aKeyTurnedSinceTheFitReadItDropsItsResult()
 {
     const MotionTrack track = tiltedSpinWithAFreeKey();
-    const FitResult applied = appliedFitResult(track, fitSketch(sketchFitProblem(track)));
+    const FitResult applied = appliedFitResult(track, fitSketch(sketchFitProblem(track, {})));
     QVERIFY(fitResultApplies(track, track, applied));
     const MotionTrack fitted = withFitApplied(track, applied);
     QVERIFY(sameFitInput(track, fitted)); // applying a fit changes nothing the next fit reads
@@ -345,7 +345,7 @@ void TstSketchFitProblem::aKeyTurnedSinceTheFitReadItDropsItsResult()
 
     // A refit of the fitted track, whose free key the artist turns while it runs: the fit reads the key
     // as it was before the first fit, the same either way, but its result would undo the turn.
-    const FitResult reapplied = appliedFitResult(fitted, fitSketch(sketchFitProblem(fitted)));
+    const FitResult reapplied = appliedFitResult(fitted, fitSketch(sketchFitProblem(fitted, {})));
     MotionTrack turnedAfterFit = fitted;
     turnedAfterFit.keys[2].pose.orientation = turnedAboutX(fitted.keys[2].pose.orientation, 0.3);
     QVERIFY(sameFitInput(fitted, turnedAfterFit));

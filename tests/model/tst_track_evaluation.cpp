@@ -322,7 +322,7 @@ void TstTrackEvaluation::ballisticFliesTheChosenFlights()
     QCOMPARE(byDefault.flightChoices().size(), std::size_t(2));
     const std::size_t count = byDefault.flightChoices()[1].count;
     QVERIFY(count >= 2);
-    track.flightSolutions = {-1, static_cast<int>(byDefault.flightChoices()[1].chosen + 1)};
+    track.keys.edit()[1].flightSolution = static_cast<int>(byDefault.flightChoices()[1].chosen + 1);
     const TrackMotion stepped(track, {}, body);
     QCOMPARE(stepped.flightChoices()[0].chosen, byDefault.flightChoices()[0].chosen);
     QCOMPARE(stepped.flightChoices()[1].chosen, (byDefault.flightChoices()[1].chosen + 1) % count);

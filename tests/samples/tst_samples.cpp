@@ -97,7 +97,7 @@ double largestKeyDifference(const std::vector<model::Keyframe>& a, const std::ve
 void fitAndApply(model::Document& document, model::ObjectId id)
 {
     const model::MotionTrack& track = document.object(id)->track;
-    const model::SketchFitProblem problem = model::sketchFitProblem(track);
+    const model::SketchFitProblem problem = model::sketchFitProblem(track, {});
     const fit::FitResult result = model::fitSketch(problem);
     QVERIFY(result.outcome == fit::FitOutcome::Converged);
     document.undoStack().push(new model::ApplyFitResultCommand(document, id, model::appliedFitResult(track, result)));
@@ -156,7 +156,7 @@ void TstSamples::spinningTopIsTheTableOneTop()
     QCOMPARE(track.keys.size(), std::size_t(85));
     QVERIFY(!track.sketch.directionStrokes.empty());
     QVERIFY(track.sketch.patternRepeat > 0);
-    const model::SketchFitProblem problem = model::sketchFitProblem(track);
+    const model::SketchFitProblem problem = model::sketchFitProblem(track, {});
     QVERIFY(problem.settings.window);
     QVERIFY(problem.settings.window->end > problem.settings.window->start);
 }
@@ -201,7 +201,7 @@ void TstSamples::sketchedFitsConvergeAndKeepTheConstrainedKeys()
     for (const samples::SampleScene& sample : sketched) {
         const model::MotionTrack& track = sample.scene.objects[0].track;
         QCOMPARE(track.sketch.delta, 0.1);
-        const model::SketchFitProblem problem = model::sketchFitProblem(track);
+        const model::SketchFitProblem problem = model::sketchFitProblem(track, {});
         const fit::FitResult result = model::fitSketch(problem);
         QVERIFY2(result.outcome == fit::FitOutcome::Converged,
                  qPrintable(sample.fileName + QStringLiteral(": ") +
@@ -227,10 +227,10 @@ void TstSamples::spinningTopsReportMeasuresWhatWasDrawn()
 {
     const model::MotionTrack track = samples::spinningTop().scene.objects.front().track;
     QVERIFY(track.sketch.magnitude.empty());
-    const model::SketchFitProblem problem = model::sketchFitProblem(track);
+    const model::SketchFitProblem problem = model::sketchFitProblem(track, {});
     const fit::FitResult result = model::fitSketch(problem);
     const model::DrawnErrors drawn =
-        model::drawnErrors(track, *problem.motionWithoutFit, model::appliedFitResult(track, result));
+        model::drawnErrors(track, *problem.motionWithoutFit, model::appliedFitResult(track, result), {});
     qInfo("the spinning top against what was drawn: %.4g rad²/s before the fit, %.4g after", drawn.before, drawn.after);
     QVERIFY2(drawn.after < 0.1 * drawn.before, qPrintable(QStringLiteral("%1 → %2").arg(drawn.before).arg(drawn.after)));
 }

@@ -561,8 +561,13 @@ void GraphEditorPanel::updateTransform(const QPointF& pointer)
             return;
         keys = model::retimedKeys(transform_->keys, transform_->selected,
                                   [&](double time) { return frame(pivot + factor * (time - pivot)); }, 0.5 / scene.fps);
-        if (!keys)
-            return; // the keys would cross or meet: they stay where they were last
+        const auto outsideScene = [&](std::size_t index) {
+            const double time = (*keys)[index].time;
+            return time < scene.startTime || time > scene.endTime;
+        };
+        // The keys would cross or meet, or leave the scene's range (as a move cannot): they stay where they were last.
+        if (!keys || std::any_of(transform_->selected.begin(), transform_->selected.end(), outsideScene))
+            return;
     } else {
         const auto [lower, upper] = model::shiftRange(transform_->keys, transform_->selected, 1.0 / scene.fps,
                                                       scene.startTime, scene.endTime);

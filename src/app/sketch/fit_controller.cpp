@@ -96,7 +96,7 @@ void FitController::fitSelected()
     if (object == nullptr)
         return;
     heldFit_.reset();
-    fitJob_.request(object->id, object->track);
+    fitJob_.request(object->id, object->track, model::flightBodyOf(*object));
     emit fitStarted(object->id);
 }
 
@@ -190,7 +190,7 @@ void FitController::requestLiveFit()
     if (newestLiveInput_ && model::sameFitInput(*newestLiveInput_, object->track))
         return;
     newestLiveInput_ = object->track;
-    liveJob_.request(object->id, object->track);
+    liveJob_.request(object->id, object->track, model::flightBodyOf(*object));
 }
 
 bool FitController::applyIfCurrent(model::ObjectId object, const model::MotionTrack& input,

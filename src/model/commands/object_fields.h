@@ -57,9 +57,6 @@ inline constexpr auto trackInterpolation = [](auto& object, std::size_t) -> auto
     return object.track.interpolation;
 };
 inline constexpr auto trackSubdivision = [](auto& object, std::size_t) -> auto& { return object.track.subdivision; };
-inline constexpr auto trackFlightSolutions = [](auto& object, std::size_t) -> auto& {
-    return object.track.flightSolutions;
-};
 inline constexpr auto sketchStroke = [](auto& object, std::size_t stroke) -> auto& {
     return object.track.sketch.directionStrokes[stroke];
 };
@@ -89,7 +86,6 @@ using MassOverrideField =
     MemberField<objectMassOverride, std::optional<MassProperties>, Merge::WithinGesture, Change::Object, Change::TrackSettings>;
 using InterpolationField = MemberField<trackInterpolation, InterpolationMethod, Merge::Never, Change::TrackSettings>;
 using SubdivisionField = MemberField<trackSubdivision, SubdivisionSettings, Merge::WithinGesture, Change::TrackSettings>;
-using FlightSolutionsField = MemberField<trackFlightSolutions, std::vector<int>, Merge::Never, Change::TrackSettings>;
 using StrokeField = MemberField<sketchStroke, DirectionStroke, Merge::WithinGesture, Change::Sketch>;
 using MagnitudeCurveField = MemberField<sketchMagnitude, std::vector<MagnitudePoint>, Merge::WithinGesture, Change::Sketch>;
 using FitWindowField = MemberField<sketchWindow, std::optional<std::pair<double, double>>, Merge::WithinGesture, Change::Sketch>;

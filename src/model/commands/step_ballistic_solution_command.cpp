@@ -7,8 +7,8 @@
 
 namespace gyre::model {
 
-std::optional<std::vector<int>> StepBallisticSolutionCommand::stepped(const Document& document, ObjectId object,
-                                                                      double time, int direction)
+std::optional<SharedVector<Keyframe>> StepBallisticSolutionCommand::stepped(const Document& document, ObjectId object,
+                                                                            double time, int direction)
 {
     const MotionTrack& track = requireObject(document, object).track;
     if (track.interpolation != InterpolationMethod::Ballistic || track.keys.size() < 2)
@@ -19,16 +19,15 @@ std::optional<std::vector<int>> StepBallisticSolutionCommand::stepped(const Docu
     const auto span = static_cast<std::size_t>(after - track.keys.begin()) - 1;
     if (span >= choices.size() || choices[span].count < 2)
         return std::nullopt;
-    std::vector<int> solutions = track.flightSolutions;
-    solutions.resize(std::max(solutions.size(), span + 1), -1);  // −1: the spans before keep their default
+    SharedVector<Keyframe> keys = track.keys;
     const auto count = static_cast<int>(choices[span].count);
-    solutions[span] = ((static_cast<int>(choices[span].chosen) + direction) % count + count) % count;
-    return solutions;
+    keys.edit()[span].flightSolution = ((static_cast<int>(choices[span].chosen) + direction) % count + count) % count;
+    return keys;
 }
 
 StepBallisticSolutionCommand::StepBallisticSolutionCommand(Document& document, ObjectId object,
-                                                           std::vector<int> solutions, QUndoCommand* parent)
-    : ChangeValueCommand(document, objectTarget(document, object), std::move(solutions),
+                                                           SharedVector<Keyframe> keys, QUndoCommand* parent)
+    : ChangeValueCommand(document, objectTarget(document, object), std::move(keys),
                          commandText(QT_TRANSLATE_NOOP("gyre::model::Command", "Step Flight Solution")), parent)
 {
 }
