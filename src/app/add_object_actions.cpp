@@ -37,16 +37,32 @@ AddObjectActions::AddObjectActions(model::Document& document, Selection& selecti
         action->setObjectName(QStringLiteral("actionAdd-") + QLatin1String(key.data(), static_cast<qsizetype>(key.size())));
         connect(action, &QAction::triggered, this, [this, primitive = primitive] { add(primitive); });
     }
+    menu.addSeparator();
+    QAction* empty = menu.addAction(tr("Empty"));
+    empty->setObjectName(QStringLiteral("actionAdd-empty"));
+    connect(empty, &QAction::triggered, this, &AddObjectActions::addEmpty);
 }
 
 void AddObjectActions::add(model::Primitive primitive)
 {
     model::SceneObject object;
-    object.id = 1; // the batch's own id; the command gives the scene's
-    object.name = unusedName(document_.scene(), model::primitiveName(primitive));
     object.mesh = std::make_shared<const model::Mesh>(model::primitiveMesh(primitive));
+    addObject(std::move(object), model::primitiveName(primitive));
+}
+
+void AddObjectActions::addEmpty()
+{
+    model::SceneObject object;
+    object.empty = true;
+    addObject(std::move(object), tr("Empty"));
+}
+
+void AddObjectActions::addObject(model::SceneObject object, const QString& shapeName)
+{
+    object.id = 1; // the batch's own id; the command gives the scene's
+    object.name = unusedName(document_.scene(), shapeName);
     auto* command = new model::ImportObjectsCommand(document_, {std::move(object)});
-    command->setText(tr("Add %1").arg(model::primitiveName(primitive)));
+    command->setText(tr("Add %1").arg(shapeName));
     const model::ObjectId added = command->ids().front();
     document_.push(command);
     selection_.selectObject(added);

@@ -15,6 +15,7 @@
 #include "app/sketch/magnitude_plot.h"
 #include "app/smoothness_panel.h"
 #include "app/time_bar.h"
+#include "app/view_preferences.h"
 #include "app/timeline_widget.h"
 #include "app/viewport/viewport.h"
 #include "app/wheel_guard.h"
@@ -273,6 +274,7 @@ void MainWindow::createViews()
     linkConventionChoosers(*inspectorOrder, *inspectorFrame, *graphEditor->orderChooser(), *graphEditor->frameChooser());
     createFitViews();
     createViewport();
+    new ViewPreferences(*ui_->menuView, *ui_->actionShowTrail, *ui_->actionOrthographic, viewport_, this);
     createSphereView();
 }
 

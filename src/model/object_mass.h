@@ -1,7 +1,8 @@
 #pragma once
 // An object's mass properties as the physics uses them (angular momentum, free flight): the ones the
 // artist typed (SceneObject::massOverride), else its mesh's, solid and of uniform density
-// (core/mass_properties.h), else those of the block drawn for an object without a mesh. Imported
+// (core/mass_properties.h), else those of the block drawn for an object without a mesh: an empty's too,
+// so that a ballistic empty flies as that block would (a flight needs a body's inertia). Imported
 // meshes are in metres (docs/scene-files.md), so the mass is in kilograms.
 
 #include "core/mass_properties.h"

@@ -161,6 +161,8 @@ ProjectLayout::ProjectLayout(const Scene& scene)
         // Absent: quaternion mode in the default convention, as files from before rotation modes read.
         if (object.track.rotationMode != RotationMode{})
             entry.insert("rotationMode", rotationModeJson(object.track.rotationMode));
+        if (object.empty)
+            entry.insert("empty", true);
         objects.append(entry);
     }
     QJsonArray times;
@@ -494,6 +496,7 @@ SceneObject sceneObjectIn(const JsonField& field, const std::vector<std::shared_
     object.parent = optionalId(field.member("parent"));
     // Files written before objects could be hidden show every object.
     object.visible = !field.has("visible") || field.member("visible").boolean();
+    object.empty = field.has("empty") && field.member("empty").boolean();
     if (field.has("massProperties"))
         object.massOverride = massPropertiesIn(field.member("massProperties"));
     if (const JsonField mesh = field.member("mesh"); !mesh.isNull()) {

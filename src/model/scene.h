@@ -123,7 +123,7 @@ struct MotionTrack {
 struct SceneObject {
     ObjectId id = kNoObject;
     QString name;
-    std::shared_ptr<const Mesh> mesh;  // null: the viewport draws a default shape
+    std::shared_ptr<const Mesh> mesh;  // null: the viewport draws a default shape, or plain axes for an empty
     ObjectId parent = kNoObject;
     MotionTrack track;
     // Drawn and pickable in the viewport (Blender's eye in the outliner). It hides the object alone, not
@@ -132,6 +132,9 @@ struct SceneObject {
     // The body's mass, centre of mass and inertia as the artist typed them; none: from the mesh
     // (model::objectMassProperties).
     std::optional<MassProperties> massOverride = std::nullopt;
+    // Blender's Empty: an object that is only a frame (a pivot, a target), drawn as its three axes, never
+    // a joint (app/viewport/skeleton.h). Its mesh is null.
+    bool empty = false;
 };
 
 // The world axis a scene calls up, with its sign.

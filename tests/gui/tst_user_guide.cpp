@@ -496,6 +496,19 @@ private slots:
         guide.picture(image);
     }
 
+    // The falling leaf, a hermite track, with a trail of 32 copies over its whole fall (View ▸ Trail).
+    void showsTheFallingLeafsTrail()
+    {
+        GuideWindow guide;
+        guide.openSample("falling-leaf", 13.0);
+        guide.child<QAction>("actionTrailCopies-32")->trigger();
+        auto* viewport = guide.child<app::Viewport>();
+        QTRY_COMPARE(viewport->trailInstanceCount(), std::size_t{32});
+        guide.settle();
+        guide.picture(QStringLiteral("guide-trail.png"));
+        guide.child<QAction>("actionTrailCopies-16")->trigger(); // the setting back as the other pictures have it
+    }
+
     // The spinning block as it opens; then Decoupled, for comparison, ticked: one undo step, the track
     // decoupled, and the ghost showing the screw motion it started from.
     void decouplesTheSpinningBlock()

@@ -1,18 +1,24 @@
 // The viewport driven with the mouse on the bundled sample: handle drags change the selected key in
 // one undo step each, clicks select, the stroboscopic trail follows the subdivision settings, the
-// ghost shows the motion as opened. Two tests also measure while a handle is dragged with thousands of
+// ghost shows the motion as opened; a hermite track has a trail too, whose copies follow View ▸ Trail; the
+// number-pad views follow View ▸ Y Up. Two tests also measure while a handle is dragged with thousands of
 // trail instances: the viewport's drawing, and the UI thread's own time per move with every dock
 // shown (issue 18); they print the figures (tests never assert on time).
 
 #include "app/main_window.h"
+#include "app/viewport/default_shape.h"
+#include "app/viewport/pose_handles.h"
 #include "app/viewport/viewport.h"
 #include "gui_test_support.h"
+#include "model/commands/set_interpolation_command.h"
 #include "model/commands/set_subdivision_command.h"
 
 #include <QApplication>
 #include <QDockWidget>
 #include <QElapsedTimer>
+#include <QImage>
 #include <QMouseEvent>
+#include <QSettings>
 #include <QTest>
 
 #include <Eigen/Geometry>
@@ -80,6 +86,37 @@ QPointF pastTheXArrow(const app::Viewport& viewport)
     const QPointF base = *viewport.controlPoseScreenPosition(0);
     const QPointF grab = *viewport.handleScreenPosition(Handle::MoveX);
     return grab + (grab - base);
+}
+
+// The viewport drawn anew, read back: waits for a frame drawn after the call.
+QImage drawnImage(app::Viewport& viewport)
+{
+    const std::uint64_t before = viewport.framesDrawn();
+    viewport.update();
+    if (!QTest::qWaitFor([&] { return viewport.framesDrawn() > before; }))
+        qFatal("The viewport drew no frame");
+    return viewport.grabFramebuffer();
+}
+
+// How many of the copies' places (a point on each one's surface, on screen) show something else in `with` than
+// in `without`, looking within a few pixels about each.
+int copiesSeen(app::Viewport& viewport, const std::vector<Eigen::Vector3d>& places, const QImage& with,
+               const QImage& without)
+{
+    const double ratio = with.devicePixelRatio();
+    constexpr int kAbout = 4;
+    int seen = 0;
+    for (const Eigen::Vector3d& place : places) {
+        const QPointF point = app::toScreen(viewport.camera(), place) * ratio;
+        bool differs = false;
+        for (int dy = -kAbout; dy <= kAbout && !differs; ++dy)
+            for (int dx = -kAbout; dx <= kAbout && !differs; ++dx) {
+                const QPoint pixel = point.toPoint() + QPoint(dx, dy);
+                differs = with.rect().contains(pixel) && with.pixel(pixel) != without.pixel(pixel);
+            }
+        seen += differs ? 1 : 0;
+    }
+    return seen;
 }
 
 // The UI thread's CPU time inside one widget's paint events: each paint event is sent on to the
@@ -197,6 +234,84 @@ private slots:
 
         session.viewport->setShowTrail(false);
         QTRY_COMPARE(session.viewport->trailInstanceCount(), std::size_t{0});
+    }
+
+    void aHermiteTrackHasATrailThatFollowsTheViewMenusCount()
+    {
+        Session session(0.0);
+        QVERIFY(QTest::qWaitForWindowExposed(&session.window));
+        model::Document& document = session.window.document();
+        document.push(new model::SetInterpolationCommand(document, session.object, InterpolationMethod::Hermite));
+        // The path and the ghost off, so that what differs is the trail.
+        for (const char* name : {"actionShowTrajectory", "actionShowGhost"})
+            session.window.findChild<QAction*>(QLatin1String(name))->setChecked(false);
+        QAction* showTrail = session.window.findChild<QAction*>(QStringLiteral("actionShowTrail"));
+        QVERIFY(showTrail->isChecked());
+        for (const int copies : {8, 32}) {
+            session.window.findChild<QAction*>(QStringLiteral("actionTrailCopies-%1").arg(copies))->trigger();
+            QTRY_COMPARE(session.viewport->trailInstanceCount(), std::size_t(copies));
+            // Each copy where the motion is at its time, the scene's range spread evenly: the middle of
+            // the mesh's first triangle there, a point inside its outline on screen.
+            const model::Scene& scene = document.scene();
+            const model::TrackMotion& motion = document.motion(session.object)->motion();
+            const model::Mesh& mesh = app::displayMesh(*document.object(session.object));
+            Eigen::Vector3d onSurface = Eigen::Vector3d::Zero();
+            for (int corner = 0; corner < 3; ++corner)
+                onSurface += mesh.positions[mesh.indices[std::size_t(corner)]].cast<double>() / 3.0;
+            std::vector<Eigen::Vector3d> places;
+            for (int i = 0; i < copies; ++i)
+                places.push_back(motion.at(scene.startTime + (scene.endTime - scene.startTime) * i / (copies - 1)).apply(onSurface));
+            const QImage with = drawnImage(*session.viewport);
+            showTrail->setChecked(false);
+            const QImage without = drawnImage(*session.viewport);
+            showTrail->setChecked(true);
+            QCOMPARE(session.viewport->trailInstanceCount(), std::size_t{0});
+            // The object itself stands on one copy or two, hiding them.
+            QVERIFY2(copiesSeen(*session.viewport, places, with, without) >= copies - 2,
+                     qPrintable(QStringLiteral("%1 of %2 copies seen").arg(copiesSeen(*session.viewport, places, with, without)).arg(copies)));
+        }
+        // The choice outlives the window.
+        QCOMPARE(QSettings().value(QStringLiteral("view/trailCopies")).toInt(), 32);
+    }
+
+    void theNumberPadViewsFollowTheUpAxis()
+    {
+        Session session;
+        QVERIFY(QTest::qWaitForWindowExposed(&session.window));
+        app::OrbitCamera& camera = session.viewport->camera();
+        // (action, its view direction Z-up, Y-up, the world axis up on screen Z-up, Y-up)
+        struct View {
+            const char* action;
+            Eigen::Vector3d zUpDirection, yUpDirection;
+        };
+        const std::vector<View> views{{"actionViewFront", Eigen::Vector3d::UnitY(), -Eigen::Vector3d::UnitZ()},
+                                      {"actionViewBack", -Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ()},
+                                      {"actionViewRight", -Eigen::Vector3d::UnitX(), -Eigen::Vector3d::UnitX()},
+                                      {"actionViewLeft", Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitX()},
+                                      {"actionViewTop", -Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitY()},
+                                      {"actionViewBottom", Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitY()}};
+        QAction* yUp = session.window.findChild<QAction*>(QStringLiteral("actionYUp"));
+        QVERIFY(yUp != nullptr && !yUp->isChecked());
+        for (const bool y : {false, true}) {
+            yUp->setChecked(y);
+            const Eigen::Vector3d up = y ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitZ();
+            for (const View& view : views) {
+                session.window.findChild<QAction*>(QLatin1String(view.action))->trigger();
+                const Eigen::Vector3d expected = y ? view.yUpDirection : view.zUpDirection;
+                QVERIFY2((camera.viewDirection() - expected).norm() < 1e-9, view.action);
+                // The side views stand upright: the up axis points up the screen.
+                if (std::abs(expected.dot(up)) < 0.5) {
+                    const Eigen::Vector3d centre = camera.project(camera.target());
+                    const Eigen::Vector3d above = camera.project(camera.target() + up);
+                    QVERIFY2(above.y() < centre.y() - 1 && std::abs(above.x() - centre.x()) < 1e-6, view.action);
+                }
+            }
+        }
+        // Front, Y-up: x to the right, as in Maya.
+        session.window.findChild<QAction*>(QStringLiteral("actionViewFront"))->trigger();
+        QVERIFY(camera.project(camera.target() + Eigen::Vector3d::UnitX()).x() > camera.project(camera.target()).x() + 1);
+        QCOMPARE(QSettings().value(QStringLiteral("view/yUp")).toBool(), true);
+        yUp->setChecked(false);
     }
 
     void clickingSelectsObjectsAndControlPoses()

@@ -1,14 +1,19 @@
 // The viewport on an imported motion capture: its joints drawn as bones from each joint to each child
 // joint, a click on a bone selecting its joint and the selected bone drawn highlighted; the camera
 // framing the capture on import, on Frame Scene and on Frame Selected, at a human's size and at a
-// hundredth of it; Blender's number-pad views and orthographic toggle; wireframe and X-ray shading.
+// hundredth of it; Blender's number-pad views and orthographic toggle; wireframe and X-ray shading; an
+// empty (Object ▸ Add ▸ Empty) drawn as its axes, pickable, highlighted, and never a joint.
 
 #include "app/main_window.h"
 #include "app/scene_file_actions.h"
+#include "app/viewport/default_shape.h"
 #include "app/viewport/viewport.h"
 #include "built_scene_worker.h"
 #include "gui_test_support.h"
 #include "jobs/scene_file_jobs.h"
+#include "model/commands/add_keyframe_command.h"
+#include "model/commands/reparent_object_command.h"
+#include "model/project_file.h"
 #include "model/scene_motion.h"
 
 #include <QAction>
@@ -219,6 +224,77 @@ private slots:
         const auto colourAt = [&](const app::Bone& bone) { return image.pixelColor((session.screenMiddle(bone) * ratio).toPoint()); };
         QVERIFY2(isSelectedOrange(colourAt(boneOf("LeftFoot"))), qPrintable(colourAt(boneOf("LeftFoot")).name()));
         QVERIFY2(isGrey(colourAt(boneOf("Spine"))), qPrintable(colourAt(boneOf("Spine")).name()));
+    }
+
+    void anEmptyIsItsAxesPickableHighlightedAndNeverAJoint()
+    {
+        Session session;
+        model::Document& document = session.window.document();
+        const int steps = document.undoStack().count();
+        session.trigger("actionAdd-empty");
+        QCOMPARE(document.undoStack().count(), steps + 1);
+        QCOMPARE(document.undoStack().text(steps), QStringLiteral("Add Empty"));
+        const model::SceneObject& added = session.scene().objects.back();
+        const model::ObjectId empty = added.id;
+        QVERIFY(added.empty && added.mesh == nullptr);
+        QCOMPARE(added.name, QStringLiteral("Empty"));
+        QCOMPARE(session.window.selection().object(), empty);
+        // Away from the skeleton, seen from the front.
+        document.push(new model::AddKeyframeCommand(document, empty, model::Keyframe{0.0, Pose{Eigen::Quaterniond::Identity(), {30, 0, 0}}}));
+        session.trigger("actionViewFront");
+        const auto onScreen = [&](const Eigen::Vector3d& world) {
+            const Eigen::Vector3d point = session.viewport->camera().project(world);
+            return QPointF(point.x(), point.y());
+        };
+        // The motion with the key is built off the UI thread: Frame Selected frames the empty once it has it.
+        const QPointF middle(session.viewport->width() / 2.0, session.viewport->height() / 2.0);
+        QVERIFY(QTest::qWaitFor([&] {
+            session.trigger("actionFrameSelected");
+            return (onScreen({30, 0, 0}) - middle).manhattanLength() < 2.0;
+        }));
+        session.settle();
+        // On its x axis, and beside the axes where the block would be drawn: the empty is lines, not a block.
+        const QPointF onAxis = onScreen({30.0 + 0.5 * app::kEmptyAxisLength, 0, 0});
+        const QPointF offAxes = onScreen({30.0 + 0.3 * app::kEmptyAxisLength, 0, 0.3 * app::kEmptyAxisLength});
+        QImage image = session.viewport->grabFramebuffer();
+        const qreal ratio = image.devicePixelRatio();
+        // A line a pixel wide: within two pixels of where it is meant to be.
+        const auto anyAbout = [&](const QPointF& point, bool (*test)(const QColor&)) {
+            for (int dy = -2; dy <= 2; ++dy)
+                for (int dx = -2; dx <= 2; ++dx)
+                    if (test(image.pixelColor((point * ratio).toPoint() + QPoint(dx, dy))))
+                        return true;
+            return false;
+        };
+        QVERIFY(anyAbout(onAxis, isSelectedOrange));
+        // The dark background there, not a lit block.
+        const QColor background = image.pixelColor((offAxes * ratio).toPoint());
+        QVERIFY2(background.lightness() < 80, qPrintable(background.name()));
+
+        // Another object selected: the axes turn grey; a click on one selects the empty again.
+        session.window.selection().selectObject(session.objectNamed("Hips"));
+        session.settle();
+        image = session.viewport->grabFramebuffer();
+        QVERIFY(anyAbout(onAxis, [](const QColor& color) { return isGrey(color) && color.lightness() > 150; }));
+        QVERIFY(!anyAbout(onAxis, isSelectedOrange));
+        QTest::mouseClick(session.viewport, Qt::LeftButton, Qt::NoModifier, onAxis.toPoint());
+        QCOMPARE(session.window.selection().object(), empty);
+
+        // Under a leaf joint, it does not become a joint, nor make a bone of the hand's point at it.
+        document.push(new model::ReparentObjectCommand(document, empty, session.objectNamed("LeftHand")));
+        session.settle();
+        const model::SceneObject* reparented = document.object(empty);
+        const auto emptyIndex = static_cast<std::size_t>(reparented - session.scene().objects.data());
+        QCOMPARE(session.viewport->skeleton().bones().size(), kBones);
+        QVERIFY(!session.viewport->skeleton().isJoint(emptyIndex));
+
+        // Saved and opened again, it is still an empty.
+        const QString path = session.folder.filePath(QStringLiteral("empty.gyre"));
+        model::writeProject(path, document.scene());
+        const model::Scene opened = model::readProject(path);
+        for (const model::SceneObject& object : opened.objects)
+            QCOMPARE(object.empty, object.id == empty);
+        QVERIFY(opened.objects[emptyIndex].mesh == nullptr);
     }
 
     void theCameraFramesTheSkeletonAtAnySize_data()

@@ -1,13 +1,16 @@
-// The viewport's geometry without OpenGL: the orbit camera's projections and moves, and picking.
+// The viewport's geometry without OpenGL: the orbit camera's projections and moves, picking, and the
+// trail of any track (onion skinning).
 
 #include "app/viewport/body_overlay.h"
 #include "app/viewport/default_shape.h"
 #include "app/viewport/mesh_winding.h"
 #include "app/viewport/orbit_camera.h"
 #include "app/viewport/picking.h"
+#include "app/viewport/sampled_trail.h"
 #include "app/viewport/skeleton.h"
 #include "model/object_mass.h"
 #include "model/scene_motion.h"
+#include "model/track_evaluation.h"
 
 #include <QTest>
 
@@ -332,6 +335,112 @@ private slots:
         // A bone turns with its joint: its x axis is fixed in the joint's frame.
         const Eigen::Vector3d alongInJoint = world(1).orientation.conjugate() * (bones[0].pose.orientation * Eigen::Vector3d::UnitX());
         QVERIFY((alongInJoint - Eigen::Vector3d::UnitZ()).norm() < 1e-12);
+    }
+
+    void anEmptyIsNeverAJoint()
+    {
+        // Root (1, meshless) ─ Pivot (2, an empty) ─ Tip (3, meshless): with the empty, no two meshless
+        // objects are joined, so none is a joint; without it, all three are.
+        model::Scene scene;
+        scene.objects = {placed(1, model::kNoObject, turned(0.3, {1, 2, 3}, {1, 0, 0})),
+                         placed(2, 1, turned(0.8, {0, 1, 0}, {0, 0, 2})), placed(3, 2, turned(-0.5, {1, 0, 1}, {1.5, 0, 0}))};
+        scene.objects[1].empty = true;
+        QCOMPARE(app::findJoints(scene), std::vector<bool>(3, false));
+        scene.objects[1].empty = false;
+        QCOMPARE(app::findJoints(scene), std::vector<bool>(3, true));
+    }
+
+    void anEmptysHullIsClosedAndSpansItsAxes()
+    {
+        model::SceneObject empty;
+        empty.empty = true;
+        const model::Mesh& hull = app::displayMesh(empty);
+        QCOMPARE(app::meshWinding(hull), app::MeshWinding::CounterClockwise);
+        Eigen::AlignedBox3f box;
+        for (const Eigen::Vector3f& position : hull.positions)
+            box.extend(position);
+        QVERIFY((box.max() - Eigen::Vector3f::Constant(float(app::kEmptyAxisLength))).norm() < 1e-6F);
+        QVERIFY((box.min() + Eigen::Vector3f::Constant(float(app::kEmptyAxisLength))).norm() < 1e-6F);
+        // A click on an axis hits it: a ray straight down through a point of its x axis.
+        const std::vector<app::MeshPlacement> placements{{&hull, Pose{}, 1.0}};
+        QVERIFY(app::nearestHit({Eigen::Vector3d(0.5, 0.0, 5.0), -Eigen::Vector3d::UnitZ()}, placements));
+        QVERIFY(!app::nearestHit({Eigen::Vector3d(0.8, 0.8, 5.0), -Eigen::Vector3d::UnitZ()}, placements));
+    }
+
+    void theTrailsTimesAreEvenlySpacedWithinItsBudget()
+    {
+        model::Scene scene;
+        scene.fps = 24.0;
+        scene.startTime = 1.0;
+        scene.endTime = 4.0;
+        scene.currentTime = 2.0;
+        // Spread: from the start to the end, evenly.
+        const std::vector<double> spread = app::trailTimes(scene, {7, 0});
+        QCOMPARE(spread.size(), std::size_t{7});
+        for (std::size_t i = 0; i < spread.size(); ++i)
+            QVERIFY(std::abs(spread[i] - (1.0 + 0.5 * double(i))) < 1e-12);
+        // Every 6 frames about the current time: 4 before and 4 after, a quarter second apart; the
+        // current time left out, and nothing before the start (1.0 is the fourth before, 0.75 would be out).
+        const std::vector<double> about = app::trailTimes(scene, {8, 6});
+        const std::vector<double> expected{1.0, 1.25, 1.5, 1.75, 2.25, 2.5, 2.75, 3.0};
+        QCOMPARE(about.size(), expected.size());
+        for (std::size_t i = 0; i < about.size(); ++i)
+            QVERIFY(std::abs(about[i] - expected[i]) < 1e-12);
+        scene.currentTime = 1.25;
+        QCOMPARE(app::trailTimes(scene, {8, 6}).front(), 1.0); // 0.25 and 0.5 … are out of range
+        QCOMPARE(app::trailTimes(scene, {8, 6}).size(), std::size_t{5});
+        // The budget, up front: a setting past it is clamped.
+        QCOMPARE(app::trailTimes(scene, {1'000'000, 0}).size(), std::size_t(app::TrailSpacing::kMaxCopies));
+        QCOMPARE(app::trailTimes(scene, {0, 0}).size(), std::size_t{2});
+        QCOMPARE((app::TrailSpacing{5, -3}.clamped().everyFrames), 0);
+        scene.endTime = scene.startTime;
+        QVERIFY(app::trailTimes(scene, {16, 0}).empty());
+    }
+
+    void theTrailsCopiesStandWhereTheMotionIsAtTheirTimes()
+    {
+        // A hermite child of a slerp parent: each copy is the child's world pose, composed here from the
+        // two tracks evaluated on their own.
+        model::Scene scene;
+        scene.objects = {placed(1, model::kNoObject, turned(0.0, {0, 0, 1}, {0, 0, 0})),
+                         placed(2, 1, turned(0.0, {1, 0, 0}, {2, 0, 0}))};
+        model::MotionTrack& parent = scene.objects[0].track;
+        parent.interpolation = InterpolationMethod::Slerp;
+        parent.keys.push_back({2.0, turned(1.5, {0, 0, 1}, {0, 3, 0}), true});
+        model::MotionTrack& child = scene.objects[1].track;
+        child.interpolation = InterpolationMethod::Hermite;
+        child.keys.push_back({1.0, turned(2.0, {1, 1, 0}, {2, 0, 1}), true});
+        child.keys.push_back({2.0, turned(-1.0, {0, 1, 1}, {1, 1, 1}), true});
+        scene.startTime = 0.0;
+        scene.endTime = 2.0;
+        const model::SceneMotion motion(scene, ownMotion);
+        const std::vector<double> times = app::trailTimes(scene, {9, 0});
+        const std::vector<Pose> copies = app::trailPoses(motion, 2, times);
+        QCOMPARE(copies.size(), times.size());
+        const model::TrackMotion parentMotion(parent);
+        const model::TrackMotion childMotion(child);
+        for (std::size_t i = 0; i < times.size(); ++i) {
+            const Pose expected = parentMotion.at(times[i]) * childMotion.at(times[i]);
+            QVERIFY(copies[i].orientation.angularDistance(expected.orientation) < 1e-12);
+            QVERIFY((copies[i].position - expected.position).norm() < 1e-12);
+        }
+        // The copies differ: the trail shows the motion, not one pose many times.
+        QVERIFY((copies.front().position - copies.back().position).norm() > 1.0);
+    }
+
+    void aYUpViewOrbitsAboutY()
+    {
+        app::OrbitCamera camera = cameraAt(Eigen::Vector3d(1, 2, 3));
+        camera.setUpAxis(app::UpAxis::Y);
+        const double height = camera.eye().y();
+        camera.orbit(80.0, 0.0); // sideways: about the view's up, y
+        QVERIFY(std::abs(camera.eye().y() - height) < 1e-9);
+        QVERIFY(std::abs((camera.eye() - camera.target()).norm() - camera.distance()) < 1e-9);
+        // World +y is up on screen, whichever way the camera turned about it.
+        const Eigen::Vector3d centre = camera.project(camera.target());
+        QVERIFY(camera.project(camera.target() + Eigen::Vector3d::UnitY()).y() < centre.y() - 1);
+        camera.setUpAxis(app::UpAxis::Z);
+        QVERIFY(camera.project(camera.target() + Eigen::Vector3d::UnitZ()).y() < centre.y() - 1);
     }
 
     void aJointWithoutABoneOfItsOwnGetsOne()

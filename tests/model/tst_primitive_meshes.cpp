@@ -103,6 +103,10 @@ private slots:
         const MeshMass block = meshMassProperties(primitiveMesh(Primitive::Block).positions,
                                                   primitiveMesh(Primitive::Block).indices);
         QVERIFY(objectMassProperties(SceneObject{}).properties == block.properties);
+        // An empty too: a ballistic empty flies as the block would.
+        SceneObject empty;
+        empty.empty = true;
+        QVERIFY(objectMassProperties(empty).properties == block.properties);
         // The block's centre of mass lies ahead of its body's, towards the nose (+x), and above, towards the fin.
         QVERIFY(block.properties.centre.x() > 0.0 && block.properties.centre.z() > 0.0);
     }

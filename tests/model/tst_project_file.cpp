@@ -286,6 +286,7 @@ private slots:
     void savedScenesLoadBackExactly();
     void numbersReadBackToTheSameBits();
     void ballisticTracksKeepTheirFlightChoices();
+    void emptiesStayEmpties();
     void sharedMeshesStayShared();
     void tracksShareTimesAndConstantValues();
     void readsTheHandWrittenBinaryProject();
@@ -361,6 +362,27 @@ void TstProjectFile::ballisticTracksKeepTheirFlightChoices()
     scene.gravity = {1.62, UpDirection::MinusY};
     writeProject(path, scene);
     QCOMPARE(readProject(path).gravity, (Gravity{1.62, UpDirection::MinusY}));
+}
+
+void TstProjectFile::emptiesStayEmpties()
+{
+    Scene scene;
+    SceneObject pivot;
+    pivot.id = 1;
+    pivot.name = QStringLiteral("pivot");
+    pivot.empty = true;
+    SceneObject block = pivot;
+    block.id = 2;
+    block.parent = 1;
+    block.empty = false;
+    scene.objects = {pivot, block};
+    scene.nextObjectId = 3;
+    const QByteArray bytes = projectBytes(scene);
+    const Scene loaded = parseProject(bytes, QStringLiteral("empty.gyre"));
+    QVERIFY(loaded.objects[0].empty && loaded.objects[0].mesh == nullptr);
+    QVERIFY(!loaded.objects[1].empty);
+    // Written for the empty alone: a file of objects without it is as before there were empties.
+    QCOMPARE(bytes.count("\"empty\""), 1);
 }
 
 void TstProjectFile::numbersReadBackToTheSameBits()

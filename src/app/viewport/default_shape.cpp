@@ -27,7 +27,31 @@ model::Mesh makeBone()
     return mesh;
 }
 
+model::Mesh makeEmptyHull()
+{
+    // Eight faces, one per octant, each counter-clockwise seen from outside: (x, y, z) when the signs'
+    // product is positive, else (x, z, y).
+    const float l = static_cast<float>(kEmptyAxisLength);
+    model::Mesh mesh;
+    for (const float sx : {l, -l})
+        for (const float sy : {l, -l})
+            for (const float sz : {l, -l}) {
+                const Eigen::Vector3f x(sx, 0.0F, 0.0F), y(0.0F, sy, 0.0F), z(0.0F, 0.0F, sz);
+                if (sx * sy * sz > 0.0F)
+                    model::addFace(mesh, {x, y, z});
+                else
+                    model::addFace(mesh, {x, z, y});
+            }
+    return mesh;
+}
+
 } // namespace
+
+const model::Mesh& emptyHullMesh()
+{
+    static const model::Mesh hull = makeEmptyHull();
+    return hull;
+}
 
 const model::Mesh& boneMesh()
 {

@@ -40,6 +40,13 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
                   .failed = [this](const QString& message) {
                       emit failed(tr("The motion could not be rebuilt: %1").arg(message));
                   }})
+    , sampledTrailJob_(jobs::JobPolicy::NewestWins,
+                       {.finished = [this](const std::vector<Pose>& poses) { receiveTrail(poses, false); },
+                        .failed = [this](const QString& message) {
+                            dropTrail();
+                            emit changed();
+                            emit failed(tr("The trail could not be built: %1").arg(message));
+                        }})
 {
     connect(&document_, &model::Document::changed, this, &DrawnMotion::onDocumentChanged);
     connect(&selectedTrack_, &SelectedTrack::changed, this, &DrawnMotion::onSelectedTrackChanged);
@@ -48,11 +55,20 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
             snapshotOriginalMotion();
     });
     connect(&subdivision_, &jobs::SubdivisionJob::subdivided, this,
-            [this](std::uint64_t, const std::vector<Pose>& poses, qint64 nanoseconds) { receiveTrail(poses, nanoseconds); });
+            [this](std::uint64_t, const std::vector<Pose>& poses, qint64 nanoseconds) {
+                subdivisionMilliseconds_ = double(nanoseconds) / 1e6;
+                subdivisionLatencyMilliseconds_ = double(sinceTrailRequest_.nsecsElapsed()) / 1e6;
+                receiveTrail(poses, true);
+            });
     connect(&subdivision_, &jobs::SubdivisionJob::failed, this, [this](std::uint64_t, const QString& reason) {
         dropTrail();
         emit changed();
         emit failed(tr("The trail could not be built: %1").arg(reason));
+    });
+    // Copies about the current frame follow it.
+    connect(&document_, &model::Document::currentTimeChanged, this, [this] {
+        if (trailSpacing_.everyFrames > 0)
+            requestSampledTrail();
     });
     trailObject_ = selection_.object();
     motion_ = std::make_shared<model::SceneMotion>(document_.scene(), motionOf());
@@ -90,6 +106,7 @@ void DrawnMotion::onDocumentChanged(model::ObjectId, model::Changes changes)
         motion_ = std::make_shared<model::SceneMotion>(document_.scene(), motionOf());
         trajectoryStale_ = true;
         snapshotOriginalMotion();
+        requestSampledTrail();
         emit sceneReset();
         return;
     }
@@ -99,6 +116,9 @@ void DrawnMotion::onDocumentChanged(model::ObjectId, model::Changes changes)
         rebuildMotionInBackground();
     if (changes & (Change::Added | Change::Removed | Change::Object | Change::SceneSettings))
         trajectoryStale_ = true;
+    // The copies are spread over the scene's range, at its frames.
+    if (changes.testFlag(Change::SceneSettings))
+        requestSampledTrail();
     emit changed();
 }
 
@@ -147,8 +167,9 @@ void DrawnMotion::rebuildMotionInBackground()
 void DrawnMotion::receiveMotion(std::shared_ptr<const model::SceneMotion> built)
 {
     motion_ = std::move(built);
-    // A parent's change moves the selected object's trajectory as well as its own.
+    // A parent's change moves the selected object's trajectory and trail as well as its own.
     trajectoryStale_ = true;
+    requestSampledTrail();
     emit changed();
 }
 
@@ -164,14 +185,21 @@ void DrawnMotion::dropTrail()
     trailChanged_ = true;
 }
 
+void DrawnMotion::setTrailSpacing(const TrailSpacing& spacing)
+{
+    trailSpacing_ = spacing.clamped();
+    requestSampledTrail();
+}
+
 void DrawnMotion::requestTrail()
 {
     const model::SceneObject* object = selection_.selectedObject();
     if (!isScrewBenderTrack(object)) {
         subdivision_.cancel();
-        dropTrail();
+        requestSampledTrail();
         return;
     }
+    sampledTrailJob_.cancel();
     std::vector<Pose> controlPoses;
     controlPoses.reserve(object->track.keys.size());
     for (const model::Keyframe& key : object->track.keys)
@@ -180,14 +208,32 @@ void DrawnMotion::requestTrail()
     subdivision_.request(std::move(controlPoses), object->track.subdivision);
 }
 
-void DrawnMotion::receiveTrail(const std::vector<Pose>& poses, qint64 nanoseconds)
+void DrawnMotion::requestSampledTrail()
 {
-    subdivisionMilliseconds_ = double(nanoseconds) / 1e6;
-    subdivisionLatencyMilliseconds_ = double(sinceTrailRequest_.nsecsElapsed()) / 1e6;
+    const model::SceneObject* object = selection_.selectedObject();
+    if (isScrewBenderTrack(object))
+        return; // the screw trail is ScrewBender's subdivision (requestTrail)
+    const model::Scene& scene = document_.scene();
+    // A joint is drawn as its bones and an empty as its axes: their paths say where they go.
+    if (object == nullptr || object->empty || findJoints(scene)[static_cast<std::size_t>(object - scene.objects.data())]) {
+        sampledTrailJob_.cancel();
+        dropTrail();
+        return;
+    }
+    sampledTrailJob_.post([motion = motion_, id = object->id, times = trailTimes(scene, trailSpacing_)](
+                              const jobs::JobRun<jobs::NoProgress>& run) {
+        run.throwIfStopped(); // superseded before it started
+        return trailPoses(*motion, id, times);
+    });
+}
+
+void DrawnMotion::receiveTrail(const std::vector<Pose>& poses, bool inParentFrame)
+{
     trailMatrices_.clear();
     for (const Pose& pose : poses)
         appendPoseMatrix(trailMatrices_, pose);
     trailPoseCount_ = poses.size();
+    trailInParentFrame_ = inParentFrame;
     trailChanged_ = true;
     emit changed();
 }

@@ -3,10 +3,12 @@
 // change from the document's shared track motions, the changed ones built off the UI thread by a
 // newest-wins job (a moment behind while a newer one is built), a live fit's preview track
 // in place of its object's own, the motion as opened or last saved (the ghost), the selected
-// object's trajectory, and the stroboscopic trail of its subdivided polyscrew (SubdivisionJob).
+// object's trajectory, and its stroboscopic trail: a screw track's subdivided polyscrew (SubdivisionJob),
+// any other track's motion sampled at evenly spaced times (sampled_trail.h, on a newest-wins job).
 
 #include "app/selected_track.h"
 #include "app/selection.h"
+#include "app/viewport/sampled_trail.h"
 #include "model/scene_motion.h"
 #include "jobs/job.h"
 #include "jobs/subdivision_job.h"
@@ -39,12 +41,18 @@ public:
     // Follows `track` for `object` instead of its own track, until called with nullopt.
     void setPreviewTrack(model::ObjectId object, std::optional<model::MotionTrack> track);
 
-    // The trail and the control poses belong to ScrewBender's editing. Another track's keys may all
-    // sit in one place (a spinning top's 85 keys at its tip), where they would only hide the object.
+    // The control poses belong to ScrewBender's editing. Another track's keys may all sit in one place
+    // (a spinning top's 85 keys at its tip), where they would only hide the object.
     static bool isScrewBenderTrack(const model::SceneObject* object);
 
-    // The selected object's subdivided poses, local to its parent: a column-major 4×4 matrix each.
+    // How the trail of a track other than a screw one is spaced (sampled_trail.h); clamped to its budget.
+    void setTrailSpacing(const TrailSpacing& spacing);
+    const TrailSpacing& trailSpacing() const { return trailSpacing_; }
+
+    // The selected object's trail: a column-major 4×4 matrix per copy, in its parent's frame for a
+    // screw track (the subdivided poses), in the world for any other (trailInParentFrame).
     const std::vector<float>& trailMatrices() const { return trailMatrices_; }
+    bool trailInParentFrame() const { return trailInParentFrame_; }
     std::size_t trailPoseCount() const { return trailPoseCount_; }
     // Whether the trail changed since the last call, which then uploads it.
     bool takeTrailChange() { return std::exchange(trailChanged_, false); }
@@ -74,7 +82,9 @@ private:
     void rebuildMotionInBackground();
     void receiveMotion(std::shared_ptr<const model::SceneMotion> built);
     void requestTrail();
-    void receiveTrail(const std::vector<Pose>& poses, qint64 nanoseconds);
+    // The trail of a track other than a screw one, from the motion drawn now.
+    void requestSampledTrail();
+    void receiveTrail(const std::vector<Pose>& poses, bool inParentFrame);
     void dropTrail();
     void rebuildTrajectory();
 
@@ -92,6 +102,8 @@ private:
     std::vector<float> trailMatrices_;
     bool trailChanged_ = false;
     std::size_t trailPoseCount_ = 0;
+    bool trailInParentFrame_ = true;
+    TrailSpacing trailSpacing_;
     model::ObjectId trailObject_ = model::kNoObject; // whose trail trailMatrices_ holds
     std::vector<Eigen::Vector3f> trajectory_;
     bool trajectoryStale_ = true;
@@ -103,6 +115,7 @@ private:
     // Last: done first, so no trail or motion arrives once the members above are gone.
     jobs::SubdivisionJob subdivision_;
     jobs::Job<std::shared_ptr<const model::SceneMotion>> motionJob_;
+    jobs::Job<std::vector<Pose>> sampledTrailJob_;
 };
 
 } // namespace gyre::app

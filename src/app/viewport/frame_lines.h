@@ -16,6 +16,9 @@ struct Rgba {
 // poses' frames, the handles.
 inline constexpr Rgba kAxisColors[3] = {{0.95F, 0.30F, 0.30F, 1.0F}, {0.35F, 0.85F, 0.35F, 1.0F}, {0.35F, 0.55F, 1.0F, 1.0F}};
 
+// The selected object, its mesh or its lines (an empty's axes).
+inline constexpr Rgba kSelectedColor{0.98F, 0.63F, 0.22F, 1.0F};
+
 // As the line shader reads it.
 struct LineVertex {
     float position[3];

@@ -24,11 +24,23 @@ void OrbitCamera::setViewportSize(int width, int height)
     height_ = std::max(height, 1);
 }
 
+Eigen::Matrix3d OrbitCamera::viewFrame() const
+{
+    if (up_ == UpAxis::Z)
+        return Eigen::Matrix3d::Identity();
+    // Columns: the view's x, y, z in the world: x, −z, y.
+    Eigen::Matrix3d frame;
+    frame << 1, 0, 0, //
+        0, 0, 1,      //
+        0, -1, 0;
+    return frame;
+}
+
 Eigen::Vector3d OrbitCamera::eye() const
 {
     const Eigen::Vector3d towardsEye(std::cos(pitch_) * std::cos(yaw_), std::cos(pitch_) * std::sin(yaw_),
                                      std::sin(pitch_));
-    return target_ + distance_ * towardsEye;
+    return target_ + distance_ * (viewFrame() * towardsEye);
 }
 
 void OrbitCamera::orbit(double dxPixels, double dyPixels)
@@ -74,11 +86,12 @@ Eigen::Vector3d OrbitCamera::viewDirection() const
 
 Eigen::Matrix4d OrbitCamera::viewMatrix() const
 {
-    // lookAt: rows right, up, backward; the eye goes to the origin. Right is z × backward normalised,
-    // (−sin yaw, cos yaw, 0), written from the yaw so that it holds looking straight down or up too.
+    // lookAt: rows right, up, backward; the eye goes to the origin. Right is up × backward normalised,
+    // (−sin yaw, cos yaw, 0) in the view's frame, written from the yaw so that it holds looking straight
+    // down or up too.
     const Eigen::Vector3d from = eye();
     const Eigen::Vector3d backward = (from - target_).normalized();
-    const Eigen::Vector3d right(-std::sin(yaw_), std::cos(yaw_), 0.0);
+    const Eigen::Vector3d right = viewFrame() * Eigen::Vector3d(-std::sin(yaw_), std::cos(yaw_), 0.0);
     const Eigen::Vector3d up = backward.cross(right);
     Eigen::Matrix4d view = Eigen::Matrix4d::Identity();
     view.block<1, 3>(0, 0) = right.transpose();

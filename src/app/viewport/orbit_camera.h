@@ -1,6 +1,8 @@
 #pragma once
 // The viewport's camera: it looks at a target from a distance, along a direction given by yaw about
-// the world's up axis (z) and pitch above the ground plane, in perspective or orthographic. Orbiting
+// the view's up axis and pitch above its ground plane, in perspective or orthographic. The scene is
+// Z-up; the view may show it Z-up (Blender) or Y-up (Maya, glTF): then it orbits about y, and yaw and
+// pitch are taken in the view's frame, whose x, y, z are the world's x, −z, y. Orbiting
 // turns about the target, panning slides the target across the view, zooming changes the distance. No
 // OpenGL here: the viewport hands its matrices to the shaders, and tests check the geometry alone.
 //
@@ -13,8 +15,17 @@
 
 namespace gyre::app {
 
+enum class UpAxis { Z, Y };
+
 class OrbitCamera {
 public:
+    // Keeps the target, the distance, yaw and pitch: the same view direction in the view's frame.
+    void setUpAxis(UpAxis up) { up_ = up; }
+    UpAxis upAxis() const { return up_; }
+    // The rotation from the view's frame (x right of the front view, y away from it, z up) to the world's:
+    // the identity for Z-up, a quarter turn about x, −90°, for Y-up.
+    Eigen::Matrix3d viewFrame() const;
+
     void setViewportSize(int width, int height);
     int width() const { return width_; }
     int height() const { return height_; }
@@ -64,11 +75,12 @@ public:
 private:
     Eigen::Vector3d target_ = Eigen::Vector3d::Zero();
     double distance_ = 12.0;
-    double yaw_ = -1.2;  // radians about z, from the x axis towards y
-    double pitch_ = 0.6; // radians above the ground plane
+    double yaw_ = -1.2;  // radians about the view's z, from its x axis towards its y
+    double pitch_ = 0.6; // radians above the view's ground plane
     int width_ = 1;
     int height_ = 1;
     bool orthographic_ = false;
+    UpAxis up_ = UpAxis::Z;
 };
 
 } // namespace gyre::app

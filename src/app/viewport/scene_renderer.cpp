@@ -34,7 +34,6 @@ constexpr float kHandlePointSize = 11.0F;
 
 constexpr Rgba kBackground{0.16F, 0.17F, 0.19F, 1.0F};
 constexpr Rgba kObjectColor{0.62F, 0.66F, 0.72F, 1.0F};
-constexpr Rgba kSelectedColor{0.98F, 0.63F, 0.22F, 1.0F};
 constexpr Rgba kTrailStart{0.30F, 0.55F, 0.95F, 0.3F};
 constexpr Rgba kTrailEnd{0.55F, 0.90F, 0.75F, 0.3F};
 constexpr Rgba kControlPoseColor{0.95F, 0.95F, 0.98F, 0.35F};
@@ -312,7 +311,8 @@ void SceneRenderer::drawObjects(const FrameMeshes& meshes)
     const auto draw = [this](GpuMesh& mesh) { drawMesh(mesh, identityInstance_, 1); };
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const model::SceneObject& object = scene.objects[i];
-        if (meshes.skeleton->isJoint(i) || !object.visible)
+        // An empty is its axes, among the lines.
+        if (meshes.skeleton->isJoint(i) || !object.visible || object.empty)
             continue;
         setColor(&object == meshes.selected);
         meshProgram_->setUniformValue("uFrame", toQMatrix(poseMatrix(meshes.motion->worldPose(object.id, scene.currentTime))));
@@ -381,7 +381,7 @@ void SceneRenderer::drawFrame(const Eigen::Matrix4d& viewProjectionMatrix, const
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(1.0F, 1.0F);
         setMeshColors(kTrailStart, kTrailEnd);
-        meshProgram_->setUniformValue("uFrame", selectedFrame);
+        meshProgram_->setUniformValue("uFrame", toQMatrix(poseMatrix(meshes.trailFrame)));
         drawMesh(gpuMesh(*selected), trailInstances_, trailInstanceCount_);
         glDisable(GL_POLYGON_OFFSET_FILL);
     }

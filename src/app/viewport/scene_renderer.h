@@ -42,7 +42,8 @@ struct FrameMeshes {
     const Skeleton* skeleton = nullptr; // updated for the scene at its current time
     Shading shading;
     const model::SceneObject* selected = nullptr;
-    Pose selectedParentFrame; // the world frame of the selected object's keys and trail
+    Pose selectedParentFrame; // the world frame of the selected object's keys
+    Pose trailFrame;          // the world frame of its trail: the parent's for a screw track's, else the world's
     bool trail = false;       // as last uploaded with setTrail
     bool controlPoses = false;
     std::optional<std::size_t> highlightedKey;
@@ -68,7 +69,7 @@ public:
     float meshRadius(const model::SceneObject& object) { return gpuMesh(object).radius; }
     // The next frame drops the buffers of meshes no object holds any more.
     void dropUnusedMeshesNextFrame() { meshesMayBeUnused_ = true; }
-    // Uploads the trail's instances: column-major 4×4 matrices in the selected object's parent frame.
+    // Uploads the trail's instances: column-major 4×4 matrices in FrameMeshes::trailFrame.
     void setTrail(const std::vector<float>& matrices);
 
     void drawFrame(const Eigen::Matrix4d& viewProjection, const Eigen::Vector3d& eye, const FrameLines& lines,

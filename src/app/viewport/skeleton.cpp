@@ -38,7 +38,8 @@ void findParents(const model::Scene& scene, std::vector<std::size_t>& parents)
 
 void findJoints(const model::Scene& scene, const std::vector<std::size_t>& parents, std::vector<bool>& joints)
 {
-    const auto meshless = [&](std::size_t i) { return scene.objects[i].mesh == nullptr; };
+    // An empty is a frame on its own, never a joint, and makes none of its parent or children.
+    const auto meshless = [&](std::size_t i) { return scene.objects[i].mesh == nullptr && !scene.objects[i].empty; };
     joints.assign(scene.objects.size(), false);
     for (std::size_t i = 0; i < joints.size(); ++i) {
         const std::size_t parent = parents[i];

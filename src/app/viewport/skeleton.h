@@ -1,6 +1,6 @@
 #pragma once
-// The bones of a scene's joint hierarchies. A joint is an object without a mesh of its own whose
-// parent or one of whose children has none either (a BVH's joints, an FBX skeleton's nodes); the
+// The bones of a scene's joint hierarchies. A joint is an object without a mesh of its own, not an
+// empty, whose parent or one of whose children is such too (a BVH's joints, an FBX skeleton's nodes); the
 // viewport draws joints as bones instead of the default shape, and a click on a bone selects its joint.
 // No OpenGL, so that tests can check the bones and picking on their own.
 

@@ -31,6 +31,7 @@ constexpr qint64 kStatsWindow = 500'000'000;  // ns of drawing per frameStatsCha
 
 constexpr Rgba kGridColor{0.32F, 0.33F, 0.36F, 1.0F};
 constexpr Rgba kTrajectoryColor{1.0F, 0.9F, 0.35F, 1.0F};
+constexpr Rgba kEmptyColor{0.85F, 0.86F, 0.88F, 1.0F};
 
 bool samePose(const Pose& a, const Pose& b)
 {
@@ -127,6 +128,11 @@ void Viewport::setShowTrail(bool show)
 {
     showTrail_ = show;
     update();
+}
+
+void Viewport::setTrailSpacing(const TrailSpacing& spacing)
+{
+    drawn_.setTrailSpacing(spacing);
 }
 
 void Viewport::updateSkeleton()
@@ -232,6 +238,12 @@ void Viewport::viewFrom(ViewPoint point)
 void Viewport::setOrthographic(bool orthographic)
 {
     camera_.setOrthographic(orthographic);
+    update();
+}
+
+void Viewport::setUpAxis(UpAxis up)
+{
+    camera_.setUpAxis(up);
     update();
 }
 
@@ -447,14 +459,16 @@ void Viewport::buildLines()
         return LineRange{static_cast<int>(first), static_cast<int>(vertices.size() - first)};
     };
 
+    // On the view's ground plane (z = 0 Z-up, y = 0 Y-up), each axis in its colour: x red, y green, z blue.
+    const Eigen::Matrix3d ground = camera_.viewFrame();
+    const Rgba& acrossColor = kAxisColors[camera_.upAxis() == UpAxis::Y ? 2 : 1];
     for (int i = -kGridHalfLines; i <= kGridHalfLines; ++i) {
-        // The x axis red and the y axis green, on the ground plane z = 0.
         const double across = i;
         const double extent = kGridHalfLines;
-        vertices.push_back(lineVertex(Eigen::Vector3d(across, -extent, 0.0), i == 0 ? kAxisColors[1] : kGridColor));
-        vertices.push_back(lineVertex(Eigen::Vector3d(across, extent, 0.0), i == 0 ? kAxisColors[1] : kGridColor));
-        vertices.push_back(lineVertex(Eigen::Vector3d(-extent, across, 0.0), i == 0 ? kAxisColors[0] : kGridColor));
-        vertices.push_back(lineVertex(Eigen::Vector3d(extent, across, 0.0), i == 0 ? kAxisColors[0] : kGridColor));
+        vertices.push_back(lineVertex(ground * Eigen::Vector3d(across, -extent, 0.0), i == 0 ? acrossColor : kGridColor));
+        vertices.push_back(lineVertex(ground * Eigen::Vector3d(across, extent, 0.0), i == 0 ? acrossColor : kGridColor));
+        vertices.push_back(lineVertex(ground * Eigen::Vector3d(-extent, across, 0.0), i == 0 ? kAxisColors[0] : kGridColor));
+        vertices.push_back(lineVertex(ground * Eigen::Vector3d(extent, across, 0.0), i == 0 ? kAxisColors[0] : kGridColor));
     }
     lines_.grid = rangeFrom(0);
 
@@ -465,6 +479,18 @@ void Viewport::buildLines()
     lines_.trajectory = rangeFrom(first);
 
     first = vertices.size();
+    // Each empty as Blender's plain axes: three lines through its origin.
+    const model::Scene& scene = document_.scene();
+    for (const model::SceneObject& object : scene.objects) {
+        if (!object.empty || !object.visible)
+            continue;
+        const Pose pose = drawn_.motion().worldPose(object.id, scene.currentTime);
+        const Rgba& color = &object == selection_.selectedObject() ? kSelectedColor : kEmptyColor;
+        for (int axis = 0; axis < 3; ++axis) {
+            vertices.push_back(lineVertex(pose.apply(-kEmptyAxisLength * Eigen::Vector3d::Unit(axis)), color));
+            vertices.push_back(lineVertex(pose.apply(kEmptyAxisLength * Eigen::Vector3d::Unit(axis)), color));
+        }
+    }
     if (showsControlPoses()) {
         const model::SceneObject& selected = *selection_.selectedObject();
         const double axisLength = SceneRenderer::kControlPoseScale * double(renderer_.meshRadius(selected));
@@ -556,6 +582,7 @@ void Viewport::paintGL()
     meshes.selected = selected;
     if (selected != nullptr) {
         meshes.selectedParentFrame = drawn_.motion().parentWorldPose(selected->id, scene.currentTime);
+        meshes.trailFrame = drawn_.trailInParentFrame() ? meshes.selectedParentFrame : Pose{};
         meshes.trail = showTrail_ && drawn_.trailPoseCount() > 0;
         meshes.controlPoses = showsControlPoses();
         meshes.highlightedKey = selection_.key();

@@ -1,9 +1,10 @@
 #pragma once
 // The 3D view. It draws every object at the document's current time (a default shape for an object
 // without a mesh), the ground grid, the selected object's centre trajectory, its original motion as a
-// translucent ghost, and ScrewBender's editing: the selected object's control poses (its keyframes)
-// in place, handles on the selected one, and the stroboscopic trail of the subdivided polyscrew of the
-// keys, re-subdivided off the UI thread while a handle is dragged.
+// translucent ghost, its stroboscopic trail (copies of it along its motion, whatever its interpolation:
+// for a screw track the subdivided polyscrew of the keys, re-subdivided off the UI thread while a handle
+// is dragged), and ScrewBender's editing: the control poses (its keyframes) in place, handles on the
+// selected one.
 //
 // Mouse: left-drag on a handle moves or turns the selected key (one undo step per drag); left-drag
 // elsewhere orbits; middle-drag or shift+left-drag pans; the wheel zooms. A left click selects the
@@ -63,6 +64,8 @@ public:
     void setShowTrajectory(bool show);
     void setShowControlPoses(bool show);
     void setShowTrail(bool show);
+    // How a trail other than a screw track's is spaced (sampled_trail.h).
+    void setTrailSpacing(const TrailSpacing& spacing);
     // The selected object's angular momentum as an arrow, and its principal axes (body_overlay.h).
     void setShowAngularMomentum(bool show);
     void setShowPrincipalAxes(bool show);
@@ -74,11 +77,14 @@ public:
     // Points the camera at the selected object (a joint: its bones); at the scene when none is selected.
     void frameSelected();
 
-    // Blender's number-pad views, in Gyre's Z-up world: front looks along +y, right along −x, top
-    // down −z; each opposite looks the other way.
+    // Blender's number-pad views. Z-up (Blender): front looks along +y, right along −x, top down −z.
+    // Y-up (Maya): front looks along −z, right along −x, top down −y. Each opposite looks the other way.
     enum class ViewPoint { Front, Back, Right, Left, Top, Bottom };
     void viewFrom(ViewPoint point);
     void setOrthographic(bool orthographic);
+    // Shows the Z-up scene Z-up or Y-up: the camera orbits about that axis, the grid lies across it, and
+    // the number-pad views follow (OrbitCamera::setUpAxis). The scene's data does not change.
+    void setUpAxis(UpAxis up);
     void setShading(Shading shading);
     Shading shading() const { return shading_; }
 
