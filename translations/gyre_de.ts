@@ -105,48 +105,58 @@
         <translation>Fixiert</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="160"/>
+        <location filename="../ui/fit_panel.ui" line="158"/>
+        <source>Set &amp;physics target</source>
+        <translation>&amp;Physikziel setzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="159"/>
+        <source>Replace the sketch by the angular velocity of a free flight from where the motion is at the edit window&apos;s start; Fit then bends the motion toward it and keeps the constrained keys</source>
+        <translation>Die Skizze durch die Winkelgeschwindigkeit eines freien Flugs ab dem Zustand der Bewegung am Anfang des Bearbeitungsfensters ersetzen; Anpassen biegt die Bewegung dann dorthin und behält die festgelegten Keys</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="166"/>
         <source>Fit</source>
         <translation>Anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="161"/>
+        <location filename="../ui/fit_panel.ui" line="167"/>
         <source>Fit the rotation to the sketch (Ctrl+F)</source>
         <translation>Die Rotation an die Skizze anpassen (Ctrl+F)</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="162"/>
+        <location filename="../ui/fit_panel.ui" line="168"/>
         <source>Ctrl+F</source>
         <extracomment>A keyboard shortcut: keep it as it is. It stays translatable because uic then sets it after the button text, which would otherwise clear it.</extracomment>
         <translation>Ctrl+F</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="167"/>
+        <location filename="../ui/fit_panel.ui" line="173"/>
         <source>&amp;Cancel</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="168"/>
+        <location filename="../ui/fit_panel.ui" line="174"/>
         <source>Stop the running fit; the motion stays as it is</source>
         <translation>Die laufende Anpassung anhalten; die Bewegung bleibt, wie sie ist</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="173"/>
+        <location filename="../ui/fit_panel.ui" line="179"/>
         <source>&amp;Remove fit</source>
         <translation>Anpassung &amp;entfernen</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="174"/>
+        <location filename="../ui/fit_panel.ui" line="180"/>
         <source>Go back to the interpolation through the keys</source>
         <translation>Zur Interpolation durch die Schlüsselbilder zurückkehren</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="181"/>
+        <location filename="../ui/fit_panel.ui" line="187"/>
         <source>&amp;Live: refit while the sketch changes</source>
         <translation>&amp;Live: bei jeder Änderung der Skizze neu anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="182"/>
+        <location filename="../ui/fit_panel.ui" line="188"/>
         <source>Refit at every change of the sketch, keys or settings; while drawing, the view previews the fit</source>
         <translation>Bei jeder Änderung der Skizze, der Schlüsselbilder oder der Einstellungen neu anpassen; beim Zeichnen zeigt die Ansicht eine Vorschau der Anpassung</translation>
     </message>
@@ -160,196 +170,211 @@
     </message>
     <message>
         <location filename="../ui/inspector_widget.ui" line="52"/>
+        <source>Rotation Mode</source>
+        <translation>Rotationsmodus</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="56"/>
+        <source>&amp;Keys store</source>
+        <translation>&amp;Keys speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="62"/>
+        <source>Quaternion keys store orientations; Euler keys store the three angles as typed, so 0° then 360° is a full turn, and interpolate them in the object&apos;s order</source>
+        <translation>Quaternion-Keys speichern Orientierungen; Euler-Keys speichern die drei Winkel wie eingegeben, sodass 0° und dann 360° eine volle Umdrehung ist, und interpolieren sie in der Reihenfolge des Objekts</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="92"/>
         <source>Keyframe</source>
         <translation>Schlüsselbild</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="56"/>
+        <location filename="../ui/inspector_widget.ui" line="96"/>
         <source>&amp;Time (s)</source>
         <translation>&amp;Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="62"/>
+        <location filename="../ui/inspector_widget.ui" line="102"/>
         <source>Time in seconds</source>
         <translation>Zeit in Sekunden</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="67"/>
+        <location filename="../ui/inspector_widget.ui" line="107"/>
         <source>&amp;Constrained: the fit keeps this key exactly</source>
         <translation>&amp;Fixiert: die Anpassung hält dieses Schlüsselbild exakt</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="75"/>
+        <location filename="../ui/inspector_widget.ui" line="115"/>
         <source>Position</source>
         <translation>Position</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="97"/>
+        <location filename="../ui/inspector_widget.ui" line="137"/>
         <source>Position x</source>
         <translation>Position x</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="102"/>
+        <location filename="../ui/inspector_widget.ui" line="142"/>
         <source>Position y</source>
         <translation>Position y</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="107"/>
+        <location filename="../ui/inspector_widget.ui" line="147"/>
         <source>Position z</source>
         <translation>Position z</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="115"/>
+        <location filename="../ui/inspector_widget.ui" line="155"/>
         <source>Quaternion</source>
         <translation>Quaternion</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="143"/>
+        <location filename="../ui/inspector_widget.ui" line="183"/>
         <source>Quaternion w</source>
         <translation>Quaternion w</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="148"/>
+        <location filename="../ui/inspector_widget.ui" line="188"/>
         <source>Quaternion x</source>
         <translation>Quaternion x</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="153"/>
+        <location filename="../ui/inspector_widget.ui" line="193"/>
         <source>Quaternion y</source>
         <translation>Quaternion y</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="158"/>
+        <location filename="../ui/inspector_widget.ui" line="198"/>
         <source>Quaternion z</source>
         <translation>Quaternion z</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="166"/>
+        <location filename="../ui/inspector_widget.ui" line="206"/>
         <source>Rotation matrix</source>
         <translation>Rotationsmatrix</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="170"/>
+        <location filename="../ui/inspector_widget.ui" line="210"/>
         <source>Matrix row 1, column 1</source>
         <translation>Matrix Zeile 1, Spalte 1</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="175"/>
+        <location filename="../ui/inspector_widget.ui" line="215"/>
         <source>Matrix row 1, column 2</source>
         <translation>Matrix Zeile 1, Spalte 2</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="180"/>
+        <location filename="../ui/inspector_widget.ui" line="220"/>
         <source>Matrix row 1, column 3</source>
         <translation>Matrix Zeile 1, Spalte 3</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="185"/>
+        <location filename="../ui/inspector_widget.ui" line="225"/>
         <source>Matrix row 2, column 1</source>
         <translation>Matrix Zeile 2, Spalte 1</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="190"/>
+        <location filename="../ui/inspector_widget.ui" line="230"/>
         <source>Matrix row 2, column 2</source>
         <translation>Matrix Zeile 2, Spalte 2</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="195"/>
+        <location filename="../ui/inspector_widget.ui" line="235"/>
         <source>Matrix row 2, column 3</source>
         <translation>Matrix Zeile 2, Spalte 3</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="200"/>
+        <location filename="../ui/inspector_widget.ui" line="240"/>
         <source>Matrix row 3, column 1</source>
         <translation>Matrix Zeile 3, Spalte 1</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="205"/>
+        <location filename="../ui/inspector_widget.ui" line="245"/>
         <source>Matrix row 3, column 2</source>
         <translation>Matrix Zeile 3, Spalte 2</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="210"/>
+        <location filename="../ui/inspector_widget.ui" line="250"/>
         <source>Matrix row 3, column 3</source>
         <translation>Matrix Zeile 3, Spalte 3</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="218"/>
+        <location filename="../ui/inspector_widget.ui" line="258"/>
         <source>Axis-angle</source>
         <translation>Achse-Winkel</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="222"/>
+        <location filename="../ui/inspector_widget.ui" line="262"/>
         <source>axis x</source>
         <translation>Achse x</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="228"/>
+        <location filename="../ui/inspector_widget.ui" line="268"/>
         <source>axis y</source>
         <translation>Achse y</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="234"/>
+        <location filename="../ui/inspector_widget.ui" line="274"/>
         <source>axis z</source>
         <translation>Achse z</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="240"/>
+        <location filename="../ui/inspector_widget.ui" line="280"/>
         <source>angle (°)</source>
         <translation>Winkel (°)</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="246"/>
+        <location filename="../ui/inspector_widget.ui" line="286"/>
         <source>Axis x</source>
         <translation>Achse x</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="251"/>
+        <location filename="../ui/inspector_widget.ui" line="291"/>
         <source>Axis y</source>
         <translation>Achse y</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="256"/>
+        <location filename="../ui/inspector_widget.ui" line="296"/>
         <source>Axis z</source>
         <translation>Achse z</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="261"/>
+        <location filename="../ui/inspector_widget.ui" line="301"/>
         <source>Angle in degrees</source>
         <translation>Winkel in Grad</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="269"/>
+        <location filename="../ui/inspector_widget.ui" line="309"/>
         <source>Euler angles</source>
         <translation>Euler-Winkel</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="275"/>
+        <location filename="../ui/inspector_widget.ui" line="70"/>
         <source>&amp;Order</source>
         <translation>&amp;Reihenfolge</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="281"/>
+        <location filename="../ui/inspector_widget.ui" line="76"/>
         <source>The axes the three angles turn about, first to last</source>
         <translation>Die Achsen, um die die drei Winkel drehen, vom ersten bis zum letzten</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="286"/>
+        <location filename="../ui/inspector_widget.ui" line="81"/>
         <source>Extrinsic angles turn about the fixed world axes; intrinsic ones about the axes as they have been turned so far</source>
         <translation>Extrinsische Winkel drehen um die festen Weltachsen, intrinsische um die Achsen, wie sie bis dahin gedreht wurden</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="309"/>
+        <location filename="../ui/inspector_widget.ui" line="328"/>
         <source>Euler angle 1 in degrees</source>
         <translation>Euler-Winkel 1 in Grad</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="314"/>
+        <location filename="../ui/inspector_widget.ui" line="333"/>
         <source>Euler angle 2 in degrees</source>
         <translation>Euler-Winkel 2 in Grad</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="319"/>
+        <location filename="../ui/inspector_widget.ui" line="338"/>
         <source>Euler angle 3 in degrees</source>
         <translation>Euler-Winkel 3 in Grad</translation>
     </message>
@@ -1016,77 +1041,77 @@
 <context>
     <name>gyre::FileError</name>
     <message>
-        <location filename="../src/model/project_file.cpp" line="410"/>
+        <location filename="../src/model/project_file.cpp" line="355"/>
         <source>these %1 keys bring the file past the %2 keys a project may hold</source>
         <translation>mit diesen %1 Schlüsseln hat die Datei mehr als die %2 Schlüssel, die ein Projekt haben darf</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="647"/>
+        <location filename="../src/model/project_file.cpp" line="617"/>
         <source>these %1 times bring the file past the %2 times a project may hold</source>
         <translation>mit diesen %1 Zeiten hat die Datei mehr als die %2 Zeiten, die ein Projekt haben darf</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="413"/>
+        <location filename="../src/model/project_file.cpp" line="358"/>
         <source>the file has no time lists</source>
         <translation>die Datei hat keine Zeitlisten</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="275"/>
+        <location filename="../src/model/project_file.cpp" line="226"/>
         <source>is larger than 1 GiB, the most a project file may hold</source>
         <translation>ist größer als 1 GiB, das Höchstmaß für eine Projektdatei</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="417"/>
+        <location filename="../src/model/project_file.cpp" line="362"/>
         <source>time list %1 holds %2 times for %3 keys</source>
         <translation>Zeitliste %1 enthält %2 Zeiten für %3 Schlüssel</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="623"/>
+        <location filename="../src/model/project_file.cpp" line="591"/>
         <source>a version %1 file starts with &quot;%2&quot; and its version in binary, not with JSON text</source>
         <translation>eine Datei der Version %1 beginnt mit „%2“ und ihrer Version in Binärform, nicht mit JSON-Text</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="710"/>
+        <location filename="../src/model/project_file.cpp" line="680"/>
         <source>the file ends inside its first %1 bytes</source>
         <translation>die Datei endet innerhalb ihrer ersten %1 Bytes</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="715"/>
+        <location filename="../src/model/project_file.cpp" line="685"/>
         <source>a version %1 file is JSON text, not binary</source>
         <translation>eine Datei der Version %1 ist JSON-Text, nicht binär</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="719"/>
+        <location filename="../src/model/project_file.cpp" line="689"/>
         <source>%1 bytes; a header may hold at most %2</source>
         <translation>%1 Bytes; ein Kopf darf höchstens %2 haben</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="131"/>
+        <location filename="../src/model/project_blocks.cpp" line="139"/>
         <source>%1 is neither 0 nor 1</source>
         <translation>%1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="259"/>
+        <location filename="../src/model/project_blocks.cpp" line="273"/>
         <source>its block needs %1 bytes; the file has %2 left</source>
         <translation>sein Block braucht %1 Bytes; die Datei hat noch %2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="265"/>
+        <location filename="../src/model/project_blocks.cpp" line="279"/>
         <source>the file ends %1 bytes into its block of %2</source>
         <translation>die Datei endet nach %1 Bytes seines Blocks von %2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="275"/>
+        <location filename="../src/model/project_blocks.cpp" line="289"/>
         <source>the file goes on after its last block</source>
         <translation>die Datei geht nach ihrem letzten Block weiter</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="281"/>
+        <location filename="../src/model/project_blocks.cpp" line="295"/>
         <source>the writer has no block for it</source>
         <translation>der Schreiber hat keinen Block dafür</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="284"/>
+        <location filename="../src/model/project_blocks.cpp" line="298"/>
         <source>its block holds %1 bytes, not %2</source>
         <translation>sein Block hat %1 Bytes, nicht %2</translation>
     </message>
@@ -1112,111 +1137,137 @@
         <translation>die Sperre der automatischen Sicherung kann nicht übernommen werden</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="287"/>
+        <location filename="../src/model/json_field.cpp" line="168"/>
         <source>unknown value &quot;%1&quot;; expected one of %2</source>
         <translation>unbekannter Wert „%1“; erwartet wird einer von %2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="324"/>
+        <location filename="../src/model/project_file.cpp" line="263"/>
         <source>%1 bytes are not a whole number of %2-byte items</source>
         <translation>%1 Bytes sind keine ganze Zahl von %2-Byte-Einträgen</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="376"/>
+        <location filename="../src/model/project_file.cpp" line="315"/>
         <source>a skin has 1 to %1 joints</source>
         <translation>ein Skin hat 1 bis %1 Gelenke</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="446"/>
+        <location filename="../src/model/project_file.cpp" line="341"/>
+        <location filename="../src/model/project_blocks.cpp" line="146"/>
+        <source>the angles are not finite</source>
+        <translation>die Winkel sind nicht endlich</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="392"/>
         <location filename="../src/model/value_checks.cpp" line="156"/>
         <source>a stroke needs at least one point</source>
         <translation>ein Strich braucht mindestens einen Punkt</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="448"/>
+        <location filename="../src/model/project_file.cpp" line="394"/>
         <source>%1 times for %2 points; give none or one per point</source>
         <translation>%1 Zeiten für %2 Punkte; geben Sie keine oder eine je Punkt an</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="475"/>
+        <location filename="../src/model/project_file.cpp" line="421"/>
         <source>these %1 control points bring the file past the %2 keys a project may hold</source>
         <translation>mit diesen %1 Kontrollpunkten hat die Datei mehr als die %2 Schlüssel, die ein Projekt haben darf</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="515"/>
+        <location filename="../src/model/project_file.cpp" line="461"/>
         <location filename="../src/model/value_checks.cpp" line="207"/>
         <source>keys to restore without an applied fit</source>
         <translation>wiederherzustellende Schlüssel ohne angewendete Anpassung</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="538"/>
+        <location filename="../src/model/project_file.cpp" line="472"/>
+        <source>an object in Euler rotation mode interpolates euler or euler-cubic</source>
+        <translation>ein Objekt im Euler-Rotationsmodus interpoliert mit euler oder euler-cubic</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="478"/>
+        <source>an object in Euler rotation mode needs the angles of every key</source>
+        <translation>ein Objekt im Euler-Rotationsmodus braucht die Winkel jedes Keys</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="479"/>
+        <source>angles on an object in quaternion rotation mode</source>
+        <translation>Winkel an einem Objekt im Quaternion-Rotationsmodus</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="481"/>
+        <source>the angles do not give the key&apos;s orientation</source>
+        <translation>die Winkel ergeben nicht die Orientierung des Keys</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="504"/>
         <source>the file has no meshes</source>
         <translation>die Datei hat keine Meshes</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="571"/>
+        <location filename="../src/model/project_file.cpp" line="539"/>
         <source>%1 is also the id of objects[%2]</source>
         <translation>%1 ist auch die ID von objects[%2]</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="574"/>
-        <location filename="../src/model/project_file.cpp" line="660"/>
+        <location filename="../src/model/project_file.cpp" line="542"/>
+        <location filename="../src/model/project_file.cpp" line="630"/>
         <source>no object has id %1</source>
         <translation>kein Objekt hat die ID %1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="583"/>
+        <location filename="../src/model/project_file.cpp" line="551"/>
         <source>object %1 is its own ancestor</source>
         <translation>Objekt %1 ist sein eigener Vorfahr</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="596"/>
+        <location filename="../src/model/project_file.cpp" line="564"/>
         <source>object %1 comes after it in the file; parents come before their children</source>
         <translation>Objekt %1 steht in der Datei nach ihm; Eltern stehen vor ihren Kindern</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="617"/>
+        <location filename="../src/model/project_file.cpp" line="585"/>
         <source>expected &quot;%1&quot;, found &quot;%2&quot;; this is not a Gyre project</source>
         <translation>erwartet „%1“, gefunden „%2“; dies ist kein Gyre-Projekt</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="795"/>
+        <location filename="../src/model/project_file.cpp" line="765"/>
         <source>not saved, because its header (the objects&apos; names and settings, the sketches&apos; strokes) would hold %1 bytes, more than the %2 a project may hold</source>
         <translation>nicht gespeichert, weil ihr Kopf (die Namen und Einstellungen der Objekte, die Striche der Skizzen) %1 Bytes hätte, mehr als die %2, die ein Projekt haben darf</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="607"/>
+        <location filename="../src/model/project_file.cpp" line="575"/>
         <source>the file has version %1, newer than this build of Gyre reads (%2 and older); open it with a newer Gyre</source>
         <translation>die Datei hat Version %1, neuer als diese Gyre-Version lesen kann (%2 und älter); öffnen Sie sie mit einem neueren Gyre</translation>
     </message>
     <message>
         <location filename="../src/model/output_target.cpp" line="42"/>
-        <location filename="../src/model/project_file.cpp" line="770"/>
+        <location filename="../src/model/project_file.cpp" line="740"/>
         <source>is a directory, not a file</source>
         <translation>ist ein Verzeichnis, keine Datei</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="773"/>
+        <location filename="../src/model/project_file.cpp" line="743"/>
         <source>cannot open: %1</source>
         <translation>kann nicht geöffnet werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="677"/>
+        <location filename="../src/model/project_file.cpp" line="647"/>
         <source>cannot read: %1</source>
         <translation>kann nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="690"/>
+        <location filename="../src/model/project_file.cpp" line="660"/>
         <source>is empty; a project file holds a JSON object</source>
         <translation>ist leer; eine Projektdatei enthält ein JSON-Objekt</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="683"/>
+        <location filename="../src/model/project_file.cpp" line="653"/>
         <source>not valid JSON: %1 at byte %2</source>
         <translation>kein gültiges JSON: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="788"/>
+        <location filename="../src/model/project_file.cpp" line="758"/>
         <source>not saved, because the file would not read back: %1</source>
         <translation>nicht gespeichert, weil sich die Datei nicht wieder lesen ließe: %1</translation>
     </message>
@@ -1226,22 +1277,22 @@
         <translation>Objekt %1 „%2“ wird als „%3“ geschrieben, damit sein Name eindeutig ist</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="420"/>
+        <location filename="../src/io/scene_export.cpp" line="421"/>
         <source>cannot be written as FBX: %1</source>
         <translation>kann nicht als FBX geschrieben werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="170"/>
+        <location filename="../src/io/scene_export.cpp" line="171"/>
         <source>baking at %1 fps gives more than %2 samples</source>
         <translation>Backen mit %1 fps ergibt mehr als %2 Abtastwerte</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="177"/>
+        <location filename="../src/io/scene_export.cpp" line="178"/>
         <source>the motion of &apos;%1&apos; cannot be baked: %2</source>
         <translation>die Bewegung von „%1“ kann nicht gebacken werden: %2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="149"/>
+        <location filename="../src/io/scene_export.cpp" line="150"/>
         <source>the motion of &apos;%1&apos; cannot be evaluated: %2</source>
         <translation>die Bewegung von „%1“ kann nicht ausgewertet werden: %2</translation>
     </message>
@@ -1251,47 +1302,47 @@
         <translation>Objekt %1 nennt das Elternobjekt %2, das nicht vor ihm steht; es wird auf oberster Ebene geschrieben</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="159"/>
+        <location filename="../src/io/scene_export.cpp" line="160"/>
         <source>the mesh of &apos;%1&apos; has an index past its vertices</source>
         <translation>das Mesh von „%1“ hat einen Index jenseits seiner Eckpunkte</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="350"/>
+        <location filename="../src/io/scene_export.cpp" line="351"/>
         <source>Assimp cannot write it</source>
         <translation>Assimp kann sie nicht schreiben</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="351"/>
+        <location filename="../src/io/scene_export.cpp" line="352"/>
         <source>Assimp cannot write it: %1</source>
         <translation>Assimp kann sie nicht schreiben: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="357"/>
+        <location filename="../src/io/scene_export.cpp" line="358"/>
         <source>Assimp wrote nothing</source>
         <translation>Assimp hat nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="376"/>
+        <location filename="../src/io/scene_export.cpp" line="377"/>
         <source>cannot be written as glTF: %1</source>
         <translation>kann nicht als glTF geschrieben werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="400"/>
+        <location filename="../src/io/scene_export.cpp" line="401"/>
         <source>the frame rate must be a finite number above zero</source>
         <translation>die Bildrate muss eine endliche Zahl über null sein</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="402"/>
+        <location filename="../src/io/scene_export.cpp" line="403"/>
         <source>the scene&apos;s time range is empty or not finite</source>
         <translation>der Zeitbereich der Szene ist leer oder nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="405"/>
+        <location filename="../src/io/scene_export.cpp" line="406"/>
         <source>the scene has no meshes, and OBJ holds nothing else</source>
         <translation>die Szene hat keine Meshes, und OBJ enthält nichts anderes</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="407"/>
+        <location filename="../src/io/scene_export.cpp" line="408"/>
         <source>OBJ holds no motion: the meshes are written as posed at the start time</source>
         <translation>OBJ enthält keine Bewegung: die Meshes werden so geschrieben, wie sie zur Startzeit stehen</translation>
     </message>
@@ -1588,82 +1639,87 @@
         <translation>die Unterteilungsstufen %1 liegen außerhalb von 0 bis %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="224"/>
+        <location filename="../src/model/value_checks.cpp" line="219"/>
+        <source>%1 keys on a ballistic track, which solves a free flight for each span; it may hold %2</source>
+        <translation>%1 Keys auf einer ballistischen Spur, die für jeden Abschnitt einen freien Flug löst; sie darf %2 enthalten</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="227"/>
         <source>%1 keys at %2 levels make %3 poses; the budget is %4</source>
         <translation>%1 Schlüssel ergeben bei %2 Stufen %3 Posen; erlaubt sind höchstens %4</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="241"/>
+        <location filename="../src/model/value_checks.cpp" line="244"/>
         <source>a frame rate of %1 is above %2</source>
         <translation>eine Bildrate von %1 liegt über %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="249"/>
+        <location filename="../src/model/value_checks.cpp" line="252"/>
         <source>the end time %1 does not come after the start time %2</source>
         <translation>die Endzeit %1 liegt nicht nach der Startzeit %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="254"/>
+        <location filename="../src/model/value_checks.cpp" line="257"/>
         <source>%1 s at %2 fps make %3 frames; the budget is %4</source>
         <translation>%1 s bei %2 fps ergeben %3 Frames; erlaubt sind höchstens %4</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="263"/>
+        <location filename="../src/model/value_checks.cpp" line="266"/>
         <source>a mesh position is not finite</source>
         <translation>eine Mesh-Position ist nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="266"/>
+        <location filename="../src/model/value_checks.cpp" line="269"/>
         <source>a mesh normal is not finite</source>
         <translation>eine Mesh-Normale ist nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="268"/>
+        <location filename="../src/model/value_checks.cpp" line="271"/>
         <source>the mesh has %1 normals for %2 positions</source>
         <translation>das Mesh hat %1 Normalen für %2 Positionen</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="270"/>
+        <location filename="../src/model/value_checks.cpp" line="273"/>
         <source>the mesh&apos;s %1 indices do not make whole triangles</source>
         <translation>die %1 Indizes des Meshes ergeben keine ganzen Dreiecke</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="273"/>
+        <location filename="../src/model/value_checks.cpp" line="276"/>
         <source>mesh index %1 is beyond its %2 positions</source>
         <translation>der Mesh-Index %1 liegt jenseits seiner %2 Positionen</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="282"/>
+        <location filename="../src/model/value_checks.cpp" line="285"/>
         <source>the skin has %1 joints, more than the %2 a mesh may follow</source>
         <translation>der Skin hat %1 Gelenke, mehr als die %2, denen ein Mesh folgen kann</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="285"/>
+        <location filename="../src/model/value_checks.cpp" line="288"/>
         <source>skin joint %1 is 0 or named twice</source>
         <translation>Skin-Gelenk %1 ist 0 oder doppelt genannt</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="287"/>
+        <location filename="../src/model/value_checks.cpp" line="290"/>
         <source>the skin has %1 inverse bind matrices for %2 joints</source>
         <translation>der Skin hat %1 inverse Bindematrizen für %2 Gelenke</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="291"/>
+        <location filename="../src/model/value_checks.cpp" line="294"/>
         <source>the inverse bind matrix of skin joint %1 is not a finite affine transform</source>
         <translation>die inverse Bindematrix von Skin-Gelenk %1 ist keine endliche affine Transformation</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="294"/>
+        <location filename="../src/model/value_checks.cpp" line="297"/>
         <source>the skin has %1 joint sets and %2 weight sets for %3 positions</source>
         <translation>der Skin hat %1 Gelenksätze und %2 Gewichtssätze für %3 Positionen</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="301"/>
+        <location filename="../src/model/value_checks.cpp" line="304"/>
         <source>skin vertex %1 names joint %2 of %3</source>
         <translation>Skin-Eckpunkt %1 nennt Gelenk %2 von %3</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="304"/>
+        <location filename="../src/model/value_checks.cpp" line="307"/>
         <source>the weights of skin vertex %1 are not finite, ≥ 0 and at most 1 in sum</source>
         <translation>die Gewichte von Skin-Eckpunkt %1 sind nicht endlich, ≥ 0 und in der Summe höchstens 1</translation>
     </message>
@@ -2023,15 +2079,41 @@
         <translation>der Schwerpunkt ist kein endlicher Punkt</translation>
     </message>
     <message>
-        <location filename="../src/model/object_mass.cpp" line="117"/>
+        <location filename="../src/model/object_mass.cpp" line="116"/>
         <source>the inertia needs six numbers: Ixx, Iyy, Izz, Ixy, Ixz, Iyz</source>
         <translation>der Trägheitstensor braucht sechs Zahlen: Ixx, Iyy, Izz, Ixy, Ixz, Iyz</translation>
+    </message>
+    <message>
+        <location filename="../src/model/flight_choices.cpp" line="25"/>
+        <source>%1 flight choices for %2 spans between the keys: one a span at most</source>
+        <translation>%1 Flugwahlen für %2 Abschnitte zwischen den Keys: höchstens eine je Abschnitt</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_json.cpp" line="74"/>
+        <source>&apos;%1&apos; is neither quaternion nor euler</source>
+        <translation>'%1' ist weder quaternion noch euler</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_json.cpp" line="79"/>
+        <source>&apos;%1&apos; is neither intrinsic nor extrinsic</source>
+        <translation>'%1' ist weder intrinsic noch extrinsic</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_json.cpp" line="84"/>
+        <source>&apos;%1&apos; is not an order of three axes</source>
+        <translation>'%1' ist keine Reihenfolge dreier Achsen</translation>
     </message>
 </context>
 <context>
     <name>gyre::app::AddObjectActions</name>
     <message>
-        <location filename="../src/app/add_object_actions.cpp" line="49"/>
+        <location filename="../src/app/add_object_actions.cpp" line="41"/>
+        <location filename="../src/app/add_object_actions.cpp" line="57"/>
+        <source>Empty</source>
+        <translation>Empty</translation>
+    </message>
+    <message>
+        <location filename="../src/app/add_object_actions.cpp" line="65"/>
         <source>Add %1</source>
         <translation>%1 hinzufügen</translation>
     </message>
@@ -2092,7 +2174,8 @@
         <translation>Die Bewegung konnte nicht neu aufgebaut werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="55"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="48"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="66"/>
         <source>The trail could not be built: %1</source>
         <translation>Die Stroboskopspur konnte nicht aufgebaut werden: %1</translation>
     </message>
@@ -2143,12 +2226,12 @@
 <context>
     <name>gyre::app::FitPanel</name>
     <message>
-        <location filename="../src/app/sketch/fit_panel.cpp" line="66"/>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="71"/>
         <source>Fitting…</source>
         <translation>Anpassung läuft…</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_panel.cpp" line="256"/>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="276"/>
         <source>Not changed: %1.</source>
         <translation>Nicht geändert: %1.</translation>
     </message>
@@ -2380,84 +2463,94 @@
 <context>
     <name>gyre::app::InspectorWidget</name>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="78"/>
+        <location filename="../src/app/inspector_widget.cpp" line="79"/>
         <source>time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <location filename="../src/app/inspector_widget.cpp" line="81"/>
         <source>position x</source>
         <translation>Position x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <location filename="../src/app/inspector_widget.cpp" line="81"/>
         <source>position y</source>
         <translation>Position y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <location filename="../src/app/inspector_widget.cpp" line="81"/>
         <source>position z</source>
         <translation>Position z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="83"/>
+        <location filename="../src/app/inspector_widget.cpp" line="84"/>
         <source>quaternion w</source>
         <translation>Quaternion w</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="83"/>
+        <location filename="../src/app/inspector_widget.cpp" line="84"/>
         <source>quaternion x</source>
         <translation>Quaternion x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="83"/>
+        <location filename="../src/app/inspector_widget.cpp" line="84"/>
         <source>quaternion y</source>
         <translation>Quaternion y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="83"/>
+        <location filename="../src/app/inspector_widget.cpp" line="84"/>
         <source>quaternion z</source>
         <translation>Quaternion z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <location filename="../src/app/inspector_widget.cpp" line="91"/>
         <source>matrix row %1, column %2</source>
         <translation>Matrix Zeile %1, Spalte %2</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="93"/>
+        <location filename="../src/app/inspector_widget.cpp" line="94"/>
         <source>axis x</source>
         <translation>Achse x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="93"/>
+        <location filename="../src/app/inspector_widget.cpp" line="94"/>
         <source>axis y</source>
         <translation>Achse y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="93"/>
+        <location filename="../src/app/inspector_widget.cpp" line="94"/>
         <source>axis z</source>
         <translation>Achse z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="93"/>
+        <location filename="../src/app/inspector_widget.cpp" line="94"/>
         <source>angle</source>
         <translation>Winkel</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="95"/>
+        <location filename="../src/app/inspector_widget.cpp" line="96"/>
         <source>first angle</source>
         <translation>erster Winkel</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="95"/>
+        <location filename="../src/app/inspector_widget.cpp" line="96"/>
         <source>second angle</source>
         <translation>zweiter Winkel</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="95"/>
+        <location filename="../src/app/inspector_widget.cpp" line="96"/>
         <source>third angle</source>
         <translation>dritter Winkel</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="132"/>
+        <source>Quaternions</source>
+        <translation>Quaternionen</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="133"/>
+        <source>Euler angles</source>
+        <translation>Euler-Winkel</translation>
     </message>
     <message>
         <location filename="../src/app/euler_convention_choosers.cpp" line="29"/>
@@ -2470,70 +2563,75 @@
         <translation>intrinsisch (mitbewegte Achsen)</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="150"/>
+        <location filename="../src/app/inspector_widget.cpp" line="158"/>
         <source>about %1 (°)</source>
         <translation>um %1 (°)</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="164"/>
+        <location filename="../src/app/inspector_widget.cpp" line="183"/>
+        <source>The rotation mode was not changed: %1.</source>
+        <translation>Der Rotationsmodus wurde nicht geändert: %1.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="207"/>
         <source>%1, keyframe %2 of %3</source>
         <translation>%1, Schlüsselbild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="198"/>
+        <location filename="../src/app/inspector_widget.cpp" line="244"/>
         <source>Near gimbal lock (%1° from it): the first and third angles turn about almost the same axis, so only their sum (or difference) is determined. Small changes of the rotation can swing them widely.</source>
         <translation>Nahe am Gimbal Lock (kardanische Blockade, %1° entfernt): Der erste und der dritte Winkel drehen fast um dieselbe Achse, daher ist nur ihre Summe (oder Differenz) bestimmt. Kleine Änderungen der Rotation können sie stark ausschlagen lassen.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="240"/>
+        <location filename="../src/app/inspector_widget.cpp" line="286"/>
         <source>The keyframe was not moved: %1.</source>
         <translation>Das Schlüsselbild wurde nicht verschoben: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="251"/>
+        <location filename="../src/app/inspector_widget.cpp" line="297"/>
         <source>The constraint was not changed: %1.</source>
         <translation>Die Fixierung wurde nicht geändert: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="259"/>
+        <location filename="../src/app/inspector_widget.cpp" line="305"/>
         <source>The position was not changed: %1.</source>
         <translation>Die Position wurde nicht geändert: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="271"/>
-        <location filename="../src/app/inspector_widget.cpp" line="294"/>
-        <location filename="../src/app/inspector_widget.cpp" line="320"/>
-        <location filename="../src/app/inspector_widget.cpp" line="343"/>
+        <location filename="../src/app/inspector_widget.cpp" line="317"/>
+        <location filename="../src/app/inspector_widget.cpp" line="340"/>
+        <location filename="../src/app/inspector_widget.cpp" line="366"/>
+        <location filename="../src/app/inspector_widget.cpp" line="389"/>
         <source>The rotation was not changed: %1.</source>
         <translation>Die Rotation wurde nicht geändert: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="276"/>
+        <location filename="../src/app/inspector_widget.cpp" line="322"/>
         <source>The rotation was not changed: the zero quaternion is no rotation.</source>
         <translation>Die Rotation wurde nicht geändert: Das Null-Quaternion ist keine Rotation.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="284"/>
+        <location filename="../src/app/inspector_widget.cpp" line="330"/>
         <source>The quaternion had length %1; it was scaled to length 1.</source>
         <translation>Das Quaternion hatte die Länge %1; es wurde auf Länge 1 skaliert.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="301"/>
+        <location filename="../src/app/inspector_widget.cpp" line="347"/>
         <source>The rotation was not changed: the matrix has determinant %1, so it flattens or mirrors space and is not a rotation.</source>
         <translation>Die Rotation wurde nicht geändert: Die Matrix hat die Determinante %1, sie staucht oder spiegelt also den Raum und ist keine Rotation.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="309"/>
+        <location filename="../src/app/inspector_widget.cpp" line="355"/>
         <source>The matrix was not a rotation (its rows were up to %1 from orthonormal); the nearest rotation was used.</source>
         <translation>Die Matrix war keine Rotation (ihre Zeilen wichen um bis zu %1 von orthonormal ab); die nächstgelegene Rotation wurde verwendet.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="326"/>
+        <location filename="../src/app/inspector_widget.cpp" line="372"/>
         <source>The rotation was not changed: a zero axis names no direction to turn about.</source>
         <translation>Die Rotation wurde nicht geändert: Eine Nullachse gibt keine Drehrichtung an.</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="331"/>
+        <location filename="../src/app/inspector_widget.cpp" line="377"/>
         <source>The axis had length %1; it was scaled to length 1.</source>
         <translation>Die Achse hatte die Länge %1; sie wurde auf Länge 1 skaliert.</translation>
     </message>
@@ -2541,18 +2639,23 @@
 <context>
     <name>gyre::app::KeyClipboardActions</name>
     <message>
-        <location filename="../src/app/key_clipboard_actions.cpp" line="86"/>
-        <location filename="../src/app/key_clipboard_actions.cpp" line="127"/>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="55"/>
+        <source>Cannot copy the pose: %1</source>
+        <translation>Pose kann nicht kopiert werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="93"/>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="134"/>
         <source>Cannot paste: %1</source>
         <translation>Einfügen nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/key_clipboard_actions.cpp" line="107"/>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="114"/>
         <source>Cannot paste: no selected object has the name of a copied one</source>
         <translation>Einfügen nicht möglich: kein ausgewähltes Objekt trägt den Namen eines kopierten</translation>
     </message>
     <message>
-        <location filename="../src/app/key_clipboard_actions.cpp" line="108"/>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="115"/>
         <source>Cannot paste: no object is selected</source>
         <translation>Einfügen nicht möglich: kein Objekt ist ausgewählt</translation>
     </message>
@@ -2560,17 +2663,17 @@
 <context>
     <name>gyre::app::KeyframeActions</name>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="70"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="71"/>
         <source>Cannot add a keyframe: %1</source>
         <translation>Schlüsselbild kann nicht hinzugefügt werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="123"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="124"/>
         <source>This span has a single free flight</source>
         <translation>Dieser Abschnitt hat nur einen freien Flug</translation>
     </message>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="125"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="126"/>
         <source>Cannot step the flight: %1</source>
         <translation>Flug kann nicht gewechselt werden: %1</translation>
     </message>
@@ -2676,177 +2779,192 @@
 <context>
     <name>gyre::app::MainWindow</name>
     <message>
-        <location filename="../src/app/main_window.cpp" line="71"/>
+        <location filename="../src/app/main_window.cpp" line="72"/>
         <source>Gyre projects (*.gyre)</source>
         <translation>Gyre-Projekte (*.gyre)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="180"/>
+        <location filename="../src/app/main_window.cpp" line="181"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="184"/>
+        <location filename="../src/app/main_window.cpp" line="185"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="208"/>
+        <location filename="../src/app/main_window.cpp" line="209"/>
         <source>&lt;opened&gt;</source>
         <translation>&lt;geöffnet&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="285"/>
+        <location filename="../src/app/main_window.cpp" line="287"/>
         <source>Drawing the direction on the sphere needs OpenGL 3.3, which this display does not offer. The speed plot and the fit work without it.</source>
         <translation>Das Zeichnen der Richtung auf der Kugel braucht OpenGL 3.3, das diese Anzeige nicht bietet. Das Geschwindigkeitsdiagramm und die Anpassung funktionieren ohne.</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="304"/>
+        <location filename="../src/app/main_window.cpp" line="306"/>
         <source>The 3D viewport needs OpenGL 3.3, which this display does not offer. Editing, the panels and the timeline work without it.</source>
         <translation>Das 3D-Ansichtsfenster braucht OpenGL 3.3, das diese Anzeige nicht bietet. Bearbeiten, die Bedienfelder und die Zeitleiste funktionieren ohne.</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="357"/>
+        <location filename="../src/app/main_window.cpp" line="359"/>
         <source>Viewport frame rate while something moves, and the time to subdivide the trail: on the worker, and from the request to its arrival</source>
         <translation>Bildrate des Ansichtsfensters, während sich etwas bewegt, und die Zeit zum Unterteilen der Stroboskopspur: im Hintergrund-Thread und von der Anforderung bis zum Eintreffen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="367"/>
+        <location filename="../src/app/main_window.cpp" line="369"/>
         <source>%1 fps · subdivision %2 ms (%3 ms to arrive)</source>
         <translation>%1 fps · Unterteilung %2 ms (%3 ms bis zur Ankunft)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="411"/>
+        <location filename="../src/app/main_window.cpp" line="413"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="413"/>
+        <location filename="../src/app/main_window.cpp" line="415"/>
         <source>%1[*] — Gyre</source>
         <translation>%1[*] — Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="428"/>
+        <location filename="../src/app/main_window.cpp" line="430"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="446"/>
+        <location filename="../src/app/main_window.cpp" line="448"/>
         <source>Cannot open the project</source>
         <translation>Das Projekt kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="469"/>
+        <location filename="../src/app/main_window.cpp" line="471"/>
         <source>L-shaped cycle (ScrewBender)</source>
         <translation>L-förmiger Zyklus (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="470"/>
+        <location filename="../src/app/main_window.cpp" line="472"/>
         <source>Spinning top (sketched angular velocity)</source>
         <translation>Kreisel (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="471"/>
+        <location filename="../src/app/main_window.cpp" line="473"/>
         <source>Letter M (sketched angular velocity)</source>
         <translation>Buchstabe M (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="472"/>
+        <location filename="../src/app/main_window.cpp" line="474"/>
         <source>Hat (sketched angular velocity)</source>
         <translation>Hut (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="473"/>
+        <location filename="../src/app/main_window.cpp" line="475"/>
         <source>Falling leaf (sketched angular velocity)</source>
         <translation>Fallendes Blatt (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="474"/>
+        <location filename="../src/app/main_window.cpp" line="476"/>
         <source>Pen (sketched angular speed)</source>
         <translation>Stift (skizzierter Betrag der Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="475"/>
+        <location filename="../src/app/main_window.cpp" line="477"/>
         <source>Pendulum (ScrewBender)</source>
         <translation>Pendel (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="476"/>
+        <location filename="../src/app/main_window.cpp" line="478"/>
         <source>Spinning block (ScrewBender)</source>
         <translation>Rotierender Block (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="477"/>
+        <location filename="../src/app/main_window.cpp" line="479"/>
         <source>Critter&apos;s non-planar cycle (ScrewBender)</source>
         <translation>Nicht-ebener Zyklus eines Tierchens (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="496"/>
+        <location filename="../src/app/main_window.cpp" line="480"/>
+        <source>Tossed T-handle (free flight)</source>
+        <translation>Geworfener T-Griff (freier Flug)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="481"/>
+        <source>Flipped coin (free flight)</source>
+        <translation>Geworfene Münze (freier Flug)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="482"/>
+        <source>Thrown book (free flight)</source>
+        <translation>Geworfenes Buch (freier Flug)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="501"/>
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="509"/>
+        <location filename="../src/app/main_window.cpp" line="514"/>
         <source>Cannot save the project</source>
         <translation>Das Projekt kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="513"/>
+        <location filename="../src/app/main_window.cpp" line="518"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="522"/>
+        <location filename="../src/app/main_window.cpp" line="527"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="522"/>
+        <location filename="../src/app/main_window.cpp" line="527"/>
         <source>The project has unsaved changes. Save them first?</source>
         <translation>Das Projekt hat ungespeicherte Änderungen. Zuerst speichern?</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="561"/>
+        <location filename="../src/app/main_window.cpp" line="566"/>
         <source>About Gyre</source>
         <translation>Über Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="562"/>
+        <location filename="../src/app/main_window.cpp" line="567"/>
         <source>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Edit the rotations of animated rigid objects: every way of writing an orientation, interpolation that behaves, sketched angular velocity, and ScrewBender motions.&lt;/p&gt;&lt;p&gt;Built on Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 and QCustomPlot %8.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Rotationen animierter starrer Objekte bearbeiten: jede Schreibweise einer Orientierung, Interpolation, die sich gut verhält, skizzierte Winkelgeschwindigkeit und ScrewBender-Bewegungen.&lt;/p&gt;&lt;p&gt;Aufgebaut auf Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 und QCustomPlot %8.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="582"/>
+        <location filename="../src/app/main_window.cpp" line="587"/>
         <source>Autosave failed: %1</source>
         <translation>Automatische Sicherung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="591"/>
+        <location filename="../src/app/main_window.cpp" line="596"/>
         <source>an untitled project</source>
         <translation>ein unbenanntes Projekt</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="594"/>
+        <location filename="../src/app/main_window.cpp" line="599"/>
         <source>Recover unsaved work</source>
         <translation>Ungesicherte Arbeit wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="595"/>
+        <location filename="../src/app/main_window.cpp" line="600"/>
         <source>Gyre ended without saving changes to %1 (last copy %2). Recover them?</source>
         <translation>Gyre wurde beendet, ohne Änderungen an %1 zu speichern (letzte Kopie %2). Wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="610"/>
+        <location filename="../src/app/main_window.cpp" line="615"/>
         <source>Cannot recover</source>
         <translation>Wiederherstellen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="585"/>
+        <location filename="../src/app/main_window.cpp" line="590"/>
         <source>Autosave is off: %1</source>
         <translation>Automatische Sicherung ist aus: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="212"/>
+        <location filename="../src/app/main_window.cpp" line="213"/>
         <source>Outliner</source>
         <translation>Gliederung</translation>
     </message>
@@ -2939,8 +3057,8 @@
         <translation>%1, %2, %3 kg·m²</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="146"/>
-        <location filename="../src/app/mass_properties_group.cpp" line="158"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="152"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="164"/>
         <source>Not changed: %1</source>
         <translation>Nicht geändert: %1</translation>
     </message>
@@ -3140,82 +3258,87 @@
 <context>
     <name>gyre::app::ScrewBenderPanel</name>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="25"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="26"/>
         <source>Slerp (great arcs)</source>
         <translation>Slerp (Großkreisbögen)</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="27"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="28"/>
         <source>Nlerp (normalised straight lines)</source>
         <translation>Nlerp (normierte Geraden)</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="29"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="30"/>
         <source>Squad (smooth quaternion curve)</source>
         <translation>Squad (glatte Quaternion-Kurve)</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="31"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="32"/>
         <source>Hermite quaternion spline</source>
         <translation>Hermite-Quaternion-Spline</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="33"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="34"/>
         <source>Euler angles, linearly</source>
         <translation>Euler-Winkel, linear</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="35"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="36"/>
+        <source>Euler angles, smooth (automatic tangents)</source>
+        <translation>Euler-Winkel, glatt (automatische Tangenten)</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="38"/>
         <source>Screw motion (ScrewBender)</source>
         <translation>Schraubbewegung (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="37"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="40"/>
         <source>Ballistic (free flight between keys)</source>
         <translation>Ballistisch (freier Flug zwischen Keys)</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="47"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="50"/>
         <source>Four-point</source>
         <translation>Vierpunkt</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="49"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="52"/>
         <source>Four-point B</source>
         <translation>Vierpunkt B</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="51"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="54"/>
         <source>Cubic B-spline</source>
         <translation>Kubischer B-Spline</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="53"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="56"/>
         <source>Jarek</source>
         <translation>Jarek</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="137"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="146"/>
         <source>%1 from %2 keyframes</source>
         <translation>%1 aus %2 Schlüsselbildern</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="138"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="147"/>
         <source>too many to hold, from %1 keyframes</source>
         <translation>zu viele zum Speichern, aus %1 Schlüsselbildern</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="150"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="159"/>
         <source>The interpolation was not changed: %1.</source>
         <translation>Die Interpolation wurde nicht geändert: %1.</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="163"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="172"/>
         <source>Interpolate by Screws</source>
         <translation>Per Schraubbewegung interpolieren</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="187"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="196"/>
         <source>The subdivision was not changed: %1.</source>
         <translation>Die Unterteilung wurde nicht geändert: %1.</translation>
     </message>
@@ -3373,56 +3496,111 @@
 <context>
     <name>gyre::app::TimeBar</name>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="25"/>
+        <location filename="../src/app/time_bar.cpp" line="29"/>
         <source> s</source>
         <translation> s</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="44"/>
+        <location filename="../src/app/time_bar.cpp" line="50"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="51"/>
+        <location filename="../src/app/time_bar.cpp" line="57"/>
+        <source> m/s²</source>
+        <translation> m/s²</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="60"/>
+        <source>How fast the centre of mass of a ballistic track falls</source>
+        <translation>Wie schnell der Schwerpunkt einer ballistischen Spur fällt</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="62"/>
+        <source>+X</source>
+        <translation>+X</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="62"/>
+        <source>−X</source>
+        <translation>−X</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="62"/>
+        <source>+Y</source>
+        <translation>+Y</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="62"/>
+        <source>−Y</source>
+        <translation>−Y</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="62"/>
+        <source>+Z</source>
+        <translation>+Z</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="62"/>
+        <source>−Z</source>
+        <translation>−Z</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="64"/>
+        <source>The scene&apos;s up axis: gravity pulls the other way</source>
+        <translation>Die Oben-Achse der Szene: die Schwerkraft zieht in die Gegenrichtung</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="67"/>
         <source>Frames per second</source>
         <translation>Frames pro Sekunde</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="52"/>
+        <location filename="../src/app/time_bar.cpp" line="68"/>
         <source>Where the scene starts</source>
         <translation>Wo die Szene beginnt</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="53"/>
+        <location filename="../src/app/time_bar.cpp" line="69"/>
         <source>Where the scene ends</source>
         <translation>Wo die Szene endet</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="55"/>
-        <location filename="../src/app/time_bar.cpp" line="91"/>
+        <location filename="../src/app/time_bar.cpp" line="71"/>
+        <location filename="../src/app/time_bar.cpp" line="113"/>
         <source>Time %1 s</source>
         <translation>Zeit %1 s</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="56"/>
-        <location filename="../src/app/time_bar.cpp" line="93"/>
+        <location filename="../src/app/time_bar.cpp" line="72"/>
+        <location filename="../src/app/time_bar.cpp" line="115"/>
         <source>Frame %1</source>
         <translation>Frame %1</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="63"/>
+        <location filename="../src/app/time_bar.cpp" line="79"/>
         <source>Rate</source>
         <translation>Bildrate</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="63"/>
+        <location filename="../src/app/time_bar.cpp" line="79"/>
         <source>Start</source>
         <translation>Anfang</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="63"/>
+        <location filename="../src/app/time_bar.cpp" line="80"/>
         <source>End</source>
         <translation>Ende</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="80"/>
+        <source>Gravity</source>
+        <translation>Schwerkraft</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="81"/>
+        <source>Up</source>
+        <translation>Oben</translation>
     </message>
 </context>
 <context>
@@ -3445,6 +3623,39 @@
         <location filename="../src/app/language.cpp" line="59"/>
         <source>Gyre does not speak the language &quot;%1&quot; and speaks English instead.</source>
         <translation>Gyre spricht die Sprache „%1“ nicht und spricht stattdessen Englisch.</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::ViewPreferences</name>
+    <message>
+        <location filename="../src/app/view_preferences.cpp" line="61"/>
+        <source>Trail</source>
+        <translation>Spur</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/app/view_preferences.cpp" line="65"/>
+        <source>%n Copies</source>
+        <translation><numerusform>%n Kopie</numerusform><numerusform>%n Kopien</numerusform></translation>
+    </message>
+    <message>
+        <location filename="../src/app/view_preferences.cpp" line="68"/>
+        <source>Over the Whole Range</source>
+        <translation>Über den ganzen Bereich</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/app/view_preferences.cpp" line="68"/>
+        <source>Every %n Frame(s) About the Current Frame</source>
+        <translation><numerusform>Jedes %n. Frame um das aktuelle Frame</numerusform><numerusform>Alle %n Frames um das aktuelle Frame</numerusform></translation>
+    </message>
+    <message>
+        <location filename="../src/app/view_preferences.cpp" line="71"/>
+        <source>Y Up</source>
+        <translation>Y oben</translation>
+    </message>
+    <message>
+        <location filename="../src/app/view_preferences.cpp" line="74"/>
+        <source>Show the scene with y up, as Maya does: orbit about y, the grid across it, the front view along −z</source>
+        <translation>Die Szene mit y oben zeigen, wie Maya: um y kreisen, das Gitter quer dazu, die Vorderansicht entlang −z</translation>
     </message>
 </context>
 <context>
@@ -3525,12 +3736,13 @@
         <translation>Anpassungsfenster setzen</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/set_interpolation_command.cpp" line="23"/>
+        <location filename="../src/model/commands/set_interpolation_command.cpp" line="28"/>
         <source>Set Interpolation</source>
         <translation>Interpolation setzen</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/set_keyframe_orientation_command.cpp" line="13"/>
+        <location filename="../src/model/commands/set_keyframe_orientation_command.cpp" line="37"/>
+        <location filename="../src/model/commands/set_keyframe_orientation_command.cpp" line="45"/>
         <source>Rotate Keyframe</source>
         <translation>Schlüsselbild drehen</translation>
     </message>
@@ -3610,7 +3822,7 @@
         <translation>Keyframes skalieren</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/step_ballistic_solution_command.cpp" line="32"/>
+        <location filename="../src/model/commands/step_ballistic_solution_command.cpp" line="31"/>
         <source>Step Flight Solution</source>
         <translation>Flugbahn wechseln</translation>
     </message>
@@ -3623,6 +3835,21 @@
         <location filename="../src/model/commands/set_mass_override_command.cpp" line="15"/>
         <source>Mass From Mesh</source>
         <translation>Masse aus dem Mesh</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_rotation_mode_command.cpp" line="22"/>
+        <source>Set Rotation Mode</source>
+        <translation>Rotationsmodus setzen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_physics_target_command.cpp" line="25"/>
+        <source>Set Physics Target</source>
+        <translation>Physikziel setzen</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_gravity_command.cpp" line="10"/>
+        <source>Set Gravity</source>
+        <translation>Schwerkraft setzen</translation>
     </message>
 </context>
 <context>
@@ -3684,6 +3911,16 @@
         <location filename="../src/model/sketch_fit_problem.cpp" line="268"/>
         <source>The pattern cannot be repeated: %1</source>
         <translation>Das Muster kann nicht wiederholt werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/physics_target.cpp" line="27"/>
+        <source>the physics target needs at least two keyframes</source>
+        <translation>das Physikziel braucht mindestens zwei Keyframes</translation>
+    </message>
+    <message>
+        <location filename="../src/model/physics_target.cpp" line="35"/>
+        <source>the object is at rest at %1 s, so a free flight from there has no direction</source>
+        <translation>das Objekt ruht bei %1 s, daher hat ein freier Flug von dort keine Richtung</translation>
     </message>
 </context>
 <context>

@@ -105,48 +105,58 @@
         <translation>约束</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="160"/>
+        <location filename="../ui/fit_panel.ui" line="158"/>
+        <source>Set &amp;physics target</source>
+        <translation>设置物理目标(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="159"/>
+        <source>Replace the sketch by the angular velocity of a free flight from where the motion is at the edit window&apos;s start; Fit then bends the motion toward it and keeps the constrained keys</source>
+        <translation>用从编辑窗口起点的运动状态出发的自由飞行角速度替换草图；随后拟合会使运动趋向它，并保留受约束的关键帧</translation>
+    </message>
+    <message>
+        <location filename="../ui/fit_panel.ui" line="166"/>
         <source>Fit</source>
         <translation>拟合</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="161"/>
+        <location filename="../ui/fit_panel.ui" line="167"/>
         <source>Fit the rotation to the sketch (Ctrl+F)</source>
         <translation>将旋转拟合到草图（Ctrl+F）</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="162"/>
+        <location filename="../ui/fit_panel.ui" line="168"/>
         <source>Ctrl+F</source>
         <extracomment>A keyboard shortcut: keep it as it is. It stays translatable because uic then sets it after the button text, which would otherwise clear it.</extracomment>
         <translation>Ctrl+F</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="167"/>
+        <location filename="../ui/fit_panel.ui" line="173"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="168"/>
+        <location filename="../ui/fit_panel.ui" line="174"/>
         <source>Stop the running fit; the motion stays as it is</source>
         <translation>停止正在进行的拟合；运动保持不变</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="173"/>
+        <location filename="../ui/fit_panel.ui" line="179"/>
         <source>&amp;Remove fit</source>
         <translation>移除拟合(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="174"/>
+        <location filename="../ui/fit_panel.ui" line="180"/>
         <source>Go back to the interpolation through the keys</source>
         <translation>回到经过关键帧的插值</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="181"/>
+        <location filename="../ui/fit_panel.ui" line="187"/>
         <source>&amp;Live: refit while the sketch changes</source>
         <translation>实时：草图变化时重新拟合(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/fit_panel.ui" line="182"/>
+        <location filename="../ui/fit_panel.ui" line="188"/>
         <source>Refit at every change of the sketch, keys or settings; while drawing, the view previews the fit</source>
         <translation>草图、关键帧或设置每次变化时都重新拟合；绘制时视图会预览拟合结果</translation>
     </message>
@@ -160,196 +170,211 @@
     </message>
     <message>
         <location filename="../ui/inspector_widget.ui" line="52"/>
+        <source>Rotation Mode</source>
+        <translation>旋转模式</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="56"/>
+        <source>&amp;Keys store</source>
+        <translation>关键帧存储(&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="62"/>
+        <source>Quaternion keys store orientations; Euler keys store the three angles as typed, so 0° then 360° is a full turn, and interpolate them in the object&apos;s order</source>
+        <translation>四元数关键帧存储朝向；欧拉关键帧按输入存储三个角度，因此 0° 到 360° 是完整一圈，并按物体的顺序插值</translation>
+    </message>
+    <message>
+        <location filename="../ui/inspector_widget.ui" line="92"/>
         <source>Keyframe</source>
         <translation>关键帧</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="56"/>
+        <location filename="../ui/inspector_widget.ui" line="96"/>
         <source>&amp;Time (s)</source>
         <translation>时间（秒）(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="62"/>
+        <location filename="../ui/inspector_widget.ui" line="102"/>
         <source>Time in seconds</source>
         <translation>以秒为单位的时间</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="67"/>
+        <location filename="../ui/inspector_widget.ui" line="107"/>
         <source>&amp;Constrained: the fit keeps this key exactly</source>
         <translation>约束：拟合精确保持此关键帧(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="75"/>
+        <location filename="../ui/inspector_widget.ui" line="115"/>
         <source>Position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="97"/>
+        <location filename="../ui/inspector_widget.ui" line="137"/>
         <source>Position x</source>
         <translation>位置 x</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="102"/>
+        <location filename="../ui/inspector_widget.ui" line="142"/>
         <source>Position y</source>
         <translation>位置 y</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="107"/>
+        <location filename="../ui/inspector_widget.ui" line="147"/>
         <source>Position z</source>
         <translation>位置 z</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="115"/>
+        <location filename="../ui/inspector_widget.ui" line="155"/>
         <source>Quaternion</source>
         <translation>四元数</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="143"/>
+        <location filename="../ui/inspector_widget.ui" line="183"/>
         <source>Quaternion w</source>
         <translation>四元数 w</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="148"/>
+        <location filename="../ui/inspector_widget.ui" line="188"/>
         <source>Quaternion x</source>
         <translation>四元数 x</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="153"/>
+        <location filename="../ui/inspector_widget.ui" line="193"/>
         <source>Quaternion y</source>
         <translation>四元数 y</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="158"/>
+        <location filename="../ui/inspector_widget.ui" line="198"/>
         <source>Quaternion z</source>
         <translation>四元数 z</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="166"/>
+        <location filename="../ui/inspector_widget.ui" line="206"/>
         <source>Rotation matrix</source>
         <translation>旋转矩阵</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="170"/>
+        <location filename="../ui/inspector_widget.ui" line="210"/>
         <source>Matrix row 1, column 1</source>
         <translation>矩阵第 1 行第 1 列</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="175"/>
+        <location filename="../ui/inspector_widget.ui" line="215"/>
         <source>Matrix row 1, column 2</source>
         <translation>矩阵第 1 行第 2 列</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="180"/>
+        <location filename="../ui/inspector_widget.ui" line="220"/>
         <source>Matrix row 1, column 3</source>
         <translation>矩阵第 1 行第 3 列</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="185"/>
+        <location filename="../ui/inspector_widget.ui" line="225"/>
         <source>Matrix row 2, column 1</source>
         <translation>矩阵第 2 行第 1 列</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="190"/>
+        <location filename="../ui/inspector_widget.ui" line="230"/>
         <source>Matrix row 2, column 2</source>
         <translation>矩阵第 2 行第 2 列</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="195"/>
+        <location filename="../ui/inspector_widget.ui" line="235"/>
         <source>Matrix row 2, column 3</source>
         <translation>矩阵第 2 行第 3 列</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="200"/>
+        <location filename="../ui/inspector_widget.ui" line="240"/>
         <source>Matrix row 3, column 1</source>
         <translation>矩阵第 3 行第 1 列</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="205"/>
+        <location filename="../ui/inspector_widget.ui" line="245"/>
         <source>Matrix row 3, column 2</source>
         <translation>矩阵第 3 行第 2 列</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="210"/>
+        <location filename="../ui/inspector_widget.ui" line="250"/>
         <source>Matrix row 3, column 3</source>
         <translation>矩阵第 3 行第 3 列</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="218"/>
+        <location filename="../ui/inspector_widget.ui" line="258"/>
         <source>Axis-angle</source>
         <translation>轴角</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="222"/>
+        <location filename="../ui/inspector_widget.ui" line="262"/>
         <source>axis x</source>
         <translation>轴 x</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="228"/>
+        <location filename="../ui/inspector_widget.ui" line="268"/>
         <source>axis y</source>
         <translation>轴 y</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="234"/>
+        <location filename="../ui/inspector_widget.ui" line="274"/>
         <source>axis z</source>
         <translation>轴 z</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="240"/>
+        <location filename="../ui/inspector_widget.ui" line="280"/>
         <source>angle (°)</source>
         <translation>角度（°）</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="246"/>
+        <location filename="../ui/inspector_widget.ui" line="286"/>
         <source>Axis x</source>
         <translation>轴 x</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="251"/>
+        <location filename="../ui/inspector_widget.ui" line="291"/>
         <source>Axis y</source>
         <translation>轴 y</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="256"/>
+        <location filename="../ui/inspector_widget.ui" line="296"/>
         <source>Axis z</source>
         <translation>轴 z</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="261"/>
+        <location filename="../ui/inspector_widget.ui" line="301"/>
         <source>Angle in degrees</source>
         <translation>以度为单位的角度</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="269"/>
+        <location filename="../ui/inspector_widget.ui" line="309"/>
         <source>Euler angles</source>
         <translation>欧拉角</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="275"/>
+        <location filename="../ui/inspector_widget.ui" line="70"/>
         <source>&amp;Order</source>
         <translation>顺序(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="281"/>
+        <location filename="../ui/inspector_widget.ui" line="76"/>
         <source>The axes the three angles turn about, first to last</source>
         <translation>三个角依次绕其旋转的轴，从第一个到最后一个</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="286"/>
+        <location filename="../ui/inspector_widget.ui" line="81"/>
         <source>Extrinsic angles turn about the fixed world axes; intrinsic ones about the axes as they have been turned so far</source>
         <translation>外旋角绕固定的世界坐标轴旋转；内旋角绕到此为止已转动的轴旋转</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="309"/>
+        <location filename="../ui/inspector_widget.ui" line="328"/>
         <source>Euler angle 1 in degrees</source>
         <translation>欧拉角 1，以度为单位</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="314"/>
+        <location filename="../ui/inspector_widget.ui" line="333"/>
         <source>Euler angle 2 in degrees</source>
         <translation>欧拉角 2，以度为单位</translation>
     </message>
     <message>
-        <location filename="../ui/inspector_widget.ui" line="319"/>
+        <location filename="../ui/inspector_widget.ui" line="338"/>
         <source>Euler angle 3 in degrees</source>
         <translation>欧拉角 3，以度为单位</translation>
     </message>
@@ -1016,77 +1041,77 @@
 <context>
     <name>gyre::FileError</name>
     <message>
-        <location filename="../src/model/project_file.cpp" line="410"/>
+        <location filename="../src/model/project_file.cpp" line="355"/>
         <source>these %1 keys bring the file past the %2 keys a project may hold</source>
         <translation>加上这 %1 个关键帧，文件超出项目可容纳的 %2 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="647"/>
+        <location filename="../src/model/project_file.cpp" line="617"/>
         <source>these %1 times bring the file past the %2 times a project may hold</source>
         <translation>加上这 %1 个时间，文件超出项目可容纳的 %2 个时间</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="413"/>
+        <location filename="../src/model/project_file.cpp" line="358"/>
         <source>the file has no time lists</source>
         <translation>文件没有时间列表</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="275"/>
+        <location filename="../src/model/project_file.cpp" line="226"/>
         <source>is larger than 1 GiB, the most a project file may hold</source>
         <translation>大于 1 GiB，超出项目文件的上限</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="417"/>
+        <location filename="../src/model/project_file.cpp" line="362"/>
         <source>time list %1 holds %2 times for %3 keys</source>
         <translation>时间列表 %1 有 %2 个时间，却对应 %3 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="623"/>
+        <location filename="../src/model/project_file.cpp" line="591"/>
         <source>a version %1 file starts with &quot;%2&quot; and its version in binary, not with JSON text</source>
         <translation>版本 %1 的文件以“%2”及二进制的版本号开头，而不是 JSON 文本</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="710"/>
+        <location filename="../src/model/project_file.cpp" line="680"/>
         <source>the file ends inside its first %1 bytes</source>
         <translation>文件在其前 %1 个字节内就结束了</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="715"/>
+        <location filename="../src/model/project_file.cpp" line="685"/>
         <source>a version %1 file is JSON text, not binary</source>
         <translation>版本 %1 的文件是 JSON 文本，不是二进制</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="719"/>
+        <location filename="../src/model/project_file.cpp" line="689"/>
         <source>%1 bytes; a header may hold at most %2</source>
         <translation>%1 字节；文件头最多 %2 字节</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="131"/>
+        <location filename="../src/model/project_blocks.cpp" line="139"/>
         <source>%1 is neither 0 nor 1</source>
         <translation>%1 既不是 0 也不是 1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="259"/>
+        <location filename="../src/model/project_blocks.cpp" line="273"/>
         <source>its block needs %1 bytes; the file has %2 left</source>
         <translation>其数据块需要 %1 字节；文件只剩 %2 字节</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="265"/>
+        <location filename="../src/model/project_blocks.cpp" line="279"/>
         <source>the file ends %1 bytes into its block of %2</source>
         <translation>文件在其 %2 字节的数据块中第 %1 字节处结束</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="275"/>
+        <location filename="../src/model/project_blocks.cpp" line="289"/>
         <source>the file goes on after its last block</source>
         <translation>文件在最后一个数据块之后仍有内容</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="281"/>
+        <location filename="../src/model/project_blocks.cpp" line="295"/>
         <source>the writer has no block for it</source>
         <translation>写入程序没有它的数据块</translation>
     </message>
     <message>
-        <location filename="../src/model/project_blocks.cpp" line="284"/>
+        <location filename="../src/model/project_blocks.cpp" line="298"/>
         <source>its block holds %1 bytes, not %2</source>
         <translation>其数据块有 %1 字节，而不是 %2</translation>
     </message>
@@ -1112,111 +1137,137 @@
         <translation>无法获取自动保存锁</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="287"/>
+        <location filename="../src/model/json_field.cpp" line="168"/>
         <source>unknown value &quot;%1&quot;; expected one of %2</source>
         <translation>未知的值“%1”；应为以下之一：%2</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="324"/>
+        <location filename="../src/model/project_file.cpp" line="263"/>
         <source>%1 bytes are not a whole number of %2-byte items</source>
         <translation>%1 字节不是 %2 字节条目的整数倍</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="376"/>
+        <location filename="../src/model/project_file.cpp" line="315"/>
         <source>a skin has 1 to %1 joints</source>
         <translation>蒙皮有 1 到 %1 个关节</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="446"/>
+        <location filename="../src/model/project_file.cpp" line="341"/>
+        <location filename="../src/model/project_blocks.cpp" line="146"/>
+        <source>the angles are not finite</source>
+        <translation>角度不是有限数</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="392"/>
         <location filename="../src/model/value_checks.cpp" line="156"/>
         <source>a stroke needs at least one point</source>
         <translation>笔画至少需要一个点</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="448"/>
+        <location filename="../src/model/project_file.cpp" line="394"/>
         <source>%1 times for %2 points; give none or one per point</source>
         <translation>%1 个时间对应 %2 个点；请不给时间或每个点给一个</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="475"/>
+        <location filename="../src/model/project_file.cpp" line="421"/>
         <source>these %1 control points bring the file past the %2 keys a project may hold</source>
         <translation>加上这 %1 个控制点，文件超出项目可容纳的 %2 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="515"/>
+        <location filename="../src/model/project_file.cpp" line="461"/>
         <location filename="../src/model/value_checks.cpp" line="207"/>
         <source>keys to restore without an applied fit</source>
         <translation>有待恢复的关键帧，却没有已应用的拟合</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="538"/>
+        <location filename="../src/model/project_file.cpp" line="472"/>
+        <source>an object in Euler rotation mode interpolates euler or euler-cubic</source>
+        <translation>欧拉旋转模式的物体使用 euler 或 euler-cubic 插值</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="478"/>
+        <source>an object in Euler rotation mode needs the angles of every key</source>
+        <translation>欧拉旋转模式的物体需要每个关键帧的角度</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="479"/>
+        <source>angles on an object in quaternion rotation mode</source>
+        <translation>四元数旋转模式的物体带有角度</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="481"/>
+        <source>the angles do not give the key&apos;s orientation</source>
+        <translation>角度与关键帧的朝向不符</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_file.cpp" line="504"/>
         <source>the file has no meshes</source>
         <translation>文件中没有网格</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="571"/>
+        <location filename="../src/model/project_file.cpp" line="539"/>
         <source>%1 is also the id of objects[%2]</source>
         <translation>%1 也是 objects[%2] 的 ID</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="574"/>
-        <location filename="../src/model/project_file.cpp" line="660"/>
+        <location filename="../src/model/project_file.cpp" line="542"/>
+        <location filename="../src/model/project_file.cpp" line="630"/>
         <source>no object has id %1</source>
         <translation>没有 ID 为 %1 的对象</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="583"/>
+        <location filename="../src/model/project_file.cpp" line="551"/>
         <source>object %1 is its own ancestor</source>
         <translation>对象 %1 是它自己的祖先</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="596"/>
+        <location filename="../src/model/project_file.cpp" line="564"/>
         <source>object %1 comes after it in the file; parents come before their children</source>
         <translation>对象 %1 在文件中位于它之后；父对象须在子对象之前</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="617"/>
+        <location filename="../src/model/project_file.cpp" line="585"/>
         <source>expected &quot;%1&quot;, found &quot;%2&quot;; this is not a Gyre project</source>
         <translation>应为“%1”，实际为“%2”；这不是 Gyre 项目</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="795"/>
+        <location filename="../src/model/project_file.cpp" line="765"/>
         <source>not saved, because its header (the objects&apos; names and settings, the sketches&apos; strokes) would hold %1 bytes, more than the %2 a project may hold</source>
         <translation>未保存，因为其文件头（对象的名称和设置、草图的笔画）将有 %1 字节，超过项目可容纳的 %2 字节</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="607"/>
+        <location filename="../src/model/project_file.cpp" line="575"/>
         <source>the file has version %1, newer than this build of Gyre reads (%2 and older); open it with a newer Gyre</source>
         <translation>文件版本为 %1，比此 Gyre 版本可读取的版本（%2 及更早）更新；请用更新的 Gyre 打开</translation>
     </message>
     <message>
         <location filename="../src/model/output_target.cpp" line="42"/>
-        <location filename="../src/model/project_file.cpp" line="770"/>
+        <location filename="../src/model/project_file.cpp" line="740"/>
         <source>is a directory, not a file</source>
         <translation>是目录，不是文件</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="773"/>
+        <location filename="../src/model/project_file.cpp" line="743"/>
         <source>cannot open: %1</source>
         <translation>无法打开：%1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="677"/>
+        <location filename="../src/model/project_file.cpp" line="647"/>
         <source>cannot read: %1</source>
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="690"/>
+        <location filename="../src/model/project_file.cpp" line="660"/>
         <source>is empty; a project file holds a JSON object</source>
         <translation>为空；项目文件应包含一个 JSON 对象</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="683"/>
+        <location filename="../src/model/project_file.cpp" line="653"/>
         <source>not valid JSON: %1 at byte %2</source>
         <translation>不是有效的 JSON：%1（位于第 %2 字节）</translation>
     </message>
     <message>
-        <location filename="../src/model/project_file.cpp" line="788"/>
+        <location filename="../src/model/project_file.cpp" line="758"/>
         <source>not saved, because the file would not read back: %1</source>
         <translation>未保存，因为该文件无法被重新读取：%1</translation>
     </message>
@@ -1226,22 +1277,22 @@
         <translation>对象 %1“%2”写为“%3”，以使其名称唯一</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="420"/>
+        <location filename="../src/io/scene_export.cpp" line="421"/>
         <source>cannot be written as FBX: %1</source>
         <translation>无法写成 FBX：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="170"/>
+        <location filename="../src/io/scene_export.cpp" line="171"/>
         <source>baking at %1 fps gives more than %2 samples</source>
         <translation>以 %1 fps 烘焙会产生超过 %2 个采样</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="177"/>
+        <location filename="../src/io/scene_export.cpp" line="178"/>
         <source>the motion of &apos;%1&apos; cannot be baked: %2</source>
         <translation>无法烘焙“%1”的运动：%2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="149"/>
+        <location filename="../src/io/scene_export.cpp" line="150"/>
         <source>the motion of &apos;%1&apos; cannot be evaluated: %2</source>
         <translation>无法计算“%1”的运动：%2</translation>
     </message>
@@ -1251,47 +1302,47 @@
         <translation>对象 %1 指定的父对象 %2 不在它之前；它被写在顶层</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="159"/>
+        <location filename="../src/io/scene_export.cpp" line="160"/>
         <source>the mesh of &apos;%1&apos; has an index past its vertices</source>
         <translation>“%1”的网格有超出其顶点范围的索引</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="350"/>
+        <location filename="../src/io/scene_export.cpp" line="351"/>
         <source>Assimp cannot write it</source>
         <translation>Assimp 无法写入</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="351"/>
+        <location filename="../src/io/scene_export.cpp" line="352"/>
         <source>Assimp cannot write it: %1</source>
         <translation>Assimp 无法写入：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="357"/>
+        <location filename="../src/io/scene_export.cpp" line="358"/>
         <source>Assimp wrote nothing</source>
         <translation>Assimp 没有写出任何内容</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="376"/>
+        <location filename="../src/io/scene_export.cpp" line="377"/>
         <source>cannot be written as glTF: %1</source>
         <translation>无法写成 glTF：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="400"/>
+        <location filename="../src/io/scene_export.cpp" line="401"/>
         <source>the frame rate must be a finite number above zero</source>
         <translation>帧率必须是大于零的有限数</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="402"/>
+        <location filename="../src/io/scene_export.cpp" line="403"/>
         <source>the scene&apos;s time range is empty or not finite</source>
         <translation>场景的时间范围为空或不是有限值</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="405"/>
+        <location filename="../src/io/scene_export.cpp" line="406"/>
         <source>the scene has no meshes, and OBJ holds nothing else</source>
         <translation>场景没有网格，而 OBJ 不能保存其他内容</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="407"/>
+        <location filename="../src/io/scene_export.cpp" line="408"/>
         <source>OBJ holds no motion: the meshes are written as posed at the start time</source>
         <translation>OBJ 不包含运动：网格按起始时间的姿态写出</translation>
     </message>
@@ -1587,82 +1638,87 @@
         <translation>细分层级 %1 超出 0 到 %2 的范围</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="224"/>
+        <location filename="../src/model/value_checks.cpp" line="219"/>
+        <source>%1 keys on a ballistic track, which solves a free flight for each span; it may hold %2</source>
+        <translation>弹道轨迹上有 %1 个关键帧，它为每个区间求解一次自由飞行；最多可容纳 %2 个</translation>
+    </message>
+    <message>
+        <location filename="../src/model/value_checks.cpp" line="227"/>
         <source>%1 keys at %2 levels make %3 poses; the budget is %4</source>
         <translation>%1 个关键帧经 %2 层细分得到 %3 个姿态；上限为 %4</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="241"/>
+        <location filename="../src/model/value_checks.cpp" line="244"/>
         <source>a frame rate of %1 is above %2</source>
         <translation>帧率 %1 高于 %2</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="249"/>
+        <location filename="../src/model/value_checks.cpp" line="252"/>
         <source>the end time %1 does not come after the start time %2</source>
         <translation>结束时间 %1 不在开始时间 %2 之后</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="254"/>
+        <location filename="../src/model/value_checks.cpp" line="257"/>
         <source>%1 s at %2 fps make %3 frames; the budget is %4</source>
         <translation>%1 秒以 %2 fps 计为 %3 帧；上限为 %4</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="263"/>
+        <location filename="../src/model/value_checks.cpp" line="266"/>
         <source>a mesh position is not finite</source>
         <translation>网格的某个位置不是有限值</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="266"/>
+        <location filename="../src/model/value_checks.cpp" line="269"/>
         <source>a mesh normal is not finite</source>
         <translation>网格的某个法线不是有限值</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="268"/>
+        <location filename="../src/model/value_checks.cpp" line="271"/>
         <source>the mesh has %1 normals for %2 positions</source>
         <translation>网格有 %1 个法线，却有 %2 个位置</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="270"/>
+        <location filename="../src/model/value_checks.cpp" line="273"/>
         <source>the mesh&apos;s %1 indices do not make whole triangles</source>
         <translation>网格的 %1 个索引不能组成完整的三角形</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="273"/>
+        <location filename="../src/model/value_checks.cpp" line="276"/>
         <source>mesh index %1 is beyond its %2 positions</source>
         <translation>网格索引 %1 超出其 %2 个位置</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="282"/>
+        <location filename="../src/model/value_checks.cpp" line="285"/>
         <source>the skin has %1 joints, more than the %2 a mesh may follow</source>
         <translation>蒙皮有 %1 个关节，超过网格可跟随的 %2 个</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="285"/>
+        <location filename="../src/model/value_checks.cpp" line="288"/>
         <source>skin joint %1 is 0 or named twice</source>
         <translation>蒙皮关节 %1 为 0 或被重复指定</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="287"/>
+        <location filename="../src/model/value_checks.cpp" line="290"/>
         <source>the skin has %1 inverse bind matrices for %2 joints</source>
         <translation>蒙皮为 %2 个关节提供了 %1 个逆绑定矩阵</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="291"/>
+        <location filename="../src/model/value_checks.cpp" line="294"/>
         <source>the inverse bind matrix of skin joint %1 is not a finite affine transform</source>
         <translation>蒙皮关节 %1 的逆绑定矩阵不是有限的仿射变换</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="294"/>
+        <location filename="../src/model/value_checks.cpp" line="297"/>
         <source>the skin has %1 joint sets and %2 weight sets for %3 positions</source>
         <translation>蒙皮为 %3 个位置提供了 %1 组关节和 %2 组权重</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="301"/>
+        <location filename="../src/model/value_checks.cpp" line="304"/>
         <source>skin vertex %1 names joint %2 of %3</source>
         <translation>蒙皮顶点 %1 指向 %3 个关节中的第 %2 个</translation>
     </message>
     <message>
-        <location filename="../src/model/value_checks.cpp" line="304"/>
+        <location filename="../src/model/value_checks.cpp" line="307"/>
         <source>the weights of skin vertex %1 are not finite, ≥ 0 and at most 1 in sum</source>
         <translation>蒙皮顶点 %1 的权重不是有限、≥ 0 且总和至多为 1 的数</translation>
     </message>
@@ -2022,15 +2078,41 @@
         <translation>质心不是有限点</translation>
     </message>
     <message>
-        <location filename="../src/model/object_mass.cpp" line="117"/>
+        <location filename="../src/model/object_mass.cpp" line="116"/>
         <source>the inertia needs six numbers: Ixx, Iyy, Izz, Ixy, Ixz, Iyz</source>
         <translation>惯性张量需要六个数：Ixx、Iyy、Izz、Ixy、Ixz、Iyz</translation>
+    </message>
+    <message>
+        <location filename="../src/model/flight_choices.cpp" line="25"/>
+        <source>%1 flight choices for %2 spans between the keys: one a span at most</source>
+        <translation>关键帧之间有 %2 个区间，却有 %1 个飞行选择：每个区间最多一个</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_json.cpp" line="74"/>
+        <source>&apos;%1&apos; is neither quaternion nor euler</source>
+        <translation>'%1' 既不是 quaternion 也不是 euler</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_json.cpp" line="79"/>
+        <source>&apos;%1&apos; is neither intrinsic nor extrinsic</source>
+        <translation>'%1' 既不是 intrinsic 也不是 extrinsic</translation>
+    </message>
+    <message>
+        <location filename="../src/model/project_json.cpp" line="84"/>
+        <source>&apos;%1&apos; is not an order of three axes</source>
+        <translation>'%1' 不是三个轴的顺序</translation>
     </message>
 </context>
 <context>
     <name>gyre::app::AddObjectActions</name>
     <message>
-        <location filename="../src/app/add_object_actions.cpp" line="49"/>
+        <location filename="../src/app/add_object_actions.cpp" line="41"/>
+        <location filename="../src/app/add_object_actions.cpp" line="57"/>
+        <source>Empty</source>
+        <translation>空物体</translation>
+    </message>
+    <message>
+        <location filename="../src/app/add_object_actions.cpp" line="65"/>
         <source>Add %1</source>
         <translation>添加%1</translation>
     </message>
@@ -2091,7 +2173,8 @@
         <translation>无法重建运动：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="55"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="48"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="66"/>
         <source>The trail could not be built: %1</source>
         <translation>无法生成频闪轨迹：%1</translation>
     </message>
@@ -2142,12 +2225,12 @@
 <context>
     <name>gyre::app::FitPanel</name>
     <message>
-        <location filename="../src/app/sketch/fit_panel.cpp" line="66"/>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="71"/>
         <source>Fitting…</source>
         <translation>正在拟合…</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/fit_panel.cpp" line="256"/>
+        <location filename="../src/app/sketch/fit_panel.cpp" line="276"/>
         <source>Not changed: %1.</source>
         <translation>未更改：%1。</translation>
     </message>
@@ -2379,84 +2462,94 @@
 <context>
     <name>gyre::app::InspectorWidget</name>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="78"/>
+        <location filename="../src/app/inspector_widget.cpp" line="79"/>
         <source>time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <location filename="../src/app/inspector_widget.cpp" line="81"/>
         <source>position x</source>
         <translation>位置 x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <location filename="../src/app/inspector_widget.cpp" line="81"/>
         <source>position y</source>
         <translation>位置 y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="80"/>
+        <location filename="../src/app/inspector_widget.cpp" line="81"/>
         <source>position z</source>
         <translation>位置 z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="83"/>
+        <location filename="../src/app/inspector_widget.cpp" line="84"/>
         <source>quaternion w</source>
         <translation>四元数 w</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="83"/>
+        <location filename="../src/app/inspector_widget.cpp" line="84"/>
         <source>quaternion x</source>
         <translation>四元数 x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="83"/>
+        <location filename="../src/app/inspector_widget.cpp" line="84"/>
         <source>quaternion y</source>
         <translation>四元数 y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="83"/>
+        <location filename="../src/app/inspector_widget.cpp" line="84"/>
         <source>quaternion z</source>
         <translation>四元数 z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="90"/>
+        <location filename="../src/app/inspector_widget.cpp" line="91"/>
         <source>matrix row %1, column %2</source>
         <translation>矩阵第 %1 行第 %2 列</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="93"/>
+        <location filename="../src/app/inspector_widget.cpp" line="94"/>
         <source>axis x</source>
         <translation>轴 x</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="93"/>
+        <location filename="../src/app/inspector_widget.cpp" line="94"/>
         <source>axis y</source>
         <translation>轴 y</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="93"/>
+        <location filename="../src/app/inspector_widget.cpp" line="94"/>
         <source>axis z</source>
         <translation>轴 z</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="93"/>
+        <location filename="../src/app/inspector_widget.cpp" line="94"/>
         <source>angle</source>
         <translation>角度</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="95"/>
+        <location filename="../src/app/inspector_widget.cpp" line="96"/>
         <source>first angle</source>
         <translation>第一个角</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="95"/>
+        <location filename="../src/app/inspector_widget.cpp" line="96"/>
         <source>second angle</source>
         <translation>第二个角</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="95"/>
+        <location filename="../src/app/inspector_widget.cpp" line="96"/>
         <source>third angle</source>
         <translation>第三个角</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="132"/>
+        <source>Quaternions</source>
+        <translation>四元数</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="133"/>
+        <source>Euler angles</source>
+        <translation>欧拉角</translation>
     </message>
     <message>
         <location filename="../src/app/euler_convention_choosers.cpp" line="29"/>
@@ -2469,70 +2562,75 @@
         <translation>内旋（随动轴）</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="150"/>
+        <location filename="../src/app/inspector_widget.cpp" line="158"/>
         <source>about %1 (°)</source>
         <translation>绕 %1（°）</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="164"/>
+        <location filename="../src/app/inspector_widget.cpp" line="183"/>
+        <source>The rotation mode was not changed: %1.</source>
+        <translation>旋转模式未更改：%1。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/inspector_widget.cpp" line="207"/>
         <source>%1, keyframe %2 of %3</source>
         <translation>%1，第 %2 个关键帧，共 %3 个</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="198"/>
+        <location filename="../src/app/inspector_widget.cpp" line="244"/>
         <source>Near gimbal lock (%1° from it): the first and third angles turn about almost the same axis, so only their sum (or difference) is determined. Small changes of the rotation can swing them widely.</source>
         <translation>接近万向节锁（相差 %1°）：第一个角和第三个角几乎绕同一根轴旋转，因此只有它们的和（或差）是确定的。旋转的微小变化可能使它们大幅摆动。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="240"/>
+        <location filename="../src/app/inspector_widget.cpp" line="286"/>
         <source>The keyframe was not moved: %1.</source>
         <translation>关键帧未移动：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="251"/>
+        <location filename="../src/app/inspector_widget.cpp" line="297"/>
         <source>The constraint was not changed: %1.</source>
         <translation>约束未更改：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="259"/>
+        <location filename="../src/app/inspector_widget.cpp" line="305"/>
         <source>The position was not changed: %1.</source>
         <translation>位置未更改：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="271"/>
-        <location filename="../src/app/inspector_widget.cpp" line="294"/>
-        <location filename="../src/app/inspector_widget.cpp" line="320"/>
-        <location filename="../src/app/inspector_widget.cpp" line="343"/>
+        <location filename="../src/app/inspector_widget.cpp" line="317"/>
+        <location filename="../src/app/inspector_widget.cpp" line="340"/>
+        <location filename="../src/app/inspector_widget.cpp" line="366"/>
+        <location filename="../src/app/inspector_widget.cpp" line="389"/>
         <source>The rotation was not changed: %1.</source>
         <translation>旋转未更改：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="276"/>
+        <location filename="../src/app/inspector_widget.cpp" line="322"/>
         <source>The rotation was not changed: the zero quaternion is no rotation.</source>
         <translation>旋转未更改：零四元数不表示旋转。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="284"/>
+        <location filename="../src/app/inspector_widget.cpp" line="330"/>
         <source>The quaternion had length %1; it was scaled to length 1.</source>
         <translation>四元数的长度为 %1；已缩放为长度 1。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="301"/>
+        <location filename="../src/app/inspector_widget.cpp" line="347"/>
         <source>The rotation was not changed: the matrix has determinant %1, so it flattens or mirrors space and is not a rotation.</source>
         <translation>旋转未更改：矩阵的行列式为 %1，它会压扁或镜像空间，不是旋转。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="309"/>
+        <location filename="../src/app/inspector_widget.cpp" line="355"/>
         <source>The matrix was not a rotation (its rows were up to %1 from orthonormal); the nearest rotation was used.</source>
         <translation>该矩阵不是旋转（其各行与正交归一最多相差 %1）；已改用最接近的旋转。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="326"/>
+        <location filename="../src/app/inspector_widget.cpp" line="372"/>
         <source>The rotation was not changed: a zero axis names no direction to turn about.</source>
         <translation>旋转未更改：零轴没有给出旋转方向。</translation>
     </message>
     <message>
-        <location filename="../src/app/inspector_widget.cpp" line="331"/>
+        <location filename="../src/app/inspector_widget.cpp" line="377"/>
         <source>The axis had length %1; it was scaled to length 1.</source>
         <translation>轴的长度为 %1；已缩放为长度 1。</translation>
     </message>
@@ -2540,18 +2638,23 @@
 <context>
     <name>gyre::app::KeyClipboardActions</name>
     <message>
-        <location filename="../src/app/key_clipboard_actions.cpp" line="86"/>
-        <location filename="../src/app/key_clipboard_actions.cpp" line="127"/>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="55"/>
+        <source>Cannot copy the pose: %1</source>
+        <translation>无法复制姿势：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="93"/>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="134"/>
         <source>Cannot paste: %1</source>
         <translation>无法粘贴：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/key_clipboard_actions.cpp" line="107"/>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="114"/>
         <source>Cannot paste: no selected object has the name of a copied one</source>
         <translation>无法粘贴：没有所选物体与复制的物体同名</translation>
     </message>
     <message>
-        <location filename="../src/app/key_clipboard_actions.cpp" line="108"/>
+        <location filename="../src/app/key_clipboard_actions.cpp" line="115"/>
         <source>Cannot paste: no object is selected</source>
         <translation>无法粘贴：未选择物体</translation>
     </message>
@@ -2559,17 +2662,17 @@
 <context>
     <name>gyre::app::KeyframeActions</name>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="70"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="71"/>
         <source>Cannot add a keyframe: %1</source>
         <translation>无法添加关键帧：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="123"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="124"/>
         <source>This span has a single free flight</source>
         <translation>此区间只有一个自由飞行</translation>
     </message>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="125"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="126"/>
         <source>Cannot step the flight: %1</source>
         <translation>无法切换飞行：%1</translation>
     </message>
@@ -2675,177 +2778,192 @@
 <context>
     <name>gyre::app::MainWindow</name>
     <message>
-        <location filename="../src/app/main_window.cpp" line="71"/>
+        <location filename="../src/app/main_window.cpp" line="72"/>
         <source>Gyre projects (*.gyre)</source>
         <translation>Gyre 项目 (*.gyre)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="180"/>
+        <location filename="../src/app/main_window.cpp" line="181"/>
         <source>&amp;Undo</source>
         <translation>撤销(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="184"/>
+        <location filename="../src/app/main_window.cpp" line="185"/>
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="208"/>
+        <location filename="../src/app/main_window.cpp" line="209"/>
         <source>&lt;opened&gt;</source>
         <translation>&lt;已打开&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="285"/>
+        <location filename="../src/app/main_window.cpp" line="287"/>
         <source>Drawing the direction on the sphere needs OpenGL 3.3, which this display does not offer. The speed plot and the fit work without it.</source>
         <translation>在球面上绘制方向需要 OpenGL 3.3，而此显示环境不支持。速度图和拟合无需它也能工作。</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="304"/>
+        <location filename="../src/app/main_window.cpp" line="306"/>
         <source>The 3D viewport needs OpenGL 3.3, which this display does not offer. Editing, the panels and the timeline work without it.</source>
         <translation>3D 视口需要 OpenGL 3.3，而此显示环境不支持。编辑、面板和时间轴无需它也能工作。</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="357"/>
+        <location filename="../src/app/main_window.cpp" line="359"/>
         <source>Viewport frame rate while something moves, and the time to subdivide the trail: on the worker, and from the request to its arrival</source>
         <translation>有物体运动时视口的帧率，以及细分频闪轨迹所用的时间：在后台线程中的用时，以及从请求到送达的用时</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="367"/>
+        <location filename="../src/app/main_window.cpp" line="369"/>
         <source>%1 fps · subdivision %2 ms (%3 ms to arrive)</source>
         <translation>%1 fps · 细分 %2 毫秒（%3 毫秒后到达）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="411"/>
+        <location filename="../src/app/main_window.cpp" line="413"/>
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="413"/>
+        <location filename="../src/app/main_window.cpp" line="415"/>
         <source>%1[*] — Gyre</source>
         <translation>%1[*] — Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="428"/>
+        <location filename="../src/app/main_window.cpp" line="430"/>
         <source>Open Project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="446"/>
+        <location filename="../src/app/main_window.cpp" line="448"/>
         <source>Cannot open the project</source>
         <translation>无法打开项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="469"/>
+        <location filename="../src/app/main_window.cpp" line="471"/>
         <source>L-shaped cycle (ScrewBender)</source>
         <translation>L 形循环（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="470"/>
+        <location filename="../src/app/main_window.cpp" line="472"/>
         <source>Spinning top (sketched angular velocity)</source>
         <translation>陀螺（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="471"/>
+        <location filename="../src/app/main_window.cpp" line="473"/>
         <source>Letter M (sketched angular velocity)</source>
         <translation>字母 M（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="472"/>
+        <location filename="../src/app/main_window.cpp" line="474"/>
         <source>Hat (sketched angular velocity)</source>
         <translation>帽子（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="473"/>
+        <location filename="../src/app/main_window.cpp" line="475"/>
         <source>Falling leaf (sketched angular velocity)</source>
         <translation>飘落的树叶（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="474"/>
+        <location filename="../src/app/main_window.cpp" line="476"/>
         <source>Pen (sketched angular speed)</source>
         <translation>笔（草图绘制的角速度大小）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="475"/>
+        <location filename="../src/app/main_window.cpp" line="477"/>
         <source>Pendulum (ScrewBender)</source>
         <translation>摆（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="476"/>
+        <location filename="../src/app/main_window.cpp" line="478"/>
         <source>Spinning block (ScrewBender)</source>
         <translation>旋转的方块（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="477"/>
+        <location filename="../src/app/main_window.cpp" line="479"/>
         <source>Critter&apos;s non-planar cycle (ScrewBender)</source>
         <translation>小动物的非平面循环（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="496"/>
+        <location filename="../src/app/main_window.cpp" line="480"/>
+        <source>Tossed T-handle (free flight)</source>
+        <translation>抛出的 T 形手柄（自由飞行）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="481"/>
+        <source>Flipped coin (free flight)</source>
+        <translation>抛起的硬币（自由飞行）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="482"/>
+        <source>Thrown book (free flight)</source>
+        <translation>抛出的书（自由飞行）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/main_window.cpp" line="501"/>
         <source>Save Project As</source>
         <translation>项目另存为</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="509"/>
+        <location filename="../src/app/main_window.cpp" line="514"/>
         <source>Cannot save the project</source>
         <translation>无法保存项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="513"/>
+        <location filename="../src/app/main_window.cpp" line="518"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="522"/>
+        <location filename="../src/app/main_window.cpp" line="527"/>
         <source>Unsaved changes</source>
         <translation>未保存的更改</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="522"/>
+        <location filename="../src/app/main_window.cpp" line="527"/>
         <source>The project has unsaved changes. Save them first?</source>
         <translation>项目有未保存的更改。要先保存吗？</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="561"/>
+        <location filename="../src/app/main_window.cpp" line="566"/>
         <source>About Gyre</source>
         <translation>关于 Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="562"/>
+        <location filename="../src/app/main_window.cpp" line="567"/>
         <source>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Edit the rotations of animated rigid objects: every way of writing an orientation, interpolation that behaves, sketched angular velocity, and ScrewBender motions.&lt;/p&gt;&lt;p&gt;Built on Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 and QCustomPlot %8.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;编辑动画刚体的旋转：各种朝向表示方式、表现良好的插值、草图绘制的角速度，以及 ScrewBender 运动。&lt;/p&gt;&lt;p&gt;基于 Qt %2、Eigen %3.%4.%5、Ceres Solver %6、Assimp %7 和 QCustomPlot %8 构建。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="582"/>
+        <location filename="../src/app/main_window.cpp" line="587"/>
         <source>Autosave failed: %1</source>
         <translation>自动保存失败：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="591"/>
+        <location filename="../src/app/main_window.cpp" line="596"/>
         <source>an untitled project</source>
         <translation>一个未命名项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="594"/>
+        <location filename="../src/app/main_window.cpp" line="599"/>
         <source>Recover unsaved work</source>
         <translation>恢复未保存的工作</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="595"/>
+        <location filename="../src/app/main_window.cpp" line="600"/>
         <source>Gyre ended without saving changes to %1 (last copy %2). Recover them?</source>
         <translation>Gyre 结束时未保存对 %1 的更改（最后一次副本 %2）。要恢复吗？</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="610"/>
+        <location filename="../src/app/main_window.cpp" line="615"/>
         <source>Cannot recover</source>
         <translation>无法恢复</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="585"/>
+        <location filename="../src/app/main_window.cpp" line="590"/>
         <source>Autosave is off: %1</source>
         <translation>自动保存已关闭：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="212"/>
+        <location filename="../src/app/main_window.cpp" line="213"/>
         <source>Outliner</source>
         <translation>大纲</translation>
     </message>
@@ -2938,8 +3056,8 @@
         <translation>%1、%2、%3 kg·m²</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="146"/>
-        <location filename="../src/app/mass_properties_group.cpp" line="158"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="152"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="164"/>
         <source>Not changed: %1</source>
         <translation>未更改：%1</translation>
     </message>
@@ -3135,82 +3253,87 @@
 <context>
     <name>gyre::app::ScrewBenderPanel</name>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="25"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="26"/>
         <source>Slerp (great arcs)</source>
         <translation>Slerp（大圆弧）</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="27"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="28"/>
         <source>Nlerp (normalised straight lines)</source>
         <translation>Nlerp（归一化直线）</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="29"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="30"/>
         <source>Squad (smooth quaternion curve)</source>
         <translation>Squad（平滑四元数曲线）</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="31"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="32"/>
         <source>Hermite quaternion spline</source>
         <translation>Hermite 四元数样条</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="33"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="34"/>
         <source>Euler angles, linearly</source>
         <translation>欧拉角，线性</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="35"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="36"/>
+        <source>Euler angles, smooth (automatic tangents)</source>
+        <translation>欧拉角，平滑（自动切线）</translation>
+    </message>
+    <message>
+        <location filename="../src/app/screwbender_panel.cpp" line="38"/>
         <source>Screw motion (ScrewBender)</source>
         <translation>螺旋运动（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="37"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="40"/>
         <source>Ballistic (free flight between keys)</source>
         <translation>弹道（关键帧之间自由飞行）</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="47"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="50"/>
         <source>Four-point</source>
         <translation>四点</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="49"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="52"/>
         <source>Four-point B</source>
         <translation>四点 B</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="51"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="54"/>
         <source>Cubic B-spline</source>
         <translation>三次 B 样条</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="53"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="56"/>
         <source>Jarek</source>
         <translation>Jarek</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="137"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="146"/>
         <source>%1 from %2 keyframes</source>
         <translation>%1，来自 %2 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="138"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="147"/>
         <source>too many to hold, from %1 keyframes</source>
         <translation>过多无法容纳，来自 %1 个关键帧</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="150"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="159"/>
         <source>The interpolation was not changed: %1.</source>
         <translation>插值未更改：%1。</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="163"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="172"/>
         <source>Interpolate by Screws</source>
         <translation>以螺旋运动插值</translation>
     </message>
     <message>
-        <location filename="../src/app/screwbender_panel.cpp" line="187"/>
+        <location filename="../src/app/screwbender_panel.cpp" line="196"/>
         <source>The subdivision was not changed: %1.</source>
         <translation>细分未更改：%1。</translation>
     </message>
@@ -3368,56 +3491,111 @@
 <context>
     <name>gyre::app::TimeBar</name>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="25"/>
+        <location filename="../src/app/time_bar.cpp" line="29"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="44"/>
+        <location filename="../src/app/time_bar.cpp" line="50"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="51"/>
+        <location filename="../src/app/time_bar.cpp" line="57"/>
+        <source> m/s²</source>
+        <translation> m/s²</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="60"/>
+        <source>How fast the centre of mass of a ballistic track falls</source>
+        <translation>弹道轨迹的质心下落的快慢</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="62"/>
+        <source>+X</source>
+        <translation>+X</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="62"/>
+        <source>−X</source>
+        <translation>−X</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="62"/>
+        <source>+Y</source>
+        <translation>+Y</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="62"/>
+        <source>−Y</source>
+        <translation>−Y</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="62"/>
+        <source>+Z</source>
+        <translation>+Z</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="62"/>
+        <source>−Z</source>
+        <translation>−Z</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="64"/>
+        <source>The scene&apos;s up axis: gravity pulls the other way</source>
+        <translation>场景的向上轴：重力指向相反方向</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="67"/>
         <source>Frames per second</source>
         <translation>每秒帧数</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="52"/>
+        <location filename="../src/app/time_bar.cpp" line="68"/>
         <source>Where the scene starts</source>
         <translation>场景的开始时间</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="53"/>
+        <location filename="../src/app/time_bar.cpp" line="69"/>
         <source>Where the scene ends</source>
         <translation>场景的结束时间</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="55"/>
-        <location filename="../src/app/time_bar.cpp" line="91"/>
+        <location filename="../src/app/time_bar.cpp" line="71"/>
+        <location filename="../src/app/time_bar.cpp" line="113"/>
         <source>Time %1 s</source>
         <translation>时间 %1 秒</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="56"/>
-        <location filename="../src/app/time_bar.cpp" line="93"/>
+        <location filename="../src/app/time_bar.cpp" line="72"/>
+        <location filename="../src/app/time_bar.cpp" line="115"/>
         <source>Frame %1</source>
         <translation>第 %1 帧</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="63"/>
+        <location filename="../src/app/time_bar.cpp" line="79"/>
         <source>Rate</source>
         <translation>帧率</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="63"/>
+        <location filename="../src/app/time_bar.cpp" line="79"/>
         <source>Start</source>
         <translation>开始</translation>
     </message>
     <message>
-        <location filename="../src/app/time_bar.cpp" line="63"/>
+        <location filename="../src/app/time_bar.cpp" line="80"/>
         <source>End</source>
         <translation>结束</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="80"/>
+        <source>Gravity</source>
+        <translation>重力</translation>
+    </message>
+    <message>
+        <location filename="../src/app/time_bar.cpp" line="81"/>
+        <source>Up</source>
+        <translation>向上</translation>
     </message>
 </context>
 <context>
@@ -3440,6 +3618,39 @@
         <location filename="../src/app/language.cpp" line="59"/>
         <source>Gyre does not speak the language &quot;%1&quot; and speaks English instead.</source>
         <translation>Gyre 不支持语言“%1”，将改用英语。</translation>
+    </message>
+</context>
+<context>
+    <name>gyre::app::ViewPreferences</name>
+    <message>
+        <location filename="../src/app/view_preferences.cpp" line="61"/>
+        <source>Trail</source>
+        <translation>轨迹</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/app/view_preferences.cpp" line="65"/>
+        <source>%n Copies</source>
+        <translation><numerusform>%n 个副本</numerusform></translation>
+    </message>
+    <message>
+        <location filename="../src/app/view_preferences.cpp" line="68"/>
+        <source>Over the Whole Range</source>
+        <translation>覆盖整个范围</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/app/view_preferences.cpp" line="68"/>
+        <source>Every %n Frame(s) About the Current Frame</source>
+        <translation><numerusform>当前帧前后每 %n 帧</numerusform></translation>
+    </message>
+    <message>
+        <location filename="../src/app/view_preferences.cpp" line="71"/>
+        <source>Y Up</source>
+        <translation>Y 向上</translation>
+    </message>
+    <message>
+        <location filename="../src/app/view_preferences.cpp" line="74"/>
+        <source>Show the scene with y up, as Maya does: orbit about y, the grid across it, the front view along −z</source>
+        <translation>像 Maya 一样以 y 向上显示场景：绕 y 旋转，网格与其垂直，前视图沿 −z</translation>
     </message>
 </context>
 <context>
@@ -3520,12 +3731,13 @@
         <translation>设置拟合窗口</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/set_interpolation_command.cpp" line="23"/>
+        <location filename="../src/model/commands/set_interpolation_command.cpp" line="28"/>
         <source>Set Interpolation</source>
         <translation>设置插值</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/set_keyframe_orientation_command.cpp" line="13"/>
+        <location filename="../src/model/commands/set_keyframe_orientation_command.cpp" line="37"/>
+        <location filename="../src/model/commands/set_keyframe_orientation_command.cpp" line="45"/>
         <source>Rotate Keyframe</source>
         <translation>旋转关键帧</translation>
     </message>
@@ -3605,7 +3817,7 @@
         <translation>缩放关键帧</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/step_ballistic_solution_command.cpp" line="32"/>
+        <location filename="../src/model/commands/step_ballistic_solution_command.cpp" line="31"/>
         <source>Step Flight Solution</source>
         <translation>切换飞行解</translation>
     </message>
@@ -3618,6 +3830,21 @@
         <location filename="../src/model/commands/set_mass_override_command.cpp" line="15"/>
         <source>Mass From Mesh</source>
         <translation>由网格计算质量</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_rotation_mode_command.cpp" line="22"/>
+        <source>Set Rotation Mode</source>
+        <translation>设置旋转模式</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_physics_target_command.cpp" line="25"/>
+        <source>Set Physics Target</source>
+        <translation>设置物理目标</translation>
+    </message>
+    <message>
+        <location filename="../src/model/commands/set_gravity_command.cpp" line="10"/>
+        <source>Set Gravity</source>
+        <translation>设置重力</translation>
     </message>
 </context>
 <context>
@@ -3679,6 +3906,16 @@
         <location filename="../src/model/sketch_fit_problem.cpp" line="268"/>
         <source>The pattern cannot be repeated: %1</source>
         <translation>图案无法重复：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/model/physics_target.cpp" line="27"/>
+        <source>the physics target needs at least two keyframes</source>
+        <translation>物理目标至少需要两个关键帧</translation>
+    </message>
+    <message>
+        <location filename="../src/model/physics_target.cpp" line="35"/>
+        <source>the object is at rest at %1 s, so a free flight from there has no direction</source>
+        <translation>物体在 %1 秒时静止，因此从该处出发的自由飞行没有方向</translation>
     </message>
 </context>
 <context>
