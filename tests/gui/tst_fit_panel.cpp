@@ -411,7 +411,7 @@ private slots:
     void physicsTargetIsTheFreeFlightsOmegaInOneStep()
     {
         MassProperties body;
-        body.inertia = inertiaTensor(1.0, 2.0, 2.5, 0.2, 0.3, -0.1);
+        body.inertia = inertiaTensor({1.0, 2.0, 2.5, 0.2, 0.3, -0.1});
         document_->push(new model::SetMassOverrideCommand(*document_, object_, body));
         QUndoStack& stack = document_->undoStack();
         const model::SketchState before = track().sketch;

@@ -350,9 +350,8 @@ void TstSamples::theTHandleFlipsAboutItsIntermediateAxis()
     const model::SceneObject& object = scene.objects.at(0);
     QCOMPARE(object.track.interpolation, InterpolationMethod::Ballistic);
     QCOMPARE(object.track.keys.size(), std::size_t{2});
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(model::objectMassProperties(object).properties.inertia);
-    const Eigen::Vector3d intermediate = principal.eigenvectors().col(1); // eigenvalues increase
-    const model::TrackMotion motion(object.track, {}, model::flightBodyOf(object));
+    const Eigen::Vector3d intermediate = principalAxes(model::objectMassProperties(object).properties.inertia).axes.col(1);
+    const model::TrackMotion motion(object.track, model::flightBodyOf(object));
     const double launch = object.track.keys.front().time;
     const double landing = object.track.keys.back().time;
     const Eigen::Vector3d start = motion.at(launch).orientation * intermediate;
@@ -375,7 +374,7 @@ void TstSamples::flightSamplesKeepTheirMomentumAndEnergy()
         const model::SceneObject& object = sample.scene.objects.at(0);
         QCOMPARE(object.track.keys.size(), std::size_t{2});
         const Eigen::Matrix3d inertia = model::objectMassProperties(object).properties.inertia;
-        const model::TrackMotion motion(object.track, {}, model::flightBodyOf(object));
+        const model::TrackMotion motion(object.track, model::flightBodyOf(object));
         const double launch = object.track.keys.front().time;
         const double landing = object.track.keys.back().time;
         const auto momentum = [&](double time) {
