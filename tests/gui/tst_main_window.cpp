@@ -129,7 +129,7 @@ private slots:
     {
         SampleWindow sample;
         const QStringList files = QDir(QStringLiteral(":/samples")).entryList({QStringLiteral("*.gyre")});
-        QCOMPARE(files.size(), 9);
+        QCOMPARE(files.size(), 12);
         for (const QString& file : files) {
             const QString resourcePath = QStringLiteral(":/samples/") + file;
             action(sample.window, qPrintable(QFileInfo(file).baseName()))->trigger();

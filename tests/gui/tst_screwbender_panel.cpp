@@ -17,6 +17,8 @@
 #include <QSpinBox>
 #include <QTest>
 
+#include <iterator>
+
 using namespace gyre;
 using test::InspectedWindow;
 
@@ -42,12 +44,12 @@ private slots:
     {
         InspectedWindow inspected(0);
         QComboBox* methods = inspected.child<QComboBox>("interpolationCombo");
-        QCOMPARE(methods->count(), 7);
-        const InterpolationMethod expected[] = {InterpolationMethod::Slerp, InterpolationMethod::Nlerp,
-                                                InterpolationMethod::Squad, InterpolationMethod::Hermite,
-                                                InterpolationMethod::Euler, InterpolationMethod::Screw,
-                                                InterpolationMethod::Ballistic};
-        for (int index = 0; index < 7; ++index) {
+        const InterpolationMethod expected[] = {InterpolationMethod::Slerp,      InterpolationMethod::Nlerp,
+                                                InterpolationMethod::Squad,      InterpolationMethod::Hermite,
+                                                InterpolationMethod::Euler,      InterpolationMethod::EulerCubic,
+                                                InterpolationMethod::Screw,      InterpolationMethod::Ballistic};
+        QCOMPARE(methods->count(), int(std::size(expected)));
+        for (int index = 0; index < methods->count(); ++index) {
             const int steps = inspected.undoSteps();
             test::choose(methods, index);
             QCOMPARE(inspected.window().selection().selectedObject()->track.interpolation, expected[index]);
@@ -55,7 +57,7 @@ private slots:
         }
         inspected.window().document().undoStack().undo();
         QCOMPARE(inspected.window().selection().selectedObject()->track.interpolation, InterpolationMethod::Screw);
-        QCOMPARE(methods->currentIndex(), 5);
+        QCOMPARE(methods->currentIndex(), 6);
     }
 
     void eachSubdivisionSettingIsOneUndoStep()

@@ -314,7 +314,8 @@ void TstFbxExport::everyObjectAtEverySample()
         QVERIFY2(after, qPrintable(name + " is missing"));
         QCOMPARE(parentName(back, *after), before.parent == model::kNoObject ? QString() : exportedName.at(before.parent));
 
-        const std::vector<model::TimedPose> baked = model::bakeTrack(before.track, range);
+        const std::vector<model::TimedPose> baked =
+            model::bakeTrack(before.track, range, model::flightBodyOf(before), original.gravity);
         const model::TrackMotion imported(after->track);
         const bool moves = before.track.keys.size() > 1 || !before.track.sketch.fittedCurve.empty();
         if (moves) {
