@@ -48,6 +48,8 @@ public:
     // Samples the selected object's track within kIntervalMilliseconds if the view is on screen,
     // else once it is shown again.
     void schedule() { refresh_.request(); }
+    // Whether a sampling has been posted and its curves are not yet shown.
+    bool isSampling() const { return !job_.isIdle(); }
 
 private:
     void sampleNow()

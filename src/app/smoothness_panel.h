@@ -51,6 +51,8 @@ public:
     Eigen::Vector3d point() const;
 
     QCustomPlot* plot() const { return plot_; }
+    // Whether curves asked for are still on their way (SelectedTrackSampler::isSampling).
+    bool isSampling() const { return sampler_.isSampling(); }
     QCPGraph* graph(Quantity quantity, Component component) const;
 
 signals:

@@ -165,12 +165,10 @@ private slots:
         // Qt keeps a dock tabbed behind another visible, out of the window.
         QTRY_VERIFY(panel_->visibleRegion().isEmpty());
         QVERIFY(panel_->isVisible());
-        QSignalSpy updated(panel_, &app::SmoothnessPanel::curvesUpdated);
         // Curves asked for while the panel was in front may still be on their way (a posted sampling
         // is shown when it ends): the drag starts once none is.
-        for (int settled = 0; updated.wait(2 * kInterval); ++settled)
-            QVERIFY(settled < 5);
-        updated.clear();
+        QTRY_VERIFY_WITH_TIMEOUT(!panel_->isSampling(), 30000);
+        QSignalSpy updated(panel_, &app::SmoothnessPanel::curvesUpdated);
         QSignalSpy replotted(panel_->plot(), &QCustomPlot::afterReplot);
         model::Document& document = window_->document();
         const model::ObjectId object = window_->selection().object();
