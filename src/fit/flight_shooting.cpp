@@ -8,11 +8,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <mutex>
-#include <cmath>
-#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -133,7 +133,8 @@ public:
 };
 
 // A seed iterated with coarse flights, each component of ω₀ kept within `bound` so that no seed wanders off to
-// flights of many turns (each costlier to integrate than the last); nothing when it did not reach kCandidateError.
+// flights of many turns (each costlier to integrate than the last); nothing unless its coarse flight ends within
+// 1e-6 rad of the key (SeedProgress stops it at kCandidateError; the iteration cap may stop it a little short).
 std::optional<Eigen::Vector3d> candidateFrom(const FlightSpan& span, const Eigen::Vector3d& seed, double bound)
 {
     std::array<double, 3> unknowns{seed.x(), seed.y(), seed.z()};
@@ -184,7 +185,7 @@ std::optional<FlightSolution> polished(const FlightSpan& span, const Eigen::Vect
     const double keyError = 2.0 * r.norm();
     if (!omega.allFinite() || !(keyError <= kFlightKeyTolerance))
         return std::nullopt;
-    const Eigen::Matrix3d world = span.start.toRotationMatrix();
+    const Eigen::Matrix3d world = span.start.normalized().toRotationMatrix();
     const Eigen::Vector3d momentum = world * span.inertia * world.transpose() * omega;
     return FlightSolution{omega, 0.5 * momentum.dot(omega), keyError};
 }
