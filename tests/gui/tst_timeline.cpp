@@ -53,12 +53,7 @@ private slots:
 
     void init()
     {
-        window_ = std::make_unique<app::MainWindow>();
-        window_->resize(1400, 900);
-        window_->show();
-        window_->openBundledSample();
-        window_->playback().pause();
-        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+        window_ = test::showMainWindow(test::WindowWait::Exposed, [](app::MainWindow& window) { window.openBundledSample(); });
         timeline_ = window_->findChild<app::TimelineWidget*>();
         QVERIFY(timeline_ != nullptr);
         QVERIFY(timeline_->isVisible());
