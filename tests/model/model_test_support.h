@@ -58,9 +58,9 @@ public:
     explicit RandomEdits(unsigned seed);
 
     // A random command for the document as it is, or null when this kind has nothing to act on
-    // (no objects, no keys, a key already at the time to key). With some probability the command repeats the previous kind and target,
-    // so that drags merge. May throw std::invalid_argument where the command refuses the edit, as a
-    // reparenting under a descendant does.
+    // (no objects, no keys, a key already at the time to key). With some probability the command
+    // repeats the previous kind and target, so that drags merge. May throw std::invalid_argument where
+    // the command refuses the edit, as a reparenting under a descendant does.
     std::unique_ptr<QUndoCommand> command(Document& document, EditKind kind);
     // The kind of the next edit; imports give way to deletions once the scene has enough objects,
     // so that every step stays cheap to compare.
