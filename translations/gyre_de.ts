@@ -3661,11 +3661,6 @@
 <context>
     <name>gyre::model::Command</name>
     <message>
-        <location filename="../src/model/commands/add_keyframe_command.cpp" line="40"/>
-        <source>Add Keyframe</source>
-        <translation>Schlüsselbild hinzufügen</translation>
-    </message>
-    <message>
         <location filename="../src/model/commands/add_stroke_command.cpp" line="11"/>
         <source>Add Stroke</source>
         <translation>Strich hinzufügen</translation>
@@ -3704,11 +3699,6 @@
         <location filename="../src/model/commands/set_keyframe_time_command.cpp" line="33"/>
         <source>Move Keyframe</source>
         <translation>Schlüsselbild verschieben</translation>
-    </message>
-    <message>
-        <location filename="../src/model/commands/remove_keyframe_command.cpp" line="10"/>
-        <source>Remove Keyframe</source>
-        <translation>Schlüsselbild entfernen</translation>
     </message>
     <message>
         <location filename="../src/model/commands/rename_object_command.cpp" line="10"/>

@@ -3656,11 +3656,6 @@
 <context>
     <name>gyre::model::Command</name>
     <message>
-        <location filename="../src/model/commands/add_keyframe_command.cpp" line="40"/>
-        <source>Add Keyframe</source>
-        <translation>添加关键帧</translation>
-    </message>
-    <message>
         <location filename="../src/model/commands/add_stroke_command.cpp" line="11"/>
         <source>Add Stroke</source>
         <translation>添加笔画</translation>
@@ -3699,11 +3694,6 @@
         <location filename="../src/model/commands/set_keyframe_time_command.cpp" line="33"/>
         <source>Move Keyframe</source>
         <translation>移动关键帧</translation>
-    </message>
-    <message>
-        <location filename="../src/model/commands/remove_keyframe_command.cpp" line="10"/>
-        <source>Remove Keyframe</source>
-        <translation>移除关键帧</translation>
     </message>
     <message>
         <location filename="../src/model/commands/rename_object_command.cpp" line="10"/>

@@ -18,6 +18,10 @@ namespace {
 
 // Masses and moments of hand-sized to human-sized bodies in six places: to the milligram and the 10 g·cm².
 constexpr int kMassDecimals = 6;
+// A computed inertia tensor's entries that are zero in truth come out as rounding noise of about 1e-16 of
+// its largest entry (a box turned a quarter turn: (Ixx − Iyy)·sin·cos with cos ≈ 6e-17). Entries and principal
+// moments below the largest entry × this read as 0; at a large body's scale the noise would show in six places.
+constexpr double kInertiaNoise = 1e-9;
 
 std::vector<QLineEdit*> lineEdits(int count, QWidget* parent)
 {
@@ -111,11 +115,11 @@ void MassPropertiesGroup::showSelectedObject()
     mass_->show({properties.mass});
     centre_->show({properties.centre.x(), properties.centre.y(), properties.centre.z()});
     const InertiaComponents inertia = inertiaComponents(properties.inertia);
-    inertia_->show(std::vector<double>(inertia.begin(), inertia.end()));
+    const double noise = kInertiaNoise * properties.inertia.cwiseAbs().maxCoeff();
+    inertia_->show(std::vector<double>(inertia.begin(), inertia.end()), noise);
     const Eigen::Vector3d moments = principalAxes(properties.inertia).moments;
-    principal_->setText(tr("%1, %2, %3 kg·m²")
-                            .arg(roundedNumberText(moments[0], kMassDecimals), roundedNumberText(moments[1], kMassDecimals),
-                                 roundedNumberText(moments[2], kMassDecimals)));
+    const auto momentText = [noise](double moment) { return roundedNumberText(moment, kMassDecimals, noise); };
+    principal_->setText(tr("%1, %2, %3 kg·m²").arg(momentText(moments[0]), momentText(moments[1]), momentText(moments[2])));
 }
 
 void MassPropertiesGroup::applyTyped(bool typed)

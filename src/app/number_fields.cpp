@@ -40,12 +40,12 @@ NumberFields::NumberFields(std::vector<QLineEdit*> fields, QStringList names, in
     });
 }
 
-void NumberFields::show(const std::vector<double>& values)
+void NumberFields::show(const std::vector<double>& values, double zeroBelow)
 {
     Q_ASSERT(values.size() == fields_.size());
     shown_ = values;
     for (std::size_t i = 0; i < fields_.size(); ++i) {
-        fields_[i]->setText(roundedNumberText(values[i], decimals_));
+        fields_[i]->setText(roundedNumberText(values[i], decimals_, zeroBelow));
         fields_[i]->setToolTip(tr("Exact value: %1").arg(QString::fromStdString(formatNumber(values[i]))));
         fields_[i]->setCursorPosition(0);
     }
@@ -86,8 +86,10 @@ void NumberFields::finishIfEdited()
         emit editingFinished();
 }
 
-QString roundedNumberText(double value, int decimals)
+QString roundedNumberText(double value, int decimals, double zeroBelow)
 {
+    if (std::abs(value) < zeroBelow)
+        return QStringLiteral("0");
     if (!(std::abs(value) < kLargestFixedNotation))
         return QString::fromStdString(formatNumber(value));
     QString text = QString::number(value, 'f', decimals);

@@ -24,8 +24,9 @@ public:
     const std::vector<QLineEdit*>& fields() const { return fields_; }
 
     // Shows `values`, one per field, rounded, with the exact value in each field's tool tip; the
-    // fields are then unedited.
-    void show(const std::vector<double>& values);
+    // fields are then unedited. A value smaller in magnitude than `zeroBelow` reads as 0 (the rounding
+    // noise of a computed value), yet the field still gives back its exact value.
+    void show(const std::vector<double>& values, double zeroBelow = 0.0);
     // Empties the fields: there is nothing to show.
     void clear();
 
@@ -50,7 +51,7 @@ private:
 };
 
 // `value` with at most `decimals` places and no trailing zeros, as "90", "0.707107" or "-1.5"; never
-// "-0". Values too large for fixed notation are written in full.
-QString roundedNumberText(double value, int decimals);
+// "-0", and "0" when |value| < zeroBelow. Values too large for fixed notation are written in full.
+QString roundedNumberText(double value, int decimals, double zeroBelow = 0.0);
 
 } // namespace gyre::app

@@ -1,5 +1,8 @@
 #include "gui_test_support.h"
 
+#include "model/commands/import_objects_command.h"
+#include "model/commands/set_time_range_command.h"
+
 #include <QAbstractButton>
 #include <QApplication>
 #include <QFileDialog>
@@ -12,6 +15,7 @@
 #include <QTimer>
 
 #include <ctime>
+#include <utility>
 
 namespace gyre::test {
 
@@ -31,6 +35,34 @@ void pollForDialog(std::function<void(QWidget*)> answer, int attemptsLeft)
 }
 
 } // namespace
+
+std::unique_ptr<app::MainWindow> showMainWindow(WindowWait wait, const std::function<void(app::MainWindow&)>& open)
+{
+    auto window = std::make_unique<app::MainWindow>();
+    window->resize(1400, 900);
+    window->show();
+    open(*window);
+    window->playback().pause(); // a sample opens playing
+    // Xvfb has no window manager to activate the window; asking for it is enough.
+    if (wait == WindowWait::Active)
+        window->activateWindow();
+    const bool shown = wait == WindowWait::Active ? QTest::qWaitForWindowActive(window.get())
+                                                  : QTest::qWaitForWindowExposed(window.get());
+    if (!shown)
+        qFatal("The main window was not shown");
+    return window;
+}
+
+std::vector<model::ObjectId> importAtStart(model::Document& document, std::vector<model::SceneObject> objects,
+                                           const model::TimeRange& range)
+{
+    auto* import = new model::ImportObjectsCommand(document, std::move(objects));
+    const std::vector<model::ObjectId> ids = import->ids();
+    document.push(import);
+    document.push(new model::SetTimeRangeCommand(document, range));
+    document.undoStack().clear();
+    return ids;
+}
 
 void useTestSettings()
 {

@@ -1,6 +1,11 @@
 #pragma once
-// What the GUI tests share: answering the modal dialogs the real code paths open, and settings kept
-// apart from the user's.
+// What the GUI tests share: the main window set up for a test, answering the modal dialogs the real
+// code paths open, and settings kept apart from the user's.
+
+#include "app/main_window.h"
+#include "model/commands/object_fields.h"
+#include "model/document.h"
+#include "model/scene.h"
 
 #include <QPointF>
 #include <QString>
@@ -12,10 +17,25 @@
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
 namespace gyre::test {
+
+// How a test waits for the main window it shows: until it is on screen, or until it is also active, so
+// that shortcuts and the keyboard focus work as they do for the artist.
+enum class WindowWait { Exposed, Active };
+
+// The main window at 1400 × 900, shown, with `open` called on it to load what the test works on (a
+// sample, a project, imported objects), playback paused after that, and waited for as `wait` says.
+// Ends the test program if the window never shows.
+std::unique_ptr<app::MainWindow> showMainWindow(WindowWait wait, const std::function<void(app::MainWindow&)>& open);
+
+// Imports `objects` (batch ids 1..n, as ImportObjectsCommand takes them) into `document` and sets the
+// scene's time range, as the start of a test: the undo stack is empty after. Returns the objects' ids.
+std::vector<model::ObjectId> importAtStart(model::Document& document, std::vector<model::SceneObject> objects,
+                                           const model::TimeRange& range);
 
 // Keeps QSettings and QStandardPaths in a test location and starts with empty settings; call at the
 // start of initTestCase.

@@ -12,11 +12,10 @@
 #include "core/torque_free.h"
 #include "gui_test_support.h"
 #include "model/sketch_fit_problem.h"
-#include "model/commands/add_keyframe_command.h"
 #include "model/commands/add_stroke_command.h"
 #include "model/commands/edit_stroke_command.h"
 #include "model/commands/import_objects_command.h"
-#include "model/commands/remove_keyframe_command.h"
+#include "model/commands/replace_keyframes_command.h"
 #include "model/commands/set_fit_parameter_command.h"
 #include "model/commands/set_fit_window_command.h"
 #include "model/commands/set_interpolation_command.h"
@@ -27,6 +26,7 @@
 #include "model/commands/toggle_keyframe_constraint_command.h"
 #include "model/document.h"
 #include "model/gesture.h"
+#include "model/key_edits.h"
 #include "model/scene_motion.h"
 #include "model/track_evaluation.h"
 
@@ -532,7 +532,8 @@ private slots:
 
         model::Keyframe added = track().keys.back();
         added.time = 5.0;
-        document_->push(new model::AddKeyframeCommand(*document_, object_, added));
+        document_->push(new model::ReplaceKeyframesCommand(*document_, {{object_, model::withKeys(track().keys, {added})}},
+                                                           model::ReplaceKeyframesCommand::Edit::Insert));
         QCOMPARE(keys->rowCount(), 6);
         QCOMPARE(keys->item(5, 0)->text(), QStringLiteral("5.000"));
         QCOMPARE(keys->item(5, 1)->checkState(), Qt::Checked);
@@ -546,7 +547,8 @@ private slots:
         auto* keys = panel_->findChild<QTableWidget*>(QStringLiteral("keyTable"));
         QCOMPARE(keys->rowCount(), 5);
         window_->hide();
-        document_->push(new model::RemoveKeyframeCommand(*document_, object_, 4));
+        document_->push(new model::ReplaceKeyframesCommand(*document_, {{object_, model::withoutKeys(track().keys, {4})}},
+                                                           model::ReplaceKeyframesCommand::Edit::Delete));
         document_->push(new model::SetFitWindowCommand(*document_, object_, std::pair(3.5, 4.0)));
         QCoreApplication::processEvents();
         QCOMPARE(keys->rowCount(), 5);

@@ -11,9 +11,7 @@
 #include "app/main_window.h"
 #include "gui_test_support.h"
 #include "inspected_window.h"
-#include "model/commands/import_objects_command.h"
 #include "model/commands/set_keyframe_orientation_command.h"
-#include "model/commands/set_time_range_command.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -72,17 +70,9 @@ private slots:
 
     void init()
     {
-        window_ = std::make_unique<app::MainWindow>();
-        window_->resize(1400, 900);
-        window_->show();
-        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
-        window_->playback().pause();
-        model::Document& document = window_->document();
-        auto* import = new model::ImportObjectsCommand(document, {spinningTop()});
-        document.push(import);
-        object_ = import->ids().front();
-        document.push(new model::SetTimeRangeCommand(document, model::TimeRange{24.0, 0.0, 4.0}));
-        document.undoStack().clear();
+        window_ = test::showMainWindow(test::WindowWait::Exposed, [this](app::MainWindow& window) {
+            object_ = test::importAtStart(window.document(), {spinningTop()}, model::TimeRange{24.0, 0.0, 4.0}).front();
+        });
         window_->selection().selectObject(object_);
         panel_ = window_->findChild<app::GraphEditorPanel*>();
         QVERIFY(panel_ != nullptr);

@@ -6,6 +6,7 @@
 #include "inspected_window.h"
 
 #include "gui_test_support.h"
+#include "model/commands/set_mass_override_command.h"
 #include "model/object_mass.h"
 
 #include <QCheckBox>
@@ -334,6 +335,47 @@ private slots:
         document.undoStack().undo();
         QCOMPARE(document.object(inspected.object())->massOverride->mass, 2.5);
         QCOMPARE(shownNumber(mass), 2.5);
+    }
+
+    // The Body group shows the rounding noise of a tensor as 0 and keeps the exact value behind it; a small
+    // product of inertia that is really there still shows.
+    void theInertiaShowsNoRoundingNoise()
+    {
+        InspectedWindow inspected(kQuarterTurnKey);
+        model::Document& document = inspected.window().document();
+        inspected.child<QScrollArea>("fieldsScrollArea")->ensureWidgetVisible(inspected.child<QWidget>("massPropertiesGroup"));
+        QLineEdit* ixx = inspected.field("inertiaEdit0");
+        QLineEdit* ixy = inspected.field("inertiaEdit3");
+
+        // A ship-sized block, 100,000 t and 300 × 40 × 30 m, turned a quarter turn about z: R·D·Rᵀ, whose
+        // Ixy is 0 in truth but (Ixx − Iyy)·sin·cos with cos ≈ 6e-17 in doubles, about 1e-17 of the largest
+        // entry and yet large enough to show in six places.
+        const double mass = 1e8;
+        const Eigen::Vector3d moments = mass / 12.0 * Eigen::Vector3d(40.0 * 40.0 + 30.0 * 30.0, 300.0 * 300.0 + 30.0 * 30.0,
+                                                                      300.0 * 300.0 + 40.0 * 40.0);
+        const Eigen::Matrix3d turn = Eigen::AngleAxisd(radians(90.0), Eigen::Vector3d::UnitZ()).toRotationMatrix();
+        const Eigen::Matrix3d product = turn * moments.asDiagonal() * turn.transpose();
+        const Eigen::Matrix3d turned = (product + product.transpose()) / 2.0;
+        QVERIFY(std::abs(turned(0, 1)) >= 1e-6);
+        QVERIFY(std::abs(turned(0, 1)) < 1e-15 * moments.maxCoeff());
+        document.push(new model::SetMassOverrideCommand(document, inspected.object(), MassProperties{mass, Eigen::Vector3d::Zero(), turned}));
+        QTRY_COMPARE(ixy->text(), QStringLiteral("0"));
+        for (const char* name : {"inertiaEdit4", "inertiaEdit5"})
+            QCOMPARE(inspected.field(name)->text(), QStringLiteral("0"));
+        QVERIFY(std::abs(shownNumber(ixx) - moments[1]) <= 1e-12 * moments[1]);
+
+        // Typing Ixx alone stores the other entries as they were, the noise too: the text is not the value.
+        const double typedIxx = 7.6e11;
+        enter(ixx, QStringLiteral("760000000000"));
+        const Eigen::Matrix3d& stored = document.object(inspected.object())->massOverride->inertia;
+        QCOMPARE(stored(0, 0), typedIxx);
+        QCOMPARE(stored(0, 1), turned(0, 1));
+        QCOMPARE(ixy->text(), QStringLiteral("0"));
+
+        // A body of moments 1, 2, 2.5 kg·m² with Ixy at 1e-4 of the largest shows it.
+        document.push(new model::SetMassOverrideCommand(document, inspected.object(),
+                                                        MassProperties{1.0, Eigen::Vector3d::Zero(), inertiaTensor({1.0, 2.0, 2.5, 2.5e-4, 0.0, 0.0})}));
+        QTRY_COMPARE(ixy->text(), QStringLiteral("0.00025"));
     }
 
     void theConstraintCheckBoxTogglesTheKeyAsOneUndoStep()

@@ -77,15 +77,10 @@ private slots:
 
     void init()
     {
-        window_ = std::make_unique<app::MainWindow>();
-        window_->resize(1400, 900);
-        window_->show();
         const QString path = dir_.filePath(QStringLiteral("two.gyre"));
         model::writeProject(path, twoObjects());
-        QVERIFY(window_->openProject(path));
-        window_->playback().pause();
-        window_->activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+        window_ = test::showMainWindow(test::WindowWait::Active,
+                                       [&path](app::MainWindow& window) { QVERIFY(window.openProject(path)); });
         timeline_ = window_->findChild<app::TimelineWidget*>();
         QVERIFY(timeline_ != nullptr && timeline_->isVisible());
         timeline_->setFocus();

@@ -9,13 +9,11 @@
 #include "app/sketch/magnitude_plot.h"
 #include "gui_test_support.h"
 #include "model/commands/apply_fit_result_command.h"
-#include "model/commands/import_objects_command.h"
 #include "model/commands/retime_keyframes_command.h"
 #include "model/commands/set_keyframe_orientation_command.h"
 #include "model/commands/set_keyframe_position_command.h"
 #include "model/commands/set_fit_window_command.h"
 #include "model/commands/set_magnitude_curve_command.h"
-#include "model/commands/set_time_range_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
 #include "model/document.h"
 #include "model/track_evaluation.h"
@@ -97,11 +95,7 @@ private slots:
     void init()
     {
         document_ = std::make_unique<model::Document>();
-        auto* import = new model::ImportObjectsCommand(*document_, {spinningObject()});
-        document_->undoStack().push(import);
-        object_ = import->ids().front();
-        document_->undoStack().push(new model::SetTimeRangeCommand(*document_, model::TimeRange{24.0, 0.0, 6.0}));
-        document_->undoStack().clear();
+        object_ = test::importAtStart(*document_, {spinningObject()}, model::TimeRange{24.0, 0.0, 6.0}).front();
         selection_ = std::make_unique<app::Selection>(*document_);
         selection_->selectObject(object_);
         plot_ = std::make_unique<app::MagnitudePlot>(*document_, *selection_);

@@ -365,6 +365,13 @@ private slots:
         QCOMPARE(window.selection().key(), std::optional<std::size_t>(3));
         QCOMPARE(keys[3].time, 2.5);
         QCOMPARE(window.document().undoStack().count(), 1);
+        QCOMPARE(window.document().undoStack().undoText(), QStringLiteral("Insert Keyframes"));
+        // Keyed again at a time it has a key at, the object keeps that key: no step.
+        const model::Keyframe keyed = keys[3];
+        action(window, "actionAddKeyframe")->trigger();
+        QCOMPARE(keys.size(), std::size_t{7});
+        QCOMPARE(keys[3].pose.orientation.coeffs(), keyed.pose.orientation.coeffs());
+        QCOMPARE(window.document().undoStack().count(), 1);
 
         QAction* constrain = action(window, "actionToggleConstraint");
         QVERIFY(constrain->isChecked());

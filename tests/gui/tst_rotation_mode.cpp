@@ -8,8 +8,6 @@
 #include "app/main_window.h"
 #include "gui_test_support.h"
 #include "inspected_window.h"
-#include "model/commands/import_objects_command.h"
-#include "model/commands/set_time_range_command.h"
 #include "model/track_evaluation.h"
 
 #include <QComboBox>
@@ -61,18 +59,9 @@ private slots:
 
     void init()
     {
-        window_ = std::make_unique<app::MainWindow>();
-        window_->resize(1400, 900);
-        window_->show();
-        window_->activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(window_.get()));
-        window_->playback().pause();
-        model::Document& document = window_->document();
-        auto* import = new model::ImportObjectsCommand(document, {unturnedBlock()});
-        document.push(import);
-        object_ = import->ids().front();
-        document.push(new model::SetTimeRangeCommand(document, model::TimeRange{24.0, 0.0, 3.0}));
-        document.undoStack().clear();
+        window_ = test::showMainWindow(test::WindowWait::Active, [this](app::MainWindow& window) {
+            object_ = test::importAtStart(window.document(), {unturnedBlock()}, model::TimeRange{24.0, 0.0, 3.0}).front();
+        });
         window_->selection().selectKey(object_, 0);
     }
 

@@ -15,12 +15,13 @@
 #include "fit/angular_velocity_target.h"
 #include "gui_test_support.h"
 #include "model/sketch_fit_problem.h"
-#include "model/commands/add_keyframe_command.h"
 #include "model/commands/add_stroke_command.h"
 #include "model/commands/set_keyframe_position_command.h"
 #include "model/commands/apply_fit_result_command.h"
 #include "model/commands/import_objects_command.h"
+#include "model/commands/replace_keyframes_command.h"
 #include "model/document.h"
+#include "model/key_edits.h"
 #include "model/track_evaluation.h"
 
 #include <QApplication>
@@ -520,7 +521,8 @@ private:
         model::Keyframe key = track().keys.back();
         key.time = kLastKey + 0.5;
         key.pose.orientation = Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitY()) * key.pose.orientation;
-        document_->undoStack().push(new model::AddKeyframeCommand(*document_, object_, key));
+        document_->undoStack().push(new model::ReplaceKeyframesCommand(*document_, {{object_, model::withKeys(track().keys, {key})}},
+                                                                       model::ReplaceKeyframesCommand::Edit::Insert));
     }
 
     double lastMotionTime() const

@@ -7,10 +7,10 @@
 #include "app/main_window.h"
 #include "app/timeline_widget.h"
 #include "gui_test_support.h"
-#include "model/commands/add_keyframe_command.h"
 #include "model/commands/replace_keyframes_command.h"
 #include "model/commands/set_interpolation_command.h"
 #include "model/commands/set_time_range_command.h"
+#include "model/key_edits.h"
 #include "model/object_mass.h"
 
 #include <QApplication>
@@ -53,12 +53,7 @@ private slots:
 
     void init()
     {
-        window_ = std::make_unique<app::MainWindow>();
-        window_->resize(1400, 900);
-        window_->show();
-        window_->openBundledSample();
-        window_->playback().pause();
-        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+        window_ = test::showMainWindow(test::WindowWait::Exposed, [](app::MainWindow& window) { window.openBundledSample(); });
         timeline_ = window_->findChild<app::TimelineWidget*>();
         QVERIFY(timeline_ != nullptr);
         QVERIFY(timeline_->isVisible());
@@ -230,7 +225,9 @@ private slots:
 
         model::Keyframe key = window_->selection().selectedObject()->track.keys[kDraggedKey];
         key.time = 2.5; // between the keys at 2 s and 3 s
-        document.undoStack().push(new model::AddKeyframeCommand(document, window_->selection().object(), key));
+        const model::ObjectId object = window_->selection().object();
+        document.undoStack().push(new model::ReplaceKeyframesCommand(
+            document, {{object, model::withKeys(document.object(object)->track.keys, {key})}}, model::ReplaceKeyframesCommand::Edit::Insert));
         QVERIFY(markerPixels(timeline_->grab().toImage(), centre) > 0);
         QCOMPARE(timeline_->staticLayerBuilds(), builds + 1);
 

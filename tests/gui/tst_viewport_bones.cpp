@@ -11,8 +11,9 @@
 #include "built_scene_worker.h"
 #include "gui_test_support.h"
 #include "jobs/scene_file_jobs.h"
-#include "model/commands/add_keyframe_command.h"
 #include "model/commands/reparent_object_command.h"
+#include "model/commands/replace_keyframes_command.h"
+#include "model/key_edits.h"
 #include "model/project_file.h"
 #include "model/scene_motion.h"
 
@@ -240,7 +241,9 @@ private slots:
         QCOMPARE(added.name, QStringLiteral("Empty"));
         QCOMPARE(session.window.selection().object(), empty);
         // Away from the skeleton, seen from the front.
-        document.push(new model::AddKeyframeCommand(document, empty, model::Keyframe{0.0, Pose{Eigen::Quaterniond::Identity(), {30, 0, 0}}}));
+        const model::Keyframe away{0.0, Pose{Eigen::Quaterniond::Identity(), {30, 0, 0}}};
+        document.push(new model::ReplaceKeyframesCommand(document, {{empty, model::withKeys(added.track.keys, {away})}},
+                                                         model::ReplaceKeyframesCommand::Edit::Insert));
         session.trigger("actionViewFront");
         const auto onScreen = [&](const Eigen::Vector3d& world) {
             const Eigen::Vector3d point = session.viewport->camera().project(world);

@@ -1,6 +1,5 @@
 #include "model_test_support.h"
 
-#include "model/commands/add_keyframe_command.h"
 #include "model/commands/add_stroke_command.h"
 #include "model/commands/apply_euler_filter_command.h"
 #include "model/commands/apply_fit_result_command.h"
@@ -9,7 +8,6 @@
 #include "model/commands/erase_stroke_command.h"
 #include "model/commands/import_objects_command.h"
 #include "model/commands/set_keyframe_time_command.h"
-#include "model/commands/remove_keyframe_command.h"
 #include "model/commands/rename_object_command.h"
 #include "model/commands/set_mass_override_command.h"
 #include "model/commands/set_object_visibility_command.h"
@@ -26,15 +24,31 @@
 #include "model/commands/set_subdivision_command.h"
 #include "model/commands/set_time_range_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
+#include "model/key_edits.h"
+
+#include <algorithm>
 
 namespace gyre::model::test {
 
 namespace {
 
-// Times on a grid of 1/8 s, so that new keys sometimes land on existing ones and are refused.
+// Times on a grid of 1/8 s, so that new keys sometimes land on existing ones, which the window's Add
+// Keyframe leaves as they are.
 double gridTime(std::mt19937& engine) { return std::uniform_int_distribution<int>(0, 80)(engine) / 8.0; }
 
 } // namespace
+
+std::unique_ptr<ReplaceKeyframesCommand> insertKeyframe(Document& document, ObjectId id, const Keyframe& key)
+{
+    return std::make_unique<ReplaceKeyframesCommand>(document, ObjectKeys{{id, withKeys(document.object(id)->track.keys, {key})}},
+                                                     ReplaceKeyframesCommand::Edit::Insert);
+}
+
+std::unique_ptr<ReplaceKeyframesCommand> deleteKeyframe(Document& document, ObjectId id, std::size_t key)
+{
+    return std::make_unique<ReplaceKeyframesCommand>(document, ObjectKeys{{id, withoutKeys(document.object(id)->track.keys, {key})}},
+                                                     ReplaceKeyframesCommand::Edit::Delete);
+}
 
 RandomEdits::RandomEdits(unsigned seed)
     : engine_(seed)
@@ -225,8 +239,12 @@ std::unique_ptr<QUndoCommand> RandomEdits::command(Document& document, EditKind 
             return std::make_unique<ReparentObjectInPlaceCommand>(document, id, parent);
         return std::make_unique<ReparentObjectCommand>(document, id, parent);
     }
-    case EditKind::AddKeyframe:
-        return std::make_unique<AddKeyframeCommand>(document, id, keyframe(gridTime(engine_)));
+    case EditKind::InsertKeyframe: {
+        const double time = gridTime(engine_);
+        if (std::any_of(track.keys.begin(), track.keys.end(), [time](const Keyframe& key) { return key.time == time; }))
+            return nullptr;
+        return insertKeyframe(document, id, keyframe(time));
+    }
     case EditKind::RetimeKeyframes:
         return std::make_unique<RetimeKeyframesCommand>(document, id, number(0.5, 2), number(-1, 1));
     case EditKind::ApplyEulerFilter:
@@ -270,8 +288,8 @@ std::unique_ptr<QUndoCommand> RandomEdits::command(Document& document, EditKind 
         return nullptr;
     const std::size_t key = pick(keys);
     switch (kind) {
-    case EditKind::RemoveKeyframe:
-        return std::make_unique<RemoveKeyframeCommand>(document, id, key);
+    case EditKind::DeleteKeyframe:
+        return deleteKeyframe(document, id, key);
     case EditKind::MoveKeyframe: {
         const double earlier = key > 0 ? track.keys[key - 1].time : track.keys[key].time - 1;
         const double later = key + 1 < keys ? track.keys[key + 1].time : track.keys[key].time + 1;

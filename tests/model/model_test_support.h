@@ -2,12 +2,14 @@
 // Random documents for the model's tests: scenes, objects and every kind of undo command, all from a
 // seeded generator so that a failure can be replayed.
 
+#include "model/commands/replace_keyframes_command.h"
 #include "model/document.h"
 #include "model/scene.h"
 
 #include <QUndoCommand>
 
 #include <array>
+#include <cstddef>
 #include <memory>
 #include <random>
 #include <vector>
@@ -23,8 +25,8 @@ enum class EditKind {
     SetMassOverride,
     ReparentObject,
     ReparentObjectInPlace,
-    AddKeyframe,
-    RemoveKeyframe,
+    InsertKeyframe,
+    DeleteKeyframe,
     MoveKeyframe,
     RetimeKeyframes,
     ApplyEulerFilter,
@@ -45,14 +47,20 @@ enum class EditKind {
 };
 inline constexpr int kEditKinds = static_cast<int>(EditKind::SetTimeRange) + 1;
 
+// What the window's Add Keyframe and Delete Keyframe do to one object (app/keyframe_actions.cpp): its
+// keys replaced by the same keys with `key` put in, in time order (replacing a key at its time), or
+// with the key at index `key` taken out. The object must exist.
+std::unique_ptr<ReplaceKeyframesCommand> insertKeyframe(Document& document, ObjectId id, const Keyframe& key);
+std::unique_ptr<ReplaceKeyframesCommand> deleteKeyframe(Document& document, ObjectId id, std::size_t key);
+
 class RandomEdits {
 public:
     explicit RandomEdits(unsigned seed);
 
     // A random command for the document as it is, or null when this kind has nothing to act on
-    // (no objects, no keys). With some probability the command repeats the previous kind and target,
-    // so that drags merge. May throw std::invalid_argument where the command refuses the edit, as a
-    // reparenting under a descendant does.
+    // (no objects, no keys, a key already at the time to key). With some probability the command
+    // repeats the previous kind and target, so that drags merge. May throw std::invalid_argument where
+    // the command refuses the edit, as a reparenting under a descendant does.
     std::unique_ptr<QUndoCommand> command(Document& document, EditKind kind);
     // The kind of the next edit; imports give way to deletions once the scene has enough objects,
     // so that every step stays cheap to compare.

@@ -2,10 +2,11 @@
 // changed, a change never shows in another copy, and reading never copies. A scene copied whole (the
 // autosave's snapshot) shares every track's keys with the document.
 
-#include "model/commands/add_keyframe_command.h"
 #include "model/commands/import_objects_command.h"
+#include "model/commands/replace_keyframes_command.h"
 #include "model/commands/set_keyframe_orientation_command.h"
 #include "model/document.h"
+#include "model/key_edits.h"
 #include "model/shared_vector.h"
 
 #include <QTest>
@@ -118,8 +119,14 @@ void TstSharedVector::aCopyIsReadWhileTheDocumentChanges()
             for (const Keyframe& key : snapshot.objects[0].track.keys)
                 sum += key.time;
     });
-    for (int edit = 0; edit < 20; ++edit)
-        document.undoStack().push(new AddKeyframeCommand(document, 1, Keyframe{20'000.5 + edit, {}, true}));
+    // Each edit keys the object as the window's Add Keyframe does (a new list of keys) and turns one
+    // key, which writes into the document's own copy of the elements.
+    const Eigen::Quaterniond turned(Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitZ()));
+    for (int edit = 0; edit < 20; ++edit) {
+        const std::vector<Keyframe> keyed = withKeys(document.object(1)->track.keys, {Keyframe{20'000.5 + edit, {}, true}});
+        document.undoStack().push(new ReplaceKeyframesCommand(document, {{1, keyed}}, ReplaceKeyframesCommand::Edit::Insert));
+        document.undoStack().push(new SetKeyframeOrientationCommand(document, 1, static_cast<std::size_t>(edit), turned));
+    }
     reader.join();
     const double n = 20'000.0;
     QCOMPARE(sum, 20.0 * n * (n - 1.0) / 2.0);

@@ -1,6 +1,6 @@
 #pragma once
-// The shape of commands that add or remove one entry of a list an object holds (its keyframes, its
-// direction strokes): one direction inserts the entry at its index, the other removes it again.
+// The shape of commands that add or remove one entry of a list an object holds (its direction
+// strokes): one direction inserts the entry at its index, the other removes it again.
 //
 // A List (object_fields.h) says which list:
 //   using Entry = ...;

@@ -165,12 +165,6 @@ struct GravityField {
     static void set(Scene& scene, const FieldTarget&, Value value) { scene.gravity = value; }
 };
 
-struct KeyframeList {
-    using Entry = Keyframe;
-    static constexpr Changes kChanges = Change::Keyframes;
-    static std::vector<Entry>& of(Scene& scene, ObjectId object) { return objectIn(scene, object).track.keys.edit(); }
-};
-
 struct StrokeList {
     using Entry = DirectionStroke;
     static constexpr Changes kChanges = Change::Sketch;
