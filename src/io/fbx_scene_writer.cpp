@@ -191,6 +191,8 @@ private:
             modelIds.push_back(id);
             connect(id, object.parent ? modelIds[*object.parent] : 0);
             model(objects, object, id);
+            if (object.empty)
+                connect(emptyAttribute(objects, object.name), id);
             if (object.mesh) {
                 auto [entry, isNew] = geometryIds.try_emplace(object.mesh, 0);
                 if (isNew)
@@ -220,6 +222,17 @@ private:
         vectorProperty(properties, "Lcl Scaling", Eigen::Vector3d::Ones(), false);
         model.addChild("Shading").addBool(true);
         model.addChild("Culling").addString("CullingOff");
+    }
+
+    // An Empty's NodeAttribute of type Null, as Blender writes its Empties; its importer makes a Null
+    // Model with it an Empty (one without any, too), which Assimp reads as a node without meshes.
+    std::int64_t emptyAttribute(Node& objects, const std::string& name)
+    {
+        const std::int64_t id = ids_.next();
+        Node& attribute = fbxObject(objects, "NodeAttribute", id, name, "NodeAttribute", "Null");
+        attribute.addChild("TypeFlags").addString("Null");
+        ++counts_["NodeAttribute"];
+        return id;
     }
 
     std::int64_t geometry(Node& objects, const model::Mesh& mesh, const std::string& name)

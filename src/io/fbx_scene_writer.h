@@ -8,7 +8,8 @@
 //   30, 48, 50, 60, 72, 96, 100, 120 fps), else custom, with CustomFrameRate the frame rate either
 //   way; TimeSpanStart/Stop the scene's range.
 // - One Model per object (Mesh or Null), its parent by an OO connection, its pose at the start time
-//   as Lcl Translation and Lcl Rotation; one Geometry per mesh (shared by the objects that share it):
+//   as Lcl Translation and Lcl Rotation; an Empty's Model with a NodeAttribute Null (TypeFlags Null),
+//   as Blender writes its Empties; one Geometry per mesh (shared by the objects that share it):
 //   Vertices, PolygonVertexIndex (the last corner of each triangle written as −index − 1) and normals
 //   by vertex.
 // - One AnimationStack "Gyre" with one AnimationLayer; for every moving object an AnimationCurveNode

@@ -1,6 +1,7 @@
 # Makes the Blender fixtures of tests/data: a scene of three animated objects exported with Blender's
 # default FBX, glTF (glb) and Collada settings, with Blender's own evaluation of every object's world
-# pose at every frame, and a glb whose two animations move the same object.
+# pose at every frame; a glb whose two animations move the same object; and an animated Empty with an
+# animated mesh object as its child, exported to FBX and glb, with Blender's evaluation likewise.
 #
 #   blender -b --factory-startup --python tests/interop/make_fixtures.py -- OUTDIR
 #
@@ -136,6 +137,24 @@ def build_two_actions_one_object():
     return scene
 
 
+def build_empty_and_mesh():
+    # An Empty (plain axes, Euler XYZ) that turns and slides, carrying a tetrahedron that turns on it.
+    scene = empty_scene()
+    pivot = bpy.data.objects.new("Pivot", None)
+    pivot.empty_display_type = 'PLAIN_AXES'
+    scene.collection.objects.link(pivot)
+    pivot.rotation_mode = 'XYZ'
+    key_rotations(pivot, [(1, (0, 0, 0)), (5, (20, -10, 60)), (11, (45, 30, 170))])
+    key_locations(pivot, [(1, (1, 0, 0)), (11, (1, 2, 0.5))])
+    blade = tetrahedron("Blade")
+    blade.rotation_mode = 'QUATERNION'
+    blade.parent = pivot
+    blade.location = (0, 0, 1)
+    key_rotations(blade, [(1, (0, 0, 0)), (6, (70, 0, 20)), (11, (100, 40, 90))])
+    assert pivot.type == 'EMPTY' and blade.type == 'MESH'
+    return scene, [pivot, blade]
+
+
 def main():
     folder = output_folder()
     scene, objects = build_three_objects()
@@ -144,6 +163,11 @@ def main():
     export_all(folder, "blender_three_objects")
     build_two_actions_one_object()
     bpy.ops.export_scene.gltf(filepath=os.path.join(folder, "blender_two_actions.glb"))
+    scene, objects = build_empty_and_mesh()
+    with open(os.path.join(folder, "blender_empty_and_mesh.json"), "w") as out:
+        json.dump(evaluated_poses(scene, objects), out, indent=1)
+    bpy.ops.export_scene.fbx(filepath=os.path.join(folder, "blender_empty_and_mesh.fbx"))
+    bpy.ops.export_scene.gltf(filepath=os.path.join(folder, "blender_empty_and_mesh.glb"))
 
 
 main()

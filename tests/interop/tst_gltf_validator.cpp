@@ -1,7 +1,7 @@
 // Every glTF Gyre writes passes the Khronos glTF validator (npm gltf-validator, run by node through
 // validate_gltf.mjs), and Gyre imports it back with its sampled times: the bundled samples and
 // hostile projects (keys 1e-9 s apart, times near 1e6 s, times before 0 s, a single key, an object
-// without a mesh, UTF-8 names), each exported with the real gyre-cli as .glb and as .gltf.
+// without a mesh, an Empty, UTF-8 names), each exported with the real gyre-cli as .glb and as .gltf.
 
 #include "cli_test_support.h"
 #include "model/project_file.h"
@@ -113,6 +113,15 @@ model::Scene meshless()
                  0.0, 1.0, 25.0);
 }
 
+// An Empty that moves, carrying a mesh object: a node without a mesh, which comes back an Empty.
+model::Scene withEmpty()
+{
+    model::Scene result = meshless();
+    result.objects[0].name = QStringLiteral("Pivot");
+    result.objects[0].empty = true;
+    return result;
+}
+
 model::Scene utf8Names()
 {
     return scene({object(1, QString::fromUtf8("Würfel ✓"), {{0.0, pose(0.0, kZ, {0, 0, 0})}, {1.0, pose(2.0, kZ, {0, 0, 0})}}),
@@ -182,7 +191,7 @@ private slots:
         const std::pair<const char*, model::Scene> hostile[] = {
             {"keys 1e-9 s apart", closeKeys()}, {"times near 1e6 s", farTimes()},
             {"times before 0 s", negativeTimes()}, {"a single key", singleKey()},
-            {"an object without a mesh", meshless()}, {"UTF-8 names", utf8Names()}};
+            {"an object without a mesh", meshless()}, {"an Empty", withEmpty()}, {"UTF-8 names", utf8Names()}};
         for (const auto& [name, project] : hostile) {
             const QString file = path(QString(name).replace(' ', '_') + ".gyre");
             model::writeProject(file, project);
@@ -210,6 +219,8 @@ private slots:
             for (const model::SceneObject& object : original.objects) {
                 const model::SceneObject* again = named(imported, object.name);
                 QVERIFY2(again, qPrintable(object.name));
+                if (object.empty)
+                    QVERIFY2(again->empty, qPrintable(object.name + " is no longer an Empty"));
                 if (object.track.keys.size() < 2 && object.track.sketch.fittedCurve.empty())
                     continue; // written without animation
                 const std::vector<double> expected = timesAsReadBack(object.track, original);

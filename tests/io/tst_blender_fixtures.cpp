@@ -1,7 +1,8 @@
 // Scenes Blender 3.4 exported with its default FBX, glTF (glb) and Collada settings
 // (tests/interop/make_fixtures.py, files in tests/data): three objects, each with its own action
 // (quaternion, Euler XYZ, Euler ZXY and parented), at 30 fps, and Blender's own evaluation of every
-// object's world pose at every frame. Every object must move as Blender evaluated it.
+// object's world pose at every frame; and an animated Empty carrying an animated mesh object, as FBX and
+// glb. Every object must move as Blender evaluated it, and the Empty come in as an Empty.
 
 #include "core/core_test_support.h"
 #include "io/scene_import.h"
@@ -40,9 +41,9 @@ struct BlenderFrame {
     std::map<QString, Pose> poses;
 };
 
-std::vector<BlenderFrame> blenderFrames()
+std::vector<BlenderFrame> blenderFrames(const QString& fileName)
 {
-    QFile file(dataFile(QStringLiteral("blender_three_objects.json")));
+    QFile file(dataFile(fileName));
     if (!file.open(QIODevice::ReadOnly))
         qFatal("cannot read %s", qPrintable(file.fileName()));
     const QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
@@ -85,6 +86,39 @@ double degrees(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b)
 // exporters turn its world by the inverse for Y-up formats.
 const Eigen::Quaterniond kYUpToZUp(Eigen::AngleAxisd(kPi / 2.0, Eigen::Vector3d::UnitX()));
 
+// Every one of `names` moves (turns more than 20° from the first frame to the last), and at every
+// frame its world pose in `scene` is Blender's within `toleranceDegrees` and 1e-4 m; `framesTurned`
+// as in everyObjectMovesAsBlenderEvaluatedIt. A failed check fails the calling test (QVERIFY2 returns).
+void checkAgainstBlender(const model::Scene& scene, const std::vector<BlenderFrame>& frames, const QStringList& names,
+                         double toleranceDegrees, bool framesTurned, const QString& file)
+{
+    double worstDegrees = 0.0;
+    double worstMetres = 0.0;
+    for (const QString& name : names) {
+        const model::SceneObject* object = objectNamed(scene, name);
+        QVERIFY2(object, qPrintable(name));
+        // Every animated object moves: its orientation at the last frame is not its first.
+        const double last = (frames.back().frame - frames.front().frame) / 30.0;
+        QVERIFY2(degrees(worldPose(scene, *object, 0.0).orientation, worldPose(scene, *object, last).orientation) > 20.0,
+                 qPrintable(name));
+        for (const BlenderFrame& frame : frames) {
+            const double time = (frame.frame - frames.front().frame) / 30.0;
+            const Pose gyre = worldPose(scene, *object, time);
+            const Pose& blender = frame.poses.at(name);
+            const Eigen::Quaterniond expected = framesTurned ? blender.orientation * kYUpToZUp : blender.orientation;
+            const double angle = degrees(gyre.orientation, expected);
+            const double distance = (gyre.position - blender.position).norm();
+            worstDegrees = std::max(worstDegrees, angle);
+            worstMetres = std::max(worstMetres, distance);
+            QVERIFY2(angle <= toleranceDegrees,
+                     qPrintable(QStringLiteral("%1 frame %2: %3°").arg(name).arg(frame.frame).arg(angle)));
+            // In metres: a centimetre FBX must not arrive 100 times too large.
+            QVERIFY2(distance <= 1e-4, qPrintable(QStringLiteral("%1 frame %2: %3 m").arg(name).arg(frame.frame).arg(distance)));
+        }
+    }
+    qInfo("%s: worst %.6f° and %.2e m over %zu frames", qPrintable(file), worstDegrees, worstMetres, frames.size());
+}
+
 } // namespace
 
 class TstBlenderFixtures : public QObject {
@@ -97,6 +131,8 @@ private slots:
     void overlappingAnimationsNeedAChoice();
     void optionsOverrideWhatTheFileSays();
     void colladaUnitAndUpAxisComeFromItsAsset();
+    void blendersEmptyIsAnEmpty_data();
+    void blendersEmptyIsAnEmpty();
 };
 
 void TstBlenderFixtures::everyObjectMovesAsBlenderEvaluatedIt_data()
@@ -122,33 +158,9 @@ void TstBlenderFixtures::everyObjectMovesAsBlenderEvaluatedIt()
     QCOMPARE(scene.fps, 30.0);
     QCOMPARE(scene.startTime, 0.0);
     QCOMPARE(scene.objects.size(), std::size_t{3});
-    const std::vector<BlenderFrame> frames = blenderFrames();
+    const std::vector<BlenderFrame> frames = blenderFrames(QStringLiteral("blender_three_objects.json"));
     QCOMPARE(frames.size(), std::size_t{11});
-    double worstDegrees = 0.0;
-    double worstMetres = 0.0;
-    for (const QString& name : kObjects) {
-        const model::SceneObject* object = objectNamed(scene, name);
-        QVERIFY2(object, qPrintable(name));
-        // Every animated object moves: its orientation at the last frame is not its first.
-        const double last = (frames.back().frame - frames.front().frame) / 30.0;
-        QVERIFY2(degrees(worldPose(scene, *object, 0.0).orientation, worldPose(scene, *object, last).orientation) > 20.0,
-                 qPrintable(name));
-        for (const BlenderFrame& frame : frames) {
-            const double time = (frame.frame - frames.front().frame) / 30.0;
-            const Pose gyre = worldPose(scene, *object, time);
-            const Pose& blender = frame.poses.at(name);
-            const Eigen::Quaterniond expected = framesTurned ? blender.orientation * kYUpToZUp : blender.orientation;
-            const double angle = degrees(gyre.orientation, expected);
-            const double distance = (gyre.position - blender.position).norm();
-            worstDegrees = std::max(worstDegrees, angle);
-            worstMetres = std::max(worstMetres, distance);
-            QVERIFY2(angle <= toleranceDegrees,
-                     qPrintable(QStringLiteral("%1 frame %2: %3°").arg(name).arg(frame.frame).arg(angle)));
-            // In metres: a centimetre FBX must not arrive 100 times too large.
-            QVERIFY2(distance <= 1e-4, qPrintable(QStringLiteral("%1 frame %2: %3 m").arg(name).arg(frame.frame).arg(distance)));
-        }
-    }
-    qInfo("%s: worst %.6f° and %.2e m over %zu frames", qPrintable(file), worstDegrees, worstMetres, frames.size());
+    checkAgainstBlender(scene, frames, kObjects, toleranceDegrees, framesTurned, file);
 }
 
 void TstBlenderFixtures::blenderTakesGiveEachObjectItsOwnAction()
@@ -287,6 +299,38 @@ void TstBlenderFixtures::colladaUnitAndUpAxisComeFromItsAsset()
     const SceneImport xUp = importScene(variant("x.dae", R"(<unit meter="1"/>)", "<up_axis>X_UP</up_axis>"));
     QCOMPARE(xUp.file.values.up, UpAxis::Y);
     QCOMPARE(xUp.warnings.filter(QStringLiteral("its up axis is X_UP")).size(), 1);
+}
+
+void TstBlenderFixtures::blendersEmptyIsAnEmpty_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<double>("toleranceDegrees");
+    QTest::addColumn<bool>("framesTurned");
+    QTest::newRow("fbx") << "blender_empty_and_mesh.fbx" << 0.01 << false;
+    QTest::newRow("glb") << "blender_empty_and_mesh.glb" << 0.2 << true;
+}
+
+// Blender's animated Empty (a Null Model in FBX, a node without a mesh in glTF) with a mesh object as its
+// child: the Empty comes in as an Empty, the mesh object as none, and both move as Blender evaluated them.
+void TstBlenderFixtures::blendersEmptyIsAnEmpty()
+{
+    QFETCH(QString, file);
+    QFETCH(double, toleranceDegrees);
+    QFETCH(bool, framesTurned);
+    const model::Scene scene = importScene(dataFile(file)).scene;
+    QCOMPARE(scene.objects.size(), std::size_t{2});
+    const model::SceneObject* pivot = objectNamed(scene, QStringLiteral("Pivot"));
+    const model::SceneObject* blade = objectNamed(scene, QStringLiteral("Blade"));
+    QVERIFY(pivot && blade);
+    QVERIFY(pivot->empty);
+    QVERIFY(pivot->mesh == nullptr);
+    QVERIFY(!blade->empty);
+    QVERIFY(blade->mesh != nullptr);
+    QCOMPARE(blade->parent, pivot->id);
+    const std::vector<BlenderFrame> frames = blenderFrames(QStringLiteral("blender_empty_and_mesh.json"));
+    QCOMPARE(frames.size(), std::size_t{11});
+    checkAgainstBlender(scene, frames, {QStringLiteral("Pivot"), QStringLiteral("Blade")}, toleranceDegrees, framesTurned,
+                        file);
 }
 
 } // namespace gyre
