@@ -2,11 +2,15 @@
 // (tests/interop/make_fixtures.py, files in tests/data): three objects, each with its own action
 // (quaternion, Euler XYZ, Euler ZXY and parented), at 30 fps, and Blender's own evaluation of every
 // object's world pose at every frame; and an animated Empty carrying an animated mesh object, as FBX and
-// glb. Every object must move as Blender evaluated it, and the Empty come in as an Empty.
+// glb. Every object must move as Blender evaluated it, and the Empty come in as an Empty. A bar skinned to
+// a two-bone armature must deform under Gyre's skinning as Blender deformed it.
 
 #include "core/core_test_support.h"
 #include "io/scene_import.h"
+#include "model/motion_cache.h"
+#include "model/scene_motion.h"
 #include "model/scene_queries.h"
+#include "model/skinning.h"
 #include "model/track_evaluation.h"
 
 #include <QFile>
@@ -133,6 +137,7 @@ private slots:
     void colladaUnitAndUpAxisComeFromItsAsset();
     void blendersEmptyIsAnEmpty_data();
     void blendersEmptyIsAnEmpty();
+    void blendersSkinnedBarDeformsAsInBlender();
 };
 
 void TstBlenderFixtures::everyObjectMovesAsBlenderEvaluatedIt_data()
@@ -331,6 +336,60 @@ void TstBlenderFixtures::blendersEmptyIsAnEmpty()
     QCOMPARE(frames.size(), std::size_t{11});
     checkAgainstBlender(scene, frames, {QStringLiteral("Pivot"), QStringLiteral("Blade")}, toleranceDegrees, framesTurned,
                         file);
+}
+
+// Blender's bar weighted to a two-bone armature whose bones turn (glb): skinned by Gyre (model/skinning.h)
+// at each frame's time, every vertex lies within 1e-4 m of a vertex of Blender's evaluated mesh, and the
+// other way round. The bar deforms: a vertex moves more than 0.5 m.
+void TstBlenderFixtures::blendersSkinnedBarDeformsAsInBlender()
+{
+    QFile file(dataFile(QStringLiteral("blender_skinned_bar.json")));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonObject evaluation = QJsonDocument::fromJson(file.readAll()).object();
+    const model::Scene scene = importScene(dataFile(QStringLiteral("blender_skinned_bar.glb"))).scene;
+    const model::SceneObject* bar = objectNamed(scene, evaluation.value(QStringLiteral("object")).toString());
+    QVERIFY(bar && bar->mesh && !bar->mesh->skin.empty());
+    for (const QString& bone : {QStringLiteral("Upper"), QStringLiteral("Lower")}) {
+        const model::SceneObject* joint = objectNamed(scene, bone);
+        QVERIFY2(joint && !joint->empty, qPrintable(bone));
+    }
+    const model::SceneMotion motion(scene, [](const model::SceneObject& object) {
+        return std::make_shared<const model::SharedTrackMotion>(object.track);
+    });
+    const auto farthest = [](const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& others) {
+        double worst = 0.0;
+        for (const Eigen::Vector3d& p : points) {
+            double nearest = INFINITY;
+            for (const Eigen::Vector3d& q : others)
+                nearest = std::min(nearest, (p - q).norm());
+            worst = std::max(worst, nearest);
+        }
+        return worst;
+    };
+    const double fps = evaluation.value(QStringLiteral("fps")).toDouble();
+    const int start = evaluation.value(QStringLiteral("frame_start")).toInt();
+    std::vector<std::vector<Eigen::Vector3d>> blenderFrames;
+    double worst = 0.0;
+    for (const QJsonValue& entry : evaluation.value(QStringLiteral("frames")).toArray()) {
+        std::vector<Eigen::Vector3d> blender;
+        for (const QJsonValue& v : entry.toObject().value(QStringLiteral("vertices")).toArray())
+            blender.emplace_back(v[0].toDouble(), v[1].toDouble(), v[2].toDouble());
+        const double time = (entry.toObject().value(QStringLiteral("frame")).toInt() - start) / fps;
+        const Pose at = motion.worldPose(bar->id, time);
+        std::vector<Eigen::Vector3d> gyre;
+        for (const Eigen::Vector3f& p :
+             model::skinnedPositions(*bar->mesh, model::jointMatrices(bar->mesh->skin, bar->id, motion, time)))
+            gyre.push_back(at.apply(p.cast<double>()));
+        worst = std::max({worst, farthest(blender, gyre), farthest(gyre, blender)});
+        blenderFrames.push_back(std::move(blender));
+    }
+    QCOMPARE(blenderFrames.size(), std::size_t{11});
+    double moved = 0.0;
+    for (std::size_t v = 0; v < blenderFrames.front().size(); ++v)
+        moved = std::max(moved, (blenderFrames.back()[v] - blenderFrames.front()[v]).norm());
+    QVERIFY2(moved > 0.5, qPrintable(QString::number(moved)));
+    QVERIFY2(worst <= 1e-4, qPrintable(QStringLiteral("worst vertex %1 m").arg(worst)));
+    qInfo("skinned bar: worst vertex %.2e m over %zu frames", worst, blenderFrames.size());
 }
 
 } // namespace gyre
