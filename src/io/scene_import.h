@@ -26,7 +26,8 @@
 // - Scale: Gyre's tracks are rigid. A node's scale (its first scaling key when animated) is baked
 //   into its own mesh; a uniform scale also into its descendants' positions and meshes. A scale that
 //   changes over time, or that is not uniform on a node with children, is reported as a warning.
-// - Skinning, morph targets, cameras, lights and materials are not imported (warnings say so).
+// - Skinned meshes keep their skin (scene_import_skin.h). Morph targets, cameras, lights and materials
+//   are not imported (warnings say so).
 
 #include "core/name_table.h"
 #include "io/up_axis.h"
