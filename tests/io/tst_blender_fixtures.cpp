@@ -6,6 +6,7 @@
 // a two-bone armature must deform under Gyre's skinning as Blender deformed it.
 
 #include "core/core_test_support.h"
+#include "io/scene_export.h"
 #include "io/scene_import.h"
 #include "model/motion_cache.h"
 #include "model/scene_motion.h"
@@ -121,6 +122,59 @@ void checkAgainstBlender(const model::Scene& scene, const std::vector<BlenderFra
         }
     }
     qInfo("%s: worst %.6f° and %.2e m over %zu frames", qPrintable(file), worstDegrees, worstMetres, frames.size());
+}
+
+// Gyre's skinning of the object `evaluation` names against Blender's evaluated mesh at each of its
+// frames: the largest distance from a vertex of either to the nearest of the other, and how far Blender's
+// vertices move from the first frame to the last.
+struct SkinnedComparison {
+    bool skinned = false;
+    std::size_t frames = 0;
+    double worst = 0.0;
+    double moved = 0.0;
+};
+
+SkinnedComparison compareSkinning(const model::Scene& scene, const QJsonObject& evaluation)
+{
+    SkinnedComparison result;
+    const model::SceneObject* bar = objectNamed(scene, evaluation.value(QStringLiteral("object")).toString());
+    result.skinned = bar && bar->mesh && !bar->mesh->skin.empty();
+    if (!result.skinned)
+        return result;
+    const model::SceneMotion motion(scene, [](const model::SceneObject& object) {
+        return std::make_shared<const model::SharedTrackMotion>(object.track);
+    });
+    const auto farthest = [](const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& others) {
+        double worst = 0.0;
+        for (const Eigen::Vector3d& p : points) {
+            double nearest = INFINITY;
+            for (const Eigen::Vector3d& q : others)
+                nearest = std::min(nearest, (p - q).norm());
+            worst = std::max(worst, nearest);
+        }
+        return worst;
+    };
+    const double fps = evaluation.value(QStringLiteral("fps")).toDouble();
+    const int start = evaluation.value(QStringLiteral("frame_start")).toInt();
+    std::vector<Eigen::Vector3d> first;
+    for (const QJsonValue& entry : evaluation.value(QStringLiteral("frames")).toArray()) {
+        std::vector<Eigen::Vector3d> blender;
+        for (const QJsonValue& v : entry.toObject().value(QStringLiteral("vertices")).toArray())
+            blender.emplace_back(v[0].toDouble(), v[1].toDouble(), v[2].toDouble());
+        const double time = (entry.toObject().value(QStringLiteral("frame")).toInt() - start) / fps;
+        const Pose at = motion.worldPose(bar->id, time);
+        std::vector<Eigen::Vector3d> gyre;
+        for (const Eigen::Vector3f& p :
+             model::skinnedPositions(*bar->mesh, model::jointMatrices(bar->mesh->skin, bar->id, motion, time)))
+            gyre.push_back(at.apply(p.cast<double>()));
+        result.worst = std::max({result.worst, farthest(blender, gyre), farthest(gyre, blender)});
+        if (first.empty())
+            first = blender;
+        for (std::size_t v = 0; v < std::min(first.size(), blender.size()); ++v)
+            result.moved = std::max(result.moved, (blender[v] - first[v]).norm());
+        ++result.frames;
+    }
+    return result;
 }
 
 } // namespace
@@ -340,56 +394,31 @@ void TstBlenderFixtures::blendersEmptyIsAnEmpty()
 
 // Blender's bar weighted to a two-bone armature whose bones turn (glb): skinned by Gyre (model/skinning.h)
 // at each frame's time, every vertex lies within 1e-4 m of a vertex of Blender's evaluated mesh, and the
-// other way round. The bar deforms: a vertex moves more than 0.5 m.
+// other way round; so too after Gyre writes it as FBX (a Skin deformer, a Cluster per joint) and reads
+// that back. The bar deforms: a vertex moves more than 0.5 m.
 void TstBlenderFixtures::blendersSkinnedBarDeformsAsInBlender()
 {
     QFile file(dataFile(QStringLiteral("blender_skinned_bar.json")));
     QVERIFY(file.open(QIODevice::ReadOnly));
     const QJsonObject evaluation = QJsonDocument::fromJson(file.readAll()).object();
     const model::Scene scene = importScene(dataFile(QStringLiteral("blender_skinned_bar.glb"))).scene;
-    const model::SceneObject* bar = objectNamed(scene, evaluation.value(QStringLiteral("object")).toString());
-    QVERIFY(bar && bar->mesh && !bar->mesh->skin.empty());
     for (const QString& bone : {QStringLiteral("Upper"), QStringLiteral("Lower")}) {
         const model::SceneObject* joint = objectNamed(scene, bone);
         QVERIFY2(joint && !joint->empty, qPrintable(bone));
     }
-    const model::SceneMotion motion(scene, [](const model::SceneObject& object) {
-        return std::make_shared<const model::SharedTrackMotion>(object.track);
-    });
-    const auto farthest = [](const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& others) {
-        double worst = 0.0;
-        for (const Eigen::Vector3d& p : points) {
-            double nearest = INFINITY;
-            for (const Eigen::Vector3d& q : others)
-                nearest = std::min(nearest, (p - q).norm());
-            worst = std::max(worst, nearest);
-        }
-        return worst;
-    };
-    const double fps = evaluation.value(QStringLiteral("fps")).toDouble();
-    const int start = evaluation.value(QStringLiteral("frame_start")).toInt();
-    std::vector<std::vector<Eigen::Vector3d>> blenderFrames;
-    double worst = 0.0;
-    for (const QJsonValue& entry : evaluation.value(QStringLiteral("frames")).toArray()) {
-        std::vector<Eigen::Vector3d> blender;
-        for (const QJsonValue& v : entry.toObject().value(QStringLiteral("vertices")).toArray())
-            blender.emplace_back(v[0].toDouble(), v[1].toDouble(), v[2].toDouble());
-        const double time = (entry.toObject().value(QStringLiteral("frame")).toInt() - start) / fps;
-        const Pose at = motion.worldPose(bar->id, time);
-        std::vector<Eigen::Vector3d> gyre;
-        for (const Eigen::Vector3f& p :
-             model::skinnedPositions(*bar->mesh, model::jointMatrices(bar->mesh->skin, bar->id, motion, time)))
-            gyre.push_back(at.apply(p.cast<double>()));
-        worst = std::max({worst, farthest(blender, gyre), farthest(gyre, blender)});
-        blenderFrames.push_back(std::move(blender));
+    QTemporaryDir folder;
+    const QString fbx = folder.filePath(QStringLiteral("bar.fbx"));
+    exportScene(scene, fbx, SceneFormat::Fbx, scene.fps);
+    const model::Scene throughFbx = importScene(fbx).scene;
+    for (const model::Scene* skinned : {&scene, &throughFbx}) {
+        const SkinnedComparison compared = compareSkinning(*skinned, evaluation);
+        QVERIFY2(compared.skinned, "the bar has no skin");
+        QCOMPARE(compared.frames, std::size_t{11});
+        QVERIFY2(compared.moved > 0.5, qPrintable(QString::number(compared.moved)));
+        QVERIFY2(compared.worst <= 1e-4, qPrintable(QStringLiteral("worst vertex %1 m").arg(compared.worst)));
+        qInfo("skinned bar%s: worst vertex %.2e m over %zu frames", skinned == &scene ? "" : " through FBX", compared.worst,
+              compared.frames);
     }
-    QCOMPARE(blenderFrames.size(), std::size_t{11});
-    double moved = 0.0;
-    for (std::size_t v = 0; v < blenderFrames.front().size(); ++v)
-        moved = std::max(moved, (blenderFrames.back()[v] - blenderFrames.front()[v]).norm());
-    QVERIFY2(moved > 0.5, qPrintable(QString::number(moved)));
-    QVERIFY2(worst <= 1e-4, qPrintable(QStringLiteral("worst vertex %1 m").arg(worst)));
-    qInfo("skinned bar: worst vertex %.2e m over %zu frames", worst, blenderFrames.size());
 }
 
 } // namespace gyre
