@@ -70,6 +70,23 @@ PrincipalAxes checkedPrincipalAxes(const Eigen::Matrix3d& inertia)
 TorqueFreeMotion::TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::Quaterniond& startOrientation,
                                    const Eigen::Vector3d& startAngularVelocity, double duration, Solver solver,
                                    double tolerance)
+    : TorqueFreeMotion(inertia, startOrientation, startAngularVelocity, duration, solver, tolerance, Kept::EveryStep)
+{
+}
+
+Eigen::Quaterniond TorqueFreeMotion::endOrientation(const Eigen::Matrix3d& inertia,
+                                                    const Eigen::Quaterniond& startOrientation,
+                                                    const Eigen::Vector3d& startAngularVelocity, double duration,
+                                                    double tolerance)
+{
+    return TorqueFreeMotion(inertia, startOrientation, startAngularVelocity, duration, Solver::Automatic, tolerance,
+                            Kept::End)
+        .orientation(duration);
+}
+
+TorqueFreeMotion::TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::Quaterniond& startOrientation,
+                                   const Eigen::Vector3d& startAngularVelocity, double duration, Solver solver,
+                                   double tolerance, Kept kept)
     : start_(startOrientation.normalized())
     , startAngularVelocity_(startAngularVelocity)
     , duration_(duration)
@@ -99,19 +116,22 @@ TorqueFreeMotion::TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::
         return;
     }
 
-    integrate(tolerance);
+    integrate(tolerance, kept);
 }
 
 // The Dormand–Prince integration of p = q·V: seven rate evaluations a step. The first stage is not the last of
 // the step before (Dormand–Prince's "first same as last"): that one is at the step's unnormalised end, and each
 // accepted p is normalised. The stages run on plain arrays: this loop is all a span's solve does, thousands of
-// times.
-void TorqueFreeMotion::integrate(double tolerance)
+// times. Kept::End keeps the last step alone (orientation() then gives it at every time; only endOrientation
+// builds such a motion).
+void TorqueFreeMotion::integrate(double tolerance, Kept kept)
 {
     Eigen::Vector4d p = vectorOf(start_ * axes_);
-    steps_.push_back(stepAt(0.0, p));
+    if (kept == Kept::EveryStep || duration_ == 0.0)
+        steps_.push_back(stepAt(0.0, p));
     if (duration_ == 0.0)
         return;
+    std::size_t stepCount = 1;  // the start is the first
     const double fastest = momentum_.norm() * inverseMoments_.maxCoeff() + 1e-300;  // |ω| ≤ |L|/D_min throughout
     double h = std::min(duration_, 0.05 / fastest);
     double t = 0.0;
@@ -143,13 +163,16 @@ void TorqueFreeMotion::integrate(double tolerance)
         }
         t = (duration_ - (t + h) <= 1e-15 * duration_) ? duration_ : t + h;
         p = Eigen::Vector4d(at[0], at[1], at[2], at[3]).normalized();  // the seventh stage is the fifth-order step
-        steps_.push_back(stepAt(t, p));
-        if (steps_.size() > kMaxSteps)
+        if (kept == Kept::EveryStep)
+            steps_.push_back(stepAt(t, p));
+        if (++stepCount > kMaxSteps)
             throw std::invalid_argument("a free flight would need more than " + std::to_string(kMaxSteps) +
                                         " integration steps");
         rate(p.data(), k[0].data());
         h *= factor;
     }
+    if (kept == Kept::End)
+        steps_.push_back({duration_, p, Eigen::Vector4d::Zero(), Eigen::Vector4d::Zero()});
 }
 
 // ṗ = ½·p⊗(0, ω_p) with ω_p = D⁻¹·ℓ, ℓ = p⁻¹·L·p (the rotation by p/|p|: inside a step p strays from unit

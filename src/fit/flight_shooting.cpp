@@ -9,23 +9,33 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <map>
+#include <mutex>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 namespace gyre::fit {
 
 namespace {
 
-// The integration tolerance while the solver iterates, and for every Jacobian: 10⁵ coarser than playback's, so
-// about ten times fewer steps.
-constexpr double kIterationTolerance = 1e-7;
+// The integration tolerance while the solver iterates, and for every Jacobian: 10⁷ coarser than playback's, so
+// about 25 times fewer steps (Dormand–Prince's steps grow as the tolerance's fifth root). A coarse flight ends
+// within about 1e-5 rad of the true one, which is all a seed needs to find its root's neighbourhood: the polish
+// takes it from there. At 1e-7 the solve took twice as long and found the same flights.
+constexpr double kIterationTolerance = 1e-5;
+
+// A seed's coarse iterations stop once its coarse flight ends this close to the key (rad): a candidate.
+constexpr double kCandidateError = 1e-7;
 
 // r(ω₀) = log(q(T)⁻¹·q₁), the half rotation vector from where the flight ends to the end key, its flight
 // integrated to `tolerance`; the Jacobian by forward differences of flights integrated to kIterationTolerance
-// (steps of 1e-5·max(1, |ω₀|)). Its error, about 1e-2 relative, only slows the last iterations from quadratic to
-// linear convergence at that rate, while each iteration costs one fine integration instead of the seven of
-// central differences at the fine tolerance.
+// (steps of 1e-4·max(1, |ω₀|), ten times the flights' tolerance, so that their error stays a tenth of the
+// difference). Its error, a few per cent, only slows the last iterations from quadratic to linear convergence
+// at that rate, while each iteration costs one fine integration instead of the seven of central differences at
+// the fine tolerance.
 class EndKeyResidual final : public ceres::SizedCostFunction<3, 3> {
 public:
     EndKeyResidual(const FlightSpan& span, double tolerance) : span_(span), tolerance_(tolerance) {}
@@ -36,7 +46,7 @@ public:
         const Eigen::Vector3d r = endError(omega, tolerance_);
         std::copy(r.data(), r.data() + 3, residuals);
         if (jacobians && jacobians[0]) {
-            const double step = 1e-5 * std::max(1.0, omega.norm());
+            const double step = 1e-4 * std::max(1.0, omega.norm());
             const Eigen::Vector3d base = tolerance_ == kIterationTolerance ? r : endError(omega, kIterationTolerance);
             Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> jacobian(jacobians[0]);
             for (int j = 0; j < 3; ++j)
@@ -51,9 +61,9 @@ public:
     Eigen::Vector3d endError(const Eigen::Vector3d& omega, double tolerance) const
     {
         try {
-            const TorqueFreeMotion motion(span_.inertia, span_.start, omega, span_.duration,
-                                          TorqueFreeMotion::Solver::Automatic, tolerance);
-            return quatLog(motion.orientation(span_.duration).conjugate() * span_.end);
+            const Eigen::Quaterniond end =
+                TorqueFreeMotion::endOrientation(span_.inertia, span_.start, omega, span_.duration, tolerance);
+            return quatLog(end.conjugate() * span_.end);
         } catch (const std::invalid_argument&) {
             return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
         }
@@ -65,9 +75,9 @@ private:
 };
 
 // The seeds: the slerp's constant ω, and with one extra turn (2π/T, either way) about the body's principal axes
-// at the start and about the slerp's own axis; the hint last. Turns about the world axes as well cost 60% more
-// and found a few more solutions, of higher energy than the first four.
-std::vector<Eigen::Vector3d> seeds(const FlightSpan& span, const std::optional<Eigen::Vector3d>& hint)
+// at the start and about the slerp's own axis. Turns about the world axes as well cost 60% more and found a few
+// more solutions, of higher energy than the first four. The artist's hint is one seed more, taken last.
+std::vector<Eigen::Vector3d> fixedSeeds(const FlightSpan& span)
 {
     const Eigen::Quaterniond arc = shortArc(span.end * span.start.conjugate());
     const Eigen::Vector3d slerp = 2.0 * quatLog(arc) / span.duration;
@@ -80,16 +90,17 @@ std::vector<Eigen::Vector3d> seeds(const FlightSpan& span, const std::optional<E
     for (const Eigen::Vector3d& axis : axes)
         for (const double k : {-1.0, 1.0})
             result.push_back(slerp + k * turn * axis);
-    if (hint && hint->allFinite())
-        result.push_back(*hint);
     return result;
 }
 
 // The Ceres options, chosen for a square system of three equations with isolated roots:
 // - Levenberg–Marquardt: a trust region, so a seed far from a root still moves toward one instead of jumping;
 // - DENSE_QR: the Jacobian is 3×3 and dense;
-// - the function and gradient tolerances at zero: the solve stops when the step is below 1e-14 of ω₀ or after
-//   `iterations`, and the key error is checked afterwards, not inferred from a relative decrease;
+// - the function and gradient tolerances at zero: the solve stops when SeedProgress says, when the step is below
+//   1e-14 of ω₀ or after `iterations`, and the key error is checked afterwards, not inferred from a relative
+//   decrease;
+// - Ceres' projected line search within each step kept (it runs for a problem with bounds): without it, a quarter
+//   of the spans of a random trial lost one of their least-energy flights;
 // - one thread: one solve per span, and a result independent of scheduling.
 ceres::Solver::Options solverOptions(int iterations)
 {
@@ -106,34 +117,77 @@ ceres::Solver::Options solverOptions(int iterations)
     return options;
 }
 
-// Gives up on a seed still far from any root after a few iterations: seeds that converge do so in fewer (the
-// residual is a half rotation vector, so a cost of 1e-4 is still about a degree off).
-class FarSeedAbort final : public ceres::IterationCallback {
+// Ends a seed's iterations: successfully once its flight ends within kCandidateError of the key (the polish takes
+// it from there), and as a failure while it is still far from any root (the residual is a half rotation
+// vector, so a cost of 0.1 is some 50° off and 1e-4 about a degree): seeds that converge do so in fewer
+// iterations. The cost is ½|r|², so the key error 2|r| is 2·√(2·cost).
+class SeedProgress final : public ceres::IterationCallback {
 public:
     ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override
     {
-        return summary.iteration >= 8 && summary.cost > 1e-4 ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+        if (2.0 * std::sqrt(2.0 * summary.cost) < kCandidateError)
+            return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+        const bool far = (summary.iteration >= 4 && summary.cost > 0.1) || (summary.iteration >= 8 && summary.cost > 1e-4);
+        return far ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
     }
 };
 
-// ω₀ solved from `omega` with the flight integrated to `tolerance`, each component kept within `bound` so that no
-// seed wanders off to flights of many turns (each costlier to integrate than the last).
-Eigen::Vector3d solvedFrom(const FlightSpan& span, const Eigen::Vector3d& omega, double tolerance, double bound,
-                           int iterations)
+// A seed iterated with coarse flights, each component of ω₀ kept within `bound` so that no seed wanders off to
+// flights of many turns (each costlier to integrate than the last); nothing unless its coarse flight ends within
+// 1e-6 rad of the key (SeedProgress stops it at kCandidateError; the iteration cap may stop it a little short).
+std::optional<Eigen::Vector3d> candidateFrom(const FlightSpan& span, const Eigen::Vector3d& seed, double bound)
 {
-    std::array<double, 3> unknowns{omega.x(), omega.y(), omega.z()};
+    std::array<double, 3> unknowns{seed.x(), seed.y(), seed.z()};
     ceres::Problem problem;
-    problem.AddResidualBlock(new EndKeyResidual(span, tolerance), nullptr, unknowns.data());
+    problem.AddResidualBlock(new EndKeyResidual(span, kIterationTolerance), nullptr, unknowns.data());
     for (int j = 0; j < 3; ++j) {
         problem.SetParameterLowerBound(unknowns.data(), j, std::min(-bound, unknowns[j]));
         problem.SetParameterUpperBound(unknowns.data(), j, std::max(bound, unknowns[j]));
     }
-    ceres::Solver::Options options = solverOptions(iterations);
-    FarSeedAbort abort;
-    options.callbacks.push_back(&abort);
+    ceres::Solver::Options options = solverOptions(20);
+    SeedProgress progress;
+    options.callbacks.push_back(&progress);
     ceres::Solver::Summary summary;
     ceres::Solve(options, &problem, &summary);
-    return {unknowns[0], unknowns[1], unknowns[2]};
+    const Eigen::Vector3d found(unknowns[0], unknowns[1], unknowns[2]);
+    if (!summary.IsSolutionUsable() || !found.allFinite() || !(2.0 * std::sqrt(2.0 * summary.final_cost) < 1e-6))
+        return std::nullopt;
+    return found;
+}
+
+// A candidate polished with playback's flights by Newton's iteration ω ← ω − J⁻¹·r(ω), J the coarse flights'
+// Jacobian at the candidate: the candidate is within about 1e-5 of the root, where J's error (a few per cent)
+// makes each iteration gain more than a digit; two to four playback flights meet the key. It stops at a key
+// error of kFlightKeyTolerance/100, after 8 iterations, or when an iteration no longer gains; nothing when the key
+// is not met to kFlightKeyTolerance.
+std::optional<FlightSolution> polished(const FlightSpan& span, const Eigen::Vector3d& candidate)
+{
+    const EndKeyResidual coarse(span, kIterationTolerance);
+    const EndKeyResidual fine(span, kTorqueFreeTolerance);
+    const double* parameters[] = {candidate.data()};
+    Eigen::Vector3d unused;
+    Eigen::Matrix<double, 3, 3, Eigen::RowMajor> jacobian;
+    double* jacobians[] = {jacobian.data()};
+    if (!coarse.Evaluate(parameters, unused.data(), jacobians))
+        return std::nullopt;
+    const Eigen::PartialPivLU<Eigen::Matrix3d> newton(jacobian);
+    Eigen::Vector3d omega = candidate;
+    Eigen::Vector3d r = fine.endError(omega, kTorqueFreeTolerance);
+    for (int iteration = 0; iteration < 8 && r.allFinite() && 2.0 * r.norm() > 1e-2 * kFlightKeyTolerance;
+         ++iteration) {
+        const Eigen::Vector3d next = omega - newton.solve(r);
+        const Eigen::Vector3d nextR = fine.endError(next, kTorqueFreeTolerance);
+        if (!(nextR.norm() < r.norm()))
+            break;
+        omega = next;
+        r = nextR;
+    }
+    const double keyError = 2.0 * r.norm();
+    if (!omega.allFinite() || !(keyError <= kFlightKeyTolerance))
+        return std::nullopt;
+    const Eigen::Matrix3d world = span.start.normalized().toRotationMatrix();
+    const Eigen::Vector3d momentum = world * span.inertia * world.transpose() * omega;
+    return FlightSolution{omega, 0.5 * momentum.dot(omega), keyError};
 }
 
 bool near(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double relative)
@@ -141,43 +195,131 @@ bool near(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double relative)
     return (a - b).norm() <= relative * std::max(1.0, std::max(a.norm(), b.norm()));
 }
 
+// What the fixed seeds give a span: the distinct candidates, and their polished solutions in that order (before
+// the hint's, the sorting by energy and the cut to kMaxFlightSolutions).
+struct SeedResults {
+    std::vector<Eigen::Vector3d> candidates;
+    std::vector<FlightSolution> solutions;
+};
+
+// Adds the seed's candidate and its solution where they are new: candidates within 1e-4 of a known one, and
+// solutions within 1e-6, are the same flight found twice.
+void addSeed(const FlightSpan& span, const Eigen::Vector3d& seed, double bound, SeedResults& results)
+{
+    const std::optional<Eigen::Vector3d> found = candidateFrom(span, seed, bound);
+    if (!found || std::any_of(results.candidates.begin(), results.candidates.end(),
+                              [&](const Eigen::Vector3d& known) { return near(known, *found, 1e-4); }))
+        return;
+    results.candidates.push_back(*found);
+    const std::optional<FlightSolution> solution = polished(span, *found);
+    if (solution && std::none_of(results.solutions.begin(), results.solutions.end(), [&](const FlightSolution& known) {
+            return near(known.startAngularVelocity, solution->startAngularVelocity, 1e-6);
+        }))
+        results.solutions.push_back(*solution);
+}
+
+// The seeds' components bound the search: each, plus one turn.
+double searchBound(const FlightSpan& span, const std::vector<Eigen::Vector3d>& seeds)
+{
+    double bound = 0.0;
+    for (const Eigen::Vector3d& seed : seeds)
+        bound = std::max(bound, seed.cwiseAbs().maxCoeff());
+    return bound + 2.0 * std::numbers::pi / span.duration;
+}
+
+// The spans solved lately, by the exact bits of their inertia, keys and duration: a key dragged on a ballistic
+// track changes the two spans it ends, and every other span's solve is found here. At most kCachedSpans are
+// kept (each a few hundred bytes), the least recently used dropped. Shared by every thread, behind a mutex; two
+// threads solving one span at once both store the same result.
+class SolvedSpans {
+public:
+    static constexpr std::size_t kCachedSpans = 1024;
+    using Key = std::array<double, 18>;
+
+    static Key keyOf(const FlightSpan& span)
+    {
+        Key key;
+        std::copy(span.inertia.data(), span.inertia.data() + 9, key.begin());
+        std::copy(span.start.coeffs().data(), span.start.coeffs().data() + 4, key.begin() + 9);
+        std::copy(span.end.coeffs().data(), span.end.coeffs().data() + 4, key.begin() + 13);
+        key[17] = span.duration;
+        return key;
+    }
+
+    std::optional<SeedResults> find(const Key& key)
+    {
+        const std::lock_guard lock(mutex_);
+        const auto found = entries_.find(key);
+        if (found == entries_.end()) {
+            ++statistics_.misses;
+            return std::nullopt;
+        }
+        ++statistics_.hits;
+        found->second.lastUse = ++clock_;
+        return found->second.results;
+    }
+
+    void store(const Key& key, const SeedResults& results)
+    {
+        const std::lock_guard lock(mutex_);
+        if (entries_.size() >= kCachedSpans && !entries_.count(key))
+            entries_.erase(std::min_element(entries_.begin(), entries_.end(), [](const auto& a, const auto& b) {
+                return a.second.lastUse < b.second.lastUse;
+            }));
+        entries_[key] = {results, ++clock_};
+    }
+
+    FlightCacheStatistics statistics()
+    {
+        const std::lock_guard lock(mutex_);
+        return statistics_;
+    }
+
+private:
+    struct Entry {
+        SeedResults results;
+        std::uint64_t lastUse = 0;
+    };
+    std::mutex mutex_;
+    std::map<Key, Entry> entries_;
+    std::uint64_t clock_ = 0;
+    FlightCacheStatistics statistics_;
+};
+
+SolvedSpans& solvedSpans()
+{
+    static SolvedSpans spans;
+    return spans;
+}
+
 } // namespace
 
-// Two passes: every seed iterated with coarse flights until its key error is below 1e-6 rad; the distinct
-// candidates then polished with playback's flights, and kept where they meet the key to kFlightKeyTolerance.
+// Two passes per seed: iterated with coarse flights until its key error is below kCandidateError, then, where the
+// candidate is new, polished with playback's flights and kept where it meets the key to kFlightKeyTolerance. The
+// fixed seeds' results are remembered per span (SolvedSpans); the hint, which changes with the neighbouring keys,
+// is solved each time, last, as if it were the last fixed seed.
 std::vector<FlightSolution> solveFlight(const FlightSpan& span, const std::optional<Eigen::Vector3d>& hint)
 {
     if (!std::isfinite(span.duration) || !(span.duration > 0.0))
         throw std::invalid_argument("a free flight lasts a finite time > 0");
-    const std::vector<Eigen::Vector3d> starts = seeds(span, hint);
-    double bound = 0.0;
-    for (const Eigen::Vector3d& start : starts)
-        bound = std::max(bound, start.cwiseAbs().maxCoeff());
-    bound += 2.0 * std::numbers::pi / span.duration;
-
-    const EndKeyResidual coarse(span, kIterationTolerance);
-    std::vector<Eigen::Vector3d> candidates;
-    for (const Eigen::Vector3d& start : starts) {
-        const Eigen::Vector3d found = solvedFrom(span, start, kIterationTolerance, bound, 20);
-        if (found.allFinite() && 2.0 * coarse.endError(found, kIterationTolerance).norm() < 1e-6 &&
-            std::none_of(candidates.begin(), candidates.end(),
-                         [&](const Eigen::Vector3d& known) { return near(known, found, 1e-4); }))
-            candidates.push_back(found);
+    if (inertiaProblem(span.inertia) != InertiaProblem::None)
+        throw std::invalid_argument("the inertia tensor is not one a body can have");
+    if (!span.start.coeffs().allFinite() || !span.end.coeffs().allFinite())
+        throw std::invalid_argument("the keys of a free flight are not finite");
+    const SolvedSpans::Key key = SolvedSpans::keyOf(span);
+    std::optional<SeedResults> results = solvedSpans().find(key);
+    const std::vector<Eigen::Vector3d> seeds = fixedSeeds(span);
+    const double bound = searchBound(span, seeds);
+    if (!results) {
+        results.emplace();
+        for (const Eigen::Vector3d& seed : seeds)
+            addSeed(span, seed, bound, *results);
+        solvedSpans().store(key, *results);
     }
+    if (hint && hint->allFinite())
+        addSeed(span, *hint, bound, *results);
 
-    const EndKeyResidual fine(span, kTorqueFreeTolerance);
-    std::vector<FlightSolution> solutions;
-    for (const Eigen::Vector3d& candidate : candidates) {
-        const Eigen::Vector3d found = solvedFrom(span, candidate, kTorqueFreeTolerance, bound, 8);
-        const double keyError = 2.0 * fine.endError(found, kTorqueFreeTolerance).norm();
-        if (!(keyError <= kFlightKeyTolerance) ||
-            std::any_of(solutions.begin(), solutions.end(), [&](const FlightSolution& known) {
-                return near(known.startAngularVelocity, found, 1e-6);
-            }))
-            continue;
-        const TorqueFreeMotion motion(span.inertia, span.start, found, span.duration);
-        solutions.push_back({found, motion.kineticEnergy(), keyError});
-    }
+    std::vector<FlightSolution> solutions = std::move(results->solutions);
     if (solutions.empty())
         throw std::invalid_argument("no free flight found that meets the next key");
     std::sort(solutions.begin(), solutions.end(),
@@ -186,6 +328,8 @@ std::vector<FlightSolution> solveFlight(const FlightSpan& span, const std::optio
         solutions.resize(kMaxFlightSolutions);
     return solutions;
 }
+
+FlightCacheStatistics flightCacheStatistics() { return solvedSpans().statistics(); }
 
 std::size_t nearestFlightSolution(const std::vector<FlightSolution>& solutions, const Eigen::Vector3d& omega)
 {

@@ -8,7 +8,9 @@
 // seed that converges (keys met to kFlightKeyTolerance rad) is kept once, the solutions are ordered by kinetic
 // energy and the kMaxFlightSolutions of least energy are offered.
 //
-// Runs on any thread; the same input always gives the same output.
+// Runs on any thread; the same input always gives the same output. What a span's fixed seeds give is remembered
+// (the last 1024 spans, by the exact bits of their inertia, keys and duration), so that dragging a key of a
+// ballistic track solves again only the two spans it ends.
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
@@ -39,10 +41,18 @@ inline constexpr std::size_t kMaxFlightSolutions = 6;
 
 // The solutions of the span, least kinetic energy first, distinct (start angular velocities further apart than
 // 1e-6 of their size). `hint` is one more seed, the angular velocity the artist's motion has at the start.
-// Throws std::invalid_argument for an inertia inertiaProblem (core/mass_properties.h) refuses, a duration not finite and > 0, or when no
-// seed converges.
+// Throws std::invalid_argument for an inertia inertiaProblem (core/mass_properties.h) refuses, keys not finite,
+// a duration not finite and > 0, or when no seed converges.
 std::vector<FlightSolution> solveFlight(const FlightSpan& span,
                                         const std::optional<Eigen::Vector3d>& hint = std::nullopt);
+
+// How often solveFlight found a span's fixed seeds' results remembered, and how often it solved them, since the
+// program started: what tells a test that an edit re-solved only the spans it changed.
+struct FlightCacheStatistics {
+    std::size_t hits = 0;
+    std::size_t misses = 0;
+};
+FlightCacheStatistics flightCacheStatistics();
 
 // The index of the solution whose start angular velocity is nearest `omega`; 0 for an empty list.
 std::size_t nearestFlightSolution(const std::vector<FlightSolution>& solutions, const Eigen::Vector3d& omega);

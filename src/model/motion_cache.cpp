@@ -24,7 +24,7 @@ const TrackMotion& SharedTrackMotion::motionWithoutFit() const
 {
     if (track_.sketch.fittedCurve.empty())
         return motion();
-    return build(withoutFit_, [this] { return TrackMotion(withoutFit(track_), body_); });
+    return build(withoutFit_, [this] { return TrackMotion(withoutFit(track_), body_, gravity_); });
 }
 
 const TrackMotion& SharedTrackMotion::build(Lazy& lazy, const std::function<TrackMotion()>& make) const

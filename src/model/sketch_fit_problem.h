@@ -77,7 +77,8 @@ std::vector<std::vector<fit::TimedVector>> timedStrokes(const MotionTrack& track
 void checkSketchFittable(const MotionTrack& track);
 
 // The fit of the track's sketch, from withoutFit(track), `body` the one a ballistic track flies (flightBodyOf,
-// track_evaluation.h). Throws SketchFitError where checkSketchFittable does, and for a direction stroke the fit
+// track_evaluation.h). The fit reads orientations and angular velocities alone, which gravity does not touch (it
+// moves the centre of mass), so the motions built here fall under the default gravity. Throws SketchFitError where checkSketchFittable does, and for a direction stroke the fit
 // cannot follow.
 SketchFitProblem sketchFitProblem(const MotionTrack& track, const MassProperties& body);
 

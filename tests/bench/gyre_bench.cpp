@@ -344,17 +344,37 @@ gyre::fit::FlightSpan benchFlightSpan()
     return {inertia, Eigen::Quaterniond::Identity(), made.orientation(1.0), 1.0};
 }
 
+// A span never solved before: solveFlight remembers the spans it solved, so each iteration turns the end key by
+// another nanoradian, the same problem with other bits.
 void BM_FlightSolve(benchmark::State& state)
 {
     const gyre::fit::FlightSpan span = benchFlightSpan();
     std::vector<gyre::fit::FlightSolution> solutions;
+    static int turned = 0;
     for (auto _ : state) {
-        solutions = gyre::fit::solveFlight(span);
+        gyre::fit::FlightSpan fresh = span;
+        fresh.end = span.end * Eigen::Quaterniond(Eigen::AngleAxisd(1e-9 * ++turned, Eigen::Vector3d::UnitX()));
+        solutions = gyre::fit::solveFlight(fresh);
         benchmark::DoNotOptimize(solutions.data());
     }
     state.counters["solutions"] = static_cast<double>(solutions.size());
 }
 BENCHMARK(BM_FlightSolve)->Unit(benchmark::kMillisecond);
+
+// The same span again with the artist's hint, as when a neighbouring key is dragged: the fixed seeds' solutions
+// are remembered, the hint is solved.
+void BM_FlightSolveRemembered(benchmark::State& state)
+{
+    const gyre::fit::FlightSpan span = benchFlightSpan();
+    std::vector<gyre::fit::FlightSolution> solutions = gyre::fit::solveFlight(span);
+    const Eigen::Vector3d hint = solutions.front().startAngularVelocity + Eigen::Vector3d(0.2, -0.1, 0.1);
+    for (auto _ : state) {
+        solutions = gyre::fit::solveFlight(span, hint);
+        benchmark::DoNotOptimize(solutions.data());
+    }
+    state.counters["solutions"] = static_cast<double>(solutions.size());
+}
+BENCHMARK(BM_FlightSolveRemembered)->Unit(benchmark::kMillisecond);
 
 // One sample of a built flight, as the viewport takes it every frame: orientation and angular velocity.
 void BM_FlightEvaluate(benchmark::State& state)

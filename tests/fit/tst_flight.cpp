@@ -43,6 +43,8 @@ private slots:
     void conservedOverEverySpan();
     void centreOfMassFollowsTheParabola();
     void choicesPickSolutions();
+    void rememberedSpansGiveWhatASolveGives();
+    void movingAKeySolvesOnlyItsSpans();
     void refusesBadInput();
 };
 
@@ -156,6 +158,49 @@ void TestFlight::choicesPickSolutions()
     }
 }
 
+void TestFlight::rememberedSpansGiveWhatASolveGives()
+{
+    // The same span written with both keys negated is the same problem (q and −q are one orientation) under other
+    // bits, so solveFlight does not find it remembered: it solves it, and must give what the remembered span gives.
+    std::mt19937_64 rng(53);
+    const FlightSpan span{rotatedInertia({0.6, 1.1, 1.5}, randomRotation(rng)), randomRotation(rng),
+                          randomRotation(rng), 0.9};
+    const Eigen::Vector3d hintA(1.0, -2.0, 0.5), hintB(-3.0, 0.2, 4.0);
+    solveFlight(span, hintA);
+    const FlightCacheStatistics before = flightCacheStatistics();
+    const std::vector<FlightSolution> remembered = solveFlight(span, hintB);
+    QCOMPARE(flightCacheStatistics().hits, before.hits + 1);
+    FlightSpan negated = span;
+    negated.start.coeffs() *= -1.0;
+    negated.end.coeffs() *= -1.0;
+    const std::vector<FlightSolution> solved = solveFlight(negated, hintB);
+    QCOMPARE(flightCacheStatistics().misses, before.misses + 1);
+    QCOMPARE(remembered.size(), solved.size());
+    for (std::size_t i = 0; i < solved.size(); ++i) {
+        QVERIFY((remembered[i].startAngularVelocity - solved[i].startAngularVelocity).norm() <= 1e-12);
+        QCOMPARE(remembered[i].kineticEnergy, solved[i].kineticEnergy);
+    }
+}
+
+void TestFlight::movingAKeySolvesOnlyItsSpans()
+{
+    // Five keys, four spans; the middle key turned, as a drag does: the two spans it ends are solved again, the
+    // other two found remembered.
+    std::mt19937_64 rng(61);
+    std::vector<FlightKey> keys;
+    for (int i = 0; i < 5; ++i)
+        keys.push_back({0.6 * i, {randomRotation(rng), Eigen::Vector3d(0.0, 0.0, 1.0)}});
+    const FlightBody body{inertiaTensor({0.5, 1.0, 1.4})};
+    const BallisticFlight before(keys, body);
+    keys[2].pose.orientation = keys[2].pose.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitZ()));
+    const FlightCacheStatistics counted = flightCacheStatistics();
+    const BallisticFlight after(keys, body);
+    QCOMPARE(flightCacheStatistics().misses, counted.misses + 2);
+    QCOMPARE(flightCacheStatistics().hits, counted.hits + 2);
+    QVERIFY(angleBetween(after.at(1.2).orientation, keys[2].pose.orientation) < 1e-10);
+    QVERIFY(angleBetween(before.at(1.2).orientation, keys[2].pose.orientation) > 0.04);
+}
+
 void TestFlight::refusesBadInput()
 {
     const FlightBody body{inertiaTensor({0.5, 1.0, 1.4})};
@@ -165,6 +210,8 @@ void TestFlight::refusesBadInput()
     FlightBody noUp = body;
     noUp.up = Eigen::Vector3d::Zero();
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, BallisticFlight({{0.0, Pose{}}, {1.0, Pose{}}}, noUp));
+    const Eigen::Quaterniond notFinite(std::nan(""), 0.0, 0.0, 1.0);
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, solveFlight({body.inertia, Eigen::Quaterniond::Identity(), notFinite, 1.0}));
 }
 
 QTEST_APPLESS_MAIN(TestFlight)

@@ -187,6 +187,25 @@ private slots:
         QCOMPARE(&motion.motionWithoutFit(), &withoutFit);
         QCOMPARE(builds->load(), std::size_t(2));
     }
+
+    // A ballistic track's motion before its fit falls under the scene's gravity, as its motion does: the views
+    // draw the centre's path of both.
+    void theMotionWithoutFitFallsUnderTheScenesGravity()
+    {
+        MotionTrack track;
+        track.interpolation = InterpolationMethod::Ballistic;
+        track.keys.push_back({0.0, {Eigen::Quaterniond::Identity(), {0, 0, 0}}, true});
+        track.keys.push_back({1.0, {aboutZ(0.5), {2, 0, 0}}, true});
+        track.sketch.fittedCurve = {{0.25, aboutZ(0.1), Eigen::Quaterniond(0, 0, 0, 0.25)},
+                                    {0.75, aboutZ(0.4), Eigen::Quaterniond(0, 0, 0, 0.25)}};
+        const Gravity gravity{3.7, UpDirection::PlusY};
+        const SharedTrackMotion motion(track, nullptr, MassProperties{}, gravity);
+        // x(t) = x0 + v0·t − ½·g·up·t² through both keys: v0 = (x1 − x0)/T + ½·g·T·up; at t = ½ the centre is
+        // ½·g·t·(T − t) = 3.7/8 above the chord's middle (1, 0, 0). The default body's centre is its origin.
+        const Eigen::Vector3d expected(1.0, 3.7 / 8.0, 0.0);
+        QVERIFY((motion.motion().at(0.5).position - expected).norm() < 1e-12);
+        QVERIFY((motion.motionWithoutFit().at(0.5).position - expected).norm() < 1e-12);
+    }
 };
 
 QTEST_GUILESS_MAIN(TstMotionCache)
