@@ -9,9 +9,9 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -42,7 +42,7 @@ struct SkinAttributes {
 
 SkinAttributes skinAttributes(const model::Skin& skin)
 {
-    // Below this, float32 rounding of weights that sum to 1: the last weight absorbs it.
+    // A rest below this is float32 rounding of weights that sum to 1, which the largest weight absorbs.
     constexpr double kRounding = 1e-6;
     SkinAttributes result;
     for (std::size_t v = 0; v < skin.vertexWeights.size(); ++v) {
@@ -115,7 +115,7 @@ public:
         return static_cast<int>(model_.accessors.size()) - 1;
     }
 
-    // An accessor over `values`, `components` of type `componentType` (TINYGLTF_COMPONENT_TYPE_*) each.
+    // A vertex attribute of VEC4 elements over `values`, of `componentType` (TINYGLTF_COMPONENT_TYPE_*).
     template <class Value>
     int vertexAccessor(const std::vector<Value>& values, int componentType)
     {
