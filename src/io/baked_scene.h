@@ -35,6 +35,10 @@ struct BakedObject {
     std::optional<std::size_t> parent;     // the index of an earlier object; none at the top level
     Pose startPose;                        // relative to the parent, at the scene's start time
     const model::Mesh* mesh = nullptr;     // null when the object has no triangles; indices checked
+    bool empty = false;                    // SceneObject::empty: a frame alone, written as the format's Empty
+    // For a skinned mesh (model::Skin), the index among the objects of each of its skin's joints; empty for
+    // a rigid mesh, or a skin one of whose joints is no object of the scene (the mesh goes out rigid).
+    std::vector<std::size_t> skinJoints;
     std::vector<model::TimedPose> samples; // the baked motion; empty when the object does not move
     // The orientation as the Hermite spline the track plays, cut at the samples' times
     // (rotationSplineOf), for glTF's CUBICSPLINE; empty when the track plays no such spline.

@@ -35,6 +35,9 @@ constexpr std::int32_t kGeometryVersion = 124;
 constexpr std::int32_t kNormalLayerVersion = 101;
 constexpr std::int32_t kLayerVersion = 100;
 constexpr std::int32_t kKeyVersion = 4008;
+constexpr std::int32_t kDeformerVersion = 101;
+constexpr std::int32_t kClusterVersion = 100;
+constexpr std::int32_t kPoseVersion = 100;
 
 // KeyAttrFlags: eInterpolationLinear. The four KeyAttrDataFloat values (slopes, weights, velocity)
 // only matter to cubic keys.
@@ -186,20 +189,36 @@ private:
     {
         std::vector<std::int64_t> modelIds;
         std::unordered_map<const model::Mesh*, std::int64_t> geometryIds;
-        for (const BakedObject& object : scene_.objects) {
+        std::vector<bool> joints(scene_.objects.size(), false);
+        for (const BakedObject& object : scene_.objects)
+            for (const std::size_t joint : object.skinJoints)
+                joints[joint] = true;
+        std::vector<std::pair<std::size_t, std::int64_t>> skinned; // object, its own geometry
+        for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+            const BakedObject& object = scene_.objects[i];
             const std::int64_t id = ids_.next();
             modelIds.push_back(id);
             connect(id, object.parent ? modelIds[*object.parent] : 0);
-            model(objects, object, id);
-            if (object.mesh) {
+            model(objects, object, id, joints[i] ? "LimbNode" : object.mesh ? "Mesh" : "Null");
+            if (object.empty || joints[i])
+                connect(nodeAttribute(objects, object.name, joints[i]), id);
+            if (object.mesh && !object.skinJoints.empty()) {
+                // A skin deforms a geometry: each skinned object has its own.
+                skinned.emplace_back(i, geometry(objects, *object.mesh, object.name));
+                connect(skinned.back().second, id);
+                ++counts_["Geometry"];
+            } else if (object.mesh) {
                 auto [entry, isNew] = geometryIds.try_emplace(object.mesh, 0);
-                if (isNew)
+                if (isNew) {
                     entry->second = geometry(objects, *object.mesh, object.name);
+                    ++counts_["Geometry"];
+                }
                 connect(entry->second, id);
             }
         }
         counts_["Model"] = static_cast<int>(modelIds.size());
-        counts_["Geometry"] = static_cast<int>(geometryIds.size());
+        if (!skinned.empty())
+            skinsOf(objects, skinned, modelIds);
 
         if (!animated_)
             return;
@@ -209,10 +228,10 @@ private:
                 motion(objects, scene_.objects[i].samples, modelIds[i], layer);
     }
 
-    void model(Node& objects, const BakedObject& object, std::int64_t id)
+    void model(Node& objects, const BakedObject& object, std::int64_t id, std::string_view subclass)
     {
         const bool animated = !object.samples.empty();
-        Node& model = fbxObject(objects, "Model", id, object.name, "Model", object.mesh ? "Mesh" : "Null");
+        Node& model = fbxObject(objects, "Model", id, object.name, "Model", subclass);
         model.addChild("Version").addInt32(kModelVersion);
         Node& properties = model.addChild("Properties70");
         vectorProperty(properties, "Lcl Translation", object.startPose.position, animated);
@@ -220,6 +239,99 @@ private:
         vectorProperty(properties, "Lcl Scaling", Eigen::Vector3d::Ones(), false);
         model.addChild("Shading").addBool(true);
         model.addChild("Culling").addString("CullingOff");
+    }
+
+    // The NodeAttribute of an Empty (Null, as Blender writes its Empties: its importer makes a Null Model
+    // with it an Empty, one without any too) or of a skin's joint (LimbNode, TypeFlags Skeleton: a bone).
+    // Assimp reads either Model as a node without meshes.
+    std::int64_t nodeAttribute(Node& objects, const std::string& name, bool joint)
+    {
+        const std::int64_t id = ids_.next();
+        Node& attribute = fbxObject(objects, "NodeAttribute", id, name, "NodeAttribute", joint ? "LimbNode" : "Null");
+        attribute.addChild("TypeFlags").addString(joint ? "Skeleton" : "Null");
+        ++counts_["NodeAttribute"];
+        return id;
+    }
+
+    // Each object's world pose at the start time, the pose its skin is bound in here.
+    std::vector<Pose> startWorldPoses() const
+    {
+        std::vector<Pose> world;
+        for (const BakedObject& object : scene_.objects)
+            world.push_back(object.parent ? world[*object.parent] * object.startPose : object.startPose);
+        return world;
+    }
+
+    static Eigen::Matrix4d poseMatrix(const Pose& pose)
+    {
+        Eigen::Matrix4d matrix = Eigen::Matrix4d::Identity();
+        matrix.topLeftCorner<3, 3>() = pose.orientation.normalized().toRotationMatrix();
+        matrix.topRightCorner<3, 1>() = pose.position;
+        return matrix;
+    }
+
+    static std::vector<double> matrixOf(const Eigen::Matrix4d& matrix)
+    {
+        return std::vector<double>(matrix.data(), matrix.data() + 16); // column-major: translation at 12, 13, 14
+    }
+
+    // For each skinned object and its geometry: a Deformer Skin on the geometry and a SubDeformer Cluster per
+    // joint: Indexes and Weights of the positions it moves, Transform the inverse bind B_j (from the mesh's
+    // frame to the joint's, as Blender writes it and Assimp reads it as the bone's offset) and TransformLink
+    // the joint's world matrix at binding, M · B_j⁻¹ with the mesh's world pose M at the start time; then
+    // one BindPose with the world matrices at binding of the meshes and joints.
+    void skinsOf(Node& objects, const std::vector<std::pair<std::size_t, std::int64_t>>& skinned,
+                 const std::vector<std::int64_t>& modelIds)
+    {
+        const std::vector<Pose> world = startWorldPoses();
+        std::map<std::int64_t, Eigen::Matrix4d> bindMatrices; // model id -> world matrix at binding
+        for (const auto& [index, geometryId] : skinned) {
+            const BakedObject& object = scene_.objects[index];
+            const model::Skin& skin = object.mesh->skin;
+            const Eigen::Matrix4d mesh = poseMatrix(world[index]);
+            bindMatrices[modelIds[index]] = mesh;
+            const std::int64_t skinId = ids_.next();
+            Node& deformer = fbxObject(objects, "Deformer", skinId, object.name, "Deformer", "Skin");
+            deformer.addChild("Version").addInt32(kDeformerVersion);
+            deformer.addChild("Link_DeformAcuracy").addDouble(50.0);
+            connect(skinId, geometryId);
+            ++counts_["Deformer"];
+            for (std::size_t j = 0; j < object.skinJoints.size(); ++j) {
+                std::vector<std::int32_t> indexes;
+                std::vector<double> weights;
+                for (std::size_t v = 0; v < skin.vertexJoints.size(); ++v)
+                    for (std::size_t k = 0; k < 4; ++k)
+                        if (skin.vertexJoints[v][k] == j && skin.vertexWeights[v][static_cast<Eigen::Index>(k)] > 0.0F) {
+                            indexes.push_back(static_cast<std::int32_t>(v));
+                            weights.push_back(skin.vertexWeights[v][static_cast<Eigen::Index>(k)]);
+                        }
+                const std::size_t joint = object.skinJoints[j];
+                const Eigen::Matrix4d link = mesh * skin.inverseBinds[j].cast<double>().inverse();
+                bindMatrices[modelIds[joint]] = link;
+                const std::int64_t clusterId = ids_.next();
+                Node& cluster = fbxObject(objects, "Deformer", clusterId, scene_.objects[joint].name, "SubDeformer", "Cluster");
+                cluster.addChild("Version").addInt32(kClusterVersion);
+                cluster.addChild("UserData").addString("").addString("");
+                cluster.addChild("Indexes").addArray(std::span<const std::int32_t>(indexes));
+                cluster.addChild("Weights").addArray(std::span<const double>(weights));
+                cluster.addChild("Transform").addArray(std::span<const double>(matrixOf(skin.inverseBinds[j].cast<double>())));
+                cluster.addChild("TransformLink").addArray(std::span<const double>(matrixOf(link)));
+                connect(clusterId, skinId);
+                connect(modelIds[joint], clusterId);
+                ++counts_["Deformer"];
+            }
+        }
+        const std::int64_t poseId = ids_.next();
+        Node& pose = fbxObject(objects, "Pose", poseId, "BindPose", "Pose", "BindPose");
+        pose.addChild("Type").addString("BindPose");
+        pose.addChild("Version").addInt32(kPoseVersion);
+        pose.addChild("NbPoseNodes").addInt32(static_cast<std::int32_t>(bindMatrices.size()));
+        for (const auto& [modelId, matrix] : bindMatrices) {
+            Node& poseNode = pose.addChild("PoseNode");
+            poseNode.addChild("Node").addInt64(modelId);
+            poseNode.addChild("Matrix").addArray(std::span<const double>(matrixOf(matrix)));
+        }
+        counts_["Pose"] = 1;
     }
 
     std::int64_t geometry(Node& objects, const model::Mesh& mesh, const std::string& name)

@@ -8,9 +8,17 @@
 //   30, 48, 50, 60, 72, 96, 100, 120 fps), else custom, with CustomFrameRate the frame rate either
 //   way; TimeSpanStart/Stop the scene's range.
 // - One Model per object (Mesh or Null), its parent by an OO connection, its pose at the start time
-//   as Lcl Translation and Lcl Rotation; one Geometry per mesh (shared by the objects that share it):
+//   as Lcl Translation and Lcl Rotation; an Empty's Model with a NodeAttribute Null (TypeFlags Null),
+//   as Blender writes its Empties; one Geometry per mesh (shared by the objects that share it; a
+//   skinned object's its own):
 //   Vertices, PolygonVertexIndex (the last corner of each triangle written as −index − 1) and normals
 //   by vertex.
+// - A skinned mesh (BakedObject::skinJoints): its joints' Models are LimbNodes (with a NodeAttribute
+//   LimbNode, TypeFlags Skeleton); a Deformer Skin on its Geometry, a SubDeformer Cluster per joint linked
+//   to the joint's Model (Indexes, Weights as the skin has them, Transform the inverse bind B_j as Blender
+//   writes it and Assimp reads it, TransformLink the joint's world matrix at binding, M · B_j⁻¹ with M the
+//   object's world pose at the start time), and one Pose BindPose of those world matrices. Weights that
+//   sum to less than 1 are written so; readers normalise them (Blender's armature, Gyre's import).
 // - One AnimationStack "Gyre" with one AnimationLayer; for every moving object an AnimationCurveNode
 //   T (Lcl Translation) and R (Lcl Rotation), each with three AnimationCurves d|X, d|Y, d|Z keyed at
 //   every baked sample, linear. The stack's span runs from time 0 (or the start, if earlier) to the

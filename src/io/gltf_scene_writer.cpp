@@ -8,11 +8,13 @@
 #include <QUrl>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
-#include <unordered_map>
+#include <utility>
 
 namespace gyre::io {
 
@@ -25,6 +27,48 @@ constexpr int kElementArrayBuffer = 34963;
 // As glTF orders them: a quaternion x, y, z, w; a vector x, y, z.
 std::vector<double> components(const Eigen::Quaterniond& q) { return {q.x(), q.y(), q.z(), q.w()}; }
 std::vector<double> components(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+// JOINTS_0 and WEIGHTS_0 of a skinned mesh, four of each per position, and whether a position uses the
+// extra joint: glTF asks that a position's weights sum to 1, and Skin lets the rest of the weight, where
+// they sum to less, follow the mesh's own object. That rest goes to joint skin.joints.size(), which each
+// skin of the mesh makes the object's own node, with the identity as its inverse bind matrix: glTF moves
+// it by that node's world pose, as Gyre does. A position with no free slot for it (four joints summing to
+// less than 1, which no import makes) has its weights scaled to sum 1.
+struct SkinAttributes {
+    std::vector<std::uint16_t> joints;
+    std::vector<float> weights;
+    bool ownJoint = false;
+};
+
+SkinAttributes skinAttributes(const model::Skin& skin)
+{
+    // A rest below this is float32 rounding of weights that sum to 1, which the largest weight absorbs.
+    constexpr double kRounding = 1e-6;
+    SkinAttributes result;
+    for (std::size_t v = 0; v < skin.vertexWeights.size(); ++v) {
+        std::array<std::uint16_t, 4> joints = skin.vertexJoints[v];
+        Eigen::Vector4f weights = skin.vertexWeights[v];
+        const double rest = 1.0 - static_cast<double>(weights.sum());
+        const auto free = std::find(weights.data(), weights.data() + 4, 0.0F) - weights.data();
+        if (rest > kRounding && free < 4) {
+            joints[static_cast<std::size_t>(free)] = static_cast<std::uint16_t>(skin.joints.size());
+            weights[free] = static_cast<float>(rest);
+            result.ownJoint = true;
+        } else if (rest > kRounding) {
+            weights /= weights.sum();
+        }
+        // The largest weight takes what float32 rounding left over.
+        Eigen::Index largest = 0;
+        weights.maxCoeff(&largest);
+        weights[largest] = static_cast<float>(static_cast<double>(weights[largest]) + 1.0 -
+                                              static_cast<double>(weights.cast<double>().sum()));
+        for (int k = 0; k < 4; ++k) {
+            result.joints.push_back(weights[k] > 0.0F ? joints[static_cast<std::size_t>(k)] : 0);
+            result.weights.push_back(weights[k]);
+        }
+    }
+    return result;
+}
 
 // The model under construction: one buffer, one buffer view per accessor.
 class GltfModelBuilder {
@@ -71,7 +115,22 @@ public:
         return static_cast<int>(model_.accessors.size()) - 1;
     }
 
-    int mesh(const model::Mesh& source)
+    // A vertex attribute of VEC4 elements over `values`, of `componentType` (TINYGLTF_COMPONENT_TYPE_*).
+    template <class Value>
+    int vertexAccessor(const std::vector<Value>& values, int componentType)
+    {
+        tinygltf::Accessor accessor;
+        accessor.bufferView = addView(values.data(), values.size() * sizeof(Value), kArrayBuffer);
+        accessor.componentType = componentType;
+        accessor.count = values.size() / 4;
+        accessor.type = TINYGLTF_TYPE_VEC4;
+        model_.accessors.push_back(std::move(accessor));
+        return static_cast<int>(model_.accessors.size()) - 1;
+    }
+
+    // The mesh, with JOINTS_0 and WEIGHTS_0 when `skinned` (skinAttributes); returns its index and whether
+    // its skins need the extra joint of the mesh's own node.
+    std::pair<int, bool> mesh(const model::Mesh& source, bool skinned)
     {
         std::vector<float> positions;
         for (const Eigen::Vector3f& p : source.positions)
@@ -87,10 +146,17 @@ public:
             primitive.attributes["NORMAL"] = floatAccessor(normals, 3, TINYGLTF_TYPE_VEC3, false, kArrayBuffer);
         }
         primitive.indices = indexAccessor(source.indices);
+        bool ownJoint = false;
+        if (skinned) {
+            SkinAttributes skin = skinAttributes(source.skin);
+            primitive.attributes["JOINTS_0"] = vertexAccessor(skin.joints, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+            primitive.attributes["WEIGHTS_0"] = vertexAccessor(skin.weights, TINYGLTF_COMPONENT_TYPE_FLOAT);
+            ownJoint = skin.ownJoint;
+        }
         tinygltf::Mesh mesh;
         mesh.primitives.push_back(std::move(primitive));
         model_.meshes.push_back(std::move(mesh));
-        return static_cast<int>(model_.meshes.size()) - 1;
+        return {static_cast<int>(model_.meshes.size()) - 1, ownJoint};
     }
 
     tinygltf::Model& model() { return model_; }
@@ -184,6 +250,26 @@ void addMotion(GltfModelBuilder& builder, tinygltf::Animation& animation, const 
         addSplineChannel(builder, animation, object.rotationSpline, 4, TINYGLTF_TYPE_VEC4, node, "rotation");
 }
 
+// The skin of the object at node `node`: its joints' nodes (node i + 1 is object i) and their inverse bind
+// matrices, then its own node with the identity when `ownJoint` (skinAttributes). Returns its index.
+int addSkin(GltfModelBuilder& builder, const BakedObject& object, int node, bool ownJoint)
+{
+    tinygltf::Skin skin;
+    std::vector<float> inverseBinds;
+    const auto addJoint = [&](int jointNode, const Eigen::Matrix4f& inverseBind) {
+        skin.joints.push_back(jointNode);
+        inverseBinds.insert(inverseBinds.end(), inverseBind.data(), inverseBind.data() + 16); // column-major, as glTF
+    };
+    for (std::size_t j = 0; j < object.skinJoints.size(); ++j)
+        addJoint(static_cast<int>(object.skinJoints[j] + 1), object.mesh->skin.inverseBinds[j]);
+    if (ownJoint)
+        addJoint(node, Eigen::Matrix4f::Identity());
+    skin.inverseBindMatrices = builder.floatAccessor(inverseBinds, 16, TINYGLTF_TYPE_MAT4, false);
+    tinygltf::Model& model = builder.model();
+    model.skins.push_back(std::move(skin));
+    return static_cast<int>(model.skins.size()) - 1;
+}
+
 tinygltf::Model modelOf(const BakedScene& baked)
 {
     GltfModelBuilder builder;
@@ -196,17 +282,22 @@ tinygltf::Model modelOf(const BakedScene& baked)
     tinygltf::Node root;
     root.name = "GyreScene";
     model.nodes.push_back(std::move(root));
-    std::unordered_map<const model::Mesh*, int> meshes;
-    for (const BakedObject& object : baked.objects) {
+    // Each mesh once, and once more for the objects that skin it.
+    std::map<std::pair<const model::Mesh*, bool>, std::pair<int, bool>> meshes;
+    for (std::size_t i = 0; i < baked.objects.size(); ++i) {
+        const BakedObject& object = baked.objects[i];
         tinygltf::Node node;
         node.name = object.name;
         node.translation = {object.startPose.position.x(), object.startPose.position.y(), object.startPose.position.z()};
         node.rotation = components(object.startPose.orientation.normalized());
         if (object.mesh) {
-            const auto [entry, isNew] = meshes.try_emplace(object.mesh, 0);
+            const bool skinned = !object.skinJoints.empty();
+            const auto [entry, isNew] = meshes.try_emplace({object.mesh, skinned});
             if (isNew)
-                entry->second = builder.mesh(*object.mesh);
-            node.mesh = entry->second;
+                entry->second = builder.mesh(*object.mesh, skinned);
+            node.mesh = entry->second.first;
+            if (skinned)
+                node.skin = addSkin(builder, object, static_cast<int>(i + 1), entry->second.second);
         }
         model.nodes.push_back(std::move(node));
     }

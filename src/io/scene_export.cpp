@@ -109,6 +109,7 @@ public:
             baked.name = names_.unique(object, report_.warnings);
             baked.parent = parentIndex(object, indexOfId);
             baked.startPose = startPose(object);
+            baked.empty = object.empty;
             if (hasTriangles(object))
                 baked.mesh = &checkedMesh(*object.mesh, object.name);
             if (withMotion && isAnimated(object.track)) {
@@ -122,6 +123,9 @@ public:
             indexOfId.emplace(object.id, result_.objects.size());
             result_.objects.push_back(std::move(baked));
         }
+        for (std::size_t i = 0; i < result_.objects.size(); ++i)
+            if (result_.objects[i].mesh)
+                result_.objects[i].skinJoints = skinJoints(scene_.objects[i], indexOfId);
         return std::move(result_);
     }
 
@@ -139,6 +143,26 @@ private:
                                 .arg(object.id)
                                 .arg(object.parent);
         return std::nullopt;
+    }
+
+    // The index of each joint of the object's skin, the joints coming anywhere in the scene; none for a
+    // rigid mesh, or with a warning for a skin whose joint is no object.
+    std::vector<std::size_t> skinJoints(const model::SceneObject& object,
+                                        const std::unordered_map<model::ObjectId, std::size_t>& indexOfId)
+    {
+        std::vector<std::size_t> joints;
+        for (const model::ObjectId joint : object.mesh->skin.joints) {
+            const auto found = indexOfId.find(joint);
+            if (found == indexOfId.end()) {
+                report_.warnings << FileError::tr("the skin of '%1' names object %2, which the scene does not hold; "
+                                                  "its mesh is written rigid")
+                                        .arg(object.name)
+                                        .arg(joint);
+                return {};
+            }
+            joints.push_back(found->second);
+        }
+        return joints;
     }
 
     Pose startPose(const model::SceneObject& object) const

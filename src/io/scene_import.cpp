@@ -4,6 +4,7 @@
 #include "io/gltf_animation.h"
 #include "io/scene_import_settings.h"
 #include "io/scene_import_skin.h"
+#include "model/scene_joints.h"
 #include "model/value_checks.h"
 
 #include <assimp/Importer.hpp>
@@ -321,6 +322,15 @@ bool isUniform(const Eigen::Vector3d& scale)
 }
 
 // Builds the scene from the node tree, depth first so that parents come before children.
+// Makes every object without a mesh that is no joint (model/scene_joints.h) an Empty: a pivot, a target,
+// the node of a camera or a light. None is an Empty before, so the rule sees the file's hierarchy alone.
+void markEmpties(model::Scene& scene)
+{
+    const std::vector<bool> joints = model::findJoints(scene);
+    for (std::size_t i = 0; i < joints.size(); ++i)
+        scene.objects[i].empty = scene.objects[i].mesh == nullptr && !joints[i];
+}
+
 class SceneBuilder {
 public:
     // `animations` are merged in their order: a node that several move takes the last one's channel.
@@ -361,6 +371,7 @@ public:
             pushChildren(*next.node, id, childScale);
         }
         meshes_.finishSkins(nodes_, result_.warnings);
+        markEmpties(result_.scene);
         reportUnusedChannels();
     }
 

@@ -4,7 +4,9 @@
 //
 // - Objects: one per node, named as the node, parents before children, ids from 1. The root node is
 //   left out when it carries nothing (no mesh, identity transform, not animated): then its children
-//   are the top-level objects. A node's meshes are merged into the one Mesh of its object.
+//   are the top-level objects. A node's meshes are merged into the one Mesh of its object. A node
+//   without meshes that is no joint (model/scene_joints.h: not a joint of a skin, nor joined to another
+//   node without meshes, as a skeleton's nodes are) is an Empty.
 // - Takes: a file may hold several animations. Those the options name, or the automatic choice of
 //   planTakes(), are merged into one motion.
 // - Motion: every key of the chosen animations comes through exactly, at time = tick / ticks per
@@ -24,7 +26,8 @@
 // - Scale: Gyre's tracks are rigid. A node's scale (its first scaling key when animated) is baked
 //   into its own mesh; a uniform scale also into its descendants' positions and meshes. A scale that
 //   changes over time, or that is not uniform on a node with children, is reported as a warning.
-// - Skinning, morph targets, cameras, lights and materials are not imported (warnings say so).
+// - Skinned meshes keep their skin (scene_import_skin.h). Morph targets, cameras, lights and materials
+//   are not imported (warnings say so).
 
 #include "core/name_table.h"
 #include "io/up_axis.h"

@@ -24,8 +24,8 @@ namespace gyre::io::wire {
 inline constexpr quint32 kMagic = 0x57535947; // "GYSW" read as little-endian bytes
 // 2: import options (takes, frame rate, unit, up axis, time origin); the takes, settings and time shift
 // of an import. 3: each mesh's skin. 4: each object's typed mass properties. 5: each track's rotation mode
-// and its keys' Euler angles. 6: the scene's gravity.
-inline constexpr quint16 kVersion = 6;
+// and its keys' Euler angles. 6: the scene's gravity. 7: each object's Empty flag.
+inline constexpr quint16 kVersion = 7;
 
 // The largest request or reply either side accepts: more is not a scene Gyre could hold.
 inline constexpr qint64 kMaxMessageBytes = qint64{1} << 30;

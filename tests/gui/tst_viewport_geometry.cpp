@@ -345,9 +345,9 @@ private slots:
         scene.objects = {placed(1, model::kNoObject, turned(0.3, {1, 2, 3}, {1, 0, 0})),
                          placed(2, 1, turned(0.8, {0, 1, 0}, {0, 0, 2})), placed(3, 2, turned(-0.5, {1, 0, 1}, {1.5, 0, 0}))};
         scene.objects[1].empty = true;
-        QCOMPARE(app::findJoints(scene), std::vector<bool>(3, false));
+        QCOMPARE(model::findJoints(scene), std::vector<bool>(3, false));
         scene.objects[1].empty = false;
-        QCOMPARE(app::findJoints(scene), std::vector<bool>(3, true));
+        QCOMPARE(model::findJoints(scene), std::vector<bool>(3, true));
     }
 
     void anEmptysHullIsClosedAndSpansItsAxes()

@@ -225,7 +225,7 @@ private slots:
         const model::ObjectId firstBlock = document.scene().objects.back().id;
         sample.child<QAction>("actionAdd-block")->trigger();
         document.push(new model::ReparentObjectCommand(document, document.scene().objects.back().id, firstBlock));
-        const std::vector<bool> joints = app::findJoints(document.scene());
+        const std::vector<bool> joints = model::findJoints(document.scene());
         QVERIFY(std::none_of(joints.begin(), joints.end(), [](bool joint) { return joint; }));
         document.undoStack().undo();
         document.undoStack().undo();

@@ -10,6 +10,13 @@
 #   project's frame rate (glTF and Gyre's Collada store none: Blender keys them at 24 fps).
 #   blender_imports_gyre_glb-spline_<sample>, for the samples with hermite tracks: the same without
 #   their fits, so that the rotations go out as CUBICSPLINE samplers.
+# - blender_imports_gyre_<format>_blender-empty, for fbx and glb: the same on Blender's own Empty carrying a
+#   mesh object (blender_empty_and_mesh.<format> from blender_exports_scenes), which gyre-cli imports first;
+#   the Empty must come back to Blender an EMPTY.
+# - blender_imports_gyre_skin_<format>, for glb and fbx, runs blender_skin_gyre.py: Blender's skinned bar
+#   (blender_skinned_bar.glb from blender_exports_scenes) imported and exported by gyre-cli (the glb
+#   validated), and imported by Blender, which must deform it at every frame as it deformed the original
+#   (1e-4 m).
 # scripts/install-deps.sh installs Blender with the other packages; without it these tests fail and
 # say so, rather than pass unseen.
 find_program(GYRE_BLENDER blender)
@@ -46,4 +53,22 @@ foreach(sample IN LISTS bundled_samples)
                          -- glb-spline $<TARGET_FILE:gyre-cli> ${sample})
         set_tests_properties(blender_imports_gyre_glb-spline_${name} PROPERTIES LABELS interop)
     endif()
+endforeach()
+
+foreach(format IN ITEMS fbx glb)
+    add_test(NAME blender_imports_gyre_${format}_blender-empty
+             COMMAND ${blender_command} ${CMAKE_CURRENT_SOURCE_DIR}/blender_import_gyre.py
+                     -- ${format} $<TARGET_FILE:gyre-cli> ${blender_exports}/blender_empty_and_mesh.${format})
+    set_tests_properties(blender_imports_gyre_${format}_blender-empty PROPERTIES LABELS interop
+                         FIXTURES_REQUIRED blender_exports)
+endforeach()
+
+foreach(format IN ITEMS glb fbx)
+    add_test(NAME blender_imports_gyre_skin_${format}
+             COMMAND ${blender_command} ${CMAKE_CURRENT_SOURCE_DIR}/blender_skin_gyre.py
+                     -- ${format} $<TARGET_FILE:gyre-cli> ${GYRE_NODE} ${CMAKE_CURRENT_SOURCE_DIR}/validate_gltf.mjs
+                        ${GYRE_GLTF_VALIDATOR_PREFIX} ${blender_exports}/blender_skinned_bar.glb
+                        ${blender_exports}/blender_skinned_bar.json)
+    set_tests_properties(blender_imports_gyre_skin_${format} PROPERTIES LABELS interop
+                         FIXTURES_REQUIRED "blender_exports;gltf_validator")
 endforeach()

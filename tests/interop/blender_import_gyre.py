@@ -40,6 +40,11 @@
 # each CUBICSPLINE key a Bézier key with handles a third of the span along the tangents, the same
 # cubic, and normalises the quaternion: the baked times between the spline's keys check that.
 #
+# Empties: an object the project marks "empty" must be an EMPTY in Blender (FBX: a Null Model with a
+# Null NodeAttribute; glTF: a node without a mesh), and its motion is checked as every object's. A
+# scene file given in place of a project (Blender's Empty carrying a mesh, make_fixtures.py) is first
+# imported with `gyre-cli import`, and that project must hold at least one Empty.
+#
 # Run it with Blender 3.4 (Debian's `blender`), from the top of the source tree:
 #   blender -b --factory-startup --python tests/interop/blender_import_gyre.py -- \
 #       fbx build/src/cli/gyre-cli resources/samples/*.gyre
@@ -76,7 +81,7 @@ def arguments():
     args = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     if len(args) < 3 or args[0] not in ("fbx", "glb", "glb-spline", "dae"):
         sys.exit("usage: blender -b --factory-startup --python blender_import_gyre.py -- fbx|glb|glb-spline|dae "
-                 "GYRE_CLI PROJECT.gyre...")
+                 "GYRE_CLI PROJECT.gyre|SCENE...")
     return args[0], args[1], args[2:]
 
 
@@ -264,6 +269,10 @@ def geometry_error(obj, world_turn, positions, orientation_in_world, position_in
 
 def check_project(kind, gyre_cli, project, folder):
     source = project
+    imported_scene = not project.endswith(".gyre")
+    if imported_scene:
+        project = os.path.join(folder, "imported.gyre")
+        subprocess.run([gyre_cli, "import", source, "-o", project], check=True)
     document, mesh_positions = read_project(project)
     fps = float(document["fps"])
     end = float(document["endTime"])
@@ -274,7 +283,10 @@ def check_project(kind, gyre_cli, project, folder):
     name_of = {o["id"]: o["name"] for o in document["objects"]}
     mesh_of = {o["id"]: o.get("mesh") for o in document["objects"]}
 
+    empties = {o["name"] for o in document["objects"] if o.get("empty")}
     problems = []
+    if imported_scene and not empties:
+        problems.append("the imported scene holds no Empty")
     if getattr(kind, "without_fits", False):
         project = os.path.join(folder, "without-fits.gyre")
         write_without_fits(source, document, project)
@@ -330,6 +342,8 @@ def check_project(kind, gyre_cli, project, folder):
             last_frame = kind.frame_of_time_0 + (rows[-1][0] + shift) * key_fps
             if action is None or abs(action.frame_range[1] - last_frame) > 1e-3:
                 problems.append("'%s' ends at frame %s, not %g" % (name, action and action.frame_range[1], last_frame))
+        if name in empties and obj.type != "EMPTY":
+            problems.append("'%s' is an Empty in Gyre and a %s in Blender" % (name, obj.type))
         mesh = mesh_of[object_id]
         positions = mesh_positions[mesh] if mesh is not None and obj.type == "MESH" else []
         if mesh is not None and obj.type != "MESH":
@@ -358,8 +372,8 @@ def check_project(kind, gyre_cli, project, folder):
         problems.append("scale off by %g" % worst_scale)
     if worst_vertex > POSITION_TOLERANCE:
         problems.append("vertices off by %g" % worst_vertex)
-    print("%s %s: %d objects, %s, %g s; worst angle %.2e°, position %.1e, scale %.1e, vertex %.1e%s"
-          % (kind.name, os.path.basename(source), len(names), rate, end, worst_angle, worst_position,
+    print("%s %s: %d objects (%d Empties), %s, %g s; worst angle %.2e°, position %.1e, scale %.1e, vertex %.1e%s"
+          % (kind.name, os.path.basename(source), len(names), len(empties), rate, end, worst_angle, worst_position,
              worst_scale, worst_vertex, "" if not problems else " -- FAILED: " + "; ".join(problems)))
     return not problems
 

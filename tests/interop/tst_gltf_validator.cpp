@@ -1,10 +1,14 @@
 // Every glTF Gyre writes passes the Khronos glTF validator (npm gltf-validator, run by node through
 // validate_gltf.mjs), and Gyre imports it back with its sampled times: the bundled samples and
-// hostile projects (keys 1e-9 s apart, times near 1e6 s, times before 0 s, a single key, an object
-// without a mesh, UTF-8 names), each exported with the real gyre-cli as .glb and as .gltf.
+// hostile projects (keys 1e-9 s apart, times near 1e6 s, times before 0 s, a single key, an Empty, a
+// skinned mesh, UTF-8 names), each exported with the real gyre-cli as .glb and as .gltf. An Empty comes
+// back an Empty, and a skinned mesh with a skin that puts its positions where Gyre's skinning did.
 
 #include "cli_test_support.h"
+#include "model/motion_cache.h"
 #include "model/project_file.h"
+#include "model/scene_motion.h"
+#include "model/skinning.h"
 #include "model/track_evaluation.h"
 
 #include <QDir>
@@ -104,13 +108,50 @@ model::Scene singleKey()
     return scene({object(1, "still", {{0.25, pose(0.7, kTilted, {1, 2, 3})}})}, 0.0, 1.0, 24.0);
 }
 
-// A moving object without a mesh whose child has one.
-model::Scene meshless()
+Eigen::Matrix4f matrixOf(const Pose& pose)
 {
-    return scene({object(1, "empty", {{0.0, pose(0.0, kZ, {0, 0, 0})}, {1.0, pose(3.0, kZ, {2, 0, 0})}},
-                         model::kNoObject, false),
-                  object(2, "child", {{0.0, pose(0.0, kTilted, {1, 0, 0})}, {0.5, pose(1.0, kTilted, {1, 0, 0})}}, 1)},
-                 0.0, 1.0, 25.0);
+    Eigen::Matrix4f result = Eigen::Matrix4f::Identity();
+    result.topLeftCorner<3, 3>() = pose.orientation.toRotationMatrix().cast<float>();
+    result.topRightCorner<3, 1>() = pose.position.cast<float>();
+    return result;
+}
+
+// A moving Empty whose child has a mesh, skinned to two moving joints (Root, and Tip on it) from their
+// poses at 0 s: one position follows Root, one both, and one Tip by 0.3 and its own object by the rest.
+model::Scene emptyAndSkin()
+{
+    model::Scene result =
+        scene({object(1, "empty", {{0.0, pose(0.0, kZ, {0, 0, 0})}, {1.0, pose(3.0, kZ, {2, 0, 0})}}, model::kNoObject, false),
+               object(2, "child", {{0.0, pose(0.0, kTilted, {1, 0, 0})}, {0.5, pose(1.0, kTilted, {1, 0, 0})}}, 1),
+               object(3, "Root", {{0.0, pose(0.0, kZ, {0, 1, 0})}, {1.0, pose(1.2, kZ, {0, 1, 0})}}, model::kNoObject, false),
+               object(4, "Tip", {{0.0, pose(0.0, kTilted, {1, 0, 0})}, {1.0, pose(0.8, kTilted, {1, 0, 0})}}, 3, false)},
+              0.0, 1.0, 25.0);
+    result.objects[0].empty = true;
+    const model::SceneMotion motion(result, [](const model::SceneObject& o) {
+        return std::make_shared<const model::SharedTrackMotion>(o.track);
+    });
+    auto mesh = std::make_shared<model::Mesh>(*result.objects[1].mesh);
+    mesh->skin.joints = {3, 4};
+    for (const model::ObjectId joint : mesh->skin.joints)
+        mesh->skin.inverseBinds.push_back(matrixOf(motion.worldPose(joint, 0.0).inverse() * motion.worldPose(2, 0.0)));
+    mesh->skin.vertexJoints = {{0, 0, 0, 0}, {0, 1, 0, 0}, {1, 0, 0, 0}};
+    mesh->skin.vertexWeights = {{1, 0, 0, 0}, {0.5F, 0.5F, 0, 0}, {0.3F, 0, 0, 0}};
+    result.objects[1].mesh = mesh;
+    return result;
+}
+
+// The world positions of the object's skinned mesh at `time`.
+std::vector<Eigen::Vector3d> skinnedWorld(const model::Scene& scene, const model::SceneObject& object, double time)
+{
+    const model::SceneMotion motion(scene, [](const model::SceneObject& o) {
+        return std::make_shared<const model::SharedTrackMotion>(o.track);
+    });
+    const Pose at = motion.worldPose(object.id, time);
+    std::vector<Eigen::Vector3d> result;
+    for (const Eigen::Vector3f& p :
+         model::skinnedPositions(*object.mesh, model::jointMatrices(object.mesh->skin, object.id, motion, time)))
+        result.push_back(at.apply(p.cast<double>()));
+    return result;
 }
 
 model::Scene utf8Names()
@@ -182,7 +223,7 @@ private slots:
         const std::pair<const char*, model::Scene> hostile[] = {
             {"keys 1e-9 s apart", closeKeys()}, {"times near 1e6 s", farTimes()},
             {"times before 0 s", negativeTimes()}, {"a single key", singleKey()},
-            {"an object without a mesh", meshless()}, {"UTF-8 names", utf8Names()}};
+            {"an Empty and a skinned mesh", emptyAndSkin()}, {"UTF-8 names", utf8Names()}};
         for (const auto& [name, project] : hostile) {
             const QString file = path(QString(name).replace(' ', '_') + ".gyre");
             model::writeProject(file, project);
@@ -210,6 +251,19 @@ private slots:
             for (const model::SceneObject& object : original.objects) {
                 const model::SceneObject* again = named(imported, object.name);
                 QVERIFY2(again, qPrintable(object.name));
+                if (object.empty)
+                    QVERIFY2(again->empty, qPrintable(object.name + " is no longer an Empty"));
+                if (object.mesh && !object.mesh->skin.empty()) {
+                    QVERIFY2(again->mesh && !again->mesh->skin.empty(), qPrintable(object.name + " lost its skin"));
+                    for (const double time : {0.25, 0.75}) {
+                        const std::vector<Eigen::Vector3d> expected = skinnedWorld(original, object, time);
+                        const std::vector<Eigen::Vector3d> skinned = skinnedWorld(imported, *again, time);
+                        QCOMPARE(skinned.size(), expected.size());
+                        for (std::size_t v = 0; v < expected.size(); ++v)
+                            QVERIFY2((skinned[v] - expected[v]).norm() < 1e-4,
+                                     qPrintable(QString("%1 vertex %2 at %3 s").arg(file).arg(v).arg(time)));
+                    }
+                }
                 if (object.track.keys.size() < 2 && object.track.sketch.fittedCurve.empty())
                     continue; // written without animation
                 const std::vector<double> expected = timesAsReadBack(object.track, original);

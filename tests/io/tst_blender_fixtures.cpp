@@ -1,11 +1,17 @@
 // Scenes Blender 3.4 exported with its default FBX, glTF (glb) and Collada settings
 // (tests/interop/make_fixtures.py, files in tests/data): three objects, each with its own action
 // (quaternion, Euler XYZ, Euler ZXY and parented), at 30 fps, and Blender's own evaluation of every
-// object's world pose at every frame. Every object must move as Blender evaluated it.
+// object's world pose at every frame; and an animated Empty carrying an animated mesh object, as FBX and
+// glb. Every object must move as Blender evaluated it, and the Empty come in as an Empty. A bar skinned to
+// a two-bone armature must deform under Gyre's skinning as Blender deformed it.
 
 #include "core/core_test_support.h"
+#include "io/scene_export.h"
 #include "io/scene_import.h"
+#include "model/motion_cache.h"
+#include "model/scene_motion.h"
 #include "model/scene_queries.h"
+#include "model/skinning.h"
 #include "model/track_evaluation.h"
 
 #include <QFile>
@@ -40,9 +46,9 @@ struct BlenderFrame {
     std::map<QString, Pose> poses;
 };
 
-std::vector<BlenderFrame> blenderFrames()
+std::vector<BlenderFrame> blenderFrames(const QString& fileName)
 {
-    QFile file(dataFile(QStringLiteral("blender_three_objects.json")));
+    QFile file(dataFile(fileName));
     if (!file.open(QIODevice::ReadOnly))
         qFatal("cannot read %s", qPrintable(file.fileName()));
     const QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
@@ -85,6 +91,92 @@ double degrees(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b)
 // exporters turn its world by the inverse for Y-up formats.
 const Eigen::Quaterniond kYUpToZUp(Eigen::AngleAxisd(kPi / 2.0, Eigen::Vector3d::UnitX()));
 
+// Every one of `names` moves (turns more than 20° from the first frame to the last), and at every
+// frame its world pose in `scene` is Blender's within `toleranceDegrees` and 1e-4 m; `framesTurned`
+// as in everyObjectMovesAsBlenderEvaluatedIt. A failed check fails the calling test (QVERIFY2 returns).
+void checkAgainstBlender(const model::Scene& scene, const std::vector<BlenderFrame>& frames, const QStringList& names,
+                         double toleranceDegrees, bool framesTurned, const QString& file)
+{
+    double worstDegrees = 0.0;
+    double worstMetres = 0.0;
+    for (const QString& name : names) {
+        const model::SceneObject* object = objectNamed(scene, name);
+        QVERIFY2(object, qPrintable(name));
+        // Every animated object moves: its orientation at the last frame is not its first.
+        const double last = (frames.back().frame - frames.front().frame) / 30.0;
+        QVERIFY2(degrees(worldPose(scene, *object, 0.0).orientation, worldPose(scene, *object, last).orientation) > 20.0,
+                 qPrintable(name));
+        for (const BlenderFrame& frame : frames) {
+            const double time = (frame.frame - frames.front().frame) / 30.0;
+            const Pose gyre = worldPose(scene, *object, time);
+            const Pose& blender = frame.poses.at(name);
+            const Eigen::Quaterniond expected = framesTurned ? blender.orientation * kYUpToZUp : blender.orientation;
+            const double angle = degrees(gyre.orientation, expected);
+            const double distance = (gyre.position - blender.position).norm();
+            worstDegrees = std::max(worstDegrees, angle);
+            worstMetres = std::max(worstMetres, distance);
+            QVERIFY2(angle <= toleranceDegrees,
+                     qPrintable(QStringLiteral("%1 frame %2: %3°").arg(name).arg(frame.frame).arg(angle)));
+            // In metres: a centimetre FBX must not arrive 100 times too large.
+            QVERIFY2(distance <= 1e-4, qPrintable(QStringLiteral("%1 frame %2: %3 m").arg(name).arg(frame.frame).arg(distance)));
+        }
+    }
+    qInfo("%s: worst %.6f° and %.2e m over %zu frames", qPrintable(file), worstDegrees, worstMetres, frames.size());
+}
+
+// Gyre's skinning of the object `evaluation` names against Blender's evaluated mesh at each of its
+// frames: the largest distance from a vertex of either to the nearest of the other, and how far Blender's
+// vertices move from the first frame to the last.
+struct SkinnedComparison {
+    bool skinned = false;
+    std::size_t frames = 0;
+    double worst = 0.0;
+    double moved = 0.0;
+};
+
+SkinnedComparison compareSkinning(const model::Scene& scene, const QJsonObject& evaluation)
+{
+    SkinnedComparison result;
+    const model::SceneObject* bar = objectNamed(scene, evaluation.value(QStringLiteral("object")).toString());
+    result.skinned = bar && bar->mesh && !bar->mesh->skin.empty();
+    if (!result.skinned)
+        return result;
+    const model::SceneMotion motion(scene, [](const model::SceneObject& object) {
+        return std::make_shared<const model::SharedTrackMotion>(object.track);
+    });
+    const auto farthest = [](const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& others) {
+        double worst = 0.0;
+        for (const Eigen::Vector3d& p : points) {
+            double nearest = INFINITY;
+            for (const Eigen::Vector3d& q : others)
+                nearest = std::min(nearest, (p - q).norm());
+            worst = std::max(worst, nearest);
+        }
+        return worst;
+    };
+    const double fps = evaluation.value(QStringLiteral("fps")).toDouble();
+    const int start = evaluation.value(QStringLiteral("frame_start")).toInt();
+    std::vector<Eigen::Vector3d> first;
+    for (const QJsonValue& entry : evaluation.value(QStringLiteral("frames")).toArray()) {
+        std::vector<Eigen::Vector3d> blender;
+        for (const QJsonValue& v : entry.toObject().value(QStringLiteral("vertices")).toArray())
+            blender.emplace_back(v[0].toDouble(), v[1].toDouble(), v[2].toDouble());
+        const double time = (entry.toObject().value(QStringLiteral("frame")).toInt() - start) / fps;
+        const Pose at = motion.worldPose(bar->id, time);
+        std::vector<Eigen::Vector3d> gyre;
+        for (const Eigen::Vector3f& p :
+             model::skinnedPositions(*bar->mesh, model::jointMatrices(bar->mesh->skin, bar->id, motion, time)))
+            gyre.push_back(at.apply(p.cast<double>()));
+        result.worst = std::max({result.worst, farthest(blender, gyre), farthest(gyre, blender)});
+        if (first.empty())
+            first = blender;
+        for (std::size_t v = 0; v < std::min(first.size(), blender.size()); ++v)
+            result.moved = std::max(result.moved, (blender[v] - first[v]).norm());
+        ++result.frames;
+    }
+    return result;
+}
+
 } // namespace
 
 class TstBlenderFixtures : public QObject {
@@ -97,6 +189,9 @@ private slots:
     void overlappingAnimationsNeedAChoice();
     void optionsOverrideWhatTheFileSays();
     void colladaUnitAndUpAxisComeFromItsAsset();
+    void blendersEmptyIsAnEmpty_data();
+    void blendersEmptyIsAnEmpty();
+    void blendersSkinnedBarDeformsAsInBlender();
 };
 
 void TstBlenderFixtures::everyObjectMovesAsBlenderEvaluatedIt_data()
@@ -122,33 +217,9 @@ void TstBlenderFixtures::everyObjectMovesAsBlenderEvaluatedIt()
     QCOMPARE(scene.fps, 30.0);
     QCOMPARE(scene.startTime, 0.0);
     QCOMPARE(scene.objects.size(), std::size_t{3});
-    const std::vector<BlenderFrame> frames = blenderFrames();
+    const std::vector<BlenderFrame> frames = blenderFrames(QStringLiteral("blender_three_objects.json"));
     QCOMPARE(frames.size(), std::size_t{11});
-    double worstDegrees = 0.0;
-    double worstMetres = 0.0;
-    for (const QString& name : kObjects) {
-        const model::SceneObject* object = objectNamed(scene, name);
-        QVERIFY2(object, qPrintable(name));
-        // Every animated object moves: its orientation at the last frame is not its first.
-        const double last = (frames.back().frame - frames.front().frame) / 30.0;
-        QVERIFY2(degrees(worldPose(scene, *object, 0.0).orientation, worldPose(scene, *object, last).orientation) > 20.0,
-                 qPrintable(name));
-        for (const BlenderFrame& frame : frames) {
-            const double time = (frame.frame - frames.front().frame) / 30.0;
-            const Pose gyre = worldPose(scene, *object, time);
-            const Pose& blender = frame.poses.at(name);
-            const Eigen::Quaterniond expected = framesTurned ? blender.orientation * kYUpToZUp : blender.orientation;
-            const double angle = degrees(gyre.orientation, expected);
-            const double distance = (gyre.position - blender.position).norm();
-            worstDegrees = std::max(worstDegrees, angle);
-            worstMetres = std::max(worstMetres, distance);
-            QVERIFY2(angle <= toleranceDegrees,
-                     qPrintable(QStringLiteral("%1 frame %2: %3°").arg(name).arg(frame.frame).arg(angle)));
-            // In metres: a centimetre FBX must not arrive 100 times too large.
-            QVERIFY2(distance <= 1e-4, qPrintable(QStringLiteral("%1 frame %2: %3 m").arg(name).arg(frame.frame).arg(distance)));
-        }
-    }
-    qInfo("%s: worst %.6f° and %.2e m over %zu frames", qPrintable(file), worstDegrees, worstMetres, frames.size());
+    checkAgainstBlender(scene, frames, kObjects, toleranceDegrees, framesTurned, file);
 }
 
 void TstBlenderFixtures::blenderTakesGiveEachObjectItsOwnAction()
@@ -287,6 +358,67 @@ void TstBlenderFixtures::colladaUnitAndUpAxisComeFromItsAsset()
     const SceneImport xUp = importScene(variant("x.dae", R"(<unit meter="1"/>)", "<up_axis>X_UP</up_axis>"));
     QCOMPARE(xUp.file.values.up, UpAxis::Y);
     QCOMPARE(xUp.warnings.filter(QStringLiteral("its up axis is X_UP")).size(), 1);
+}
+
+void TstBlenderFixtures::blendersEmptyIsAnEmpty_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<double>("toleranceDegrees");
+    QTest::addColumn<bool>("framesTurned");
+    QTest::newRow("fbx") << "blender_empty_and_mesh.fbx" << 0.01 << false;
+    QTest::newRow("glb") << "blender_empty_and_mesh.glb" << 0.2 << true;
+}
+
+// Blender's animated Empty (a Null Model in FBX, a node without a mesh in glTF) with a mesh object as its
+// child: the Empty comes in as an Empty, the mesh object as none, and both move as Blender evaluated them.
+void TstBlenderFixtures::blendersEmptyIsAnEmpty()
+{
+    QFETCH(QString, file);
+    QFETCH(double, toleranceDegrees);
+    QFETCH(bool, framesTurned);
+    const model::Scene scene = importScene(dataFile(file)).scene;
+    QCOMPARE(scene.objects.size(), std::size_t{2});
+    const model::SceneObject* pivot = objectNamed(scene, QStringLiteral("Pivot"));
+    const model::SceneObject* blade = objectNamed(scene, QStringLiteral("Blade"));
+    QVERIFY(pivot && blade);
+    QVERIFY(pivot->empty);
+    QVERIFY(pivot->mesh == nullptr);
+    QVERIFY(!blade->empty);
+    QVERIFY(blade->mesh != nullptr);
+    QCOMPARE(blade->parent, pivot->id);
+    const std::vector<BlenderFrame> frames = blenderFrames(QStringLiteral("blender_empty_and_mesh.json"));
+    QCOMPARE(frames.size(), std::size_t{11});
+    checkAgainstBlender(scene, frames, {QStringLiteral("Pivot"), QStringLiteral("Blade")}, toleranceDegrees, framesTurned,
+                        file);
+}
+
+// Blender's bar weighted to a two-bone armature whose bones turn (glb): skinned by Gyre (model/skinning.h)
+// at each frame's time, every vertex lies within 1e-4 m of a vertex of Blender's evaluated mesh, and the
+// other way round; so too after Gyre writes it as FBX (a Skin deformer, a Cluster per joint) and reads
+// that back. The bar deforms: a vertex moves more than 0.5 m.
+void TstBlenderFixtures::blendersSkinnedBarDeformsAsInBlender()
+{
+    QFile file(dataFile(QStringLiteral("blender_skinned_bar.json")));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonObject evaluation = QJsonDocument::fromJson(file.readAll()).object();
+    const model::Scene scene = importScene(dataFile(QStringLiteral("blender_skinned_bar.glb"))).scene;
+    for (const QString& bone : {QStringLiteral("Upper"), QStringLiteral("Lower")}) {
+        const model::SceneObject* joint = objectNamed(scene, bone);
+        QVERIFY2(joint && !joint->empty, qPrintable(bone));
+    }
+    QTemporaryDir folder;
+    const QString fbx = folder.filePath(QStringLiteral("bar.fbx"));
+    exportScene(scene, fbx, SceneFormat::Fbx, scene.fps);
+    const model::Scene throughFbx = importScene(fbx).scene;
+    for (const model::Scene* skinned : {&scene, &throughFbx}) {
+        const SkinnedComparison compared = compareSkinning(*skinned, evaluation);
+        QVERIFY2(compared.skinned, "the bar has no skin");
+        QCOMPARE(compared.frames, std::size_t{11});
+        QVERIFY2(compared.moved > 0.5, qPrintable(QString::number(compared.moved)));
+        QVERIFY2(compared.worst <= 1e-4, qPrintable(QStringLiteral("worst vertex %1 m").arg(compared.worst)));
+        qInfo("skinned bar%s: worst vertex %.2e m over %zu frames", skinned == &scene ? "" : " through FBX", compared.worst,
+              compared.frames);
+    }
 }
 
 } // namespace gyre

@@ -277,6 +277,7 @@ private slots:
     void frameRateAndSpanAreStored_data();
     void frameRateAndSpanAreStored();
     void aSpanBeyondFbxTicksIsRefused();
+    void anEmptyIsANullModelWithANullAttribute();
 
 private:
     QString path(const QString& name) const { return directory_.filePath(name); }
@@ -485,6 +486,57 @@ void TstFbxExport::aSpanBeyondFbxTicksIsRefused()
         QVERIFY2(QString::fromUtf8(error.what()).startsWith(file + ": cannot be written as FBX"), error.what());
     }
     QVERIFY(!QFile::exists(file));
+}
+
+// An Empty's Model carries a NodeAttribute Null, as Blender writes its Empties, and comes back an Empty;
+// two objects without meshes joined as a skeleton's nodes are come back as joints, not Empties.
+void TstFbxExport::anEmptyIsANullModelWithANullAttribute()
+{
+    model::Scene scene;
+    scene.endTime = 1.0;
+    model::SceneObject pivot = spinner(scene, "Pivot", model::kNoObject, {0, 0, 1}, 0.5, 0.5, 3);
+    pivot.empty = true;
+    model::SceneObject block = spinner(scene, "Block", pivot.id, {1, 0, 0}, 0.25, 1.0, 2);
+    block.mesh = std::make_shared<model::Mesh>(model::Mesh{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {}, {0, 1, 2}, {}});
+    const model::SceneObject hips = spinner(scene, "Hips", model::kNoObject, {0, 1, 0}, 0.3, 0.5, 3);
+    const model::SceneObject knee = spinner(scene, "Knee", hips.id, {1, 0, 0}, 0.2, 0.5, 3);
+    scene.objects = {pivot, block, hips, knee};
+    const QString file = path(QStringLiteral("empty.fbx"));
+    exportScene(scene, file, SceneFormat::Fbx, 24.0);
+
+    const FbxNode fbx = readFbx(file);
+    std::map<std::int64_t, std::string> modelNames;
+    std::vector<std::int64_t> nullAttributes;
+    for (const FbxNode& object : fbx.child("Objects")->children) {
+        const std::string name = object.text(1).substr(0, object.text(1).find('\0'));
+        if (object.name == "Model")
+            modelNames[object.scalar<std::int64_t>(0)] = name;
+        if (object.name == "NodeAttribute") {
+            QCOMPARE(object.text(2), std::string("Null"));
+            QCOMPARE(object.child("TypeFlags")->text(0), std::string("Null"));
+            QCOMPARE(name, std::string("Pivot"));
+            nullAttributes.push_back(object.scalar<std::int64_t>(0));
+        }
+    }
+    QCOMPARE(nullAttributes.size(), std::size_t{1});
+    std::vector<std::string> holders;
+    for (const FbxNode& c : fbx.child("Connections")->children)
+        if (c.text(0) == "OO" && c.scalar<std::int64_t>(1) == nullAttributes.front())
+            holders.push_back(modelNames.at(c.scalar<std::int64_t>(2)));
+    QCOMPARE(holders, std::vector<std::string>{"Pivot"});
+    int counted = 0;
+    for (const FbxNode& type : fbx.child("Definitions")->children)
+        if (type.name == "ObjectType" && type.text(0) == "NodeAttribute")
+            counted = type.child("Count")->scalar<std::int32_t>(0);
+    QCOMPARE(counted, 1);
+
+    const model::Scene back = importScene(file).scene;
+    for (const auto& [name, empty] : {std::pair{"Pivot", true}, {"Block", false}, {"Hips", false}, {"Knee", false}}) {
+        const model::SceneObject* object = objectNamed(back, QString::fromUtf8(name));
+        QVERIFY2(object, name);
+        QVERIFY2(object->empty == empty, name);
+    }
+    QVERIFY(objectNamed(back, QStringLiteral("Pivot"))->track.keys.size() > 2); // its motion came too
 }
 
 QTEST_GUILESS_MAIN(TstFbxExport)

@@ -67,6 +67,7 @@ model::Scene richScene()
     other.massOverride = MassProperties{2.5, {0.1, -0.2, 0.3}, inertiaTensor({0.5, 0.75, 1.0, 0.01, -0.02, 0.03})};
     model::SceneObject empty{3, QStringLiteral("no mesh"), nullptr, 9, {}};
     empty.track.keys = {key(0.0, 0.0)};
+    empty.empty = true; // an Empty travels as one (wire version 7)
     scene.objects = {root, child, other, empty};
     scene.nextObjectId = 10;
     return scene;
@@ -175,6 +176,30 @@ private slots:
         QCOMPARE(received->fps, sent.fps);
         QCOMPARE(received->scene.gravity, sent.scene.gravity);
         QCOMPARE(model::projectBytes(received->scene), model::projectBytes(sent.scene));
+        QVERIFY(received->scene.objects[3].empty);
+        QVERIFY(!received->scene.objects[2].empty);
+    }
+
+    // The Empty flag is the request's last byte (the last object's); it is a flag, and an Empty has no mesh.
+    void anEmptyIsAFlagWithoutAMesh()
+    {
+        ExportRequest sent{QStringLiteral("out.fbx"), {}, SceneFormat::Fbx, 24.0, richScene()};
+        QByteArray notAFlag = encodeRequest(sent);
+        QCOMPARE(notAFlag.back(), char{1});
+        notAFlag.back() = 2;
+        try {
+            decodeRequest(notAFlag);
+            QFAIL("a flag of 2 was accepted");
+        } catch (const WireError& error) {
+            QVERIFY2(QByteArray(error.what()).contains("a flag is 2"), error.what());
+        }
+        sent.scene.objects[2].empty = true;
+        try {
+            decodeRequest(encodeRequest(sent));
+            QFAIL("an empty with a mesh was accepted");
+        } catch (const WireError& error) {
+            QVERIFY2(QByteArray(error.what()).contains("object 2: an empty has a mesh"), error.what());
+        }
     }
 
     void importRequestAndOtherRepliesComeThrough()

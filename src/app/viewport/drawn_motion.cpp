@@ -215,7 +215,7 @@ void DrawnMotion::requestSampledTrail()
         return; // the screw trail is ScrewBender's subdivision (requestTrail)
     const model::Scene& scene = document_.scene();
     // A joint is drawn as its bones and an empty as its axes: their paths say where they go.
-    if (object == nullptr || object->empty || findJoints(scene)[static_cast<std::size_t>(object - scene.objects.data())]) {
+    if (object == nullptr || object->empty || model::findJoints(scene)[static_cast<std::size_t>(object - scene.objects.data())]) {
         sampledTrailJob_.cancel();
         dropTrail();
         return;
@@ -254,7 +254,7 @@ void DrawnMotion::rebuildTrajectory()
     if (object == nullptr || !(scene.endTime > scene.startTime))
         return;
     // A joint's path is its origin's, where its bones meet.
-    const bool joint = findJoints(scene)[static_cast<std::size_t>(object - scene.objects.data())];
+    const bool joint = model::findJoints(scene)[static_cast<std::size_t>(object - scene.objects.data())];
     const Eigen::Vector3d centre = joint ? Eigen::Vector3d::Zero() : meshCentre(displayMesh(*object));
     // One sample per frame of the scene, fewer for very long scenes.
     const double frames = std::ceil((scene.endTime - scene.startTime) * scene.fps);

@@ -2,8 +2,6 @@
 
 #include <Eigen/Geometry>
 
-#include <unordered_map>
-
 namespace gyre::app {
 
 namespace {
@@ -21,49 +19,13 @@ bool appendBone(std::vector<Bone>& bones, model::ObjectId joint, const Pose& joi
     return true;
 }
 
-// The index of each object's parent in scene.objects, or the object's own index for a top-level one.
-void findParents(const model::Scene& scene, std::vector<std::size_t>& parents)
-{
-    const std::size_t count = scene.objects.size();
-    std::unordered_map<model::ObjectId, std::size_t> indexOf;
-    indexOf.reserve(count);
-    parents.assign(count, 0);
-    for (std::size_t i = 0; i < count; ++i) {
-        const model::SceneObject& object = scene.objects[i];
-        indexOf.emplace(object.id, i);
-        const auto parent = indexOf.find(object.parent); // parents come first
-        parents[i] = parent != indexOf.end() ? parent->second : i;
-    }
-}
-
-void findJoints(const model::Scene& scene, const std::vector<std::size_t>& parents, std::vector<bool>& joints)
-{
-    // An empty is a frame on its own, never a joint, and makes none of its parent or children.
-    const auto meshless = [&](std::size_t i) { return scene.objects[i].mesh == nullptr && !scene.objects[i].empty; };
-    joints.assign(scene.objects.size(), false);
-    for (std::size_t i = 0; i < joints.size(); ++i) {
-        const std::size_t parent = parents[i];
-        if (parent != i && meshless(i) && meshless(parent))
-            joints[i] = joints[parent] = true;
-    }
-}
-
 } // namespace
-
-std::vector<bool> findJoints(const model::Scene& scene)
-{
-    std::vector<std::size_t> parents;
-    findParents(scene, parents);
-    std::vector<bool> joints;
-    findJoints(scene, parents, joints);
-    return joints;
-}
 
 void Skeleton::update(const model::Scene& scene, const model::SceneMotion& motion, double time)
 {
     const std::size_t count = scene.objects.size();
-    findParents(scene, parentIndex_);
-    findJoints(scene, parentIndex_, joints_);
+    model::findParentIndices(scene, parentIndex_);
+    model::findJoints(scene, parentIndex_, joints_);
 
     bones_.clear();
     boneCounts_.assign(count, 0);

@@ -1,11 +1,11 @@
 #pragma once
-// The bones of a scene's joint hierarchies. A joint is an object without a mesh of its own, not an
-// empty, whose parent or one of whose children is such too (a BVH's joints, an FBX skeleton's nodes); the
-// viewport draws joints as bones instead of the default shape, and a click on a bone selects its joint.
+// The bones of a scene's joint hierarchies (the joints of model/scene_joints.h): the viewport draws
+// joints as bones instead of the default shape, and a click on a bone selects its joint.
 // No OpenGL, so that tests can check the bones and picking on their own.
 
 #include "core/pose.h"
 #include "model/scene.h"
+#include "model/scene_joints.h"
 #include "model/scene_motion.h"
 
 #include <cstddef>
@@ -22,9 +22,6 @@ struct Bone {
     Eigen::Vector3d head() const { return pose.position; }
     Eigen::Vector3d tail() const { return pose.apply(Eigen::Vector3d(length, 0.0, 0.0)); }
 };
-
-// Whether each of scene.objects is a joint.
-std::vector<bool> findJoints(const model::Scene& scene);
 
 class Skeleton {
 public:
