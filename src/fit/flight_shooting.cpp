@@ -8,11 +8,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <mutex>
-#include <cmath>
-#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -21,18 +21,21 @@ namespace gyre::fit {
 
 namespace {
 
-// The integration tolerance while the solver iterates, and for every Jacobian: 10⁵ coarser than playback's, so
-// about ten times fewer steps.
-constexpr double kIterationTolerance = 1e-7;
+// The integration tolerance while the solver iterates, and for every Jacobian: 10⁷ coarser than playback's, so
+// about 25 times fewer steps (Dormand–Prince's steps grow as the tolerance's fifth root). A coarse flight ends
+// within about 1e-5 rad of the true one, which is all a seed needs to find its root's neighbourhood: the polish
+// takes it from there. At 1e-7 the solve took twice as long and found the same flights.
+constexpr double kIterationTolerance = 1e-5;
 
-// A seed's coarse iterations stop once its flight ends this close to the key (rad): a candidate for the polish.
+// A seed's coarse iterations stop once its coarse flight ends this close to the key (rad): a candidate.
 constexpr double kCandidateError = 1e-7;
 
 // r(ω₀) = log(q(T)⁻¹·q₁), the half rotation vector from where the flight ends to the end key, its flight
 // integrated to `tolerance`; the Jacobian by forward differences of flights integrated to kIterationTolerance
-// (steps of 1e-5·max(1, |ω₀|)). Its error, about 1e-2 relative, only slows the last iterations from quadratic to
-// linear convergence at that rate, while each iteration costs one fine integration instead of the seven of
-// central differences at the fine tolerance.
+// (steps of 1e-4·max(1, |ω₀|), ten times the flights' tolerance, so that their error stays a tenth of the
+// difference). Its error, a few per cent, only slows the last iterations from quadratic to linear convergence
+// at that rate, while each iteration costs one fine integration instead of the seven of central differences at
+// the fine tolerance.
 class EndKeyResidual final : public ceres::SizedCostFunction<3, 3> {
 public:
     EndKeyResidual(const FlightSpan& span, double tolerance) : span_(span), tolerance_(tolerance) {}
@@ -43,7 +46,7 @@ public:
         const Eigen::Vector3d r = endError(omega, tolerance_);
         std::copy(r.data(), r.data() + 3, residuals);
         if (jacobians && jacobians[0]) {
-            const double step = 1e-5 * std::max(1.0, omega.norm());
+            const double step = 1e-4 * std::max(1.0, omega.norm());
             const Eigen::Vector3d base = tolerance_ == kIterationTolerance ? r : endError(omega, kIterationTolerance);
             Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> jacobian(jacobians[0]);
             for (int j = 0; j < 3; ++j)
@@ -130,7 +133,8 @@ public:
 };
 
 // A seed iterated with coarse flights, each component of ω₀ kept within `bound` so that no seed wanders off to
-// flights of many turns (each costlier to integrate than the last); nothing when it did not reach kCandidateError.
+// flights of many turns (each costlier to integrate than the last); nothing unless its coarse flight ends within
+// 1e-6 rad of the key (SeedProgress stops it at kCandidateError; the iteration cap may stop it a little short).
 std::optional<Eigen::Vector3d> candidateFrom(const FlightSpan& span, const Eigen::Vector3d& seed, double bound)
 {
     std::array<double, 3> unknowns{seed.x(), seed.y(), seed.z()};
@@ -152,9 +156,10 @@ std::optional<Eigen::Vector3d> candidateFrom(const FlightSpan& span, const Eigen
 }
 
 // A candidate polished with playback's flights by Newton's iteration ω ← ω − J⁻¹·r(ω), J the coarse flights'
-// Jacobian at the candidate: the candidate is within about 1e-6 of the root, where J's error (about 1e-2
-// relative) makes each iteration gain two digits. It stops at a key error of kFlightKeyTolerance/100, or when an
-// iteration no longer gains; nothing when the key is not met to kFlightKeyTolerance.
+// Jacobian at the candidate: the candidate is within about 1e-5 of the root, where J's error (a few per cent)
+// makes each iteration gain more than a digit; two to four playback flights meet the key. It stops at a key
+// error of kFlightKeyTolerance/100, after 8 iterations, or when an iteration no longer gains; nothing when the key
+// is not met to kFlightKeyTolerance.
 std::optional<FlightSolution> polished(const FlightSpan& span, const Eigen::Vector3d& candidate)
 {
     const EndKeyResidual coarse(span, kIterationTolerance);
@@ -168,7 +173,7 @@ std::optional<FlightSolution> polished(const FlightSpan& span, const Eigen::Vect
     const Eigen::PartialPivLU<Eigen::Matrix3d> newton(jacobian);
     Eigen::Vector3d omega = candidate;
     Eigen::Vector3d r = fine.endError(omega, kTorqueFreeTolerance);
-    for (int iteration = 0; iteration < 6 && r.allFinite() && 2.0 * r.norm() > 1e-2 * kFlightKeyTolerance;
+    for (int iteration = 0; iteration < 8 && r.allFinite() && 2.0 * r.norm() > 1e-2 * kFlightKeyTolerance;
          ++iteration) {
         const Eigen::Vector3d next = omega - newton.solve(r);
         const Eigen::Vector3d nextR = fine.endError(next, kTorqueFreeTolerance);
@@ -180,7 +185,7 @@ std::optional<FlightSolution> polished(const FlightSpan& span, const Eigen::Vect
     const double keyError = 2.0 * r.norm();
     if (!omega.allFinite() || !(keyError <= kFlightKeyTolerance))
         return std::nullopt;
-    const Eigen::Matrix3d world = span.start.toRotationMatrix();
+    const Eigen::Matrix3d world = span.start.normalized().toRotationMatrix();
     const Eigen::Vector3d momentum = world * span.inertia * world.transpose() * omega;
     return FlightSolution{omega, 0.5 * momentum.dot(omega), keyError};
 }

@@ -43,9 +43,10 @@ inline constexpr double kMaxFrames = 16777216.0;
 // pose, the subdivider's working buffers, the polyscrew's screw per span): 1,000 keys at 12 levels,
 // 4,096,000 poses, bake with a peak of 1.04 GB in 52 s. The budget keeps one track near 270 MB.
 inline constexpr std::size_t kMaxSubdividedPoses = std::size_t{1} << 20;
-// The most keys a ballistic track holds. Each span is a free flight solved anew whenever the track changes,
-// 20 to 90 ms in a release build (gyre-bench's BM_FlightSolve): 64 keys are up to about 6 s of solving, and a
-// thrown object is keyed at its launch, its landing and a few bounces.
+// The most keys a ballistic track holds. Each span is a free flight solved when its keys first meet, about 4 ms
+// of CPU in a release build (gyre-bench's BM_FlightSolve; spans already solved are remembered): 64 keys are
+// about a quarter of a second of solving when a project opens, and a thrown object is keyed at its launch, its
+// landing and a few bounces.
 inline constexpr std::size_t kMaxBallisticKeys = 64;
 // The shortest a fitted control point's value may be. The fit starts from unit keys and keeps its
 // values near length 1; the curve is normalised when evaluated, so a value near zero has no direction

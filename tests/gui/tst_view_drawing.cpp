@@ -1,14 +1,17 @@
 // What drawing costs while a motion capture plays: the main window on a 31-joint capture of 4,500
 // frames at 120 Hz (the one gyre-bench imports), a bone of it selected, the docks as the window lays
 // them out. Prints the time to repaint the timeline and the sphere view for a new current time, and
-// the frame rate of playback with every view drawing; and what the Graph Editor costs with the bone
-// selected (issue 23). Tests never assert on time.
+// the frame rate of playback with every view drawing; what the Graph Editor costs with the bone
+// selected (issue 23); and the time to open the capture in the window as File ▸ Import does (issue 22).
+// Tests never assert on time.
 
 #include "app/graph_editor/graph_editor_panel.h"
 #include "app/main_window.h"
+#include "app/scene_file_actions.h"
 #include "app/sketch/sphere_view.h"
 #include "app/timeline_widget.h"
 #include "app/viewport/viewport.h"
+#include "built_scene_worker.h"
 #include "gui_test_support.h"
 #include "io/bvh_fixture.h"
 #include "io/scene_import.h"
@@ -85,7 +88,44 @@ class TestViewDrawing : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { test::useTestSettings(); }
+    void initTestCase()
+    {
+        test::useTestSettings();
+        test::useBuiltSceneWorker();
+    }
+
+    // The capture written as a file and opened as the command line, a dropped file and File ▸ Import do
+    // (MainWindow::openFile): read by the scene worker, sent back, checked, added to the document; then the
+    // viewport's first frame with it.
+    void measuresOpeningAMotionCapture()
+    {
+        QTemporaryDir folder;
+        const QString path = folder.filePath(QStringLiteral("capture.bvh"));
+        QFile file(path);
+        const QByteArray bvh = test::bvhChain(kJoints, kFrames, kFrameTime);
+        QVERIFY(file.open(QIODevice::WriteOnly) && file.write(bvh) == bvh.size());
+        file.close();
+        app::MainWindow window;
+        window.resize(1500, 950);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        auto* viewport = window.findChild<app::Viewport*>();
+        QVERIFY(viewport != nullptr);
+        QSignalSpy imported(&window.sceneFiles().jobs(), &jobs::SceneFileJobs::imported);
+        QElapsedTimer clock;
+        clock.start();
+        window.openFile(path);
+        QVERIFY(imported.wait(60000));
+        const double importedMs = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+        QVERIFY(window.document().scene().objects.size() >= static_cast<std::size_t>(kJoints));
+        QSignalSpy swapped(viewport, &QOpenGLWidget::frameSwapped);
+        viewport->update();
+        QVERIFY(swapped.wait(60000));
+        const double drawnMs = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+        std::printf("opening a %d-joint capture of %d frames (%lld bytes) in the window: in the document after "
+                    "%.0f ms, its first frame drawn after %.0f ms\n",
+                    kJoints, kFrames, static_cast<long long>(bvh.size()), importedMs, drawnMs);
+    }
 
     void measuresPlayingAMotionCapture()
     {
