@@ -73,6 +73,7 @@ private slots:
             }
         }
 
+        double worstApart = 0.0;
         const QJsonArray keys = blender.value(QStringLiteral("keys")).toArray();
         QCOMPARE(keys.size(), 5);
         for (const QJsonValue& value : keys) {
@@ -89,8 +90,11 @@ private slots:
             const Eigen::Quaterniond expected(w[0].toDouble(), w[1].toDouble(), w[2].toDouble(), w[3].toDouble());
             const double apart = 2.0 * std::acos(std::min(1.0, std::abs(expected.normalized().dot(at->pose.orientation.normalized()))));
             QVERIFY2(apart < kSinglePrecisionRadians, qPrintable(QStringLiteral("at %1 s: %2° from Blender's").arg(time).arg(apart * kDegrees)));
+            worstApart = std::max(worstApart, apart);
         }
         const double last = track.keys.back().eulerAngles->z() * kDegrees;
+        qInfo("%zu keys; the last stored z %.9f°; at Blender's keys at most %.3g rad from Blender's rotation", track.keys.size(),
+              last, worstApart);
         QVERIFY2(std::abs(last - 530.0) < kSinglePrecisionRadians * kDegrees, qPrintable(QString::number(last, 'g', 12)));
     }
 };
