@@ -48,6 +48,12 @@ KeyframeActions::KeyframeActions(model::Document& document, Selection& selection
         if (changes & (model::Change::Keyframes | model::Change::TrackSettings | model::Change::Scene))
             updateActions();
     });
+    // The other selected objects' keys decide whether the Euler filter has work too.
+    connect(&document_, &model::Document::changed, this, [this](model::ObjectId object, model::Changes changes) {
+        if (object != selection_.object() && selection_.isObjectSelected(object) &&
+            (changes & (model::Change::Keyframes | model::Change::TrackSettings)))
+            updateActions();
+    });
     updateActions();
 }
 

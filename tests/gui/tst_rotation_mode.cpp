@@ -53,11 +53,12 @@ double spinDegrees(double time)
     return 720.0 * (3.0 * u * u - 2.0 * u * u * u);
 }
 
-// An object in Euler mode (extrinsic xyz) whose keys, one a second, store these angles in degrees.
-model::SceneObject eulerKeyed(const QString& name, const std::vector<Eigen::Vector3d>& degrees)
+// An object in Euler mode (extrinsic xyz) whose keys, one a second, store these angles in degrees; `id` is its
+// id in an import batch.
+model::SceneObject eulerKeyed(model::ObjectId id, const QString& name, const std::vector<Eigen::Vector3d>& degrees)
 {
     model::SceneObject object;
-    object.id = 1;
+    object.id = id;
     object.name = name;
     object.track.rotationMode = {model::RotationMode::Kind::Euler, {}};
     object.track.interpolation = InterpolationMethod::EulerCubic;
@@ -204,8 +205,8 @@ private slots:
         const std::vector<Eigen::Vector3d> turn{{0, 0, 0}, {170, 0, 0}, {-60, 0, 0}};
         const std::vector<Eigen::Vector3d> turnRamp{{0, 0, 0}, {170, 0, 0}, {300, 0, 0}};
         auto* import = new model::ImportObjectsCommand(
-            document, {eulerKeyed(QStringLiteral("spin"), spin), eulerKeyed(QStringLiteral("turn"), turn),
-                       eulerKeyed(QStringLiteral("tilt"), tilt)});
+            document, {eulerKeyed(1, QStringLiteral("spin"), spin), eulerKeyed(2, QStringLiteral("turn"), turn),
+                       eulerKeyed(3, QStringLiteral("tilt"), tilt)});
         document.push(import);
         const std::vector<model::ObjectId> ids = import->ids();
         document.undoStack().clear();
