@@ -309,8 +309,9 @@ private slots:
         constexpr int kCopies = 8;
         session.window.findChild<QAction*>(QStringLiteral("actionTrailCopies-%1").arg(kCopies))->trigger();
         session.window.selection().selectObjects({session.object, second}, session.object);
-        session.viewport->frameScene();
         QTRY_COMPARE(session.viewport->trailInstanceCount(), std::size_t(2 * kCopies));
+        // Framed once the drawn motion has the new object (its trail is sampled from it), so that both show.
+        session.viewport->frameScene();
 
         QAction* showTrail = session.window.findChild<QAction*>(QStringLiteral("actionShowTrail"));
         const QImage with = drawnImage(*session.viewport);

@@ -231,8 +231,11 @@ void DrawnMotion::requestSampledTrail()
         sampledTrailObjects(scene, selection_.objects(), selection_.object(), screwTrailObject_, trailSpacing_);
     if (trailed.empty()) {
         sampledTrailJob_.cancel();
-        sampledTrails_.clear();
-        composeTrails();
+        // Composed again only when some went: a screw trail alone is not uploaded anew at every drag move.
+        if (!sampledTrails_.empty()) {
+            sampledTrails_.clear();
+            composeTrails();
+        }
         return;
     }
     sampledTrailJob_.post([motion = motion_, objects = std::move(trailed), times = trailTimes(scene, trailSpacing_)](
