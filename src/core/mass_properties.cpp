@@ -245,6 +245,13 @@ Eigen::Matrix3d inertiaTensor(const InertiaComponents& c)
     return inertia;
 }
 
+Eigen::Vector3d angularMomentum(const Eigen::Matrix3d& inertia, const Eigen::Quaterniond& orientation,
+                                const Eigen::Vector3d& angularVelocity)
+{
+    const Eigen::Matrix3d rotation = orientation.toRotationMatrix();
+    return rotation * inertia * rotation.transpose() * angularVelocity;
+}
+
 InertiaComponents inertiaComponents(const Eigen::Matrix3d& inertia)
 {
     return {inertia(0, 0), inertia(1, 1), inertia(2, 2), inertia(0, 1), inertia(0, 2), inertia(1, 2)};

@@ -13,6 +13,7 @@
 // taken as its bounding box, solid.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <array>
 #include <cstdint>
@@ -74,5 +75,10 @@ InertiaProblem inertiaProblem(const Eigen::Matrix3d& inertia);
 using InertiaComponents = std::array<double, 6>;
 Eigen::Matrix3d inertiaTensor(const InertiaComponents& components);
 InertiaComponents inertiaComponents(const Eigen::Matrix3d& inertia);
+
+// The world angular momentum L = R·I·Rᵀ·ω of a body of `inertia` (body frame) turned by the unit `orientation`
+// R, spinning at the world angular velocity ω; its rotational energy is ½·L·ω.
+Eigen::Vector3d angularMomentum(const Eigen::Matrix3d& inertia, const Eigen::Quaterniond& orientation,
+                                const Eigen::Vector3d& angularVelocity);
 
 } // namespace gyre

@@ -99,8 +99,7 @@ TorqueFreeMotion::TorqueFreeMotion(const Eigen::Matrix3d& inertia, const Eigen::
     moments_ = principal.moments;
     axes_ = Eigen::Quaterniond(principal.axes).normalized();
     inverseMoments_ = moments_.cwiseInverse();
-    const Eigen::Matrix3d world = start_.toRotationMatrix();
-    momentum_ = world * inertia * world.transpose() * startAngularVelocity;
+    momentum_ = gyre::angularMomentum(inertia, start_, startAngularVelocity);
 
     const Eigen::Vector3d& d = moments_;
     const bool lowPair = d[1] - d[0] <= kSymmetricMomentTolerance * d[2];

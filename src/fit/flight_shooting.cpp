@@ -21,57 +21,56 @@ namespace gyre::fit {
 
 namespace {
 
-// The integration tolerance while the solver iterates, and for every Jacobian: 10⁷ coarser than playback's, so
-// about 25 times fewer steps (Dormand–Prince's steps grow as the tolerance's fifth root). A coarse flight ends
-// within about 1e-5 rad of the true one, which is all a seed needs to find its root's neighbourhood: the polish
-// takes it from there. At 1e-7 the solve took twice as long and found the same flights.
+// The integration tolerance per step while a seed iterates, and for every Jacobian: 10⁷ coarser than playback's,
+// so about 25 times fewer steps (Dormand–Prince's steps grow as the tolerance's fifth root). That is all a seed
+// needs to find its root's neighbourhood: the polish takes it from there. At 1e-7 the solve took twice as long
+// and found the same flights.
 constexpr double kIterationTolerance = 1e-5;
 
 // A seed's coarse iterations stop once its coarse flight ends this close to the key (rad): a candidate.
 constexpr double kCandidateError = 1e-7;
 
-// r(ω₀) = log(q(T)⁻¹·q₁), the half rotation vector from where the flight ends to the end key, its flight
-// integrated to `tolerance`; the Jacobian by forward differences of flights integrated to kIterationTolerance
-// (steps of 1e-4·max(1, |ω₀|), ten times the flights' tolerance, so that their error stays a tenth of the
-// difference). Its error, a few per cent, only slows the last iterations from quadratic to linear convergence
-// at that rate, while each iteration costs one fine integration instead of the seven of central differences at
-// the fine tolerance.
+// r(ω₀) = log(q(T)⁻¹·q₁), the half rotation vector from where the flight from ω₀, integrated to `tolerance`, ends
+// to the end key. NaN where the flight cannot be integrated (a seed that wandered to a spin past the step
+// budget): Ceres then takes the step as failed, and no exception unwinds through ceres::Solve.
+Eigen::Vector3d endError(const FlightSpan& span, const Eigen::Vector3d& omega, double tolerance)
+{
+    try {
+        const Eigen::Quaterniond end =
+            TorqueFreeMotion::endOrientation(span.inertia, span.start, omega, span.duration, tolerance);
+        return quatLog(end.conjugate() * span.end);
+    } catch (const std::invalid_argument&) {
+        return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+    }
+}
+
+// The seeds' residual r(ω₀) with coarse flights, and its Jacobian by forward differences of coarse flights, steps
+// of 1e-4·max(1, |ω₀|). Flights from nearby ω₀ take nearly the same steps, so their integration errors mostly
+// cancel in the difference: the Jacobian is off by a few per cent, which only slows the last iterations from
+// quadratic to linear convergence, while each costs four coarse flights instead of the seven fine ones of
+// central differences at playback's tolerance.
 class EndKeyResidual final : public ceres::SizedCostFunction<3, 3> {
 public:
-    EndKeyResidual(const FlightSpan& span, double tolerance) : span_(span), tolerance_(tolerance) {}
+    explicit EndKeyResidual(const FlightSpan& span) : span_(span) {}
 
     bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override
     {
         const Eigen::Vector3d omega(parameters[0][0], parameters[0][1], parameters[0][2]);
-        const Eigen::Vector3d r = endError(omega, tolerance_);
+        const Eigen::Vector3d r = endError(span_, omega, kIterationTolerance);
         std::copy(r.data(), r.data() + 3, residuals);
         if (jacobians && jacobians[0]) {
             const double step = 1e-4 * std::max(1.0, omega.norm());
-            const Eigen::Vector3d base = tolerance_ == kIterationTolerance ? r : endError(omega, kIterationTolerance);
             Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> jacobian(jacobians[0]);
             for (int j = 0; j < 3; ++j)
-                jacobian.col(j) = (endError(omega + step * Eigen::Vector3d::Unit(j), kIterationTolerance) - base) / step;
+                jacobian.col(j) =
+                    (endError(span_, omega + step * Eigen::Vector3d::Unit(j), kIterationTolerance) - r) / step;
             return jacobian.allFinite() && r.allFinite();
         }
         return r.allFinite();
     }
 
-    // NaN where the flight cannot be integrated (a seed that wandered to a spin past the step budget): Ceres
-    // then takes the step as failed, and no exception unwinds through ceres::Solve.
-    Eigen::Vector3d endError(const Eigen::Vector3d& omega, double tolerance) const
-    {
-        try {
-            const Eigen::Quaterniond end =
-                TorqueFreeMotion::endOrientation(span_.inertia, span_.start, omega, span_.duration, tolerance);
-            return quatLog(end.conjugate() * span_.end);
-        } catch (const std::invalid_argument&) {
-            return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-        }
-    }
-
 private:
     const FlightSpan& span_;
-    double tolerance_;
 };
 
 // The seeds: the slerp's constant ω, and with one extra turn (2π/T, either way) about the body's principal axes
@@ -127,7 +126,8 @@ public:
     {
         if (2.0 * std::sqrt(2.0 * summary.cost) < kCandidateError)
             return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
-        const bool far = (summary.iteration >= 4 && summary.cost > 0.1) || (summary.iteration >= 8 && summary.cost > 1e-4);
+        const bool far =
+            (summary.iteration >= 4 && summary.cost > 0.1) || (summary.iteration >= 8 && summary.cost > 1e-4);
         return far ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
     }
 };
@@ -139,7 +139,7 @@ std::optional<Eigen::Vector3d> candidateFrom(const FlightSpan& span, const Eigen
 {
     std::array<double, 3> unknowns{seed.x(), seed.y(), seed.z()};
     ceres::Problem problem;
-    problem.AddResidualBlock(new EndKeyResidual(span, kIterationTolerance), nullptr, unknowns.data());
+    problem.AddResidualBlock(new EndKeyResidual(span), nullptr, unknowns.data());
     for (int j = 0; j < 3; ++j) {
         problem.SetParameterLowerBound(unknowns.data(), j, std::min(-bound, unknowns[j]));
         problem.SetParameterUpperBound(unknowns.data(), j, std::max(bound, unknowns[j]));
@@ -162,8 +162,7 @@ std::optional<Eigen::Vector3d> candidateFrom(const FlightSpan& span, const Eigen
 // is not met to kFlightKeyTolerance.
 std::optional<FlightSolution> polished(const FlightSpan& span, const Eigen::Vector3d& candidate)
 {
-    const EndKeyResidual coarse(span, kIterationTolerance);
-    const EndKeyResidual fine(span, kTorqueFreeTolerance);
+    const EndKeyResidual coarse(span);
     const double* parameters[] = {candidate.data()};
     Eigen::Vector3d unused;
     Eigen::Matrix<double, 3, 3, Eigen::RowMajor> jacobian;
@@ -172,11 +171,11 @@ std::optional<FlightSolution> polished(const FlightSpan& span, const Eigen::Vect
         return std::nullopt;
     const Eigen::PartialPivLU<Eigen::Matrix3d> newton(jacobian);
     Eigen::Vector3d omega = candidate;
-    Eigen::Vector3d r = fine.endError(omega, kTorqueFreeTolerance);
+    Eigen::Vector3d r = endError(span, omega, kTorqueFreeTolerance);
     for (int iteration = 0; iteration < 8 && r.allFinite() && 2.0 * r.norm() > 1e-2 * kFlightKeyTolerance;
          ++iteration) {
         const Eigen::Vector3d next = omega - newton.solve(r);
-        const Eigen::Vector3d nextR = fine.endError(next, kTorqueFreeTolerance);
+        const Eigen::Vector3d nextR = endError(span, next, kTorqueFreeTolerance);
         if (!(nextR.norm() < r.norm()))
             break;
         omega = next;
@@ -185,9 +184,8 @@ std::optional<FlightSolution> polished(const FlightSpan& span, const Eigen::Vect
     const double keyError = 2.0 * r.norm();
     if (!omega.allFinite() || !(keyError <= kFlightKeyTolerance))
         return std::nullopt;
-    const Eigen::Matrix3d world = span.start.normalized().toRotationMatrix();
-    const Eigen::Vector3d momentum = world * span.inertia * world.transpose() * omega;
-    return FlightSolution{omega, 0.5 * momentum.dot(omega), keyError};
+    const double energy = 0.5 * angularMomentum(span.inertia, span.start.normalized(), omega).dot(omega);
+    return FlightSolution{omega, energy, keyError};
 }
 
 bool near(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double relative)
@@ -218,7 +216,7 @@ void addSeed(const FlightSpan& span, const Eigen::Vector3d& seed, double bound, 
         results.solutions.push_back(*solution);
 }
 
-// The seeds' components bound the search: each, plus one turn.
+// The seeds' components bound the search: the largest, plus one turn.
 double searchBound(const FlightSpan& span, const std::vector<Eigen::Vector3d>& seeds)
 {
     double bound = 0.0;
@@ -227,7 +225,7 @@ double searchBound(const FlightSpan& span, const std::vector<Eigen::Vector3d>& s
     return bound + 2.0 * std::numbers::pi / span.duration;
 }
 
-// The spans solved lately, by the exact bits of their inertia, keys and duration: a key dragged on a ballistic
+// The spans solved lately, by the exact values of their inertia, keys and duration: a key dragged on a ballistic
 // track changes the two spans it ends, and every other span's solve is found here. At most kCachedSpans are
 // kept (each a few hundred bytes), the least recently used dropped. Shared by every thread, behind a mutex; two
 // threads solving one span at once both store the same result.
@@ -316,8 +314,10 @@ std::vector<FlightSolution> solveFlight(const FlightSpan& span, const std::optio
             addSeed(span, seed, bound, *results);
         solvedSpans().store(key, *results);
     }
+    // The hint's own box, so that a hint beyond the fixed seeds' still has a turn of room; the fixed seeds' results
+    // do not depend on it.
     if (hint && hint->allFinite())
-        addSeed(span, *hint, bound, *results);
+        addSeed(span, *hint, std::max(bound, searchBound(span, {*hint})), *results);
 
     std::vector<FlightSolution> solutions = std::move(results->solutions);
     if (solutions.empty())

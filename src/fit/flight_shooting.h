@@ -9,7 +9,7 @@
 // energy and the kMaxFlightSolutions of least energy are offered.
 //
 // Runs on any thread; the same input always gives the same output. What a span's fixed seeds give is remembered
-// (the last 1024 spans, by the exact bits of their inertia, keys and duration), so that dragging a key of a
+// (the last 1024 spans, by the exact values of their inertia, keys and duration), so that dragging a key of a
 // ballistic track solves again only the two spans it ends.
 
 #include <Eigen/Dense>

@@ -78,8 +78,8 @@ void checkSketchFittable(const MotionTrack& track);
 
 // The fit of the track's sketch, from withoutFit(track), `body` the one a ballistic track flies (flightBodyOf,
 // track_evaluation.h). The fit reads orientations and angular velocities alone, which gravity does not touch (it
-// moves the centre of mass), so the motions built here fall under the default gravity. Throws SketchFitError where checkSketchFittable does, and for a direction stroke the fit
-// cannot follow.
+// moves the centre of mass), so the motions built here fall under the default gravity. Throws SketchFitError
+// where checkSketchFittable does, and for a direction stroke the fit cannot follow.
 SketchFitProblem sketchFitProblem(const MotionTrack& track, const MassProperties& body);
 
 // What ApplyFitResultCommand applies for `result`, a fit of sketchFitProblem(track): the fitted

@@ -65,6 +65,7 @@ private slots:
     void symmetricTopMatchesItsClosedForm();
     void intermediateAxisFlips();
     void startIsTheGivenState();
+    void endOrientationIsTheMotionsEnd();
 };
 
 void TestTorqueFree::refusesBadInertia()
@@ -198,6 +199,30 @@ void TestTorqueFree::startIsTheGivenState()
     QVERIFY(angleBetween(motion.orientation(-1.0), start) < 1e-14);
     QVERIFY(angleBetween(motion.orientation(2.0), motion.orientation(1.0)) == 0.0);
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, TorqueFreeMotion(inertia, start, omega, -1.0));
+}
+
+// endOrientation integrates as the constructor does and keeps no step between: its end is the motion's end to
+// the bit, for an asymmetric body at the solver's and playback's tolerances, a symmetric one (its closed form)
+// and no time at all; and both refuse a flight past the step budget.
+void TestTorqueFree::endOrientationIsTheMotionsEnd()
+{
+    Random random(59);
+    const Eigen::Quaterniond start = random.rotation();
+    const Eigen::Vector3d omega = random.vector(6.0);
+    const Eigen::Matrix3d asymmetric = rotatedInertia({0.7, 1.1, 1.6}, random.rotation());
+    const Eigen::Matrix3d symmetric = rotatedInertia({0.8, 0.8, 1.3}, random.rotation());
+    const auto same = [](const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) { return a.coeffs() == b.coeffs(); };
+    for (const double tolerance : {1e-5, kTorqueFreeTolerance}) {
+        const TorqueFreeMotion motion(asymmetric, start, omega, 1.3, TorqueFreeMotion::Solver::Automatic, tolerance);
+        QVERIFY(motion.stepCount() > 2);
+        QVERIFY(same(TorqueFreeMotion::endOrientation(asymmetric, start, omega, 1.3, tolerance), motion.orientation(1.3)));
+    }
+    QVERIFY(same(TorqueFreeMotion::endOrientation(symmetric, start, omega, 1.3), TorqueFreeMotion(symmetric, start, omega, 1.3).orientation(1.3)));
+    QVERIFY(same(TorqueFreeMotion::endOrientation(asymmetric, start, omega, 0.0), TorqueFreeMotion(asymmetric, start, omega, 0.0).orientation(0.0)));
+    // A spin of 10⁶ rad/s for a second needs millions of steps.
+    const Eigen::Vector3d tooFast = 1e6 * omega.normalized();
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, TorqueFreeMotion(asymmetric, start, tooFast, 1.0));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, TorqueFreeMotion::endOrientation(asymmetric, start, tooFast, 1.0));
 }
 
 QTEST_APPLESS_MAIN(TestTorqueFree)

@@ -13,6 +13,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -160,21 +161,37 @@ void TestFlight::choicesPickSolutions()
 
 void TestFlight::rememberedSpansGiveWhatASolveGives()
 {
-    // The same span written with both keys negated is the same problem (q and −q are one orientation) under other
-    // bits, so solveFlight does not find it remembered: it solves it, and must give what the remembered span gives.
+    // A span written with a key negated is the same problem (q and −q are one orientation) under other values, so
+    // solveFlight does not find it remembered: it solves it afresh. The span is made by a flight of about a turn
+    // and a half, which the fixed seeds (at most one extra turn) do not find but its own ω₀ as the hint does.
     std::mt19937_64 rng(53);
-    const FlightSpan span{rotatedInertia({0.6, 1.1, 1.5}, randomRotation(rng)), randomRotation(rng),
-                          randomRotation(rng), 0.9};
-    const Eigen::Vector3d hintA(1.0, -2.0, 0.5), hintB(-3.0, 0.2, 4.0);
-    solveFlight(span, hintA);
+    const Eigen::Matrix3d inertia = rotatedInertia({0.6, 1.1, 1.5}, randomRotation(rng));
+    const Eigen::Quaterniond start = randomRotation(rng);
+    const Eigen::Vector3d hintA(4.0, -9.0, 6.0);
+    const double duration = 0.9;
+    const FlightSpan span{inertia, start, TorqueFreeMotion(inertia, start, hintA, duration).orientation(duration),
+                          duration};
+    const auto negated = [&](bool startNegated, bool endNegated) {
+        FlightSpan other = span;
+        other.start.coeffs() *= startNegated ? -1.0 : 1.0;
+        other.end.coeffs() *= endNegated ? -1.0 : 1.0;
+        return other;
+    };
+    const auto finds = [](const std::vector<FlightSolution>& solutions, const Eigen::Vector3d& omega) {
+        return std::any_of(solutions.begin(), solutions.end(),
+                           [&](const FlightSolution& s) { return (s.startAngularVelocity - omega).norm() < 1e-6; });
+    };
+    QVERIFY2(!finds(solveFlight(negated(false, true)), hintA), "the fixed seeds alone find the hint's flight");
+    QVERIFY2(finds(solveFlight(span, hintA), hintA), "the hint does not find its own flight");
+
+    // Asked again with another hint, the span's fixed seeds are remembered and hint A's flight is not among them.
+    const Eigen::Vector3d hintB(-0.5, 0.2, 0.4);
     const FlightCacheStatistics before = flightCacheStatistics();
     const std::vector<FlightSolution> remembered = solveFlight(span, hintB);
     QCOMPARE(flightCacheStatistics().hits, before.hits + 1);
-    FlightSpan negated = span;
-    negated.start.coeffs() *= -1.0;
-    negated.end.coeffs() *= -1.0;
-    const std::vector<FlightSolution> solved = solveFlight(negated, hintB);
+    const std::vector<FlightSolution> solved = solveFlight(negated(true, true), hintB);
     QCOMPARE(flightCacheStatistics().misses, before.misses + 1);
+    QVERIFY(!finds(remembered, hintA));
     QCOMPARE(remembered.size(), solved.size());
     for (std::size_t i = 0; i < solved.size(); ++i) {
         QVERIFY((remembered[i].startAngularVelocity - solved[i].startAngularVelocity).norm() <= 1e-12);
@@ -192,13 +209,18 @@ void TestFlight::movingAKeySolvesOnlyItsSpans()
         keys.push_back({0.6 * i, {randomRotation(rng), Eigen::Vector3d(0.0, 0.0, 1.0)}});
     const FlightBody body{inertiaTensor({0.5, 1.0, 1.4})};
     const BallisticFlight before(keys, body);
-    keys[2].pose.orientation = keys[2].pose.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitZ()));
+    keys[2].pose.orientation =
+        keys[2].pose.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitZ()));
     const FlightCacheStatistics counted = flightCacheStatistics();
     const BallisticFlight after(keys, body);
     QCOMPARE(flightCacheStatistics().misses, counted.misses + 2);
     QCOMPARE(flightCacheStatistics().hits, counted.hits + 2);
-    QVERIFY(angleBetween(after.at(1.2).orientation, keys[2].pose.orientation) < 1e-10);
-    QVERIFY(angleBetween(before.at(1.2).orientation, keys[2].pose.orientation) > 0.04);
+    // The span before the moved key now ends at it; the first span, whose keys and hint did not move, flies as it
+    // did.
+    const double justBefore = std::nextafter(1.2, 0.0);
+    QVERIFY(angleBetween(after.at(justBefore).orientation, keys[2].pose.orientation) < 1e-9);
+    QVERIFY(angleBetween(before.at(justBefore).orientation, keys[2].pose.orientation) > 0.04);
+    QVERIFY(angleBetween(after.at(0.3).orientation, before.at(0.3).orientation) == 0.0);
 }
 
 void TestFlight::refusesBadInput()
@@ -211,7 +233,8 @@ void TestFlight::refusesBadInput()
     noUp.up = Eigen::Vector3d::Zero();
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, BallisticFlight({{0.0, Pose{}}, {1.0, Pose{}}}, noUp));
     const Eigen::Quaterniond notFinite(std::nan(""), 0.0, 0.0, 1.0);
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, solveFlight({body.inertia, Eigen::Quaterniond::Identity(), notFinite, 1.0}));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             solveFlight({body.inertia, Eigen::Quaterniond::Identity(), notFinite, 1.0}));
 }
 
 QTEST_APPLESS_MAIN(TestFlight)

@@ -25,8 +25,7 @@ double momentumArrowLength(double momentum, const MassProperties& mass, double b
 Eigen::Vector3d worldAngularMomentum(const Pose& worldPose, const MassProperties& mass,
                                      const Eigen::Vector3d& worldVelocity)
 {
-    const Eigen::Matrix3d rotation = worldPose.orientation.toRotationMatrix();
-    return rotation * mass.inertia * rotation.transpose() * worldVelocity;
+    return angularMomentum(mass.inertia, worldPose.orientation, worldVelocity);
 }
 
 void appendMomentumArrow(std::vector<LineVertex>& lines, const Pose& worldPose, const MassProperties& mass,
