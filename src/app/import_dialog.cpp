@@ -2,6 +2,7 @@
 
 #include "model/value_checks.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -52,7 +53,7 @@ bool isChanged(const QDoubleSpinBox* box, double value)
 
 } // namespace
 
-ImportDialog::ImportDialog(const QString& path, const io::SceneImport& firstRead, QWidget* parent)
+ImportDialog::ImportDialog(const QString& path, const io::SceneImport& firstRead, bool eulerFilter, QWidget* parent)
     : QDialog(parent)
     , defaultTakes_(firstRead.takes)
     , fileSettings_(firstRead.file.values)
@@ -62,6 +63,7 @@ ImportDialog::ImportDialog(const QString& path, const io::SceneImport& firstRead
     , unit_(new QDoubleSpinBox(this))
     , up_(new QComboBox(this))
     , origin_(new QComboBox(this))
+    , eulerFilter_(new QCheckBox(tr("Euler filter: rotations in Euler mode (extrinsic xyz), angles continuous"), this))
     , buttons_(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this))
 {
     setObjectName(QStringLiteral("importDialog"));
@@ -120,6 +122,11 @@ ImportDialog::ImportDialog(const QString& path, const io::SceneImport& firstRead
     origin_->addItem(tr("First key at 0 s"), static_cast<int>(io::TimeOrigin::FirstKey));
     origin_->addItem(tr("As in the file"), static_cast<int>(io::TimeOrigin::File));
     form->addRow(tr("Time:"), origin_);
+    eulerFilter_->setObjectName(QStringLiteral("importEulerFilter"));
+    eulerFilter_->setChecked(eulerFilter);
+    eulerFilter_->setToolTip(tr("Stores each imported rotation as Euler angles, Blender's default XYZ order, each key's "
+                                "angles the nearest to the key before, so that a spin is a ramp, not a saw-tooth"));
+    form->addRow(tr("Rotations:"), eulerFilter_);
     layout->addLayout(form);
     auto* sources = new QLabel(tr("From the file: %1; %2; %3.").arg(file.fpsSource, file.unitSource, file.upSource), this);
     sources->setWordWrap(true);
@@ -168,6 +175,8 @@ bool ImportDialog::keepsTheDefaults() const
            static_cast<io::UpAxis>(up_->currentData().toInt()) == fileSettings_.up &&
            static_cast<io::TimeOrigin>(origin_->currentData().toInt()) == io::TimeOrigin::FirstKey;
 }
+
+bool ImportDialog::eulerFilter() const { return eulerFilter_->isChecked(); }
 
 void ImportDialog::updateAcceptable()
 {

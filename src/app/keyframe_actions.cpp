@@ -8,6 +8,7 @@
 #include "model/track_evaluation.h"
 
 #include <QAction>
+#include <QUndoCommand>
 #include <QStatusBar>
 
 #include <algorithm>
@@ -45,6 +46,12 @@ KeyframeActions::KeyframeActions(model::Document& document, Selection& selection
     connect(&selection_, &Selection::changed, this, &KeyframeActions::updateActions);
     connect(&selectedTrack_, &SelectedTrack::changed, this, [this](model::Changes changes) {
         if (changes & (model::Change::Keyframes | model::Change::TrackSettings | model::Change::Scene))
+            updateActions();
+    });
+    // The other selected objects' keys decide whether the Euler filter has work too.
+    connect(&document_, &model::Document::changed, this, [this](model::ObjectId object, model::Changes changes) {
+        if (object != selection_.object() && selection_.isObjectSelected(object) &&
+            (changes & (model::Change::Keyframes | model::Change::TrackSettings)))
             updateActions();
     });
     updateActions();
@@ -104,11 +111,25 @@ void KeyframeActions::toggleConstraint()
     updateActions();
 }
 
+std::vector<model::ObjectId> KeyframeActions::objectsToFilter() const
+{
+    std::vector<model::ObjectId> ids;
+    for (model::ObjectId id : selection_.objects())
+        if (model::ApplyEulerFilterCommand::changes(document_.object(id)->track))
+            ids.push_back(id);
+    return ids;
+}
+
 void KeyframeActions::applyEulerFilter()
 {
-    const model::SceneObject* object = selection_.selectedObject();
-    if (object != nullptr && model::ApplyEulerFilterCommand::changes(object->track))
-        document_.push(new model::ApplyEulerFilterCommand(document_, object->id));
+    const std::vector<model::ObjectId> ids = objectsToFilter();
+    if (ids.empty())
+        return;
+    // One undo step for all of them, named as one object's.
+    auto* step = new QUndoCommand(tr("Apply Euler Filter"));
+    for (model::ObjectId id : ids)
+        new model::ApplyEulerFilterCommand(document_, id, step);
+    document_.push(step);
 }
 
 void KeyframeActions::stepFlightSolution(int direction)
@@ -132,7 +153,7 @@ void KeyframeActions::updateActions()
 {
     const model::Keyframe* key = selection_.selectedKey();
     const model::SceneObject* object = selection_.selectedObject();
-    actions_.eulerFilter->setEnabled(object != nullptr && model::ApplyEulerFilterCommand::changes(object->track));
+    actions_.eulerFilter->setEnabled(!objectsToFilter().empty());
     const bool flies = object != nullptr && object->track.interpolation == InterpolationMethod::Ballistic &&
                        object->track.keys.size() >= 2;
     actions_.nextFlight->setEnabled(flies);

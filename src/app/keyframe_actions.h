@@ -1,7 +1,7 @@
 #pragma once
 // The Motion menu's keyframe actions on the selection: key every selected object's pose at the
 // current time, delete every selected key, constrain or free the active key, run the Euler filter on
-// the active object's keys, step the current span of a ballistic track through its free flights; and
+// every selected object's keys, step the current span of a ballistic track through its free flights; and
 // Edit ▸ Select All Keys / Select No Keys. Each edit is one undo step however many objects it touches;
 // each action is enabled only when it applies (the filter when it would change a key, the flight steps
 // on a ballistic track of two keys or more).
@@ -21,7 +21,7 @@ struct KeyframeActionSet {
     QAction* add = nullptr;
     QAction* remove = nullptr;
     QAction* toggleConstraint = nullptr; // checkable: checked when the selected key is constrained
-    QAction* eulerFilter = nullptr;      // on the selected object's keys (apply_euler_filter_command.h)
+    QAction* eulerFilter = nullptr;      // on the selected objects' keys (apply_euler_filter_command.h)
     QAction* nextFlight = nullptr;       // the current span's next free flight (step_ballistic_solution_command.h)
     QAction* previousFlight = nullptr;
     QAction* selectAll = nullptr;        // every key of the active object
@@ -46,6 +46,8 @@ public:
 
 private:
     void updateActions();
+    // The selected objects whose keys the Euler filter would change.
+    std::vector<model::ObjectId> objectsToFilter() const;
 
     model::Document& document_;
     Selection& selection_;

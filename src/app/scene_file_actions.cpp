@@ -3,6 +3,7 @@
 #include "app/import_dialog.h"
 #include "model/commands/import_objects_command.h"
 #include "model/commands/set_time_range_command.h"
+#include "model/rotation_mode.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -11,6 +12,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSettings>
 #include <QStatusBar>
 
 #include <algorithm>
@@ -132,9 +134,10 @@ void SceneFileActions::receiveImport(const QString& path, const std::shared_ptr<
 
 void SceneFileActions::askForOptions(const QString& path, const std::shared_ptr<const io::SceneImport>& firstRead)
 {
-    auto* dialog = new ImportDialog(path, *firstRead, window_);
+    auto* dialog = new ImportDialog(path, *firstRead, QSettings().value(QLatin1String(kEulerFilterKey)).toBool(), window_);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &QDialog::accepted, this, [this, dialog, path, firstRead] {
+        QSettings().setValue(QLatin1String(kEulerFilterKey), dialog->eulerFilter());
         if (dialog->keepsTheDefaults())
             addImportedObjects(path, firstRead);
         else
@@ -175,7 +178,11 @@ void SceneFileActions::addImportedObjects(const QString& path, const std::shared
     auto* step = new QUndoCommand(tr("Import %1").arg(name));
     try {
         const model::TimeRange range = rangeAfterImport(document_.scene(), imported->scene);
-        new model::ImportObjectsCommand(document_, imported->scene.objects, step);
+        std::vector<model::SceneObject> objects = imported->scene.objects;
+        if (QSettings().value(QLatin1String(kEulerFilterKey)).toBool())
+            for (model::SceneObject& object : objects)
+                model::putInEulerMode(object.track, {}); // extrinsic xyz: Blender's default XYZ Euler
+        new model::ImportObjectsCommand(document_, std::move(objects), step);
         new model::SetTimeRangeCommand(document_, range, step);
     } catch (const std::invalid_argument& error) {
         delete step;

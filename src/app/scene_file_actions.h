@@ -4,6 +4,8 @@
 // imported scene into one undo step. An import first reads the file with its default options; the
 // import dialog (import_dialog.h) then shows its takes and settings, always from File > Import Scene,
 // and for a dropped or opened file when its takes need a choice. Changed options read it again.
+// The dialog's Euler filter choice is kept in the settings (kEulerFilterKey) and applies to every import
+// after it, dialog or not: the objects read are put in Euler mode in the same undo step.
 
 #include "app/selection.h"
 #include "jobs/scene_file_jobs.h"
@@ -69,5 +71,8 @@ private:
     bool firstRead_ = false;
     bool askForOptions_ = false;
 };
+
+// The settings key of the import's Euler filter choice (a bool, false when unset).
+inline constexpr char kEulerFilterKey[] = "import/eulerFilter";
 
 } // namespace gyre::app

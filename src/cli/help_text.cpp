@@ -154,7 +154,7 @@ keys are.
   -o, --output FILE  the output file)";
 
 const char* const kImport = R"(Usage: gyre-cli import SCENE -o PROJECT.gyre [--animation N|N,M,...|all] [--fps F] [--unit METRES]
-               [--up y|z] [--time-origin zero|file]
+               [--up y|z] [--time-origin zero|file] [--euler-filter]
 
 Reads any scene file Assimp reads (FBX, OBJ, glTF 2.0, Collada, BVH, DirectX .x, 3DS, ASE, ...) and
 writes it as a Gyre project: one object per node, named as the node, with its mesh, its parent and
@@ -177,6 +177,9 @@ Each setting below defaults to what the file says:
                        0.01 for a centimetre file); positions and meshes are scaled to metres
   --up y|z             the file's up axis (FBX UpAxis, Collada up_axis); a Y-up scene is turned Z-up, Gyre's up
   --time-origin zero   the first key at t = 0 for every format (default); file: times as in the file
+  --euler-filter       every rotation track in Euler mode, extrinsic xyz (Blender's XYZ Euler), each
+                       key's angles the equivalent nearest the key before's, so that a spin the file
+                       stores wrapped is a ramp; linear (slerp) keys become euler, cubic ones euler-cubic
   -o, --output FILE    the project file)";
 
 const char* const kExport = R"(Usage: gyre-cli export PROJECT.gyre -o SCENE.(gltf|glb|dae|fbx|obj) [--fps F]

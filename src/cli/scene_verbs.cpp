@@ -12,6 +12,7 @@
 #include "model/output_target.h"
 #include "model/project_file.h"
 #include "model/input_error.h"
+#include "model/rotation_mode.h"
 #include "model/track_evaluation.h"
 
 #include <cstdio>
@@ -28,6 +29,7 @@ const QString kObjectOption = QStringLiteral("object");
 const QString kUnitOption = QStringLiteral("unit");
 const QString kUpOption = QStringLiteral("up");
 const QString kTimeOriginOption = QStringLiteral("time-origin");
+const QString kEulerFilterOption = QStringLiteral("euler-filter");
 
 void warnAll(const QStringList& warnings)
 {
@@ -87,9 +89,10 @@ void runImport(const QStringList& arguments)
                                        QCommandLineOption(kFpsOption, {}, QStringLiteral("rate")),
                                        QCommandLineOption(kUnitOption, {}, QStringLiteral("metres")),
                                        QCommandLineOption(kUpOption, {}, QStringLiteral("axis")),
-                                       QCommandLineOption(kTimeOriginOption, {}, QStringLiteral("origin"))});
+                                       QCommandLineOption(kTimeOriginOption, {}, QStringLiteral("origin")),
+                                       QCommandLineOption(kEulerFilterOption)});
     const io::ImportOptions options = importOptions(commandLine);
-    const io::SceneImport imported = io::importSceneInWorker(commandLine.inputPath(), options);
+    io::SceneImport imported = io::importSceneInWorker(commandLine.inputPath(), options);
     if (imported.takeRule == io::TakeRule::ChoiceNeeded)
         throw commandLine.error(commandLine.inputPath().toStdString() + " has " +
                                 std::to_string(imported.animations.size()) +
@@ -98,6 +101,10 @@ void runImport(const QStringList& arguments)
                                 animationList(imported));
     warnAll(imported.warnings);
     std::fprintf(stderr, "gyre-cli: imported at %s\n", settingsLine(imported).c_str());
+    // The window's import option of the same name (scene_file_actions.h): extrinsic xyz, Blender's default XYZ.
+    if (commandLine.isSet(kEulerFilterOption))
+        for (model::SceneObject& object : imported.scene.objects)
+            model::putInEulerMode(object.track, {});
     model::writeProject(commandLine.outputPath(), imported.scene);
 }
 

@@ -1,11 +1,13 @@
 #include "core/euler_angles.h"
 
+#include "core/euler_filter.h"
 #include "core/fast_trig.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 namespace gyre {
 
@@ -216,14 +218,11 @@ std::vector<Eigen::Vector3d> unwrappedEulerAngles(const std::vector<Eigen::Quate
                                                   const EulerConvention& convention,
                                                   const std::optional<Eigen::Vector3d>& before)
 {
-    std::vector<Eigen::Vector3d> result;
-    result.reserve(rotations.size());
-    for (const Eigen::Quaterniond& q : rotations) {
-        const Eigen::Vector3d angles = eulerAnglesFromQuaternion(q, convention).angles;
-        const std::optional<Eigen::Vector3d> previous = result.empty() ? before : result.back();
-        result.push_back(previous ? nearestEquivalentAngles(angles, *previous, convention) : angles);
-    }
-    return result;
+    std::vector<Eigen::Vector3d> angles;
+    angles.reserve(rotations.size());
+    for (const Eigen::Quaterniond& q : rotations)
+        angles.push_back(eulerAnglesFromQuaternion(q, convention).angles);
+    return continuousEulerAngles(std::move(angles), convention, before);
 }
 
 double wrapAngle(double e)

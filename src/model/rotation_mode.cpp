@@ -85,4 +85,14 @@ InterpolationMethod interpolationInRotationMode(InterpolationMethod current, con
     return current;
 }
 
+void putInEulerMode(MotionTrack& track, const EulerConvention& convention)
+{
+    const RotationMode mode{RotationMode::Kind::Euler, convention};
+    track.keys = keysInRotationMode(track, mode);
+    track.interpolation = track.interpolation == InterpolationMethod::Slerp
+                              ? InterpolationMethod::Euler
+                              : interpolationInRotationMode(track.interpolation, track.rotationMode, mode);
+    track.rotationMode = mode;
+}
+
 } // namespace gyre::model

@@ -40,4 +40,10 @@ std::vector<Keyframe> keysInRotationMode(const MotionTrack& track, const Rotatio
 InterpolationMethod interpolationInRotationMode(InterpolationMethod current, const RotationMode& from,
                                                 const RotationMode& to);
 
+// The import option "Euler filter": a track as read from a scene file (quaternion keys) put in Euler mode in
+// `convention`, its keys' angles the Euler filter's (keysInRotationMode), so that a spin the file stored wrapped
+// is a ramp. Slerp keys (a file's linear keys) become euler, linear on the angles as a DCC's Euler curves are;
+// others take interpolationInRotationMode's. The orientations at the keys do not change.
+void putInEulerMode(MotionTrack& track, const EulerConvention& convention);
+
 } // namespace gyre::model

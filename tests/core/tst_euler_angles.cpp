@@ -1,10 +1,11 @@
-// Three-angle sequences (euler_angles.h), all 12 orders × intrinsic/extrinsic, against rotations
+// Three-angle sequences (euler_angles.h, euler_filter.h), all 12 orders × intrinsic/extrinsic, against rotations
 // composed in the test from elementary rotation matrices: intrinsic ijk is R_i(e1)·R_j(e2)·R_k(e3),
 // extrinsic ijk is R_k(e3)·R_j(e2)·R_i(e1). Round trips for random rotations and at and near gimbal
 // lock, the documented angle ranges, the gimbal-lock distance, the Euler filter and the choice of
 // the nearest equivalent triple.
 
 #include "core/euler_angles.h"
+#include "core/euler_filter.h"
 
 #include "core_test_support.h"
 
@@ -128,6 +129,7 @@ private slots:
     void exactGimbalLock();
     void unwrappedSequenceCrossingHalfTurn();
     void nearestEquivalentAngles();
+    void storedAnglesFilteredBackToARamp();
     void wrapAngle();
     void withinRoundingOfTheAtan2Formulas();
 };
@@ -386,6 +388,48 @@ void TestEulerAngles::nearestEquivalentAngles()
             GYRE_CHECK((r - target).cwiseAbs().maxCoeff() < 1e-12,
                        QStringLiteral("%1: angles %2, previous %3: got %4, expected %5").arg(nameOf(c), anglesStr(a), anglesStr(previous), anglesStr(r), anglesStr(target)));
         }
+    }
+}
+
+// The filter on stored angles (continuousEulerAngles) against a construction of the test's own: a continuous
+// ramp of triples, each after the first replaced by an equivalent one (every angle shifted by a random number of
+// turns, and half of them the twin solution), must come back as the ramp.
+void TestEulerAngles::storedAnglesFilteredBackToARamp()
+{
+    Random random(23);
+    constexpr int kKeys = 40;
+    for (const EulerConvention& c : EulerConvention::all()) {
+        // Outer angles turn up to 0.4 rad a key (several turns in all); the middle one swings well clear of lock.
+        const double centre = c.isProperEuler() ? kPi / 2.0 : 0.0;
+        const Eigen::Vector3d start(random.uniform(-kPi, kPi), centre, random.uniform(-kPi, kPi));
+        const Eigen::Vector3d rate(random.uniform(-0.4, 0.4), 0.0, random.uniform(-0.4, 0.4));
+        std::vector<Eigen::Vector3d> ramp;
+        std::vector<Eigen::Vector3d> stored;
+        for (int k = 0; k < kKeys; ++k) {
+            Eigen::Vector3d angles = start + k * rate;
+            angles[1] = centre + 0.9 * std::sin(0.3 * k);
+            ramp.push_back(angles);
+            if (k == 0) {
+                stored.push_back(angles); // the filter keeps the first key as it is
+                continue;
+            }
+            const Eigen::Vector3d turns(random.integer(-3, 3), random.integer(-3, 3), random.integer(-3, 3));
+            const Eigen::Vector3d equivalent = (k % 2 == 0 ? mirrored(angles, c) : angles) + 2.0 * kPi * turns;
+            QVERIFY2(matrixDistance(composedMatrix(equivalent, c), composedMatrix(angles, c)) < 1e-12, qPrintable(nameOf(c)));
+            stored.push_back(equivalent);
+        }
+        const std::vector<Eigen::Vector3d> filtered = continuousEulerAngles(stored, c);
+        QCOMPARE(filtered.size(), ramp.size());
+        for (int k = 0; k < kKeys; ++k)
+            GYRE_CHECK((filtered[k] - ramp[k]).cwiseAbs().maxCoeff() < 1e-12,
+                       QStringLiteral("%1 key %2: stored %3, filtered %4, ramp %5")
+                           .arg(nameOf(c)).arg(k).arg(anglesStr(stored[k]), anglesStr(filtered[k]), anglesStr(ramp[k])));
+        // With a triple before them, the first key too is chosen nearest to it.
+        const Eigen::Vector3d before = ramp[0] - 0.1 * rate;
+        const std::vector<Eigen::Vector3d> shiftedFirst = continuousEulerAngles(
+            {mirrored(ramp[0], c) + Eigen::Vector3d(2.0 * kPi, -4.0 * kPi, 0.0), stored[1]}, c, before);
+        GYRE_CHECK((shiftedFirst[0] - ramp[0]).cwiseAbs().maxCoeff() < 1e-12,
+                   QStringLiteral("%1: first key %2, expected %3").arg(nameOf(c), anglesStr(shiftedFirst[0]), anglesStr(ramp[0])));
     }
 }
 

@@ -2,7 +2,8 @@
 // mode (one undo step), the angle fields then come first and store what is typed, so two keys typed 0° and 720°
 // about z are two turns; the bake of that spin, unwrapped, grows through 360° at the middle and ends at 720°, as
 // the automatic-tangent cubic written out here says. In the Graph Editor the z channel is a ramp to 720°, and
-// dragging its key sets the stored angle, in one undo step.
+// dragging its key sets the stored angle, in one undo step. Motion ▸ Euler Filter makes the stored angles of
+// every selected Euler-mode object continuous, in one undo step, and leaves their orientations.
 
 #include "app/graph_editor/graph_editor_panel.h"
 #include "app/main_window.h"
@@ -10,6 +11,7 @@
 #include "inspected_window.h"
 #include "model/track_evaluation.h"
 
+#include <QAction>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QLayout>
@@ -47,6 +49,24 @@ double spinDegrees(double time)
 {
     const double u = std::clamp((time - kFirst) / (kLast - kFirst), 0.0, 1.0);
     return 720.0 * (3.0 * u * u - 2.0 * u * u * u);
+}
+
+// An object in Euler mode (extrinsic xyz) whose keys, one a second, store these angles in degrees; `id` is its
+// id in an import batch.
+model::SceneObject eulerKeyed(model::ObjectId id, const QString& name, const std::vector<Eigen::Vector3d>& degrees)
+{
+    model::SceneObject object;
+    object.id = id;
+    object.name = name;
+    object.track.rotationMode = {model::RotationMode::Kind::Euler, {}};
+    object.track.interpolation = InterpolationMethod::EulerCubic;
+    for (std::size_t key = 0; key < degrees.size(); ++key) {
+        const Eigen::Vector3d angles = degrees[key] / kDegrees;
+        model::Keyframe keyframe{double(key), Pose{quaternionFromEulerAngles(angles, {}), Eigen::Vector3d::Zero()}, true};
+        keyframe.eulerAngles = angles;
+        object.track.keys.push_back(keyframe);
+    }
+    return object;
 }
 
 } // namespace
@@ -160,6 +180,59 @@ private slots:
         QVERIFY(stored.head<2>().norm() < 1e-12);
         document.undoStack().undo();
         QCOMPARE(*document.object(object_)->track.keys[1].eulerAngles, Eigen::Vector3d(0.0, 0.0, 720.0 / kDegrees));
+    }
+
+    void theEulerFilterUnwrapsEverySelectedObjectsAnglesInOneStep()
+    {
+        model::Document& document = window_->document();
+        // A spin about z through 0°, 170°, 190°, 350°, 500° stored wrapped, 350° as its twin (180°, 180°, 170°)
+        // = (e1 + 180°, 180° − e2, e3 + 180°); a turn about x to 300° stored as −60° after 170°; and a tilt
+        // whose angles are continuous already.
+        const std::vector<Eigen::Vector3d> spin{{0, 0, 0}, {0, 0, 170}, {0, 0, -170}, {180, 180, 170}, {0, 0, 140}};
+        const std::vector<Eigen::Vector3d> spinRamp{{0, 0, 0}, {0, 0, 170}, {0, 0, 190}, {0, 0, 350}, {0, 0, 500}};
+        const std::vector<Eigen::Vector3d> tilt{{0, 0, 0}, {-60, 0, 0}, {-150, 0, 0}};
+        const std::vector<Eigen::Vector3d> turn{{0, 0, 0}, {170, 0, 0}, {-60, 0, 0}};
+        const std::vector<Eigen::Vector3d> turnRamp{{0, 0, 0}, {170, 0, 0}, {300, 0, 0}};
+        auto* import = new model::ImportObjectsCommand(
+            document, {eulerKeyed(1, QStringLiteral("spin"), spin), eulerKeyed(2, QStringLiteral("turn"), turn),
+                       eulerKeyed(3, QStringLiteral("tilt"), tilt)});
+        document.push(import);
+        const std::vector<model::ObjectId> ids = import->ids();
+        document.undoStack().clear();
+        auto* filter = window_->findChild<QAction*>(QStringLiteral("actionEulerFilter"));
+        QVERIFY(filter != nullptr);
+        window_->selection().selectObjects({ids[2]}, ids[2]);
+        QVERIFY(!filter->isEnabled()); // the tilt's angles are continuous already
+        window_->selection().selectObjects({ids[2], ids[0], ids[1]}, ids[2]);
+        QVERIFY(filter->isEnabled());
+        const model::MotionTrack spinBefore = document.object(ids[0])->track;
+        const model::MotionTrack turnBefore = document.object(ids[1])->track;
+
+        filter->trigger();
+        QCOMPARE(document.undoStack().count(), 1);
+        QCOMPARE(document.undoStack().undoText(), QStringLiteral("Apply Euler Filter"));
+        QVERIFY(!filter->isEnabled());
+        const auto check = [&](model::ObjectId id, const model::MotionTrack& before, const std::vector<Eigen::Vector3d>& ramp) {
+            const model::MotionTrack& after = document.object(id)->track;
+            QVERIFY(after.rotationMode.isEuler());
+            for (std::size_t key = 0; key < ramp.size(); ++key) {
+                const Eigen::Vector3d degrees = *after.keys[key].eulerAngles * kDegrees;
+                QVERIFY2((degrees - ramp[key]).norm() < 1e-9,
+                         qPrintable(QStringLiteral("key %1: %2 %3 %4").arg(key).arg(degrees.x()).arg(degrees.y()).arg(degrees.z())));
+                const double dot = after.keys[key].pose.orientation.dot(before.keys[key].pose.orientation);
+                QVERIFY(std::abs(std::abs(dot) - 1.0) < 1e-12);
+            }
+        };
+        check(ids[0], spinBefore, spinRamp);
+        check(ids[1], turnBefore, turnRamp);
+        check(ids[2], document.object(ids[2])->track, tilt);
+
+        document.undoStack().undo();
+        for (std::size_t key = 0; key < spin.size(); ++key)
+            QCOMPARE(*document.object(ids[0])->track.keys[key].eulerAngles, *spinBefore.keys[key].eulerAngles);
+        for (std::size_t key = 0; key < turn.size(); ++key)
+            QCOMPARE(*document.object(ids[1])->track.keys[key].eulerAngles, *turnBefore.keys[key].eulerAngles);
+        QVERIFY(filter->isEnabled());
     }
 
 private:

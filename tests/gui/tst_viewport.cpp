@@ -1,7 +1,7 @@
 // The viewport driven with the mouse on the bundled sample: handle drags change the selected key in
 // one undo step each, clicks select, the stroboscopic trail follows the subdivision settings, the
-// ghost shows the motion as opened; a hermite track has a trail too, whose copies follow View ▸ Trail; the
-// number-pad views follow View ▸ Y Up. Two tests also measure while a handle is dragged with thousands of
+// ghost shows the motion as opened; a hermite track has a trail too, whose copies follow View ▸ Trail, and every
+// selected object has its own; the number-pad views follow View ▸ Y Up. Two tests also measure while a handle is dragged with thousands of
 // trail instances: the viewport's drawing, and the UI thread's own time per move with every dock
 // shown (issue 18); they print the figures (tests never assert on time).
 
@@ -10,6 +10,7 @@
 #include "app/viewport/pose_handles.h"
 #include "app/viewport/viewport.h"
 #include "gui_test_support.h"
+#include "model/commands/import_objects_command.h"
 #include "model/commands/set_interpolation_command.h"
 #include "model/commands/set_subdivision_command.h"
 
@@ -23,6 +24,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -96,6 +98,22 @@ QImage drawnImage(app::Viewport& viewport)
     if (!QTest::qWaitFor([&] { return viewport.framesDrawn() > before; }))
         qFatal("The viewport drew no frame");
     return viewport.grabFramebuffer();
+}
+
+// Where the trail's `copies` of the object stand, spread over the scene's range: the middle of its mesh's first
+// triangle at each copy's time, a point inside its outline on screen.
+std::vector<Eigen::Vector3d> copyPlaces(model::Document& document, model::ObjectId object, int copies)
+{
+    const model::Scene& scene = document.scene();
+    const model::TrackMotion& motion = document.motion(object)->motion();
+    const model::Mesh& mesh = app::displayMesh(*document.object(object));
+    Eigen::Vector3d onSurface = Eigen::Vector3d::Zero();
+    for (int corner = 0; corner < 3; ++corner)
+        onSurface += mesh.positions[mesh.indices[std::size_t(corner)]].cast<double>() / 3.0;
+    std::vector<Eigen::Vector3d> places;
+    for (int i = 0; i < copies; ++i)
+        places.push_back(motion.at(scene.startTime + (scene.endTime - scene.startTime) * i / (copies - 1)).apply(onSurface));
+    return places;
 }
 
 // How many of the copies' places (a point on each one's surface, on screen) show something else in `with` than
@@ -250,17 +268,8 @@ private slots:
         for (const int copies : {8, 32}) {
             session.window.findChild<QAction*>(QStringLiteral("actionTrailCopies-%1").arg(copies))->trigger();
             QTRY_COMPARE(session.viewport->trailInstanceCount(), std::size_t(copies));
-            // Each copy where the motion is at its time, the scene's range spread evenly: the middle of
-            // the mesh's first triangle there, a point inside its outline on screen.
-            const model::Scene& scene = document.scene();
-            const model::TrackMotion& motion = document.motion(session.object)->motion();
-            const model::Mesh& mesh = app::displayMesh(*document.object(session.object));
-            Eigen::Vector3d onSurface = Eigen::Vector3d::Zero();
-            for (int corner = 0; corner < 3; ++corner)
-                onSurface += mesh.positions[mesh.indices[std::size_t(corner)]].cast<double>() / 3.0;
-            std::vector<Eigen::Vector3d> places;
-            for (int i = 0; i < copies; ++i)
-                places.push_back(motion.at(scene.startTime + (scene.endTime - scene.startTime) * i / (copies - 1)).apply(onSurface));
+            // Each copy where the motion is at its time, the scene's range spread evenly.
+            const std::vector<Eigen::Vector3d> places = copyPlaces(document, session.object, copies);
             const QImage with = drawnImage(*session.viewport);
             showTrail->setChecked(false);
             const QImage without = drawnImage(*session.viewport);
@@ -272,6 +281,51 @@ private slots:
         }
         // The choice outlives the window.
         QCOMPARE(QSettings().value(QStringLiteral("view/trailCopies")).toInt(), 32);
+    }
+
+    void everySelectedObjectHasItsTrail()
+    {
+        Session session(0.0);
+        QVERIFY(QTest::qWaitForWindowExposed(&session.window));
+        model::Document& document = session.window.document();
+        document.push(new model::SetInterpolationCommand(document, session.object, InterpolationMethod::Hermite));
+        // A second object on the sample's keys moved aside along x by more than the sample's reach.
+        model::SceneObject aside = *document.object(session.object);
+        aside.id = 1;
+        aside.parent = model::kNoObject;
+        aside.name = QStringLiteral("aside");
+        double reach = 0.0;
+        for (const model::Keyframe& key : aside.track.keys)
+            reach = std::max(reach, key.pose.position.norm());
+        std::vector<model::Keyframe> keys = aside.track.keys;
+        for (model::Keyframe& key : keys)
+            key.pose.position.x() += 2.0 * reach + 1.0;
+        aside.track.keys = keys;
+        auto* import = new model::ImportObjectsCommand(document, {aside});
+        document.push(import);
+        const model::ObjectId second = import->ids().front();
+        for (const char* name : {"actionShowTrajectory", "actionShowGhost"})
+            session.window.findChild<QAction*>(QLatin1String(name))->setChecked(false);
+        constexpr int kCopies = 8;
+        session.window.findChild<QAction*>(QStringLiteral("actionTrailCopies-%1").arg(kCopies))->trigger();
+        session.window.selection().selectObjects({session.object, second}, session.object);
+        QTRY_COMPARE(session.viewport->trailInstanceCount(), std::size_t(2 * kCopies));
+        // Framed once the drawn motion has the new object (its trail is sampled from it), so that both show.
+        session.viewport->frameScene();
+
+        QAction* showTrail = session.window.findChild<QAction*>(QStringLiteral("actionShowTrail"));
+        const QImage with = drawnImage(*session.viewport);
+        showTrail->setChecked(false);
+        const QImage without = drawnImage(*session.viewport);
+        showTrail->setChecked(true);
+        for (const model::ObjectId object : {session.object, second}) {
+            // The object itself stands on one copy or two, hiding them.
+            const int seen = copiesSeen(*session.viewport, copyPlaces(document, object, kCopies), with, without);
+            QVERIFY2(seen >= kCopies - 2, qPrintable(QStringLiteral("object %1: %2 of %3 copies seen").arg(object).arg(seen).arg(kCopies)));
+        }
+        // The second object alone selected: its trail alone.
+        session.window.selection().selectObjects({second}, second);
+        QTRY_COMPARE(session.viewport->trailInstanceCount(), std::size_t(kCopies));
     }
 
     void theNumberPadViewsFollowTheUpAxis()

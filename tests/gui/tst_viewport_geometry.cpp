@@ -1,5 +1,5 @@
 // The viewport's geometry without OpenGL: the orbit camera's projections and moves, picking, and the
-// trail of any track (onion skinning).
+// trail of any track (onion skinning), for every selected object within the trails' total budget.
 
 #include "app/viewport/body_overlay.h"
 #include "app/viewport/default_shape.h"
@@ -426,6 +426,49 @@ private slots:
         }
         // The copies differ: the trail shows the motion, not one pose many times.
         QVERIFY((copies.front().position - copies.back().position).norm() > 1.0);
+    }
+
+    void everySelectedObjectGetsItsCopiesWithinTheTotalBudget()
+    {
+        // Five objects each turning and moving its own way, and an empty (drawn as axes, no trail).
+        model::Scene scene;
+        scene.startTime = 0.0;
+        scene.endTime = 2.0;
+        for (model::ObjectId id = 1; id <= 6; ++id) {
+            scene.objects.push_back(placed(id, model::kNoObject, turned(0.0, {0, 0, 1}, {double(id), 0, 0})));
+            scene.objects.back().track.keys.push_back({2.0, turned(0.5 * double(id), {1, 0, double(id)}, {0, double(id), 1}), true});
+        }
+        scene.objects.back().empty = true;
+        const std::vector<model::ObjectId> selected{1, 2, 3, 4, 5, 6};
+        // The active object first, then the others in their order; the empty left out.
+        QCOMPARE(app::sampledTrailObjects(scene, selected, 3, model::kNoObject, {16, 0}),
+                 (std::vector<model::ObjectId>{3, 1, 2, 4, 5}));
+        // The active screw track's trail is its subdivision, not one of these.
+        QCOMPARE(app::sampledTrailObjects(scene, selected, 3, 3, {16, 0}), (std::vector<model::ObjectId>{1, 2, 4, 5}));
+        // The total budget, up front: 1024 copies are four objects' at 256 each, 64 objects' at 16.
+        QCOMPARE(app::TrailSpacing::kMaxTotalCopies, 1024);
+        QCOMPARE((app::TrailSpacing{256, 0}.maxObjects()), std::size_t{4});
+        QCOMPARE((app::TrailSpacing{100'000, 0}.maxObjects()), std::size_t{4});
+        QCOMPARE((app::TrailSpacing{16, 0}.maxObjects()), std::size_t{64});
+        QCOMPARE(app::sampledTrailObjects(scene, selected, 3, model::kNoObject, {256, 0}),
+                 (std::vector<model::ObjectId>{3, 1, 2, 4}));
+
+        // Two selected objects each get their copies, each where its own motion is at the times.
+        const model::SceneMotion motion(scene, ownMotion);
+        const std::vector<double> times = app::trailTimes(scene, {9, 0});
+        const std::vector<app::ObjectTrail> trails = app::trailPoses(motion, {2, 5}, times);
+        QCOMPARE(trails.size(), std::size_t{2});
+        for (const app::ObjectTrail& trail : trails) {
+            QCOMPARE(trail.poses.size(), times.size());
+            const model::TrackMotion own(scene.objects[trail.object - 1].track);
+            for (std::size_t i = 0; i < times.size(); ++i) {
+                QVERIFY(trail.poses[i].orientation.angularDistance(own.at(times[i]).orientation) < 1e-12);
+                QVERIFY((trail.poses[i].position - own.at(times[i]).position).norm() < 1e-12);
+            }
+        }
+        QCOMPARE(trails[0].object, model::ObjectId{2});
+        QCOMPARE(trails[1].object, model::ObjectId{5});
+        QVERIFY((trails[0].poses.back().position - trails[1].poses.back().position).norm() > 1.0);
     }
 
     void aYUpViewOrbitsAboutY()

@@ -17,6 +17,9 @@
 #   (blender_skinned_bar.glb from blender_exports_scenes) imported and exported by gyre-cli (the glb
 #   validated), and imported by Blender, which must deform it at every frame as it deformed the original
 #   (1e-4 m).
+# - blender_writes_wrapping_spin runs wrapping_spin.py: an FBX whose object spins about Z to 530°, with Blender's
+#   rotation at each key; tst_blender_euler_filter imports it with gyre-cli import --euler-filter and checks that the
+#   stored angles are a continuous ramp that ends at 530° and that every key turns as Blender's (issue 23).
 # scripts/install-deps.sh installs Blender with the other packages; without it these tests fail and
 # say so, rather than pass unseen.
 find_program(GYRE_BLENDER blender)
@@ -34,6 +37,17 @@ set_tests_properties(blender_exports_scenes PROPERTIES LABELS interop FIXTURES_S
 add_test(NAME tst_blender_exports COMMAND tst_blender_fixtures)
 set_tests_properties(tst_blender_exports PROPERTIES LABELS interop FIXTURES_REQUIRED blender_exports
     ENVIRONMENT "GYRE_BLENDER_FILES=${blender_exports};QT_QPA_PLATFORM=offscreen;LSAN_OPTIONS=suppressions=${PROJECT_SOURCE_DIR}/tests/sanitizers/lsan-assimp.supp")
+
+set(blender_spin ${CMAKE_CURRENT_BINARY_DIR}/blender-spin)
+add_test(NAME blender_writes_wrapping_spin
+         COMMAND ${blender_command} ${CMAKE_CURRENT_SOURCE_DIR}/wrapping_spin.py -- ${blender_spin})
+set_tests_properties(blender_writes_wrapping_spin PROPERTIES LABELS interop FIXTURES_SETUP blender_spin)
+gyre_add_test(tst_blender_euler_filter LABEL interop SOURCES tst_blender_euler_filter.cpp LIBRARIES gyre_model)
+target_include_directories(tst_blender_euler_filter PRIVATE ${PROJECT_SOURCE_DIR}/tests/cli)
+target_compile_definitions(tst_blender_euler_filter PRIVATE GYRE_CLI_PATH="$<TARGET_FILE:gyre-cli>")
+add_dependencies(tst_blender_euler_filter gyre-cli gyre-scene-worker)
+set_tests_properties(tst_blender_euler_filter PROPERTIES FIXTURES_REQUIRED blender_spin)
+set_property(TEST tst_blender_euler_filter APPEND PROPERTY ENVIRONMENT "GYRE_BLENDER_FILES=${blender_spin}")
 
 file(GLOB bundled_samples ${PROJECT_SOURCE_DIR}/resources/samples/*.gyre)
 foreach(sample IN LISTS bundled_samples)

@@ -2,7 +2,8 @@
 // and the interpolation and is undone whole; the motion stays where it was at the keys (and, for the linear
 // euler interpolation, everywhere); an edit that sets only a key's orientation leaves the key angles nearest its
 // old ones, and undo puts the old ones back; the project file keeps the angles (two turns stay two turns) and
-// refuses angles that are not finite, on a quaternion object, or that do not give their key's orientation.
+// refuses angles that are not finite, on a quaternion object, or that do not give their key's orientation. The
+// import's Euler filter (putInEulerMode) turns a wrapped quaternion spin into a ramp of stored angles.
 
 #include "model/commands/import_objects_command.h"
 #include "model/commands/replace_keyframes_command.h"
@@ -207,6 +208,34 @@ private slots:
         document.undoStack().push(new SetKeyframeOrientationCommand(document, id, 0, Eigen::Vector3d(0, 0, 6 * kPi)));
         QCOMPARE(*document.object(id)->track.keys[0].eulerAngles, Eigen::Vector3d(0, 0, 6 * kPi));
         QVERIFY(sameRotation(document.object(id)->track.keys[0].pose.orientation, Eigen::Quaterniond::Identity()));
+    }
+
+    void importsEulerFilterMakesAWrappedSpinARamp()
+    {
+        // A spin about z by 100° a key for 8 keys (700°), as quaternions; every other stored as −q.
+        MotionTrack track;
+        track.interpolation = InterpolationMethod::Slerp;
+        for (int k = 0; k < 8; ++k) {
+            const Eigen::Quaterniond q = aboutAxes(0.0, 0.0, 100.0 * k * kPi / 180.0);
+            track.keys.push_back({double(k), {k % 2 == 0 ? q : Eigen::Quaterniond(-q.coeffs()), Eigen::Vector3d::Zero()}, true});
+        }
+        const MotionTrack before = track;
+        putInEulerMode(track, {});
+        QVERIFY(track.rotationMode.isEuler());
+        QCOMPARE(track.rotationMode.convention, EulerConvention{});
+        QCOMPARE(track.interpolation, InterpolationMethod::Euler);
+        QVERIFY(keepsRotationMode(track));
+        for (int k = 0; k < 8; ++k) {
+            QVERIFY((*track.keys[k].eulerAngles - Eigen::Vector3d(0.0, 0.0, 100.0 * k * kPi / 180.0)).norm() < 1e-12);
+            QVERIFY(sameRotation(track.keys[k].pose.orientation, before.keys[k].pose.orientation, 1e-12));
+        }
+        MotionTrack cubic = before;
+        cubic.interpolation = InterpolationMethod::Hermite;
+        putInEulerMode(cubic, EulerConvention{{2, 1, 0}, AngleFrame::Intrinsic});
+        QCOMPARE(cubic.interpolation, InterpolationMethod::EulerCubic);
+        QVERIFY(keepsRotationMode(cubic));
+        // Intrinsic zyx turns about z first: the spin is its first angle.
+        QVERIFY(std::abs(cubic.keys.back().eulerAngles->x() - 700.0 * kPi / 180.0) < 1e-12);
     }
 
     void projectFilesKeepTheAngles()

@@ -3,6 +3,7 @@
 #include "app/viewport/default_shape.h"
 #include "app/viewport/pose_matrix.h"
 #include "app/viewport/skeleton.h"
+#include "model/scene_joints.h"
 #include "model/scene_queries.h"
 
 #include <Eigen/Geometry>
@@ -41,7 +42,7 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
                       emit failed(tr("The motion could not be rebuilt: %1").arg(message));
                   }})
     , sampledTrailJob_(jobs::JobPolicy::NewestWins,
-                       {.finished = [this](const std::vector<Pose>& poses) { receiveTrail(poses, false); },
+                       {.finished = [this](const std::vector<ObjectTrail>& trails) { receiveSampledTrails(trails); },
                         .failed = [this](const QString& message) {
                             dropTrail();
                             emit changed();
@@ -58,7 +59,7 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
             [this](std::uint64_t, const std::vector<Pose>& poses, qint64 nanoseconds) {
                 subdivisionMilliseconds_ = double(nanoseconds) / 1e6;
                 subdivisionLatencyMilliseconds_ = double(sinceTrailRequest_.nsecsElapsed()) / 1e6;
-                receiveTrail(poses, true);
+                receiveScrewTrail(poses);
             });
     connect(&subdivision_, &jobs::SubdivisionJob::failed, this, [this](std::uint64_t, const QString& reason) {
         dropTrail();
@@ -70,7 +71,8 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
         if (trailSpacing_.everyFrames > 0)
             requestSampledTrail();
     });
-    trailObject_ = selection_.object();
+    connect(&selection_, &Selection::changed, this, &DrawnMotion::onSelectionChanged);
+    selectedObjects_ = selection_.objects();
     motion_ = std::make_shared<model::SceneMotion>(document_.scene(), motionOf());
     snapshotOriginalMotion();
     requestTrail();
@@ -126,14 +128,25 @@ void DrawnMotion::onSelectedTrackChanged(model::Changes changes)
 {
     using model::Change;
     if (changes & (SelectedTrack::kAnotherObject | Change::Scene)) {
-        // The trail in hand is another object's, or the old scene's: show none until this one's arrives.
-        trailObject_ = selectedTrack_.object();
-        trailPoseCount_ = 0;
+        // The trails in hand are of another selection, or the old scene's: show none until this one's arrive.
+        dropTrail();
         trajectoryStale_ = true;
     }
     // The trail subdivides the keys with the track's settings.
     if (changes & (SelectedTrack::kAnotherObject | Change::Scene | Change::Keyframes | Change::TrackSettings))
         requestTrail();
+    emit changed();
+}
+
+void DrawnMotion::onSelectionChanged()
+{
+    // Selecting keys changes the selection too, and asks for nothing here.
+    std::vector<model::ObjectId> objects = selection_.objects();
+    if (objects == selectedObjects_)
+        return;
+    selectedObjects_ = std::move(objects);
+    trajectoryStale_ = true;
+    requestSampledTrail();
     emit changed();
 }
 
@@ -180,9 +193,9 @@ bool DrawnMotion::isScrewBenderTrack(const model::SceneObject* object)
 
 void DrawnMotion::dropTrail()
 {
-    trailPoseCount_ = 0;
-    trailMatrices_.clear();
-    trailChanged_ = true;
+    screwTrail_.clear();
+    sampledTrails_.clear();
+    composeTrails();
 }
 
 void DrawnMotion::setTrailSpacing(const TrailSpacing& spacing)
@@ -194,74 +207,110 @@ void DrawnMotion::setTrailSpacing(const TrailSpacing& spacing)
 void DrawnMotion::requestTrail()
 {
     const model::SceneObject* object = selection_.selectedObject();
-    if (!isScrewBenderTrack(object)) {
+    if (isScrewBenderTrack(object)) {
+        std::vector<Pose> controlPoses;
+        controlPoses.reserve(object->track.keys.size());
+        for (const model::Keyframe& key : object->track.keys)
+            controlPoses.push_back(key.pose);
+        screwTrailObject_ = object->id;
+        sinceTrailRequest_.start();
+        subdivision_.request(std::move(controlPoses), object->track.subdivision);
+    } else {
         subdivision_.cancel();
-        requestSampledTrail();
-        return;
+        screwTrailObject_ = model::kNoObject;
+        screwTrail_.clear();
     }
-    sampledTrailJob_.cancel();
-    std::vector<Pose> controlPoses;
-    controlPoses.reserve(object->track.keys.size());
-    for (const model::Keyframe& key : object->track.keys)
-        controlPoses.push_back(key.pose);
-    sinceTrailRequest_.start();
-    subdivision_.request(std::move(controlPoses), object->track.subdivision);
+    // The others' trails, which leave the screw track out; newest wins, so none sampled before it became one lands.
+    requestSampledTrail();
 }
 
 void DrawnMotion::requestSampledTrail()
 {
-    const model::SceneObject* object = selection_.selectedObject();
-    if (isScrewBenderTrack(object))
-        return; // the screw trail is ScrewBender's subdivision (requestTrail)
     const model::Scene& scene = document_.scene();
-    // A joint is drawn as its bones and an empty as its axes: their paths say where they go.
-    if (object == nullptr || object->empty || model::findJoints(scene)[static_cast<std::size_t>(object - scene.objects.data())]) {
+    // Every selected object's but the screw track's, which is ScrewBender's subdivision (requestTrail).
+    std::vector<model::ObjectId> trailed =
+        sampledTrailObjects(scene, selection_.objects(), selection_.object(), screwTrailObject_, trailSpacing_);
+    if (trailed.empty()) {
         sampledTrailJob_.cancel();
-        dropTrail();
+        // Composed again only when some went: a screw trail alone is not uploaded anew at every drag move.
+        if (!sampledTrails_.empty()) {
+            sampledTrails_.clear();
+            composeTrails();
+        }
         return;
     }
-    sampledTrailJob_.post([motion = motion_, id = object->id, times = trailTimes(scene, trailSpacing_)](
+    sampledTrailJob_.post([motion = motion_, objects = std::move(trailed), times = trailTimes(scene, trailSpacing_)](
                               const jobs::JobRun<jobs::NoProgress>& run) {
         run.throwIfStopped(); // superseded before it started
-        return trailPoses(*motion, id, times);
+        return trailPoses(*motion, objects, times);
     });
 }
 
-void DrawnMotion::receiveTrail(const std::vector<Pose>& poses, bool inParentFrame)
+void DrawnMotion::receiveScrewTrail(const std::vector<Pose>& poses)
 {
-    trailMatrices_.clear();
-    for (const Pose& pose : poses)
-        appendPoseMatrix(trailMatrices_, pose);
-    trailPoseCount_ = poses.size();
-    trailInParentFrame_ = inParentFrame;
-    trailChanged_ = true;
+    screwTrail_ = poses;
+    composeTrails();
     emit changed();
 }
 
-const std::vector<Eigen::Vector3f>& DrawnMotion::trajectory()
+void DrawnMotion::receiveSampledTrails(const std::vector<ObjectTrail>& trails)
 {
-    if (trajectoryStale_)
-        rebuildTrajectory();
-    return trajectory_;
+    sampledTrails_ = trails;
+    composeTrails();
+    emit changed();
 }
 
-void DrawnMotion::rebuildTrajectory()
+void DrawnMotion::composeTrails()
 {
-    trajectory_.clear();
+    trailMatrices_.clear();
+    trails_.clear();
+    const auto append = [this](model::ObjectId object, const std::vector<Pose>& poses, bool inParentFrame) {
+        trails_.push_back({object, trailMatrices_.size() / kFloatsPerMatrix, poses.size(), inParentFrame});
+        for (const Pose& pose : poses)
+            appendPoseMatrix(trailMatrices_, pose);
+    };
+    if (screwTrailObject_ != model::kNoObject && !screwTrail_.empty())
+        append(screwTrailObject_, screwTrail_, true);
+    for (const ObjectTrail& trail : sampledTrails_)
+        if (!trail.poses.empty())
+            append(trail.object, trail.poses, false);
+    trailChanged_ = true;
+}
+
+const std::vector<std::vector<Eigen::Vector3f>>& DrawnMotion::trajectories()
+{
+    if (trajectoryStale_)
+        rebuildTrajectories();
+    return trajectories_;
+}
+
+void DrawnMotion::rebuildTrajectories()
+{
+    trajectories_.clear();
     trajectoryStale_ = false;
-    const model::SceneObject* object = selection_.selectedObject();
     const model::Scene& scene = document_.scene();
-    if (object == nullptr || !(scene.endTime > scene.startTime))
+    if (!(scene.endTime > scene.startTime))
         return;
-    // A joint's path is its origin's, where its bones meet.
-    const bool joint = model::findJoints(scene)[static_cast<std::size_t>(object - scene.objects.data())];
-    const Eigen::Vector3d centre = joint ? Eigen::Vector3d::Zero() : meshCentre(displayMesh(*object));
+    std::vector<model::ObjectId> objects = selection_.objects();
+    // The active object's first, so that the budget never leaves it out.
+    std::stable_partition(objects.begin(), objects.end(), [this](model::ObjectId id) { return id == selection_.object(); });
+    objects.resize(std::min(objects.size(), kMaxTrajectoryObjects));
+    const std::vector<bool> joints = model::findJoints(scene);
     // One sample per frame of the scene, fewer for very long scenes.
     const double frames = std::ceil((scene.endTime - scene.startTime) * scene.fps);
     const int samples = static_cast<int>(std::clamp(frames, 1.0, double(kMaxTrajectorySamples))) + 1;
-    for (int i = 0; i < samples; ++i) {
-        const double time = scene.startTime + (scene.endTime - scene.startTime) * i / (samples - 1);
-        trajectory_.push_back(motion_->worldPose(object->id, time).apply(centre).cast<float>());
+    for (const model::ObjectId id : objects) {
+        const model::SceneObject* object = model::findObject(scene, id);
+        if (object == nullptr)
+            continue;
+        // A joint's path is its origin's, where its bones meet.
+        const bool joint = joints[static_cast<std::size_t>(object - scene.objects.data())];
+        const Eigen::Vector3d centre = joint ? Eigen::Vector3d::Zero() : meshCentre(displayMesh(*object));
+        std::vector<Eigen::Vector3f>& path = trajectories_.emplace_back();
+        for (int i = 0; i < samples; ++i) {
+            const double time = scene.startTime + (scene.endTime - scene.startTime) * i / (samples - 1);
+            path.push_back(motion_->worldPose(id, time).apply(centre).cast<float>());
+        }
     }
 }
 

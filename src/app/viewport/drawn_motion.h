@@ -2,12 +2,14 @@
 // The motion the viewport draws, following the document: the scene's motion made anew after each
 // change from the document's shared track motions, the changed ones built off the UI thread by a
 // newest-wins job (a moment behind while a newer one is built), a live fit's preview track
-// in place of its object's own, the motion as opened or last saved (the ghost), the selected
-// object's trajectory, and its stroboscopic trail: a screw track's subdivided polyscrew (SubdivisionJob),
-// any other track's motion sampled at evenly spaced times (sampled_trail.h, on a newest-wins job).
+// in place of its object's own, the motion as opened or last saved (the ghost), and for every selected
+// object its centre's path and its stroboscopic trail: the active object's screw track's subdivided
+// polyscrew (SubdivisionJob, as ScrewBender edits it), and every other selected object's motion sampled at
+// evenly spaced times (sampled_trail.h, all of them on one newest-wins job, within its budget).
 
 #include "app/selected_track.h"
 #include "app/selection.h"
+#include "app/viewport/pose_matrix.h"
 #include "app/viewport/sampled_trail.h"
 #include "model/scene_motion.h"
 #include "jobs/job.h"
@@ -49,21 +51,31 @@ public:
     void setTrailSpacing(const TrailSpacing& spacing);
     const TrailSpacing& trailSpacing() const { return trailSpacing_; }
 
-    // The selected object's trail: a column-major 4×4 matrix per copy, in its parent's frame for a
-    // screw track (the subdivided poses), in the world for any other (trailInParentFrame).
+    // Where one object's copies are in trailMatrices(): `count` matrices from `first`, in the object's parent's
+    // frame for the active screw track's (its subdivided poses), in the world for any other.
+    struct DrawnTrail {
+        model::ObjectId object = model::kNoObject;
+        std::size_t first = 0;
+        std::size_t count = 0;
+        bool inParentFrame = false;
+    };
+    // The selected objects' trails: a column-major 4×4 matrix per copy, every object's in one array.
     const std::vector<float>& trailMatrices() const { return trailMatrices_; }
-    bool trailInParentFrame() const { return trailInParentFrame_; }
-    std::size_t trailPoseCount() const { return trailPoseCount_; }
+    const std::vector<DrawnTrail>& trails() const { return trails_; }
+    // Every object's copies together.
+    std::size_t trailPoseCount() const { return trailMatrices_.size() / kFloatsPerMatrix; }
     // Whether the trail changed since the last call, which then uploads it.
     bool takeTrailChange() { return std::exchange(trailChanged_, false); }
     // The worker's time for the newest trail, and the time from its request to its arrival.
     double subdivisionMilliseconds() const { return subdivisionMilliseconds_; }
     double subdivisionLatencyMilliseconds() const { return subdivisionLatencyMilliseconds_; }
 
-    // The world path of the selected object's mesh centre over the scene's time range, one point a
-    // frame (at most kMaxTrajectorySamples + 1); empty without a selected object.
-    const std::vector<Eigen::Vector3f>& trajectory();
+    // The world paths of the selected objects' mesh centres over the scene's time range (the active
+    // object's first, at most kMaxTrajectoryObjects of them), one point a frame (at most
+    // kMaxTrajectorySamples + 1 a path); none without a selected object.
+    const std::vector<std::vector<Eigen::Vector3f>>& trajectories();
     static constexpr int kMaxTrajectorySamples = 4096;
+    static constexpr std::size_t kMaxTrajectoryObjects = 64;
 
 signals:
     // Something drawn changed: the viewport repaints.
@@ -76,6 +88,8 @@ signals:
 private:
     void onDocumentChanged(model::ObjectId object, model::Changes changes);
     void onSelectedTrackChanged(model::Changes changes);
+    // Another set of selected objects: their trails and paths.
+    void onSelectionChanged();
     void snapshotOriginalMotion();
     // Each object's motion: the document's, the preview's in place of its object's.
     model::SceneMotion::MotionOf motionOf() const;
@@ -84,9 +98,12 @@ private:
     void requestTrail();
     // The trail of a track other than a screw one, from the motion drawn now.
     void requestSampledTrail();
-    void receiveTrail(const std::vector<Pose>& poses, bool inParentFrame);
+    void receiveScrewTrail(const std::vector<Pose>& poses);
+    void receiveSampledTrails(const std::vector<ObjectTrail>& trails);
+    // trailMatrices_ and trails_ from the screw trail and the sampled ones.
+    void composeTrails();
     void dropTrail();
-    void rebuildTrajectory();
+    void rebuildTrajectories();
 
     model::Document& document_;
     Selection& selection_;
@@ -100,12 +117,14 @@ private:
 
     // Kept from frame to frame, so that following the motion allocates nothing once they have grown.
     std::vector<float> trailMatrices_;
+    std::vector<DrawnTrail> trails_;
     bool trailChanged_ = false;
-    std::size_t trailPoseCount_ = 0;
-    bool trailInParentFrame_ = true;
     TrailSpacing trailSpacing_;
-    model::ObjectId trailObject_ = model::kNoObject; // whose trail trailMatrices_ holds
-    std::vector<Eigen::Vector3f> trajectory_;
+    model::ObjectId screwTrailObject_ = model::kNoObject; // whose subdivided poses screwTrail_ holds
+    std::vector<Pose> screwTrail_;
+    std::vector<ObjectTrail> sampledTrails_;
+    std::vector<model::ObjectId> selectedObjects_; // as the trails and paths were last asked for
+    std::vector<std::vector<Eigen::Vector3f>> trajectories_;
     bool trajectoryStale_ = true;
 
     double subdivisionMilliseconds_ = 0.0;
@@ -115,7 +134,7 @@ private:
     // Last: done first, so no trail or motion arrives once the members above are gone.
     jobs::SubdivisionJob subdivision_;
     jobs::Job<std::shared_ptr<const model::SceneMotion>> motionJob_;
-    jobs::Job<std::vector<Pose>> sampledTrailJob_;
+    jobs::Job<std::vector<ObjectTrail>> sampledTrailJob_;
 };
 
 } // namespace gyre::app

@@ -9,6 +9,9 @@
 
 namespace gyre::app {
 
+// The floats of one pose's matrix in an instance buffer.
+inline constexpr int kFloatsPerMatrix = 16;
+
 inline Eigen::Matrix4d poseMatrix(const Pose& pose, double scale = 1.0)
 {
     Eigen::Matrix4d matrix = Eigen::Matrix4d::Identity();
@@ -17,7 +20,7 @@ inline Eigen::Matrix4d poseMatrix(const Pose& pose, double scale = 1.0)
     return matrix;
 }
 
-// Appends the pose's matrix, column-major as the shader reads it: 16 floats.
+// Appends the pose's matrix, column-major as the shader reads it: kFloatsPerMatrix floats.
 inline void appendPoseMatrix(std::vector<float>& out, const Pose& pose, double scale = 1.0)
 {
     const Eigen::Matrix4f matrix = poseMatrix(pose, scale).cast<float>();

@@ -1,5 +1,9 @@
 #include "app/viewport/sampled_trail.h"
 
+#include "app/viewport/skeleton.h"
+#include "model/scene_joints.h"
+#include "model/scene_queries.h"
+
 #include <algorithm>
 
 namespace gyre::app {
@@ -7,6 +11,11 @@ namespace gyre::app {
 TrailSpacing TrailSpacing::clamped() const
 {
     return {std::clamp(copies, 2, kMaxCopies), std::clamp(everyFrames, 0, kMaxEveryFrames)};
+}
+
+std::size_t TrailSpacing::maxObjects() const
+{
+    return static_cast<std::size_t>(kMaxTotalCopies / clamped().copies);
 }
 
 std::vector<double> trailTimes(const model::Scene& scene, const TrailSpacing& setting)
@@ -38,6 +47,39 @@ std::vector<Pose> trailPoses(const model::SceneMotion& motion, model::ObjectId o
     for (const double time : times)
         poses.push_back(motion.worldPose(object, time));
     return poses;
+}
+
+std::vector<ObjectTrail> trailPoses(const model::SceneMotion& motion, const std::vector<model::ObjectId>& objects,
+                                    const std::vector<double>& times)
+{
+    std::vector<ObjectTrail> trails;
+    trails.reserve(objects.size());
+    for (const model::ObjectId object : objects)
+        trails.push_back({object, trailPoses(motion, object, times)});
+    return trails;
+}
+
+std::vector<model::ObjectId> sampledTrailObjects(const model::Scene& scene, const std::vector<model::ObjectId>& selected,
+                                                 model::ObjectId active, model::ObjectId screwTrailObject,
+                                                 const TrailSpacing& spacing)
+{
+    std::vector<model::ObjectId> ordered;
+    if (std::find(selected.begin(), selected.end(), active) != selected.end())
+        ordered.push_back(active);
+    for (const model::ObjectId id : selected)
+        if (id != active)
+            ordered.push_back(id);
+    const std::vector<bool> joints = model::findJoints(scene);
+    std::vector<model::ObjectId> trailed;
+    for (const model::ObjectId id : ordered) {
+        const model::SceneObject* object = model::findObject(scene, id);
+        if (trailed.size() == spacing.maxObjects())
+            break;
+        if (object != nullptr && id != screwTrailObject && !object->empty &&
+            !joints[static_cast<std::size_t>(object - scene.objects.data())])
+            trailed.push_back(id);
+    }
+    return trailed;
 }
 
 } // namespace gyre::app

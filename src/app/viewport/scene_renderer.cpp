@@ -29,7 +29,6 @@ constexpr GLuint kInstanceAttribute = 2;
 constexpr GLuint kJointsAttribute = 6;
 constexpr GLuint kWeightsAttribute = 7;
 constexpr GLuint kJointMatricesBinding = 0; // the uniform block's binding point
-constexpr int kFloatsPerMatrix = 16;
 constexpr float kHandlePointSize = 11.0F;
 
 constexpr Rgba kBackground{0.16F, 0.17F, 0.19F, 1.0F};
@@ -233,13 +232,15 @@ void SceneRenderer::setTrail(const std::vector<float>& matrices)
     trailInstanceCount_ = static_cast<int>(matrices.size() / kFloatsPerMatrix);
 }
 
-void SceneRenderer::drawMesh(GpuMesh& mesh, QOpenGLBuffer& instances, int instanceCount)
+void SceneRenderer::drawMesh(GpuMesh& mesh, QOpenGLBuffer& instances, int instanceCount, int firstInstance)
 {
     mesh.vertexArray->bind();
     instances.bind();
+    // The instances from the first one on: OpenGL 3.3 has no base instance, so the attributes start there.
+    const std::size_t first = std::size_t(firstInstance) * kFloatsPerMatrix * sizeof(float);
     for (GLuint column = 0; column < 4; ++column)
         glVertexAttribPointer(kInstanceAttribute + column, 4, GL_FLOAT, GL_FALSE, kFloatsPerMatrix * sizeof(float),
-                              reinterpret_cast<const void*>(column * 4 * sizeof(float)));
+                              reinterpret_cast<const void*>(first + column * 4 * sizeof(float)));
     meshProgram_->setUniformValue("uInstanceCount", instanceCount);
     if (mesh.frontFace && cullBackFaces_) {
         glEnable(GL_CULL_FACE);
@@ -359,7 +360,7 @@ void SceneRenderer::drawFrame(const Eigen::Matrix4d& viewProjectionMatrix, const
     uploadLines(lines);
     lineArray_->bind();
     drawLines(GL_LINES, lines.grid);
-    drawLines(GL_LINE_STRIP, lines.trajectory);
+    drawLines(GL_LINES, lines.trajectory);
     drawLines(GL_LINES, lines.axes);
     lineArray_->release();
 
@@ -376,13 +377,17 @@ void SceneRenderer::drawFrame(const Eigen::Matrix4d& viewProjectionMatrix, const
     // hundred instances opaque would hide the object, its trajectory and its control poses.
     glEnable(GL_BLEND);
     glDepthMask(GL_FALSE);
-    if (meshes.trail && selected != nullptr && trailInstanceCount_ > 0) {
-        // Behind the object itself, which stands on the trail and would otherwise fight it for depth.
+    if (!meshes.trails.empty()) {
+        // Behind the objects themselves, which stand on their trails and would otherwise fight them for depth.
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(1.0F, 1.0F);
         setMeshColors(kTrailStart, kTrailEnd);
-        meshProgram_->setUniformValue("uFrame", toQMatrix(poseMatrix(meshes.trailFrame)));
-        drawMesh(gpuMesh(*selected), trailInstances_, trailInstanceCount_);
+        for (const TrailInstances& trail : meshes.trails) {
+            if (trail.first + trail.count > trailInstanceCount_)
+                continue; // not uploaded yet
+            meshProgram_->setUniformValue("uFrame", toQMatrix(poseMatrix(trail.frame)));
+            drawMesh(gpuMesh(*trail.object), trailInstances_, trail.count, trail.first);
+        }
         glDisable(GL_POLYGON_OFFSET_FILL);
     }
     if (meshes.controlPoses && selected != nullptr) {

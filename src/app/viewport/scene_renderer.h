@@ -34,8 +34,16 @@ struct Shading {
     bool xray = false;
 };
 
+// One object's copies among the trail's instances (SceneRenderer::setTrail): `count` from `first`, in `frame`.
+struct TrailInstances {
+    const model::SceneObject* object = nullptr;
+    Pose frame; // the world frame of the copies: the parent's for a screw track's, else the world's
+    int first = 0;
+    int count = 0;
+};
+
 // The meshes of one frame: every object of the scene at its current time (joints as their bones),
-// and the selected object's trail, control poses (its keys) and ghost.
+// the selected objects' trails, and the active object's control poses (its keys) and ghost.
 struct FrameMeshes {
     const model::Scene* scene = nullptr;
     const model::SceneMotion* motion = nullptr;
@@ -43,8 +51,7 @@ struct FrameMeshes {
     Shading shading;
     const model::SceneObject* selected = nullptr;
     Pose selectedParentFrame; // the world frame of the selected object's keys
-    Pose trailFrame;          // the world frame of its trail: the parent's for a screw track's, else the world's
-    bool trail = false;       // as last uploaded with setTrail
+    std::vector<TrailInstances> trails; // as last uploaded with setTrail; none while the trail is hidden
     bool controlPoses = false;
     std::optional<std::size_t> highlightedKey;
     std::optional<Pose> ghost; // the selected object's original world pose, where it is drawn
@@ -69,7 +76,8 @@ public:
     float meshRadius(const model::SceneObject& object) { return gpuMesh(object).radius; }
     // The next frame drops the buffers of meshes no object holds any more.
     void dropUnusedMeshesNextFrame() { meshesMayBeUnused_ = true; }
-    // Uploads the trail's instances: column-major 4×4 matrices in FrameMeshes::trailFrame.
+    // Uploads the trails' instances, every selected object's: column-major 4×4 matrices, each object's in the
+    // frame its FrameMeshes::trails entry gives.
     void setTrail(const std::vector<float>& matrices);
 
     void drawFrame(const Eigen::Matrix4d& viewProjection, const Eigen::Vector3d& eye, const FrameLines& lines,
@@ -94,7 +102,8 @@ private:
     // Uploads the joint matrices of the skinned `object` (model/skinning.h) at the scene's time.
     void uploadJointMatrices(const model::SceneObject& object, const FrameMeshes& meshes);
     void dropUnusedMeshes();
-    void drawMesh(GpuMesh& mesh, QOpenGLBuffer& instances, int instanceCount);
+    // Draws `instanceCount` instances from `firstInstance` of the buffer.
+    void drawMesh(GpuMesh& mesh, QOpenGLBuffer& instances, int instanceCount, int firstInstance = 0);
     void drawLines(GLenum mode, LineRange range);
     void uploadLines(const FrameLines& lines);
     void uploadControlPoses(const model::SceneObject& object);

@@ -5,6 +5,7 @@
 #include "app/viewport/picking.h"
 #include "core/quaternion_math.h"
 #include "model/object_mass.h"
+#include "model/scene_queries.h"
 #include "model/skinning.h"
 #include "model/track_evaluation.h"
 
@@ -182,8 +183,9 @@ void Viewport::frameScene()
         for (const model::Keyframe& key : selected->track.keys)
             box.extend(frame.apply(key.pose.position));
     }
-    for (const Eigen::Vector3f& point : drawn_.trajectory())
-        box.extend(point.cast<double>());
+    for (const std::vector<Eigen::Vector3f>& path : drawn_.trajectories())
+        for (const Eigen::Vector3f& point : path)
+            box.extend(point.cast<double>());
     frameBox(box);
     cameraIsFramed_ = true;
 }
@@ -473,9 +475,12 @@ void Viewport::buildLines()
     lines_.grid = rangeFrom(0);
 
     std::size_t first = vertices.size();
+    // Each selected object's path, as segments (GL_LINES), so that one path does not run on into the next.
     if (showTrajectory_)
-        for (const Eigen::Vector3f& point : drawn_.trajectory())
-            vertices.push_back(lineVertex(point.cast<double>(), kTrajectoryColor));
+        for (const std::vector<Eigen::Vector3f>& path : drawn_.trajectories())
+            for (std::size_t i = 1; i < path.size(); ++i)
+                for (const Eigen::Vector3f& point : {path[i - 1], path[i]})
+                    vertices.push_back(lineVertex(point.cast<double>(), kTrajectoryColor));
     lines_.trajectory = rangeFrom(first);
 
     first = vertices.size();
@@ -582,8 +587,6 @@ void Viewport::paintGL()
     meshes.selected = selected;
     if (selected != nullptr) {
         meshes.selectedParentFrame = drawn_.motion().parentWorldPose(selected->id, scene.currentTime);
-        meshes.trailFrame = drawn_.trailInParentFrame() ? meshes.selectedParentFrame : Pose{};
-        meshes.trail = showTrail_ && drawn_.trailPoseCount() > 0;
         meshes.controlPoses = showsControlPoses();
         meshes.highlightedKey = selection_.key();
         if (showGhost_) {
@@ -592,8 +595,16 @@ void Viewport::paintGL()
                 meshes.ghost = original;
         }
     }
+    std::size_t trailInstances = 0;
+    if (showTrail_)
+        for (const DrawnMotion::DrawnTrail& trail : drawn_.trails())
+            if (const model::SceneObject* object = model::findObject(scene, trail.object)) {
+                const Pose frame = trail.inParentFrame ? drawn_.motion().parentWorldPose(trail.object, scene.currentTime) : Pose{};
+                meshes.trails.push_back({object, frame, int(trail.first), int(trail.count)});
+                trailInstances += trail.count;
+            }
     renderer_.drawFrame(camera_.viewProjectionMatrix(), camera_.eye(), lines_, meshes);
-    drawnTrailInstances_ = meshes.trail ? drawn_.trailPoseCount() : 0;
+    drawnTrailInstances_ = trailInstances;
     drewGhost_ = meshes.ghost.has_value();
 }
 

@@ -91,7 +91,7 @@ public:
     // The joints and bones as the last frame drew them.
     const Skeleton& skeleton() const { return skeleton_; }
     OrbitCamera& camera() { return camera_; }
-    // Instances in the last trail drawn (0 when the last frame drew none).
+    // Instances in the last trails drawn, every selected object's together (0 when the last frame drew none).
     std::size_t trailInstanceCount() const { return drawnTrailInstances_; }
     // Whether the last frame drew the ghost: the original motion differs at the current time.
     bool drewGhost() const { return drewGhost_; }

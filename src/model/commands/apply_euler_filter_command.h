@@ -1,15 +1,19 @@
 #pragma once
-// The Euler filter on an object's keys (Motion ▸ Euler Filter): makes consecutive keys continuous.
+// The Euler filter on an object's keys (Motion ▸ Euler Filter, and on import as an option): makes consecutive
+// keys continuous, as Blender's. The keys' orientations do not change, only how they are stored:
 //
-// Gyre's keys store orientations as quaternions, not angles, so there are no stored angles to
-// unwrap: the Euler angles the graph editor shows are already the unwrapped ones, chosen along the
-// curve (motion_channels.h). What can jump from key to key is the quaternion's sign: q and −q are
-// the same rotation, and an import or a typed key may store either. The filter flips each key into
-// the hemisphere of the one before (q_i·q_{i−1} ≥ 0), the first key as it is. The motion does not
-// change (every interpolation already joins keys along the short arc), but the stored components do,
-// and with them the quaternion channels, the project file, and quaternion columns written out.
+// - In Euler rotation mode the keys store the angles as typed, and a typed 350° after 10°, or an angle that
+//   came from a quaternion (an import, a rotate handle), jumps. Each key's angles after the first become their
+//   equivalent nearest the key before's (core's continuousEulerAngles: each angle ± 2πk, or the convention's
+//   twin solution), so the euler interpolations turn the short way and the curves are ramps, not saw-teeth.
+// - In either mode the quaternion's sign can jump: q and −q are the same rotation, and an import or a typed
+//   key may store either. Each key is flipped into the hemisphere of the one before (q_i·q_{i−1} ≥ 0), the
+//   first as it is. Quaternion interpolation already joins keys along the short arc, so the motion stays;
+//   the quaternion channels, the project file and quaternion columns written out change.
 
 #include "model/commands/object_fields.h"
+
+#include <vector>
 
 namespace gyre::model {
 
@@ -18,8 +22,10 @@ public:
     // Throws std::invalid_argument for an unknown object.
     ApplyEulerFilterCommand(Document& document, ObjectId object, QUndoCommand* parent = nullptr);
 
-    // Whether the filter would change the keys: some key is stored in the hemisphere opposite the
-    // key before it.
+    // The track's keys as the filter leaves them.
+    static std::vector<Keyframe> filteredKeys(const MotionTrack& track);
+
+    // Whether the filter would change the keys.
     static bool changes(const MotionTrack& track);
 };
 
