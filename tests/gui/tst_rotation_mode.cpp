@@ -9,6 +9,7 @@
 #include "app/main_window.h"
 #include "gui_test_support.h"
 #include "inspected_window.h"
+#include "model/commands/import_objects_command.h"
 #include "model/track_evaluation.h"
 
 #include <QAction>
