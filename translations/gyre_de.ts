@@ -1277,147 +1277,152 @@
         <translation>Objekt %1 „%2“ wird als „%3“ geschrieben, damit sein Name eindeutig ist</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="421"/>
+        <location filename="../src/io/scene_export.cpp" line="445"/>
         <source>cannot be written as FBX: %1</source>
         <translation>kann nicht als FBX geschrieben werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="171"/>
+        <location filename="../src/io/scene_export.cpp" line="195"/>
         <source>baking at %1 fps gives more than %2 samples</source>
         <translation>Backen mit %1 fps ergibt mehr als %2 Abtastwerte</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="178"/>
+        <location filename="../src/io/scene_export.cpp" line="202"/>
         <source>the motion of &apos;%1&apos; cannot be baked: %2</source>
         <translation>die Bewegung von „%1“ kann nicht gebacken werden: %2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="150"/>
+        <location filename="../src/io/scene_export.cpp" line="174"/>
         <source>the motion of &apos;%1&apos; cannot be evaluated: %2</source>
         <translation>die Bewegung von „%1“ kann nicht ausgewertet werden: %2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="137"/>
+        <location filename="../src/io/scene_export.cpp" line="141"/>
         <source>object %1 names parent %2, which does not come before it; it is written at the top level</source>
         <translation>Objekt %1 nennt das Elternobjekt %2, das nicht vor ihm steht; es wird auf oberster Ebene geschrieben</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="160"/>
+        <location filename="../src/io/scene_export.cpp" line="157"/>
+        <source>the skin of &apos;%1&apos; names object %2, which the scene does not hold; its mesh is written rigid</source>
+        <translation>die Haut von '%1' nennt Objekt %2, das die Szene nicht enthält; ihr Mesh wird starr geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="184"/>
         <source>the mesh of &apos;%1&apos; has an index past its vertices</source>
         <translation>das Mesh von „%1“ hat einen Index jenseits seiner Eckpunkte</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="351"/>
+        <location filename="../src/io/scene_export.cpp" line="375"/>
         <source>Assimp cannot write it</source>
         <translation>Assimp kann sie nicht schreiben</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="352"/>
+        <location filename="../src/io/scene_export.cpp" line="376"/>
         <source>Assimp cannot write it: %1</source>
         <translation>Assimp kann sie nicht schreiben: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="358"/>
+        <location filename="../src/io/scene_export.cpp" line="382"/>
         <source>Assimp wrote nothing</source>
         <translation>Assimp hat nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="377"/>
+        <location filename="../src/io/scene_export.cpp" line="401"/>
         <source>cannot be written as glTF: %1</source>
         <translation>kann nicht als glTF geschrieben werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="401"/>
+        <location filename="../src/io/scene_export.cpp" line="425"/>
         <source>the frame rate must be a finite number above zero</source>
         <translation>die Bildrate muss eine endliche Zahl über null sein</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="403"/>
+        <location filename="../src/io/scene_export.cpp" line="427"/>
         <source>the scene&apos;s time range is empty or not finite</source>
         <translation>der Zeitbereich der Szene ist leer oder nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="406"/>
+        <location filename="../src/io/scene_export.cpp" line="430"/>
         <source>the scene has no meshes, and OBJ holds nothing else</source>
         <translation>die Szene hat keine Meshes, und OBJ enthält nichts anderes</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="408"/>
+        <location filename="../src/io/scene_export.cpp" line="432"/>
         <source>OBJ holds no motion: the meshes are written as posed at the start time</source>
         <translation>OBJ enthält keine Bewegung: die Meshes werden so geschrieben, wie sie zur Startzeit stehen</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="57"/>
+        <location filename="../src/io/scene_import.cpp" line="58"/>
         <source>no such file</source>
         <translation>Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="59"/>
+        <location filename="../src/io/scene_import.cpp" line="60"/>
         <source>is a directory, not a scene file</source>
         <translation>ist ein Verzeichnis, keine Szenendatei</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="61"/>
+        <location filename="../src/io/scene_import.cpp" line="62"/>
         <source>cannot be read (permission denied)</source>
         <translation>kann nicht gelesen werden (keine Berechtigung)</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="63"/>
+        <location filename="../src/io/scene_import.cpp" line="64"/>
         <source>the file is empty</source>
         <translation>die Datei ist leer</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="76"/>
+        <location filename="../src/io/scene_import.cpp" line="77"/>
         <source>the file holds no meshes and no animation</source>
         <translation>die Datei enthält weder Meshes noch Animation</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="85"/>
+        <location filename="../src/io/scene_import.cpp" line="86"/>
         <source>not a scene Gyre can read: %1</source>
         <translation>keine Szene, die Gyre lesen kann: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="89"/>
+        <location filename="../src/io/scene_import.cpp" line="90"/>
         <source>the file holds no scene nodes</source>
         <translation>die Datei enthält keine Szenenknoten</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="131"/>
+        <location filename="../src/io/scene_import.cpp" line="132"/>
         <source>%1 key %2 is not finite</source>
         <translation>%1schlüssel %2 ist nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="134"/>
+        <location filename="../src/io/scene_import.cpp" line="135"/>
         <source>%1 key %2 is not a rotation (a zero quaternion)</source>
         <translation>%1schlüssel %2 ist keine Rotation (ein Null-Quaternion)</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="137"/>
+        <location filename="../src/io/scene_import.cpp" line="138"/>
         <source>%1 key %2 is not after the key before it</source>
         <translation>%1schlüssel %2 liegt nicht nach dem Schlüssel davor</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="146"/>
+        <location filename="../src/io/scene_import.cpp" line="147"/>
         <source>node &apos;%1&apos;: %2</source>
         <translation>Knoten „%1“: %2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="384"/>
+        <location filename="../src/io/scene_import.cpp" line="395"/>
         <source>node &apos;%1&apos; has more than one channel in animation &apos;%2&apos;; the first is used</source>
         <translation>Knoten „%1“ hat mehr als einen Kanal in der Animation „%2“; der erste wird verwendet</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="390"/>
+        <location filename="../src/io/scene_import.cpp" line="401"/>
         <source>node &apos;%1&apos; is moved by more than one of the chosen animations; the later one, &apos;%2&apos;, is used</source>
         <translation>Knoten „%1“ wird von mehr als einer der gewählten Animationen bewegt; die spätere, „%2“, wird verwendet</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="494"/>
+        <location filename="../src/io/scene_import.cpp" line="505"/>
         <source>animation &apos;%1&apos; moves &apos;%2&apos;, which is not in the scene</source>
         <translation>Animation „%1“ bewegt den Knoten „%2“, den es in der Szene nicht gibt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/io/scene_import.cpp" line="525"/>
+        <location filename="../src/io/scene_import.cpp" line="536"/>
         <source>the file has %n animation(s); there is no animation %1</source>
         <translation>
             <numerusform>die Datei hat %n Animation; es gibt keine Animation %1</numerusform>
@@ -1425,57 +1430,57 @@
         </translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="549"/>
+        <location filename="../src/io/scene_import.cpp" line="560"/>
         <source>the frame rate %1 is not in (0, %2]</source>
         <translation>die Bildrate %1 liegt nicht in (0, %2]</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="556"/>
+        <location filename="../src/io/scene_import.cpp" line="567"/>
         <source>the unit %1 m is not a positive length</source>
         <translation>die Einheit %1 m ist keine positive Länge</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="660"/>
+        <location filename="../src/io/scene_import.cpp" line="671"/>
         <source>Assimp reads %1 animations and TinyGLTF %2</source>
         <translation>Assimp liest %1 Animationen und TinyGLTF %2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="440"/>
+        <location filename="../src/io/scene_import.cpp" line="451"/>
         <source>node &apos;%1&apos; has a non-uniform scale; its children get the mean scale</source>
         <translation>Knoten „%1“ hat eine ungleichmäßige Skalierung; seine Kinder erhalten die mittlere Skalierung</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="257"/>
+        <location filename="../src/io/scene_import.cpp" line="258"/>
         <source>mesh &apos;%1&apos;: %2</source>
         <translation>Mesh „%1“: %2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="458"/>
+        <location filename="../src/io/scene_import.cpp" line="469"/>
         <source>rotation</source>
         <translation>Rotations</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="461"/>
+        <location filename="../src/io/scene_import.cpp" line="472"/>
         <source>position</source>
         <translation>Positions</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="476"/>
+        <location filename="../src/io/scene_import.cpp" line="487"/>
         <source>scaling</source>
         <translation>Skalierungs</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="482"/>
+        <location filename="../src/io/scene_import.cpp" line="493"/>
         <source>node &apos;%1&apos;: its scale changes over time; Gyre&apos;s motion is rigid, so the scale of its first key is kept</source>
         <translation>Knoten „%1“: seine Skalierung ändert sich mit der Zeit; Gyres Bewegung ist starr, daher wird die Skalierung seines ersten Animationsschlüssels beibehalten</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="538"/>
+        <location filename="../src/io/scene_import.cpp" line="549"/>
         <source>mesh and morph animation is not imported; only node motion is</source>
         <translation>Mesh- und Morph-Animation wird nicht importiert, nur die Bewegung der Knoten</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="540"/>
+        <location filename="../src/io/scene_import.cpp" line="551"/>
         <source>cameras and lights are not imported</source>
         <translation>Kameras und Lichter werden nicht importiert</translation>
     </message>
@@ -2091,17 +2096,17 @@
     <message>
         <location filename="../src/model/project_json.cpp" line="74"/>
         <source>&apos;%1&apos; is neither quaternion nor euler</source>
-        <translation>'%1' ist weder quaternion noch euler</translation>
+        <translation>&apos;%1&apos; ist weder quaternion noch euler</translation>
     </message>
     <message>
         <location filename="../src/model/project_json.cpp" line="79"/>
         <source>&apos;%1&apos; is neither intrinsic nor extrinsic</source>
-        <translation>'%1' ist weder intrinsic noch extrinsic</translation>
+        <translation>&apos;%1&apos; ist weder intrinsic noch extrinsic</translation>
     </message>
     <message>
         <location filename="../src/model/project_json.cpp" line="84"/>
         <source>&apos;%1&apos; is not an order of three axes</source>
-        <translation>'%1' ist keine Reihenfolge dreier Achsen</translation>
+        <translation>&apos;%1&apos; ist keine Reihenfolge dreier Achsen</translation>
     </message>
 </context>
 <context>
@@ -2169,13 +2174,13 @@
 <context>
     <name>gyre::app::DrawnMotion</name>
     <message>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="41"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="42"/>
         <source>The motion could not be rebuilt: %1</source>
         <translation>Die Bewegung konnte nicht neu aufgebaut werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="48"/>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="66"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="49"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="67"/>
         <source>The trail could not be built: %1</source>
         <translation>Die Stroboskopspur konnte nicht aufgebaut werden: %1</translation>
     </message>
@@ -2350,112 +2355,127 @@
 <context>
     <name>gyre::app::ImportDialog</name>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="28"/>
+        <location filename="../src/app/import_dialog.cpp" line="29"/>
         <source>The file has no animation.</source>
         <translation>Die Datei hat keine Animation.</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="30"/>
+        <location filename="../src/app/import_dialog.cpp" line="31"/>
         <source>The file has one animation.</source>
         <translation>Die Datei hat eine Animation.</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="32"/>
+        <location filename="../src/app/import_dialog.cpp" line="33"/>
         <source>Each animation moves nodes no other moves, so all are imported together.</source>
         <translation>Jede Animation bewegt Knoten, die keine andere bewegt, daher werden alle zusammen importiert.</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="34"/>
+        <location filename="../src/app/import_dialog.cpp" line="35"/>
         <source>These are Blender&apos;s takes, one for every object and action: each object gets its own action.</source>
         <translation>Dies sind Takes von Blender, einer für jedes Objekt und jede Aktion: Jedes Objekt erhält seine eigene Aktion.</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="37"/>
+        <location filename="../src/app/import_dialog.cpp" line="38"/>
         <source>These animations move the same nodes: choose which to import. Checked ones are merged; a node that several move takes the keys of the last one in the list.</source>
         <translation>Diese Animationen bewegen dieselben Knoten: Wählen Sie, welche importiert werden. Angehakte werden zusammengeführt; ein Knoten, den mehrere bewegen, erhält die Schlüsselbilder der letzten in der Liste.</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="45"/>
+        <location filename="../src/app/import_dialog.cpp" line="46"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="68"/>
+        <location filename="../src/app/import_dialog.cpp" line="66"/>
+        <source>Euler filter: rotations in Euler mode (extrinsic xyz), angles continuous</source>
+        <translation>Euler-Filter: Rotationen im Euler-Modus (extrinsisch xyz), Winkel stetig</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="70"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="74"/>
+        <location filename="../src/app/import_dialog.cpp" line="76"/>
         <source>Animation</source>
         <translation>Animation</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="74"/>
+        <location filename="../src/app/import_dialog.cpp" line="76"/>
         <source>Length</source>
         <translation>Dauer</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="74"/>
+        <location filename="../src/app/import_dialog.cpp" line="76"/>
         <source>Moves</source>
         <translation>Bewegte Knoten</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="77"/>
+        <location filename="../src/app/import_dialog.cpp" line="79"/>
         <source>(unnamed %1)</source>
         <translation>(unbenannt %1)</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="102"/>
+        <location filename="../src/app/import_dialog.cpp" line="104"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="105"/>
+        <location filename="../src/app/import_dialog.cpp" line="107"/>
         <source>Frame rate:</source>
         <translation>Bildrate:</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="109"/>
+        <location filename="../src/app/import_dialog.cpp" line="111"/>
         <source> m</source>
         <translation> m</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="112"/>
+        <location filename="../src/app/import_dialog.cpp" line="114"/>
         <source>One unit of the file:</source>
         <translation>Eine Einheit der Datei:</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="114"/>
+        <location filename="../src/app/import_dialog.cpp" line="116"/>
         <source>Y up (turned to Z up)</source>
         <translation>Y oben (gedreht zu Z oben)</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="115"/>
+        <location filename="../src/app/import_dialog.cpp" line="117"/>
         <source>Z up</source>
         <translation>Z oben</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="118"/>
+        <location filename="../src/app/import_dialog.cpp" line="120"/>
         <source>Up axis:</source>
         <translation>Hochachse:</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="120"/>
+        <location filename="../src/app/import_dialog.cpp" line="122"/>
         <source>First key at 0 s</source>
         <translation>Erstes Schlüsselbild bei 0 s</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="121"/>
+        <location filename="../src/app/import_dialog.cpp" line="123"/>
         <source>As in the file</source>
         <translation>Wie in der Datei</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="122"/>
+        <location filename="../src/app/import_dialog.cpp" line="124"/>
         <source>Time:</source>
         <translation>Zeit:</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="124"/>
+        <location filename="../src/app/import_dialog.cpp" line="127"/>
+        <source>Stores each imported rotation as Euler angles, Blender&apos;s default XYZ order, each key&apos;s angles the nearest to the key before, so that a spin is a ramp, not a saw-tooth</source>
+        <translation>Speichert jede importierte Rotation als Euler-Winkel in Blenders Standardreihenfolge XYZ, die Winkel jedes Keys am nächsten an denen des vorigen, sodass eine Drehung eine Rampe ist, kein Sägezahn</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="129"/>
+        <source>Rotations:</source>
+        <translation>Rotationen:</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="131"/>
         <source>From the file: %1; %2; %3.</source>
         <translation>Aus der Datei: %1; %2; %3.</translation>
     </message>
@@ -2663,17 +2683,22 @@
 <context>
     <name>gyre::app::KeyframeActions</name>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="71"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="78"/>
         <source>Cannot add a keyframe: %1</source>
         <translation>Schlüsselbild kann nicht hinzugefügt werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="124"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="129"/>
+        <source>Apply Euler Filter</source>
+        <translation>Euler-Filter anwenden</translation>
+    </message>
+    <message>
+        <location filename="../src/app/keyframe_actions.cpp" line="145"/>
         <source>This span has a single free flight</source>
         <translation>Dieser Abschnitt hat nur einen freien Flug</translation>
     </message>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="126"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="147"/>
         <source>Cannot step the flight: %1</source>
         <translation>Flug kann nicht gewechselt werden: %1</translation>
     </message>
@@ -2972,93 +2997,93 @@
 <context>
     <name>gyre::app::MassPropertiesGroup</name>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="43"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="47"/>
         <source>Body</source>
         <translation>Körper</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="47"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="51"/>
         <source>Type values</source>
         <translation>Werte eingeben</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
         <source>Ixx</source>
         <translation>Ixx</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
         <source>Iyy</source>
         <translation>Iyy</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
         <source>Izz</source>
         <translation>Izz</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
         <source>Ixy</source>
         <translation>Ixy</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
         <source>Ixz</source>
         <translation>Ixz</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
         <source>Iyz</source>
         <translation>Iyz</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="67"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="71"/>
         <source>mass</source>
         <translation>Masse</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="72"/>
         <source>centre x</source>
         <translation>Schwerpunkt x</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="72"/>
         <source>centre y</source>
         <translation>Schwerpunkt y</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="72"/>
         <source>centre z</source>
         <translation>Schwerpunkt z</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="74"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="78"/>
         <source>Mass (kg)</source>
         <translation>Masse (kg)</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="75"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="79"/>
         <source>Centre (m)</source>
         <translation>Schwerpunkt (m)</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="76"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="80"/>
         <source>Inertia (kg·m²)</source>
         <translation>Trägheit (kg·m²)</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="77"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="81"/>
         <source>Principal</source>
         <translation>Hauptmomente</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="116"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="122"/>
         <source>%1, %2, %3 kg·m²</source>
         <translation>%1, %2, %3 kg·m²</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="152"/>
-        <location filename="../src/app/mass_properties_group.cpp" line="164"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="156"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="168"/>
         <source>Not changed: %1</source>
         <translation>Nicht geändert: %1</translation>
     </message>
@@ -3134,75 +3159,75 @@
 <context>
     <name>gyre::app::SceneFileActions</name>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="28"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="30"/>
         <source>Scenes (*.fbx *.gltf *.glb *.dae *.obj *.bvh *.3ds *.x *.ase *.ply *.stl);;All files (*)</source>
         <translation>Szenen (*.fbx *.gltf *.glb *.dae *.obj *.bvh *.3ds *.x *.ase *.ply *.stl);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="34"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="36"/>
         <source>glTF 2.0 (*.gltf);;glTF 2.0 binary (*.glb);;Collada (*.dae);;FBX (*.fbx);;OBJ, meshes only (*.obj)</source>
         <translation>glTF 2.0 (*.gltf);;glTF 2.0 binär (*.glb);;Collada (*.dae);;FBX (*.fbx);;OBJ, nur Meshes (*.obj)</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="61"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="63"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="78"/>
-        <location filename="../src/app/scene_file_actions.cpp" line="144"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="80"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="147"/>
         <source>Import of %1 cancelled</source>
         <translation>Import von %1 abgebrochen</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="84"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="86"/>
         <source>Import Scene</source>
         <translation>Szene importieren</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="92"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="94"/>
         <source>Export Scene</source>
         <translation>Szene exportieren</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="106"/>
-        <location filename="../src/app/scene_file_actions.cpp" line="117"/>
-        <location filename="../src/app/scene_file_actions.cpp" line="162"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="108"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="119"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="165"/>
         <source>Wait for the scene file being read or written first</source>
         <translation>Warten Sie zuerst, bis die Szenendatei gelesen oder geschrieben ist</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="120"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="122"/>
         <source>Importing %1…</source>
         <translation>%1 wird importiert…</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="154"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="157"/>
         <source>Cannot export</source>
         <translation>Export nicht möglich</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="155"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="158"/>
         <source>%1: Gyre writes .gltf, .glb, .dae, .fbx and .obj scenes; the file name&apos;s extension says which.</source>
         <translation>%1: Gyre schreibt Szenen als .gltf, .glb, .dae, .fbx und .obj; die Endung des Dateinamens bestimmt das Format.</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="165"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="168"/>
         <source>Exporting %1…</source>
         <translation>%1 wird exportiert…</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="172"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="175"/>
         <source>%1: the file holds no objects.</source>
         <translation>%1: Die Datei enthält keine Objekte.</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="175"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="178"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/app/scene_file_actions.cpp" line="190"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="197"/>
         <source>Objects imported from %1: %n</source>
         <translation>
             <numerusform>%n Objekt aus %1 importiert</numerusform>
@@ -3210,23 +3235,23 @@
         </translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="193"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="200"/>
         <source>Imported %1</source>
         <translation>%1 importiert</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="199"/>
-        <location filename="../src/app/scene_file_actions.cpp" line="200"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="206"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="207"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="206"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="213"/>
         <source>Scene file</source>
         <translation>Szenendatei</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/app/scene_file_actions.cpp" line="215"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="222"/>
         <source>Done. Warnings about what the file could not keep: %n.</source>
         <translation>
             <numerusform>Fertig, mit %n Warnung dazu, was die Datei nicht aufnehmen konnte.</numerusform>
@@ -3635,7 +3660,10 @@
     <message numerus="yes">
         <location filename="../src/app/view_preferences.cpp" line="65"/>
         <source>%n Copies</source>
-        <translation><numerusform>%n Kopie</numerusform><numerusform>%n Kopien</numerusform></translation>
+        <translation>
+            <numerusform>%n Kopie</numerusform>
+            <numerusform>%n Kopien</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../src/app/view_preferences.cpp" line="68"/>
@@ -3645,7 +3673,10 @@
     <message numerus="yes">
         <location filename="../src/app/view_preferences.cpp" line="68"/>
         <source>Every %n Frame(s) About the Current Frame</source>
-        <translation><numerusform>Jedes %n. Frame um das aktuelle Frame</numerusform><numerusform>Alle %n Frames um das aktuelle Frame</numerusform></translation>
+        <translation>
+            <numerusform>Jedes %n. Frame um das aktuelle Frame</numerusform>
+            <numerusform>Alle %n Frames um das aktuelle Frame</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../src/app/view_preferences.cpp" line="71"/>
@@ -3782,7 +3813,7 @@
         <translation>Objekt ausblenden</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/apply_euler_filter_command.cpp" line="22"/>
+        <location filename="../src/model/commands/apply_euler_filter_command.cpp" line="13"/>
         <source>Apply Euler Filter</source>
         <translation>Euler-Filter anwenden</translation>
     </message>

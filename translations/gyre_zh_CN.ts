@@ -1277,204 +1277,209 @@
         <translation>对象 %1“%2”写为“%3”，以使其名称唯一</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="421"/>
+        <location filename="../src/io/scene_export.cpp" line="445"/>
         <source>cannot be written as FBX: %1</source>
         <translation>无法写成 FBX：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="171"/>
+        <location filename="../src/io/scene_export.cpp" line="195"/>
         <source>baking at %1 fps gives more than %2 samples</source>
         <translation>以 %1 fps 烘焙会产生超过 %2 个采样</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="178"/>
+        <location filename="../src/io/scene_export.cpp" line="202"/>
         <source>the motion of &apos;%1&apos; cannot be baked: %2</source>
         <translation>无法烘焙“%1”的运动：%2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="150"/>
+        <location filename="../src/io/scene_export.cpp" line="174"/>
         <source>the motion of &apos;%1&apos; cannot be evaluated: %2</source>
         <translation>无法计算“%1”的运动：%2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="137"/>
+        <location filename="../src/io/scene_export.cpp" line="141"/>
         <source>object %1 names parent %2, which does not come before it; it is written at the top level</source>
         <translation>对象 %1 指定的父对象 %2 不在它之前；它被写在顶层</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="160"/>
+        <location filename="../src/io/scene_export.cpp" line="157"/>
+        <source>the skin of &apos;%1&apos; names object %2, which the scene does not hold; its mesh is written rigid</source>
+        <translation>'%1' 的蒙皮引用了场景中不存在的物体 %2；其网格按刚体写出</translation>
+    </message>
+    <message>
+        <location filename="../src/io/scene_export.cpp" line="184"/>
         <source>the mesh of &apos;%1&apos; has an index past its vertices</source>
         <translation>“%1”的网格有超出其顶点范围的索引</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="351"/>
+        <location filename="../src/io/scene_export.cpp" line="375"/>
         <source>Assimp cannot write it</source>
         <translation>Assimp 无法写入</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="352"/>
+        <location filename="../src/io/scene_export.cpp" line="376"/>
         <source>Assimp cannot write it: %1</source>
         <translation>Assimp 无法写入：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="358"/>
+        <location filename="../src/io/scene_export.cpp" line="382"/>
         <source>Assimp wrote nothing</source>
         <translation>Assimp 没有写出任何内容</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="377"/>
+        <location filename="../src/io/scene_export.cpp" line="401"/>
         <source>cannot be written as glTF: %1</source>
         <translation>无法写成 glTF：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="401"/>
+        <location filename="../src/io/scene_export.cpp" line="425"/>
         <source>the frame rate must be a finite number above zero</source>
         <translation>帧率必须是大于零的有限数</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="403"/>
+        <location filename="../src/io/scene_export.cpp" line="427"/>
         <source>the scene&apos;s time range is empty or not finite</source>
         <translation>场景的时间范围为空或不是有限值</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="406"/>
+        <location filename="../src/io/scene_export.cpp" line="430"/>
         <source>the scene has no meshes, and OBJ holds nothing else</source>
         <translation>场景没有网格，而 OBJ 不能保存其他内容</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="408"/>
+        <location filename="../src/io/scene_export.cpp" line="432"/>
         <source>OBJ holds no motion: the meshes are written as posed at the start time</source>
         <translation>OBJ 不包含运动：网格按起始时间的姿态写出</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="57"/>
+        <location filename="../src/io/scene_import.cpp" line="58"/>
         <source>no such file</source>
         <translation>文件不存在</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="59"/>
+        <location filename="../src/io/scene_import.cpp" line="60"/>
         <source>is a directory, not a scene file</source>
         <translation>是目录，不是场景文件</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="61"/>
+        <location filename="../src/io/scene_import.cpp" line="62"/>
         <source>cannot be read (permission denied)</source>
         <translation>无法读取（权限不足）</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="63"/>
+        <location filename="../src/io/scene_import.cpp" line="64"/>
         <source>the file is empty</source>
         <translation>文件为空</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="76"/>
+        <location filename="../src/io/scene_import.cpp" line="77"/>
         <source>the file holds no meshes and no animation</source>
         <translation>文件既没有网格也没有动画</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="85"/>
+        <location filename="../src/io/scene_import.cpp" line="86"/>
         <source>not a scene Gyre can read: %1</source>
         <translation>不是 Gyre 能读取的场景：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="89"/>
+        <location filename="../src/io/scene_import.cpp" line="90"/>
         <source>the file holds no scene nodes</source>
         <translation>文件不含场景节点</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="131"/>
+        <location filename="../src/io/scene_import.cpp" line="132"/>
         <source>%1 key %2 is not finite</source>
         <translation>%1关键帧 %2 不是有限值</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="134"/>
+        <location filename="../src/io/scene_import.cpp" line="135"/>
         <source>%1 key %2 is not a rotation (a zero quaternion)</source>
         <translation>%1关键帧 %2 不是旋转（零四元数）</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="137"/>
+        <location filename="../src/io/scene_import.cpp" line="138"/>
         <source>%1 key %2 is not after the key before it</source>
         <translation>%1关键帧 %2 不在前一个关键帧之后</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="146"/>
+        <location filename="../src/io/scene_import.cpp" line="147"/>
         <source>node &apos;%1&apos;: %2</source>
         <translation>节点“%1”：%2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="384"/>
+        <location filename="../src/io/scene_import.cpp" line="395"/>
         <source>node &apos;%1&apos; has more than one channel in animation &apos;%2&apos;; the first is used</source>
         <translation>节点“%1”在动画“%2”中有多个通道；使用第一个</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="390"/>
+        <location filename="../src/io/scene_import.cpp" line="401"/>
         <source>node &apos;%1&apos; is moved by more than one of the chosen animations; the later one, &apos;%2&apos;, is used</source>
         <translation>节点“%1”被多个所选动画移动；使用较后的“%2”</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="494"/>
+        <location filename="../src/io/scene_import.cpp" line="505"/>
         <source>animation &apos;%1&apos; moves &apos;%2&apos;, which is not in the scene</source>
         <translation>动画“%1”移动“%2”，但场景中没有它</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/io/scene_import.cpp" line="525"/>
+        <location filename="../src/io/scene_import.cpp" line="536"/>
         <source>the file has %n animation(s); there is no animation %1</source>
         <translation>
             <numerusform>文件有 %n 个动画；没有动画 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="549"/>
+        <location filename="../src/io/scene_import.cpp" line="560"/>
         <source>the frame rate %1 is not in (0, %2]</source>
         <translation>帧率 %1 不在 (0, %2] 范围内</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="556"/>
+        <location filename="../src/io/scene_import.cpp" line="567"/>
         <source>the unit %1 m is not a positive length</source>
         <translation>单位 %1 m 不是正的长度</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="660"/>
+        <location filename="../src/io/scene_import.cpp" line="671"/>
         <source>Assimp reads %1 animations and TinyGLTF %2</source>
         <translation>Assimp 读到 %1 个动画，而 TinyGLTF 读到 %2 个</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="440"/>
+        <location filename="../src/io/scene_import.cpp" line="451"/>
         <source>node &apos;%1&apos; has a non-uniform scale; its children get the mean scale</source>
         <translation>节点“%1”的缩放不均匀；其子节点使用平均缩放</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="257"/>
+        <location filename="../src/io/scene_import.cpp" line="258"/>
         <source>mesh &apos;%1&apos;: %2</source>
         <translation>网格“%1”：%2</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="458"/>
+        <location filename="../src/io/scene_import.cpp" line="469"/>
         <source>rotation</source>
         <translation>旋转</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="461"/>
+        <location filename="../src/io/scene_import.cpp" line="472"/>
         <source>position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="476"/>
+        <location filename="../src/io/scene_import.cpp" line="487"/>
         <source>scaling</source>
         <translation>缩放</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="482"/>
+        <location filename="../src/io/scene_import.cpp" line="493"/>
         <source>node &apos;%1&apos;: its scale changes over time; Gyre&apos;s motion is rigid, so the scale of its first key is kept</source>
         <translation>节点“%1”：其缩放随时间变化；Gyre 的运动是刚体运动，因此保留其第一个关键帧的缩放</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="538"/>
+        <location filename="../src/io/scene_import.cpp" line="549"/>
         <source>mesh and morph animation is not imported; only node motion is</source>
         <translation>网格动画和变形动画不会被导入；只导入节点运动</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_import.cpp" line="540"/>
+        <location filename="../src/io/scene_import.cpp" line="551"/>
         <source>cameras and lights are not imported</source>
         <translation>摄像机和灯光不会被导入</translation>
     </message>
@@ -2090,17 +2095,17 @@
     <message>
         <location filename="../src/model/project_json.cpp" line="74"/>
         <source>&apos;%1&apos; is neither quaternion nor euler</source>
-        <translation>'%1' 既不是 quaternion 也不是 euler</translation>
+        <translation>&apos;%1&apos; 既不是 quaternion 也不是 euler</translation>
     </message>
     <message>
         <location filename="../src/model/project_json.cpp" line="79"/>
         <source>&apos;%1&apos; is neither intrinsic nor extrinsic</source>
-        <translation>'%1' 既不是 intrinsic 也不是 extrinsic</translation>
+        <translation>&apos;%1&apos; 既不是 intrinsic 也不是 extrinsic</translation>
     </message>
     <message>
         <location filename="../src/model/project_json.cpp" line="84"/>
         <source>&apos;%1&apos; is not an order of three axes</source>
-        <translation>'%1' 不是三个轴的顺序</translation>
+        <translation>&apos;%1&apos; 不是三个轴的顺序</translation>
     </message>
 </context>
 <context>
@@ -2168,13 +2173,13 @@
 <context>
     <name>gyre::app::DrawnMotion</name>
     <message>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="41"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="42"/>
         <source>The motion could not be rebuilt: %1</source>
         <translation>无法重建运动：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="48"/>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="66"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="49"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="67"/>
         <source>The trail could not be built: %1</source>
         <translation>无法生成频闪轨迹：%1</translation>
     </message>
@@ -2349,112 +2354,127 @@
 <context>
     <name>gyre::app::ImportDialog</name>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="28"/>
+        <location filename="../src/app/import_dialog.cpp" line="29"/>
         <source>The file has no animation.</source>
         <translation>文件没有动画。</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="30"/>
+        <location filename="../src/app/import_dialog.cpp" line="31"/>
         <source>The file has one animation.</source>
         <translation>文件有一个动画。</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="32"/>
+        <location filename="../src/app/import_dialog.cpp" line="33"/>
         <source>Each animation moves nodes no other moves, so all are imported together.</source>
         <translation>每个动画移动的节点都不被其他动画移动，因此全部一起导入。</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="34"/>
+        <location filename="../src/app/import_dialog.cpp" line="35"/>
         <source>These are Blender&apos;s takes, one for every object and action: each object gets its own action.</source>
         <translation>这些是 Blender 的 take，每个对象与动作的组合各一个：每个对象各取自己的动作。</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="37"/>
+        <location filename="../src/app/import_dialog.cpp" line="38"/>
         <source>These animations move the same nodes: choose which to import. Checked ones are merged; a node that several move takes the keys of the last one in the list.</source>
         <translation>这些动画移动相同的节点：请选择要导入哪些。勾选的动画会被合并；被多个动画移动的节点采用列表中最后一个动画的关键帧。</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="45"/>
+        <location filename="../src/app/import_dialog.cpp" line="46"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="68"/>
+        <location filename="../src/app/import_dialog.cpp" line="66"/>
+        <source>Euler filter: rotations in Euler mode (extrinsic xyz), angles continuous</source>
+        <translation>欧拉滤波器：旋转采用欧拉模式（外旋 xyz），角度连续</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="70"/>
         <source>Import %1</source>
         <translation>导入 %1</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="74"/>
+        <location filename="../src/app/import_dialog.cpp" line="76"/>
         <source>Animation</source>
         <translation>动画</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="74"/>
+        <location filename="../src/app/import_dialog.cpp" line="76"/>
         <source>Length</source>
         <translation>时长</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="74"/>
+        <location filename="../src/app/import_dialog.cpp" line="76"/>
         <source>Moves</source>
         <translation>移动的节点</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="77"/>
+        <location filename="../src/app/import_dialog.cpp" line="79"/>
         <source>(unnamed %1)</source>
         <translation>（未命名 %1）</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="102"/>
+        <location filename="../src/app/import_dialog.cpp" line="104"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="105"/>
+        <location filename="../src/app/import_dialog.cpp" line="107"/>
         <source>Frame rate:</source>
         <translation>帧率：</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="109"/>
+        <location filename="../src/app/import_dialog.cpp" line="111"/>
         <source> m</source>
         <translation> 米</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="112"/>
+        <location filename="../src/app/import_dialog.cpp" line="114"/>
         <source>One unit of the file:</source>
         <translation>文件中的一个单位：</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="114"/>
+        <location filename="../src/app/import_dialog.cpp" line="116"/>
         <source>Y up (turned to Z up)</source>
         <translation>Y 朝上（转为 Z 朝上）</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="115"/>
+        <location filename="../src/app/import_dialog.cpp" line="117"/>
         <source>Z up</source>
         <translation>Z 朝上</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="118"/>
+        <location filename="../src/app/import_dialog.cpp" line="120"/>
         <source>Up axis:</source>
         <translation>向上轴：</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="120"/>
+        <location filename="../src/app/import_dialog.cpp" line="122"/>
         <source>First key at 0 s</source>
         <translation>第一个关键帧位于 0 秒</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="121"/>
+        <location filename="../src/app/import_dialog.cpp" line="123"/>
         <source>As in the file</source>
         <translation>与文件中相同</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="122"/>
+        <location filename="../src/app/import_dialog.cpp" line="124"/>
         <source>Time:</source>
         <translation>时间：</translation>
     </message>
     <message>
-        <location filename="../src/app/import_dialog.cpp" line="124"/>
+        <location filename="../src/app/import_dialog.cpp" line="127"/>
+        <source>Stores each imported rotation as Euler angles, Blender&apos;s default XYZ order, each key&apos;s angles the nearest to the key before, so that a spin is a ramp, not a saw-tooth</source>
+        <translation>将每个导入的旋转存储为欧拉角（Blender 默认的 XYZ 顺序），每个关键帧的角度取最接近前一关键帧的值，使旋转呈斜坡而非锯齿</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="129"/>
+        <source>Rotations:</source>
+        <translation>旋转：</translation>
+    </message>
+    <message>
+        <location filename="../src/app/import_dialog.cpp" line="131"/>
         <source>From the file: %1; %2; %3.</source>
         <translation>来自文件：%1；%2；%3。</translation>
     </message>
@@ -2662,17 +2682,22 @@
 <context>
     <name>gyre::app::KeyframeActions</name>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="71"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="78"/>
         <source>Cannot add a keyframe: %1</source>
         <translation>无法添加关键帧：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="124"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="129"/>
+        <source>Apply Euler Filter</source>
+        <translation>应用欧拉滤波器</translation>
+    </message>
+    <message>
+        <location filename="../src/app/keyframe_actions.cpp" line="145"/>
         <source>This span has a single free flight</source>
         <translation>此区间只有一个自由飞行</translation>
     </message>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="126"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="147"/>
         <source>Cannot step the flight: %1</source>
         <translation>无法切换飞行：%1</translation>
     </message>
@@ -2971,93 +2996,93 @@
 <context>
     <name>gyre::app::MassPropertiesGroup</name>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="43"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="47"/>
         <source>Body</source>
         <translation>刚体</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="47"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="51"/>
         <source>Type values</source>
         <translation>输入数值</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
         <source>Ixx</source>
         <translation>Ixx</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
         <source>Iyy</source>
         <translation>Iyy</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
         <source>Izz</source>
         <translation>Izz</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
         <source>Ixy</source>
         <translation>Ixy</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
         <source>Ixz</source>
         <translation>Ixz</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="64"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
         <source>Iyz</source>
         <translation>Iyz</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="67"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="71"/>
         <source>mass</source>
         <translation>质量</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="72"/>
         <source>centre x</source>
         <translation>质心 x</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="72"/>
         <source>centre y</source>
         <translation>质心 y</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="68"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="72"/>
         <source>centre z</source>
         <translation>质心 z</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="74"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="78"/>
         <source>Mass (kg)</source>
         <translation>质量 (kg)</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="75"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="79"/>
         <source>Centre (m)</source>
         <translation>质心 (m)</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="76"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="80"/>
         <source>Inertia (kg·m²)</source>
         <translation>惯性 (kg·m²)</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="77"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="81"/>
         <source>Principal</source>
         <translation>主惯性矩</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="116"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="122"/>
         <source>%1, %2, %3 kg·m²</source>
         <translation>%1、%2、%3 kg·m²</translation>
     </message>
     <message>
-        <location filename="../src/app/mass_properties_group.cpp" line="152"/>
-        <location filename="../src/app/mass_properties_group.cpp" line="164"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="156"/>
+        <location filename="../src/app/mass_properties_group.cpp" line="168"/>
         <source>Not changed: %1</source>
         <translation>未更改：%1</translation>
     </message>
@@ -3132,98 +3157,98 @@
 <context>
     <name>gyre::app::SceneFileActions</name>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="28"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="30"/>
         <source>Scenes (*.fbx *.gltf *.glb *.dae *.obj *.bvh *.3ds *.x *.ase *.ply *.stl);;All files (*)</source>
         <translation>场景 (*.fbx *.gltf *.glb *.dae *.obj *.bvh *.3ds *.x *.ase *.ply *.stl);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="34"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="36"/>
         <source>glTF 2.0 (*.gltf);;glTF 2.0 binary (*.glb);;Collada (*.dae);;FBX (*.fbx);;OBJ, meshes only (*.obj)</source>
         <translation>glTF 2.0 (*.gltf);;glTF 2.0 二进制 (*.glb);;Collada (*.dae);;FBX (*.fbx);;OBJ，仅网格 (*.obj)</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="61"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="63"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="78"/>
-        <location filename="../src/app/scene_file_actions.cpp" line="144"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="80"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="147"/>
         <source>Import of %1 cancelled</source>
         <translation>已取消导入 %1</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="84"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="86"/>
         <source>Import Scene</source>
         <translation>导入场景</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="92"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="94"/>
         <source>Export Scene</source>
         <translation>导出场景</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="106"/>
-        <location filename="../src/app/scene_file_actions.cpp" line="117"/>
-        <location filename="../src/app/scene_file_actions.cpp" line="162"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="108"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="119"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="165"/>
         <source>Wait for the scene file being read or written first</source>
         <translation>请先等待正在读取或写入的场景文件完成</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="120"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="122"/>
         <source>Importing %1…</source>
         <translation>正在导入 %1…</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="154"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="157"/>
         <source>Cannot export</source>
         <translation>无法导出</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="155"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="158"/>
         <source>%1: Gyre writes .gltf, .glb, .dae, .fbx and .obj scenes; the file name&apos;s extension says which.</source>
         <translation>%1：Gyre 可写出 .gltf、.glb、.dae、.fbx 和 .obj 场景；由文件扩展名决定格式。</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="165"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="168"/>
         <source>Exporting %1…</source>
         <translation>正在导出 %1…</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="172"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="175"/>
         <source>%1: the file holds no objects.</source>
         <translation>%1：文件不含任何对象。</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="175"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="178"/>
         <source>Import %1</source>
         <translation>导入 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/app/scene_file_actions.cpp" line="190"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="197"/>
         <source>Objects imported from %1: %n</source>
         <translation>
             <numerusform>已从 %1 导入 %n 个对象</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="193"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="200"/>
         <source>Imported %1</source>
         <translation>已导入 %1</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="199"/>
-        <location filename="../src/app/scene_file_actions.cpp" line="200"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="206"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="207"/>
         <source>Exported %1</source>
         <translation>已导出 %1</translation>
     </message>
     <message>
-        <location filename="../src/app/scene_file_actions.cpp" line="206"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="213"/>
         <source>Scene file</source>
         <translation>场景文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/app/scene_file_actions.cpp" line="215"/>
+        <location filename="../src/app/scene_file_actions.cpp" line="222"/>
         <source>Done. Warnings about what the file could not keep: %n.</source>
         <translation>
             <numerusform>已完成，有 %n 条关于文件无法保留内容的警告。</numerusform>
@@ -3630,7 +3655,9 @@
     <message numerus="yes">
         <location filename="../src/app/view_preferences.cpp" line="65"/>
         <source>%n Copies</source>
-        <translation><numerusform>%n 个副本</numerusform></translation>
+        <translation>
+            <numerusform>%n 个副本</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../src/app/view_preferences.cpp" line="68"/>
@@ -3640,7 +3667,9 @@
     <message numerus="yes">
         <location filename="../src/app/view_preferences.cpp" line="68"/>
         <source>Every %n Frame(s) About the Current Frame</source>
-        <translation><numerusform>当前帧前后每 %n 帧</numerusform></translation>
+        <translation>
+            <numerusform>当前帧前后每 %n 帧</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../src/app/view_preferences.cpp" line="71"/>
@@ -3777,7 +3806,7 @@
         <translation>隐藏对象</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/apply_euler_filter_command.cpp" line="22"/>
+        <location filename="../src/model/commands/apply_euler_filter_command.cpp" line="13"/>
         <source>Apply Euler Filter</source>
         <translation>应用欧拉滤波器</translation>
     </message>
