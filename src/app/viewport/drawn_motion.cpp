@@ -296,9 +296,11 @@ void DrawnMotion::rebuildTrajectories()
     std::stable_partition(objects.begin(), objects.end(), [this](model::ObjectId id) { return id == selection_.object(); });
     objects.resize(std::min(objects.size(), kMaxTrajectoryObjects));
     const std::vector<bool> joints = model::findJoints(scene);
-    // One sample per frame of the scene, fewer for very long scenes.
+    // One sample per frame of the scene, fewer for very long scenes and for many objects.
     const double frames = std::ceil((scene.endTime - scene.startTime) * scene.fps);
-    const int samples = static_cast<int>(std::clamp(frames, 1.0, double(kMaxTrajectorySamples))) + 1;
+    const double perPath = std::min<double>(kMaxTrajectorySamples,
+                                            kMaxTrajectoryPoints / static_cast<double>(std::max<std::size_t>(objects.size(), 1)));
+    const int samples = static_cast<int>(std::clamp(frames, 1.0, std::floor(perPath))) + 1;
     for (const model::ObjectId id : objects) {
         const model::SceneObject* object = model::findObject(scene, id);
         if (object == nullptr)

@@ -72,9 +72,11 @@ public:
 
     // The world paths of the selected objects' mesh centres over the scene's time range (the active
     // object's first, at most kMaxTrajectoryObjects of them), one point a frame (at most
-    // kMaxTrajectorySamples + 1 a path); none without a selected object.
+    // kMaxTrajectorySamples + 1 a path, and kMaxTrajectoryPoints over all paths: they are sampled on the UI
+    // thread, which one path of 4096 points kept to a few milliseconds); none without a selected object.
     const std::vector<std::vector<Eigen::Vector3f>>& trajectories();
     static constexpr int kMaxTrajectorySamples = 4096;
+    static constexpr int kMaxTrajectoryPoints = 4 * kMaxTrajectorySamples;
     static constexpr std::size_t kMaxTrajectoryObjects = 64;
 
 signals:
