@@ -21,9 +21,11 @@ times = collections.defaultdict(list)
 for _ in range(rounds):
     for binary in binaries:
         run = subprocess.run([binary, "--benchmark_filter=" + pattern, "--benchmark_format=json",
-                              "--benchmark_repetitions=3"], capture_output=True, text=True, check=True)
+                              "--benchmark_repetitions=3"], capture_output=True, text=True)
+        if run.returncode != 0:
+            sys.exit("%s failed:\n%s" % (binary, run.stderr))
         for benchmark in json.loads(run.stdout)["benchmarks"]:
-            if benchmark.get("run_type") == "iteration":
+            if benchmark.get("run_type") == "iteration" and not benchmark.get("error_occurred"):
                 microseconds = {"ns": 1e-3, "us": 1.0, "ms": 1e3, "s": 1e6}[benchmark["time_unit"]]
                 times[(binary, benchmark["run_name"])].append(benchmark["cpu_time"] * microseconds)
 
@@ -32,7 +34,7 @@ def items(name):
     return int(name.split("/")[1]) if name.startswith("BM_Fit/") else 1
 
 
-names = sorted({name for _, name in times}, key=lambda name: (name.split("/")[0], items(name)))
+names = sorted({name for _, name in times}, key=lambda name: (name.split("/")[0], items(name), name))
 for name in names:
     row = [name]
     for binary in binaries:

@@ -415,8 +415,9 @@ bool FitRun::solve()
     // linear in the segments and under 4% of a fit at 3,000 keys. What grew faster than linearly was
     // the Jacobian Ceres stores and walks seven times an iteration (evaluation, validity check, column
     // norms, scaling, JᵀJ, J·x and Jᵀ·x): 80 rows a segment, 20 MB at 2,000 keys, out of every cache.
-    // CompressedCost hands Ceres 17 rows a segment with the same JᵀJ, Jᵀr and cost instead, so the
-    // steps are those of the full residuals (compressed_cost.h). DENSE_QR or DENSE_NORMAL_CHOLESKY
+    // CompressedCost hands Ceres 9 to 17 rows a segment (one more than its free unknowns) with the
+    // same JᵀJ, Jᵀr and cost instead, so the steps are those of the full residuals (compressed_cost.h),
+    // and the segments share their quadrature's weights (SegmentQuadrature). DENSE_QR or DENSE_NORMAL_CHOLESKY
     // would cost the cube of the unknowns; ITERATIVE_SCHUR needs an e-block structure the chain lacks.
     options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
     options.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;

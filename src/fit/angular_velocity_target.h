@@ -45,6 +45,7 @@ public:
             : target_(target)
         {
         }
+        explicit Reader(AngularVelocityTarget&&) = delete; // it would outlive the target it reads
         Eigen::Vector3d at(double time) { return target_.at(time, vectors_, magnitudes_); }
 
     private:

@@ -4,8 +4,8 @@
 #include <Eigen/Core>
 
 #include <numeric>
-#include <string>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace gyre::fit {

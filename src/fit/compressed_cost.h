@@ -21,7 +21,8 @@
 // r̃ is r turned by Qᵀ, so r̃ is only defined together with its Jacobian: evaluated without Jacobians,
 // the residuals are (|r|, 0, …, 0), of the same squared norm. That is all Ceres' trust-region
 // minimiser reads of such an evaluation (the cost of a candidate step); nothing in the fit uses
-// Problem::Evaluate, covariance estimation or gradient checking, which would need one r̃ throughout.
+// Problem::Evaluate, covariance estimation or gradient checking, which would need one r̃ throughout
+// (and may ask for a held block's Jacobian, which fails the evaluation).
 
 #include <ceres/cost_function.h>
 

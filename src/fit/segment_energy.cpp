@@ -22,9 +22,9 @@ Eigen::Matrix3d crossMatrix(const Eigen::Vector3d& v)
     return m;
 }
 
-// The weights of a one-second segment's basis at u, for a segment of h seconds with 1/h and 1/h²
-// given. The slope weights h₁₀, h₁₁ multiply h·d, since d is a derivative in time, not in u; each
-// derivative in time divides by h once more.
+// The weights of the four control vectors (q₀, d₀, q₁, d₁) at a node of a segment h seconds long, from
+// the Hermite basis at the node's u, with 1/h and 1/h² given. The slope weights h₁₀, h₁₁ multiply h·d,
+// since d is a derivative in time, not in u; each derivative in time divides by h once more.
 NodeBasis scaledBasis(const HermiteBasis& basis, double h, double inverse, double inverseSquare)
 {
     return {{basis.value[0], basis.value[1] * h, basis.value[2], basis.value[3] * h},
@@ -34,12 +34,6 @@ NodeBasis scaledBasis(const HermiteBasis& basis, double h, double inverse, doubl
 }
 
 } // namespace
-
-NodeBasis nodeBasis(double u, double duration)
-{
-    const double inverse = 1.0 / duration;
-    return scaledBasis(hermiteBasis(u), duration, inverse, inverse * inverse);
-}
 
 SegmentQuadrature::SegmentQuadrature(const QuadratureRule& rule)
 {

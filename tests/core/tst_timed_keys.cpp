@@ -6,6 +6,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -63,7 +64,7 @@ void TestTimedKeys::cursorFindsTheScannedSegment()
                 time -= 5.0 * gap(rng);
                 ++backward;
             } else if (choice < 0.95) {
-                time = keys[static_cast<std::size_t>(unit(rng) * static_cast<double>(count - 1))].time;
+                time = keys[std::min(static_cast<std::size_t>(unit(rng) * static_cast<double>(count)), count - 1)].time;
                 ++atKeys;
             } else {
                 time = first + (last - first) * (3.0 * unit(rng) - 1.0);

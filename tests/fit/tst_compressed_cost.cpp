@@ -197,6 +197,15 @@ void TestCompressedCost::heldBlocksHaveNoRows()
                                                   Eigen::Vector4d(-0.3, 0.9, 1.1, 0.2)};
     compareNormalEquations(full, compressed, parameters, 1e-12, held);
     QVERIFY_THROWS_EXCEPTION(std::runtime_error, evaluate(compressed, parameters, {true, true, false, false}));
+
+    // Every block held, as between two held window ends with no key inside: the cost alone, one residual.
+    const CompressedCost allHeld(std::make_unique<SegmentEnergy>(duration, quadrature, targets, weights),
+                                 std::vector<bool>{true, true, true, true});
+    QCOMPARE(allHeld.num_residuals(), 1);
+    compareNormalEquations(full, allHeld, parameters, 1e-12, {true, true, true, true});
+    const Evaluation noBlocks = evaluate(allHeld, parameters, {false, false, false, false});
+    const double cost = evaluate(full, parameters, {}).residuals.squaredNorm();
+    QVERIFY(std::abs(noBlocks.residuals.squaredNorm() - cost) <= 1e-12 * cost);
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                              CompressedCost(std::make_unique<SegmentEnergy>(duration, quadrature, targets, weights),
                                             std::vector<bool>{true, false}));

@@ -8,9 +8,9 @@
 #include <QTest>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <vector>
-#include <numbers>
 
 using namespace gyre::fit;
 
