@@ -236,6 +236,35 @@ aiMesh* assimpMesh(const model::Mesh& mesh)
     return result.release();
 }
 
+// The bones of a skinned object's own copy of its mesh, from which Assimp's Collada writer writes a skin
+// <controller>: one per joint, named as the joint's node (the writer finds the node by that name and makes
+// it a JOINT), its offset matrix the inverse bind B_j, its weights the positions' nonzero ones. The writer's
+// bind shape matrix is the identity, so Collada's skinning, Σ w · W_j · B_j · v in the world, is Gyre's
+// (model/skinning.h). Weights that sum to less than 1 are written as they are: Collada's readers
+// normalise them, as Blender's armature and Gyre's import do.
+void addBones(aiMesh& mesh, const BakedObject& object, const BakedScene& baked)
+{
+    const model::Skin& skin = object.mesh->skin;
+    std::vector<std::vector<aiVertexWeight>> weights(object.skinJoints.size());
+    for (std::size_t v = 0; v < skin.vertexWeights.size(); ++v)
+        for (int k = 0; k < 4; ++k)
+            if (const float weight = skin.vertexWeights[v][k]; weight > 0.0F)
+                weights[skin.vertexJoints[v][static_cast<std::size_t>(k)]].emplace_back(static_cast<unsigned>(v), weight);
+    mesh.mNumBones = static_cast<unsigned>(object.skinJoints.size());
+    mesh.mBones = new aiBone*[mesh.mNumBones];
+    for (std::size_t j = 0; j < object.skinJoints.size(); ++j) {
+        auto* bone = new aiBone;
+        mesh.mBones[j] = bone;
+        bone->mName.Set(baked.objects[object.skinJoints[j]].name);
+        const Eigen::Matrix4f& b = skin.inverseBinds[j];
+        bone->mOffsetMatrix = aiMatrix4x4(b(0, 0), b(0, 1), b(0, 2), b(0, 3), b(1, 0), b(1, 1), b(1, 2), b(1, 3),
+                                          b(2, 0), b(2, 1), b(2, 2), b(2, 3), b(3, 0), b(3, 1), b(3, 2), b(3, 3));
+        bone->mNumWeights = static_cast<unsigned>(weights[j].size());
+        bone->mWeights = newArray<aiVertexWeight>(weights[j].size());
+        std::ranges::copy(weights[j], bone->mWeights);
+    }
+}
+
 // One node animation channel: the baked poses as rotation and position keys at the same times, each
 // quaternion on the side of the one before so that every reader's slerp takes the short arc. Unit
 // scaling keys at the same times too: Assimp's Collada writer leaves out a channel whose three key
@@ -274,8 +303,8 @@ aiMaterial* defaultMaterial()
     return material.release();
 }
 
-// The aiScene of a baked scene: one node per object under a root, the meshes (one aiMesh for objects
-// that share a Mesh), and the baked motion as one animation.
+// The aiScene of a baked scene: one node per object under a root, the meshes (one aiMesh for rigid objects
+// that share a Mesh, one for each skinned object, with its bones), and the baked motion as one animation.
 // glTF is Y-up by its specification, Assimp's Collada writer says Y_UP, and OBJ is Y-up by custom:
 // Gyre's Z-up scene goes out turned, yUpToZUp()⁻¹ before each top-level pose, which Gyre's import and
 // Blender's importers turn back. (FBX says Z-up in its GlobalSettings and goes out as it is.)
@@ -315,11 +344,18 @@ std::unique_ptr<aiScene> assimpScene(const BakedScene& baked)
         auto node = std::make_unique<aiNode>(object.name);
         node->mTransformation = assimp_math::toAssimpMatrix(object.startPose);
         if (object.mesh) {
-            const auto [entry, isNew] = meshIndices.try_emplace(object.mesh, static_cast<unsigned>(meshes.size()));
-            if (isNew)
+            auto index = static_cast<unsigned>(meshes.size());
+            if (object.skinJoints.empty()) { // one aiMesh for the rigid objects that share a Mesh
+                const auto [entry, isNew] = meshIndices.try_emplace(object.mesh, index);
+                index = entry->second;
+                if (isNew)
+                    meshes.emplace_back(assimpMesh(*object.mesh));
+            } else { // an aiMesh holds the bones of one skin: each skinned object has its own
                 meshes.emplace_back(assimpMesh(*object.mesh));
+                addBones(*meshes.back(), object, baked);
+            }
             node->mNumMeshes = 1;
-            node->mMeshes = new unsigned[1]{entry->second};
+            node->mMeshes = new unsigned[1]{index};
         }
         nodes.push_back(std::move(node));
         if (!object.samples.empty())

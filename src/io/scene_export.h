@@ -4,7 +4,8 @@
 // (fbx_scene_writer.h), and to OBJ (.obj with its .mtl, Assimp's) for the meshes alone.
 //
 // Each object becomes a node under one root, with its parent kept, its mesh and its local transform
-// at the scene's start time. The motion is baked: every object's track is sampled at the frames
+// at the scene's start time; a skinned mesh keeps its skin (glTF's skins, FBX's Skin deformer, Collada's
+// skin controller, which Assimp's writer makes from the aiMesh's bones). The motion is baked: every object's track is sampled at the frames
 // start + k/fps up to the scene's end and at each of its key times (model::bakeTrack), so every
 // interpolation and every fit plays the same after import, where each sample is a key. glTF writes a
 // hermite track's rotation as the track's own spline instead, a CUBICSPLINE sampler (rotationSplineOf

@@ -13,10 +13,10 @@
 # - blender_imports_gyre_<format>_blender-empty, for fbx and glb: the same on Blender's own Empty carrying a
 #   mesh object (blender_empty_and_mesh.<format> from blender_exports_scenes), which gyre-cli imports first;
 #   the Empty must come back to Blender an EMPTY.
-# - blender_imports_gyre_skin_<format>, for glb and fbx, runs blender_skin_gyre.py: Blender's skinned bar
+# - blender_imports_gyre_skin_<format>, for glb, fbx and dae, runs blender_skin_gyre.py: Blender's skinned bar
 #   (blender_skinned_bar.glb from blender_exports_scenes) imported and exported by gyre-cli (the glb
 #   validated), and imported by Blender, which must deform it at every frame as it deformed the original
-#   (1e-4 m).
+#   (1e-6 m).
 # - blender_writes_wrapping_spin runs wrapping_spin.py: an FBX whose object spins about Z to 530°, with Blender's
 #   rotation at each key; tst_blender_euler_filter imports it with gyre-cli import --euler-filter and checks that the
 #   stored angles are a continuous ramp that ends at 530° and that every key turns as Blender's (issue 23).
@@ -77,7 +77,7 @@ foreach(format IN ITEMS fbx glb)
                          FIXTURES_REQUIRED blender_exports)
 endforeach()
 
-foreach(format IN ITEMS glb fbx)
+foreach(format IN ITEMS glb fbx dae)
     add_test(NAME blender_imports_gyre_skin_${format}
              COMMAND ${blender_command} ${CMAKE_CURRENT_SOURCE_DIR}/blender_skin_gyre.py
                      -- ${format} $<TARGET_FILE:gyre-cli> ${GYRE_NODE} ${CMAKE_CURRENT_SOURCE_DIR}/validate_gltf.mjs

@@ -1,18 +1,23 @@
 # Does Blender deform a skinned mesh Gyre exports as Blender itself did? Blender's skinned bar
 # (make_fixtures.py: a bar weighted to a two-bone armature whose bones turn, exported as glb) is imported
 # with `gyre-cli import`, exported with `gyre-cli export` as glb (checked by the Khronos validator: no
-# errors) or FBX, and imported by Blender's glTF or FBX importer (default settings). At every frame of the original,
-# the world position of every vertex of Blender's evaluated (deformed) mesh must lie within 1e-4 m of a
-# vertex of Blender's own evaluation of the original scene, and the other way round; tst_blender_fixtures
-# checks Gyre's own skinning against the same evaluation, so Blender plays Gyre's skin as Gyre does.
+# errors), FBX or Collada, and imported by Blender's glTF, FBX or Collada importer (default settings). At every
+# frame of the original, the world position of every vertex of Blender's evaluated (deformed) mesh must lie
+# within 1e-6 m of a vertex of Blender's own evaluation of the original scene, and the other way round;
+# tst_blender_fixtures checks Gyre's own skinning against the same evaluation, so Blender plays Gyre's skin as
+# Gyre does.
 #
 # Times: the original's frame f is at (f - frame_start) / fps in Gyre (the import puts the first key at
-# 0); glTF stores no frame rate, and Blender's importer keys time t at frame t × 24; FBX keeps the frame
-# rate, and Blender's importer puts time 0 at frame 1. Gyre's glTF is Y-up and Blender's importer turns it
-# Z-up, Gyre's FBX is Z-up as Blender is, so world positions compare as they are (blender_import_gyre.py).
+# 0); glTF and Gyre's Collada store no frame rate, and Blender's importers key time t at frame t × 24; FBX
+# keeps the frame rate, and Blender's importer puts time 0 at frame 1. Gyre's glTF is Y-up and Blender's
+# importer turns it Z-up, Gyre's FBX is Z-up as Blender is (blender_import_gyre.py). Gyre's Collada is Y-up
+# too: Blender's Collada importer turns every top-level object by the file's up axis, but an animated
+# object's action then sets its transform again (so rigid objects lie turned, blender_import_gyre.py); the
+# armature object it makes for the joints has no action of its own and keeps the turn, and the skinned mesh
+# is its child. So world positions compare as they are for every format.
 #
 #   blender -b --factory-startup --python tests/interop/blender_skin_gyre.py -- \
-#       glb|fbx GYRE_CLI NODE VALIDATE_GLTF_SCRIPT VALIDATOR_PREFIX SCENE.glb EVALUATION.json
+#       glb|fbx|dae GYRE_CLI NODE VALIDATE_GLTF_SCRIPT VALIDATOR_PREFIX SCENE.glb EVALUATION.json
 
 import json
 import math
@@ -26,15 +31,17 @@ import bpy
 from mathutils import Vector
 from mathutils.kdtree import KDTree
 
-POSITION_TOLERANCE = 1e-4
+POSITION_TOLERANCE = 1e-6
 MIN_DEFORMATION = 0.5  # metres a vertex of the original moves between its first and last frame
+# What each format's skin looks like in the file: glTF's skins, FBX's Cluster deformers, Collada's skin controller.
+SKIN_MARK = {"glb": b'"skins"', "fbx": b"Cluster", "dae": b"<skin source="}
 
 
 def arguments():
     args = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    if len(args) != 7 or args[0] not in ("glb", "fbx"):
+    if len(args) != 7 or args[0] not in ("glb", "fbx", "dae"):
         sys.exit("usage: blender -b --factory-startup --python blender_skin_gyre.py -- "
-                 "glb|fbx GYRE_CLI NODE VALIDATE_GLTF_SCRIPT VALIDATOR_PREFIX SCENE.glb EVALUATION.json")
+                 "glb|fbx|dae GYRE_CLI NODE VALIDATE_GLTF_SCRIPT VALIDATOR_PREFIX SCENE.glb EVALUATION.json")
     return args
 
 
@@ -68,15 +75,17 @@ def main():
         subprocess.run([gyre_cli, "import", scene_file, "-o", project], check=True)
         subprocess.run([gyre_cli, "export", project, "-o", exported], check=True)
         with open(exported, "rb") as f:
-            if (b'"skins"' if kind == "glb" else b"Cluster") not in f.read():
+            if SKIN_MARK[kind] not in f.read():
                 problems.append("the %s has no skin" % kind)
         bpy.ops.wm.read_factory_settings(use_empty=True)
         if kind == "glb":
             if subprocess.run([node, validate_script, "--validator", validator, exported]).returncode != 0:
                 problems.append("the glb does not pass the validator")
             load_gltf(exported)
-        else:
+        elif kind == "fbx":
             bpy.ops.import_scene.fbx(filepath=exported)
+        else:
+            bpy.ops.wm.collada_import(filepath=exported)
 
     scene = bpy.context.scene
     obj = bpy.data.objects.get(evaluation["object"])
