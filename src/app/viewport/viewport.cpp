@@ -566,8 +566,10 @@ void Viewport::paintGL()
 {
     measureFrame();
     const model::Scene& scene = document_.scene();
-    if (framePending_ && std::all_of(scene.objects.begin(), scene.objects.end(),
-                                     [this](const model::SceneObject& object) { return drawn_.motion().contains(object.id); })) {
+    // Framed once the motion has every object and the selected objects' paths are sampled from it.
+    if (framePending_ && !drawn_.trajectoriesPending() &&
+        std::all_of(scene.objects.begin(), scene.objects.end(),
+                    [this](const model::SceneObject& object) { return drawn_.motion().contains(object.id); })) {
         framePending_ = false;
         frameScene();
     }
