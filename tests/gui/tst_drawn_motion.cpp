@@ -1,6 +1,7 @@
 // The viewport's drawn motion (drawn_motion.h) without OpenGL: every selected screw track's trail is its own
 // polyscrew subdivided, as core's subdivision makes it, within the trails' budget, and follows its keys; the
-// selected objects' centre paths are sampled off the UI thread, arrive, and follow an edit.
+// selected objects' centre paths are sampled off the UI thread, arrive, and follow an edit. One test prints what
+// the paths' whole budget costs the worker (tests never assert on time).
 
 #include "app/selection.h"
 #include "app/viewport/centre_path.h"
@@ -10,7 +11,9 @@
 #include "model/commands/import_objects_command.h"
 #include "model/commands/set_keyframe_position_command.h"
 #include "model/commands/set_subdivision_command.h"
+#include "model/commands/set_time_range_command.h"
 
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -163,6 +166,49 @@ private slots:
         selection.clear();
         QVERIFY(drawn.trajectories().empty());
         QVERIFY(!drawn.trajectoriesPending());
+    }
+
+    // The paths' budget in full: 64 selected objects, two chains of 32 (a motion capture's depth), 4097 points
+    // each over a scene of 5000 frames. Prints the time from the selection to the paths' arrival. Under the
+    // sanitizers, two hundred times slower, one chain of 16 (a quarter of the budget, at half the depth), so that
+    // the function stays well under its minute.
+    void measuresThePathsWholeBudget()
+    {
+        model::Document document;
+#if defined(__SANITIZE_ADDRESS__)
+        constexpr model::ObjectId kObjects = 16;
+        constexpr model::ObjectId kChain = 16;
+#else
+        constexpr model::ObjectId kObjects = app::kMaxPathObjects;
+        constexpr model::ObjectId kChain = 32;
+#endif
+        std::vector<model::SceneObject> objects;
+        for (model::ObjectId id = 1; id <= kObjects; ++id) {
+            model::SceneObject object = keyed(id, InterpolationMethod::Hermite, 4, 0.0);
+            object.parent = id % kChain == 1 ? model::kNoObject : id - 1;
+            for (model::Keyframe& key : object.track.keys)
+                key.time *= 40.0;
+            objects.push_back(object);
+        }
+        auto* import = new model::ImportObjectsCommand(document, objects);
+        document.push(import);
+        document.push(new model::SetTimeRangeCommand(document, {24, 0, 5000.0 / 24.0}));
+        app::Selection selection(document);
+        app::DrawnMotion drawn(document, selection);
+        QTRY_VERIFY(drawn.motion().contains(import->ids().back()));
+        QElapsedTimer clock;
+        clock.start();
+        selection.selectObjects(import->ids(), import->ids().front());
+        QTRY_VERIFY_WITH_TIMEOUT(!drawn.trajectoriesPending(), 50000);
+        const double milliseconds = double(clock.nsecsElapsed()) / 1e6;
+        QCOMPARE(drawn.trajectories().size(), std::size_t(kObjects));
+        std::size_t points = 0;
+        for (const std::vector<Eigen::Vector3f>& path : drawn.trajectories()) {
+            QCOMPARE(path.size(), std::size_t(app::kMaxPathSamples + 1));
+            points += path.size();
+        }
+        qInfo("%zu paths of %d points (%zu points), chains of %zu: %.1f ms from the selection to their arrival",
+              drawn.trajectories().size(), app::kMaxPathSamples + 1, points, std::size_t(kChain), milliseconds);
     }
 };
 

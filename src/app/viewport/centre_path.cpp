@@ -67,15 +67,25 @@ std::vector<double> pathTimes(const model::Scene& scene)
     return times;
 }
 
-std::vector<Eigen::Vector3f> centrePath(const model::SceneMotion& motion, const PathObject& object,
-                                        const std::vector<double>& times)
+std::vector<std::vector<Eigen::Vector3f>> centrePaths(const model::SceneMotion& motion, const std::vector<PathObject>& objects,
+                                                      const std::vector<double>& times, const std::atomic<bool>& stop)
 {
-    const Eigen::Vector3d centre = object.mesh ? meshCentre(*object.mesh) : Eigen::Vector3d::Zero();
-    std::vector<Eigen::Vector3f> path;
-    path.reserve(times.size());
-    for (const double time : times)
-        path.push_back(motion.worldPose(object.object, time).apply(centre).cast<float>());
-    return path;
+    std::vector<model::ObjectId> ids;
+    std::vector<Eigen::Vector3d> centres;
+    std::vector<std::vector<Eigen::Vector3f>> paths(objects.size());
+    for (const PathObject& object : objects) {
+        ids.push_back(object.object);
+        centres.push_back(object.mesh ? meshCentre(*object.mesh) : Eigen::Vector3d::Zero());
+        paths[ids.size() - 1].reserve(times.size());
+    }
+    for (const double time : times) {
+        if (stop)
+            break;
+        const std::vector<Pose> poses = motion.worldPoses(ids, time);
+        for (std::size_t i = 0; i < poses.size(); ++i)
+            paths[i].push_back(poses[i].apply(centres[i]).cast<float>());
+    }
+    return paths;
 }
 
 } // namespace gyre::app

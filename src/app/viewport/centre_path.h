@@ -3,15 +3,17 @@
 // its bones meet) is in the world over the scene's range, one point a frame, from the motion the viewport draws.
 // They are sampled off the UI thread with the sampled trails (drawn_motion.h); their budget, up front, bounds the
 // worker's memory and time: at most kMaxPathObjects paths (the active object's first), each of at most
-// kMaxPathSamples + 1 points, so at most 64 × 4097 = 262,208 points (3 MB of floats) and as many world poses
-// evaluated a request; a longer scene is sampled more sparsely than once a frame. No OpenGL: tests check the
-// points against the motion.
+// kMaxPathSamples + 1 points, so at most 64 × 4097 = 262,208 points (3 MB of floats) and as many track
+// evaluations a request (each ancestor's track evaluated once a time, however many selected objects hang below
+// it); a longer scene is sampled more sparsely than once a frame. No OpenGL: tests check the points against the
+// motion, and tst_drawn_motion prints what the whole budget costs.
 
 #include "model/scene.h"
 #include "model/scene_motion.h"
 
 #include <Eigen/Core>
 
+#include <atomic>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -37,8 +39,9 @@ std::vector<PathObject> pathObjects(const model::Scene& scene, const std::vector
 // spread; none for an empty range.
 std::vector<double> pathTimes(const model::Scene& scene);
 
-// The world position of the object's centre at each time.
-std::vector<Eigen::Vector3f> centrePath(const model::SceneMotion& motion, const PathObject& object,
-                                        const std::vector<double>& times);
+// Each object's path: the world position of its centre at each time, the objects' world poses found together
+// at each time (SceneMotion::worldPoses). Returns early, with paths cut short, once `stop` is set.
+std::vector<std::vector<Eigen::Vector3f>> centrePaths(const model::SceneMotion& motion, const std::vector<PathObject>& objects,
+                                                      const std::vector<double>& times, const std::atomic<bool>& stop);
 
 } // namespace gyre::app

@@ -251,11 +251,8 @@ void DrawnMotion::requestSampledTrail()
         run.throwIfStopped(); // superseded before it started
         Sampled sampled{trailPoses(*motion, objects, times), std::nullopt};
         if (withPaths) {
-            sampled.paths.emplace();
-            for (const PathObject& object : pathed) {
-                run.throwIfStopped(); // superseded: a newer request samples them
-                sampled.paths->push_back(centrePath(*motion, object, pathTimes));
-            }
+            sampled.paths = centrePaths(*motion, pathed, pathTimes, run.stopFlag());
+            run.throwIfStopped(); // superseded, the paths cut short: a newer request samples them
         }
         return sampled;
     });
