@@ -53,6 +53,27 @@ struct Session {
 
     const model::Keyframe& key(std::size_t index) { return window.document().object(object)->track.keys[index]; }
 
+    // Adds a copy of the sample's object, its track's interpolation and settings included, its keys moved aside
+    // along x by more than the sample's reach; returns its id.
+    model::ObjectId importAside()
+    {
+        model::Document& document = window.document();
+        model::SceneObject aside = *document.object(object);
+        aside.id = 1;
+        aside.parent = model::kNoObject;
+        aside.name = QStringLiteral("aside");
+        double reach = 0.0;
+        for (const model::Keyframe& key : aside.track.keys)
+            reach = std::max(reach, key.pose.position.norm());
+        std::vector<model::Keyframe> keys = aside.track.keys;
+        for (model::Keyframe& key : keys)
+            key.pose.position.x() += 2.0 * reach + 1.0;
+        aside.track.keys = keys;
+        auto* import = new model::ImportObjectsCommand(document, {aside});
+        document.push(import);
+        return import->ids().front();
+    }
+
     // Subdivides the sample's track to `levels` and selects its first key; returns the trail's
     // instance count, once the viewport draws that many.
     std::size_t trailAtLevels(int levels)
@@ -290,20 +311,7 @@ private slots:
         model::Document& document = session.window.document();
         document.push(new model::SetInterpolationCommand(document, session.object, InterpolationMethod::Hermite));
         // A second object on the sample's keys moved aside along x by more than the sample's reach.
-        model::SceneObject aside = *document.object(session.object);
-        aside.id = 1;
-        aside.parent = model::kNoObject;
-        aside.name = QStringLiteral("aside");
-        double reach = 0.0;
-        for (const model::Keyframe& key : aside.track.keys)
-            reach = std::max(reach, key.pose.position.norm());
-        std::vector<model::Keyframe> keys = aside.track.keys;
-        for (model::Keyframe& key : keys)
-            key.pose.position.x() += 2.0 * reach + 1.0;
-        aside.track.keys = keys;
-        auto* import = new model::ImportObjectsCommand(document, {aside});
-        document.push(import);
-        const model::ObjectId second = import->ids().front();
+        const model::ObjectId second = session.importAside();
         for (const char* name : {"actionShowTrajectory", "actionShowGhost"})
             session.window.findChild<QAction*>(QLatin1String(name))->setChecked(false);
         constexpr int kCopies = 8;
@@ -338,20 +346,7 @@ private slots:
         settings.levels = 2;
         document.push(new model::SetSubdivisionCommand(document, session.object, settings));
         // A second screw track on the sample's keys moved aside along x by more than the sample's reach.
-        model::SceneObject aside = *document.object(session.object);
-        aside.id = 1;
-        aside.parent = model::kNoObject;
-        aside.name = QStringLiteral("aside");
-        double reach = 0.0;
-        for (const model::Keyframe& key : aside.track.keys)
-            reach = std::max(reach, key.pose.position.norm());
-        std::vector<model::Keyframe> keys = aside.track.keys;
-        for (model::Keyframe& key : keys)
-            key.pose.position.x() += 2.0 * reach + 1.0;
-        aside.track.keys = keys;
-        auto* import = new model::ImportObjectsCommand(document, {aside});
-        document.push(import);
-        const model::ObjectId second = import->ids().front();
+        const model::ObjectId second = session.importAside();
         QCOMPARE(document.object(second)->track.interpolation, InterpolationMethod::Screw);
         for (const char* name : {"actionShowTrajectory", "actionShowGhost"})
             session.window.findChild<QAction*>(QLatin1String(name))->setChecked(false);
