@@ -566,12 +566,17 @@ void Viewport::paintGL()
 {
     measureFrame();
     const model::Scene& scene = document_.scene();
-    // Framed once the motion has every object and the selected objects' paths are sampled from it.
-    if (framePending_ && !drawn_.trajectoriesPending() &&
-        std::all_of(scene.objects.begin(), scene.objects.end(),
-                    [this](const model::SceneObject& object) { return drawn_.motion().contains(object.id); })) {
+    if (framePending_ && std::all_of(scene.objects.begin(), scene.objects.end(),
+                                     [this](const model::SceneObject& object) { return drawn_.motion().contains(object.id); })) {
         framePending_ = false;
         frameScene();
+        reframeWithPaths_ = drawn_.trajectoriesPending();
+    } else if (reframeWithPaths_ && !drawn_.trajectoriesPending()) {
+        // The selected objects' paths, sampled on a worker, arrive after the motion: until the artist moves the
+        // camera, the framing takes them in too.
+        reframeWithPaths_ = false;
+        if (cameraIsFramed_)
+            frameScene();
     }
     updateSkeleton();
     const model::SceneObject* selected = selection_.selectedObject();
