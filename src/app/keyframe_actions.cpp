@@ -1,6 +1,5 @@
 #include "app/keyframe_actions.h"
 
-#include "model/commands/apply_euler_filter_command.h"
 #include "model/commands/replace_keyframes_command.h"
 #include "model/commands/step_ballistic_solution_command.h"
 #include "model/commands/toggle_keyframe_constraint_command.h"
@@ -111,24 +110,29 @@ void KeyframeActions::toggleConstraint()
     updateActions();
 }
 
-std::vector<model::ObjectId> KeyframeActions::objectsToFilter() const
+std::vector<std::pair<model::ObjectId, model::ApplyEulerFilterCommand::KeySubset>> KeyframeActions::keysToFilter() const
 {
-    std::vector<model::ObjectId> ids;
-    for (model::ObjectId id : selection_.objects())
-        if (model::ApplyEulerFilterCommand::changes(document_.object(id)->track))
-            ids.push_back(id);
-    return ids;
+    const bool keysSelected = !selection_.keys().empty();
+    std::vector<std::pair<model::ObjectId, model::ApplyEulerFilterCommand::KeySubset>> filtered;
+    for (model::ObjectId id : selection_.objects()) {
+        model::ApplyEulerFilterCommand::KeySubset keys;
+        if (keysSelected)
+            keys = selection_.keysOf(id);
+        if (model::ApplyEulerFilterCommand::changes(document_.object(id)->track, keys))
+            filtered.emplace_back(id, std::move(keys));
+    }
+    return filtered;
 }
 
 void KeyframeActions::applyEulerFilter()
 {
-    const std::vector<model::ObjectId> ids = objectsToFilter();
-    if (ids.empty())
+    const auto filtered = keysToFilter();
+    if (filtered.empty())
         return;
     // One undo step for all of them, named as one object's.
     auto* step = new QUndoCommand(tr("Apply Euler Filter"));
-    for (model::ObjectId id : ids)
-        new model::ApplyEulerFilterCommand(document_, id, step);
+    for (const auto& [id, keys] : filtered)
+        new model::ApplyEulerFilterCommand(document_, id, keys, step);
     document_.push(step);
 }
 
@@ -153,7 +157,7 @@ void KeyframeActions::updateActions()
 {
     const model::Keyframe* key = selection_.selectedKey();
     const model::SceneObject* object = selection_.selectedObject();
-    actions_.eulerFilter->setEnabled(!objectsToFilter().empty());
+    actions_.eulerFilter->setEnabled(!keysToFilter().empty());
     const bool flies = object != nullptr && object->track.interpolation == InterpolationMethod::Ballistic &&
                        object->track.keys.size() >= 2;
     actions_.nextFlight->setEnabled(flies);

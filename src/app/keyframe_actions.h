@@ -1,16 +1,20 @@
 #pragma once
 // The Motion menu's keyframe actions on the selection: key every selected object's pose at the
 // current time, delete every selected key, constrain or free the active key, run the Euler filter on
-// every selected object's keys, step the current span of a ballistic track through its free flights; and
+// the selected keys (with no key selected, on every selected object's keys), step the current span of a ballistic track through its free flights; and
 // Edit ▸ Select All Keys / Select No Keys. Each edit is one undo step however many objects it touches;
 // each action is enabled only when it applies (the filter when it would change a key, the flight steps
 // on a ballistic track of two keys or more).
 
 #include "app/selected_track.h"
 #include "app/selection.h"
+#include "model/commands/apply_euler_filter_command.h"
 #include "model/document.h"
 
 #include <QObject>
+
+#include <utility>
+#include <vector>
 
 class QAction;
 class QStatusBar;
@@ -21,7 +25,7 @@ struct KeyframeActionSet {
     QAction* add = nullptr;
     QAction* remove = nullptr;
     QAction* toggleConstraint = nullptr; // checkable: checked when the selected key is constrained
-    QAction* eulerFilter = nullptr;      // on the selected objects' keys (apply_euler_filter_command.h)
+    QAction* eulerFilter = nullptr;      // on the selected keys, or the selected objects' (apply_euler_filter_command.h)
     QAction* nextFlight = nullptr;       // the current span's next free flight (step_ballistic_solution_command.h)
     QAction* previousFlight = nullptr;
     QAction* selectAll = nullptr;        // every key of the active object
@@ -46,8 +50,9 @@ public:
 
 private:
     void updateActions();
-    // The selected objects whose keys the Euler filter would change.
-    std::vector<model::ObjectId> objectsToFilter() const;
+    // The keys the Euler filter works on, of each object whose keys it would change: the selected keys of
+    // each object that has some, or with no key selected every key of every selected object.
+    std::vector<std::pair<model::ObjectId, model::ApplyEulerFilterCommand::KeySubset>> keysToFilter() const;
 
     model::Document& document_;
     Selection& selection_;

@@ -36,4 +36,33 @@ Pose SceneMotion::parentWorldPose(ObjectId id, double time) const
     return world;
 }
 
+std::vector<Pose> SceneMotion::worldPoses(const std::vector<ObjectId>& ids, double time) const
+{
+    std::unordered_map<ObjectId, Pose> world; // of every object met so far, ancestors included
+    std::vector<ObjectId> chain;
+    std::vector<Pose> poses;
+    poses.reserve(ids.size());
+    for (const ObjectId id : ids) {
+        // Up from the object to the first ancestor whose world pose is known, or past the root; at most one step
+        // per object, as parentWorldPose.
+        chain.clear();
+        Pose frame;
+        for (auto link = entries_.find(id); link != entries_.end() && chain.size() < entries_.size();
+             link = entries_.find(link->second.parent)) {
+            if (const auto known = world.find(link->first); known != world.end()) {
+                frame = known->second;
+                break;
+            }
+            chain.push_back(link->first);
+        }
+        // Then down again: each one's world pose is its parent's times its track's pose.
+        for (auto object = chain.rbegin(); object != chain.rend(); ++object) {
+            frame = frame * entries_.at(*object).motion->motion().at(time);
+            world.insert_or_assign(*object, frame);
+        }
+        poses.push_back(frame); // the identity for an unknown object
+    }
+    return poses;
+}
+
 } // namespace gyre::model

@@ -13,6 +13,7 @@
 #include <functional>
 #include <memory>
 #include <unordered_map>
+#include <vector>
 
 namespace gyre::model {
 
@@ -35,6 +36,9 @@ public:
     Pose worldPose(ObjectId id, double time) const;
     // The world pose of the frame its track is relative to: its parent's world pose, or the identity.
     Pose parentWorldPose(ObjectId id, double time) const;
+    // worldPose of each of `ids`, each track evaluated once however many of them share it as an ancestor, so
+    // that the joints of a deep hierarchy cost a track evaluation each, not one per level below them.
+    std::vector<Pose> worldPoses(const std::vector<ObjectId>& ids, double time) const;
 
 private:
     struct Entry {

@@ -3,7 +3,8 @@
 // about z are two turns; the bake of that spin, unwrapped, grows through 360° at the middle and ends at 720°, as
 // the automatic-tangent cubic written out here says. In the Graph Editor the z channel is a ramp to 720°, and
 // dragging its key sets the stored angle, in one undo step. Motion ▸ Euler Filter makes the stored angles of
-// every selected Euler-mode object continuous, in one undo step, and leaves their orientations.
+// every selected Euler-mode object continuous, in one undo step, and leaves their orientations; with keys
+// selected, it filters only those, each made continuous with the key before it, and leaves the others bit for bit.
 
 #include "app/graph_editor/graph_editor_panel.h"
 #include "app/main_window.h"
@@ -234,6 +235,70 @@ private slots:
         for (std::size_t key = 0; key < turn.size(); ++key)
             QCOMPARE(*document.object(ids[1])->track.keys[key].eulerAngles, *turnBefore.keys[key].eulerAngles);
         QVERIFY(filter->isEnabled());
+    }
+
+    void theEulerFilterOnSelectedKeysFiltersThoseAlone()
+    {
+        model::Document& document = window_->document();
+        // The spin of the test above and a key after it, stored wrapped; the turn to 300° stored as −60°.
+        const std::vector<Eigen::Vector3d> spin{{0, 0, 0}, {0, 0, 170}, {0, 0, -170}, {180, 180, 170}, {0, 0, 140}, {0, 0, -60}};
+        const std::vector<Eigen::Vector3d> turn{{0, 0, 0}, {170, 0, 0}, {-60, 0, 0}};
+        auto* import = new model::ImportObjectsCommand(
+            document, {eulerKeyed(1, QStringLiteral("spin"), spin), eulerKeyed(2, QStringLiteral("turn"), turn)});
+        document.push(import);
+        const std::vector<model::ObjectId> ids = import->ids();
+        document.undoStack().clear();
+        auto* filter = window_->findChild<QAction*>(QStringLiteral("actionEulerFilter"));
+        window_->selection().selectObjects({ids[0], ids[1]}, ids[0]);
+        // The spin's first key (none before it) and a key already continuous with the one before: nothing to do.
+        window_->selection().selectKeys({{ids[0], 0}, {ids[0], 1}}, false);
+        QVERIFY(!filter->isEnabled());
+        // Keys 2 and 3 of the spin, a run: 3 follows 2 as filtered. Key 4 of the spin (140° after 350°) and the
+        // turn's keys are not selected, so they stay as they are though they jump.
+        window_->selection().selectKeys({{ids[0], 2}, {ids[0], 3}}, false);
+        QVERIFY(filter->isEnabled());
+        const model::MotionTrack spinBefore = document.object(ids[0])->track;
+        const model::MotionTrack turnBefore = document.object(ids[1])->track;
+
+        filter->trigger();
+        QCOMPARE(document.undoStack().count(), 1);
+        QCOMPARE(document.undoStack().undoText(), QStringLiteral("Apply Euler Filter"));
+        const model::MotionTrack& after = document.object(ids[0])->track;
+        const std::vector<Eigen::Vector3d> expected{{0, 0, 0}, {0, 0, 170}, {0, 0, 190}, {0, 0, 350}, {0, 0, 140}, {0, 0, -60}};
+        for (std::size_t key = 0; key < spin.size(); ++key) {
+            const Eigen::Vector3d degrees = *after.keys[key].eulerAngles * kDegrees;
+            QVERIFY2((degrees - expected[key]).norm() < 1e-9,
+                     qPrintable(QStringLiteral("key %1: %2 %3 %4").arg(key).arg(degrees.x()).arg(degrees.y()).arg(degrees.z())));
+            const double dot = after.keys[key].pose.orientation.dot(spinBefore.keys[key].pose.orientation);
+            QVERIFY(std::abs(std::abs(dot) - 1.0) < 1e-12);
+            if (key == 2 || key == 3) {
+                // Continuous with the key before: each angle within half a turn of it, in its hemisphere.
+                const Eigen::Vector3d step = *after.keys[key].eulerAngles - *after.keys[key - 1].eulerAngles;
+                QVERIFY(step.cwiseAbs().maxCoeff() < kPi);
+                QVERIFY(after.keys[key].pose.orientation.dot(after.keys[key - 1].pose.orientation) >= 0.0);
+            } else {
+                QCOMPARE(after.keys[key].time, spinBefore.keys[key].time);
+                QVERIFY(after.keys[key].pose.orientation.coeffs() == spinBefore.keys[key].pose.orientation.coeffs());
+                QVERIFY(*after.keys[key].eulerAngles == *spinBefore.keys[key].eulerAngles);
+            }
+        }
+        for (std::size_t key = 0; key < turn.size(); ++key) {
+            QVERIFY(document.object(ids[1])->track.keys[key].pose.orientation.coeffs() ==
+                    turnBefore.keys[key].pose.orientation.coeffs());
+            QVERIFY(*document.object(ids[1])->track.keys[key].eulerAngles == *turnBefore.keys[key].eulerAngles);
+        }
+
+        // With no key selected, the whole tracks of the selected objects, as before.
+        window_->selection().deselectKeys();
+        QVERIFY(filter->isEnabled());
+        document.undoStack().undo();
+        for (std::size_t key = 0; key < spin.size(); ++key) {
+            QVERIFY(document.object(ids[0])->track.keys[key].pose.orientation.coeffs() ==
+                    spinBefore.keys[key].pose.orientation.coeffs());
+            QVERIFY(*document.object(ids[0])->track.keys[key].eulerAngles == *spinBefore.keys[key].eulerAngles);
+        }
+        QCOMPARE(document.undoStack().count(), 1);
+        QCOMPARE(document.undoStack().index(), 0);
     }
 
 private:

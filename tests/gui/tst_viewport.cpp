@@ -1,7 +1,7 @@
 // The viewport driven with the mouse on the bundled sample: handle drags change the selected key in
 // one undo step each, clicks select, the stroboscopic trail follows the subdivision settings, the
 // ghost shows the motion as opened; a hermite track has a trail too, whose copies follow View ▸ Trail, and every
-// selected object has its own; the number-pad views follow View ▸ Y Up. Two tests also measure while a handle is dragged with thousands of
+// selected object has its own, a screw track's its subdivision; the number-pad views follow View ▸ Y Up. Two tests also measure while a handle is dragged with thousands of
 // trail instances: the viewport's drawing, and the UI thread's own time per move with every dock
 // shown (issue 18); they print the figures (tests never assert on time).
 
@@ -52,6 +52,27 @@ struct Session {
     }
 
     const model::Keyframe& key(std::size_t index) { return window.document().object(object)->track.keys[index]; }
+
+    // Adds a copy of the sample's object, its track's interpolation and settings included, its keys moved aside
+    // along x by more than the sample's reach; returns its id.
+    model::ObjectId importAside()
+    {
+        model::Document& document = window.document();
+        model::SceneObject aside = *document.object(object);
+        aside.id = 1;
+        aside.parent = model::kNoObject;
+        aside.name = QStringLiteral("aside");
+        double reach = 0.0;
+        for (const model::Keyframe& key : aside.track.keys)
+            reach = std::max(reach, key.pose.position.norm());
+        std::vector<model::Keyframe> keys = aside.track.keys;
+        for (model::Keyframe& key : keys)
+            key.pose.position.x() += 2.0 * reach + 1.0;
+        aside.track.keys = keys;
+        auto* import = new model::ImportObjectsCommand(document, {aside});
+        document.push(import);
+        return import->ids().front();
+    }
 
     // Subdivides the sample's track to `levels` and selects its first key; returns the trail's
     // instance count, once the viewport draws that many.
@@ -290,20 +311,7 @@ private slots:
         model::Document& document = session.window.document();
         document.push(new model::SetInterpolationCommand(document, session.object, InterpolationMethod::Hermite));
         // A second object on the sample's keys moved aside along x by more than the sample's reach.
-        model::SceneObject aside = *document.object(session.object);
-        aside.id = 1;
-        aside.parent = model::kNoObject;
-        aside.name = QStringLiteral("aside");
-        double reach = 0.0;
-        for (const model::Keyframe& key : aside.track.keys)
-            reach = std::max(reach, key.pose.position.norm());
-        std::vector<model::Keyframe> keys = aside.track.keys;
-        for (model::Keyframe& key : keys)
-            key.pose.position.x() += 2.0 * reach + 1.0;
-        aside.track.keys = keys;
-        auto* import = new model::ImportObjectsCommand(document, {aside});
-        document.push(import);
-        const model::ObjectId second = import->ids().front();
+        const model::ObjectId second = session.importAside();
         for (const char* name : {"actionShowTrajectory", "actionShowGhost"})
             session.window.findChild<QAction*>(QLatin1String(name))->setChecked(false);
         constexpr int kCopies = 8;
@@ -326,6 +334,58 @@ private slots:
         // The second object alone selected: its trail alone.
         session.window.selection().selectObjects({second}, second);
         QTRY_COMPARE(session.viewport->trailInstanceCount(), std::size_t(kCopies));
+    }
+
+    void everySelectedScrewTrackHasItsSubdividedTrail()
+    {
+        Session session(0.0);
+        QVERIFY(QTest::qWaitForWindowExposed(&session.window));
+        model::Document& document = session.window.document();
+        // The sample's screw track at 2 levels: 24 copies of a cycle of 6 keys.
+        SubdivisionSettings settings = document.object(session.object)->track.subdivision;
+        settings.levels = 2;
+        document.push(new model::SetSubdivisionCommand(document, session.object, settings));
+        // A second screw track on the sample's keys moved aside along x by more than the sample's reach.
+        const model::ObjectId second = session.importAside();
+        QCOMPARE(document.object(second)->track.interpolation, InterpolationMethod::Screw);
+        for (const char* name : {"actionShowTrajectory", "actionShowGhost"})
+            session.window.findChild<QAction*>(QLatin1String(name))->setChecked(false);
+        session.window.selection().selectObjects({session.object, second}, session.object);
+        const std::size_t copies = *subdividedPoseCount(6, settings.levels, settings.cyclic);
+        QTRY_COMPARE(session.viewport->trailInstanceCount(), 2 * copies);
+        // Each copy at its subdivided pose (neither object has a parent): a point on its surface there.
+        std::vector<std::vector<Eigen::Vector3d>> places;
+        for (const model::ObjectId object : {session.object, second}) {
+            const model::Mesh& mesh = app::displayMesh(*document.object(object));
+            Eigen::Vector3d onSurface = Eigen::Vector3d::Zero();
+            for (int corner = 0; corner < 3; ++corner)
+                onSurface += mesh.positions[mesh.indices[std::size_t(corner)]].cast<double>() / 3.0;
+            std::vector<Pose> controlPoses;
+            for (const model::Keyframe& key : document.object(object)->track.keys)
+                controlPoses.push_back(key.pose);
+            std::vector<Eigen::Vector3d>& objectPlaces = places.emplace_back();
+            for (const Pose& pose : subdividePolyscrew(controlPoses, document.object(object)->track.subdivision))
+                objectPlaces.push_back(pose.apply(onSurface));
+            QCOMPARE(objectPlaces.size(), copies);
+        }
+        // Framed once the selected objects' centre paths, which pass by every copy, are sampled.
+        session.viewport->frameSceneWhenDrawn();
+        QTRY_VERIFY(std::all_of(places.begin(), places.end(), [&](const std::vector<Eigen::Vector3d>& objectPlaces) {
+            return std::all_of(objectPlaces.begin(), objectPlaces.end(), [&](const Eigen::Vector3d& place) {
+                return session.viewport->rect().contains(app::toScreen(session.viewport->camera(), place).toPoint());
+            });
+        }));
+
+        QAction* showTrail = session.window.findChild<QAction*>(QStringLiteral("actionShowTrail"));
+        const QImage with = drawnImage(*session.viewport);
+        showTrail->setChecked(false);
+        const QImage without = drawnImage(*session.viewport);
+        showTrail->setChecked(true);
+        for (std::size_t object = 0; object < places.size(); ++object) {
+            // The object itself stands on one copy or two, hiding them.
+            const int seen = copiesSeen(*session.viewport, places[object], with, without);
+            QVERIFY2(seen >= int(copies) - 2, qPrintable(QStringLiteral("object %1: %2 of %3 copies seen").arg(object).arg(seen).arg(copies)));
+        }
     }
 
     void theNumberPadViewsFollowTheUpAxis()

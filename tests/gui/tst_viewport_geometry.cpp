@@ -8,6 +8,7 @@
 #include "app/viewport/picking.h"
 #include "app/viewport/sampled_trail.h"
 #include "app/viewport/skeleton.h"
+#include "core/subdivision.h"
 #include "model/object_mass.h"
 #include "model/scene_motion.h"
 #include "model/track_evaluation.h"
@@ -441,17 +442,26 @@ private slots:
         scene.objects.back().empty = true;
         const std::vector<model::ObjectId> selected{1, 2, 3, 4, 5, 6};
         // The active object first, then the others in their order; the empty left out.
-        QCOMPARE(app::sampledTrailObjects(scene, selected, 3, model::kNoObject, {16, 0}),
-                 (std::vector<model::ObjectId>{3, 1, 2, 4, 5}));
+        QCOMPARE(app::planTrails(scene, selected, 3, {16, 0}).sampled, (std::vector<model::ObjectId>{3, 1, 2, 4, 5}));
+        QVERIFY(app::planTrails(scene, selected, 3, {16, 0}).subdivided.empty());
         // The active screw track's trail is its subdivision, not one of these.
-        QCOMPARE(app::sampledTrailObjects(scene, selected, 3, 3, {16, 0}), (std::vector<model::ObjectId>{1, 2, 4, 5}));
+        model::Scene screw = scene;
+        screw.objects[2].track.interpolation = InterpolationMethod::Screw;
+        QCOMPARE(app::planTrails(screw, selected, 3, {16, 0}).sampled, (std::vector<model::ObjectId>{1, 2, 4, 5}));
+        QCOMPARE(app::planTrails(screw, selected, 3, {16, 0}).subdivided,
+                 (std::vector<app::TrailPlan::Subdivided>{{3, screw.objects[2].track.subdivision.levels}}));
         // The total budget, up front: 1024 copies are four objects' at 256 each, 64 objects' at 16.
         QCOMPARE(app::TrailSpacing::kMaxTotalCopies, 1024);
-        QCOMPARE((app::TrailSpacing{256, 0}.maxObjects()), std::size_t{4});
-        QCOMPARE((app::TrailSpacing{100'000, 0}.maxObjects()), std::size_t{4});
-        QCOMPARE((app::TrailSpacing{16, 0}.maxObjects()), std::size_t{64});
-        QCOMPARE(app::sampledTrailObjects(scene, selected, 3, model::kNoObject, {256, 0}),
-                 (std::vector<model::ObjectId>{3, 1, 2, 4}));
+        QCOMPARE(app::planTrails(scene, selected, 3, {256, 0}).sampled, (std::vector<model::ObjectId>{3, 1, 2, 4}));
+        QCOMPARE(app::planTrails(scene, selected, 3, {100'000, 0}).sampled, (std::vector<model::ObjectId>{3, 1, 2, 4}));
+        std::vector<model::ObjectId> many;
+        for (model::ObjectId id = 1; id <= 70; ++id) {
+            if (id > 6)
+                scene.objects.push_back(placed(id, model::kNoObject, turned(0.0, {0, 0, 1}, {double(id), 0, 0})));
+            many.push_back(id);
+        }
+        QCOMPARE(app::planTrails(scene, many, 1, {16, 0}).sampled.size(), std::size_t{64});
+        scene.objects.resize(6);
 
         // Two selected objects each get their copies, each where its own motion is at the times.
         const model::SceneMotion motion(scene, ownMotion);
@@ -469,6 +479,38 @@ private slots:
         QCOMPARE(trails[0].object, model::ObjectId{2});
         QCOMPARE(trails[1].object, model::ObjectId{5});
         QVERIFY((trails[0].poses.back().position - trails[1].poses.back().position).norm() > 1.0);
+    }
+
+    void screwTracksShareTheBudgetAtTheirLevelsOrFewer()
+    {
+        // Five screw tracks of 6 keys (a cycle at 4 levels: 96 poses), then a hermite one.
+        model::Scene scene;
+        scene.startTime = 0.0;
+        scene.endTime = 5.0;
+        for (model::ObjectId id = 1; id <= 6; ++id) {
+            scene.objects.push_back(placed(id, model::kNoObject, turned(0.0, {0, 0, 1}, {double(id), 0, 0})));
+            for (int key = 1; key < 6; ++key)
+                scene.objects.back().track.keys.push_back({double(key), turned(0.3 * key, {1, 0, double(id)}, {0, double(key), 0}), true});
+            scene.objects.back().track.interpolation = id <= 5 ? InterpolationMethod::Screw : InterpolationMethod::Hermite;
+        }
+        scene.objects[0].track.subdivision.levels = 9; // 3072 poses: the active one's, outside the budget
+        scene.objects[1].track.subdivision.levels = 7; // 768 poses
+        scene.objects[2].track.subdivision.levels = 6; // 384 do not fit the 256 left: 5 levels, 192
+        scene.objects[3].track.subdivision.levels = 4; // 96 do not fit the 64 left: 3 levels, 48
+        scene.objects[4].track.subdivision.levels = 4; // 16 left: 1 level, 12
+        const std::vector<model::ObjectId> selected{1, 2, 3, 4, 5, 6};
+        const app::TrailPlan plan = app::planTrails(scene, selected, 1, {16, 0});
+        QCOMPARE(plan.subdivided, (std::vector<app::TrailPlan::Subdivided>{{1, 9}, {2, 7}, {3, 5}, {4, 3}, {5, 1}}));
+        // 4 copies left: not enough for the hermite track's 16.
+        QVERIFY(plan.sampled.empty());
+        std::size_t shared = 0;
+        for (std::size_t i = 1; i < plan.subdivided.size(); ++i)
+            shared += *subdividedPoseCount(6, plan.subdivided[i].levels, true);
+        QCOMPARE(shared, std::size_t{768 + 192 + 48 + 12});
+        QVERIFY(shared <= std::size_t(app::TrailSpacing::kMaxTotalCopies));
+        // Another object active: it leads and takes the budget first; object 1 (3072 poses) then fits at 6 levels.
+        QCOMPARE(app::planTrails(scene, selected, 6, {16, 0}).sampled, (std::vector<model::ObjectId>{6}));
+        QCOMPARE(app::planTrails(scene, selected, 6, {16, 0}).subdivided.front(), (app::TrailPlan::Subdivided{1, 7}));
     }
 
     void aYUpViewOrbitsAboutY()

@@ -1,5 +1,7 @@
 // The subdivision job under a burst of requests, as while a pose is dragged: the newest request's
-// result arrives, equal to a direct subdivision, and no older result arrives after it.
+// result arrives, equal to a direct subdivision, and no older result arrives after it. A request of several
+// polyscrews (the selected screw tracks) answers each with its own subdivision, and one unchanged since the
+// previous run is not subdivided again: its poses are the previous answer's.
 
 #include "jobs/subdivision_job.h"
 
@@ -43,6 +45,13 @@ bool samePoses(const std::vector<Pose>& a, const std::vector<Pose>& b)
     return true;
 }
 
+std::vector<jobs::SubdivisionJob::Polyscrew> one(std::vector<Pose> controlPoses, const SubdivisionSettings& settings)
+{
+    return {{std::move(controlPoses), settings}};
+}
+
+using Answer = std::vector<jobs::SubdivisionJob::SubdividedPoses>;
+
 } // namespace
 
 class TestSubdivisionJob : public QObject {
@@ -55,16 +64,17 @@ private slots:
         std::vector<std::uint64_t> arrived;
         std::vector<Pose> newestPoses;
         connect(&job, &jobs::SubdivisionJob::subdivided, this,
-                [&](std::uint64_t generation, const std::vector<Pose>& poses, qint64 nanoseconds) {
+                [&](std::uint64_t generation, const Answer& poses, qint64 nanoseconds) {
                     QVERIFY(nanoseconds >= 0);
+                    QCOMPARE(poses.size(), std::size_t{1});
                     arrived.push_back(generation);
-                    newestPoses = poses;
+                    newestPoses = *poses.front();
                 });
         const SubdivisionSettings settings{SubdivisionScheme::Jarek, 8, true, false};
         constexpr int kRequests = 200;
         std::uint64_t newest = 0;
         for (int request = 0; request < kRequests; ++request) {
-            newest = job.request(lCycle(0.01 * request), settings);
+            newest = job.request(one(lCycle(0.01 * request), settings));
             // Let a result come back now and then, as the UI's event loop does between mouse moves.
             if (request % 20 == 0)
                 QCoreApplication::processEvents();
@@ -85,12 +95,12 @@ private slots:
         jobs::SubdivisionJob job;
         std::vector<std::uint64_t> arrived;
         connect(&job, &jobs::SubdivisionJob::subdivided, this,
-                [&](std::uint64_t generation, const std::vector<Pose>&, qint64) { arrived.push_back(generation); });
-        job.request(lCycle(0), SubdivisionSettings{SubdivisionScheme::BSpline, 6, false, false});
+                [&](std::uint64_t generation, const Answer&, qint64) { arrived.push_back(generation); });
+        job.request(one(lCycle(0), SubdivisionSettings{SubdivisionScheme::BSpline, 6, false, false}));
         job.cancel();
         QTest::qWait(200);
         QVERIFY(arrived.empty());
-        const std::uint64_t next = job.request(lCycle(1), SubdivisionSettings{SubdivisionScheme::BSpline, 2, false, false});
+        const std::uint64_t next = job.request(one(lCycle(1), SubdivisionSettings{SubdivisionScheme::BSpline, 2, false, false}));
         QTRY_COMPARE(arrived.size(), std::size_t{1});
         QCOMPARE(arrived.front(), next);
     }
@@ -99,7 +109,7 @@ private slots:
     {
         jobs::SubdivisionJob job;
         QSignalSpy failures(&job, &jobs::SubdivisionJob::failed);
-        const std::uint64_t generation = job.request(lCycle(0), SubdivisionSettings{SubdivisionScheme::Jarek, -1, true, false});
+        const std::uint64_t generation = job.request(one(lCycle(0), SubdivisionSettings{SubdivisionScheme::Jarek, -1, true, false}));
         QTRY_COMPARE(failures.count(), 1);
         QCOMPARE(failures.front().front().value<std::uint64_t>(), generation);
     }
@@ -115,12 +125,36 @@ private slots:
         std::vector<Pose> many;
         for (int k = 0; k < 5000; ++k)
             many.push_back(lCycle(0)[k % 6]);
-        const std::uint64_t generation = job.request(many, SubdivisionSettings{SubdivisionScheme::Jarek, 16, true, false});
+        const std::uint64_t generation = job.request(one(many, SubdivisionSettings{SubdivisionScheme::Jarek, 16, true, false}));
         QTRY_COMPARE(failures.count(), 1);
         QCOMPARE(failures.front().front().value<std::uint64_t>(), generation);
         const QString reason = failures.front().at(1).toString();
         QVERIFY2(reason.contains("5,000 keys at 16 levels make 327,680,000 poses; the budget is 1,048,576"), qPrintable(reason));
         QCOMPARE(results.count(), 0);
+    }
+
+    void eachPolyscrewOfARequestGetsItsSubdivisionAndAnUnchangedOneIsKept()
+    {
+        jobs::SubdivisionJob job;
+        QSignalSpy results(&job, &jobs::SubdivisionJob::subdivided);
+        const SubdivisionSettings cyclic{SubdivisionScheme::Jarek, 4, true, false};
+        const SubdivisionSettings open{SubdivisionScheme::BSpline, 3, false, false};
+        job.request({{lCycle(0), cyclic}, {lCycle(1), open}});
+        QTRY_COMPARE(results.count(), 1);
+        const Answer first = results.takeFirst().at(1).value<Answer>();
+        QCOMPARE(first.size(), std::size_t{2});
+        QVERIFY(samePoses(*first[0], subdividePolyscrew(lCycle(0), cyclic)));
+        QVERIFY(samePoses(*first[1], subdividePolyscrew(lCycle(1), open)));
+        QCOMPARE(first[1]->size(), *subdividedPoseCount(6, 3, false));
+
+        // The first one's pose moved, as while it is dragged; the second unchanged, now asked for first.
+        job.request({{lCycle(1), open}, {lCycle(0.5), cyclic}});
+        QTRY_COMPARE(results.count(), 1);
+        const Answer second = results.takeFirst().at(1).value<Answer>();
+        QCOMPARE(second.size(), std::size_t{2});
+        QCOMPARE(second[0].get(), first[1].get()); // not subdivided again
+        QVERIFY(samePoses(*second[1], subdividePolyscrew(lCycle(0.5), cyclic)));
+        QVERIFY(!samePoses(*second[1], *first[0]));
     }
 };
 

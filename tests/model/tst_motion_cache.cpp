@@ -1,5 +1,6 @@
 // The document's one motion per track (motion_cache.h): built once per change of its track, shared by
-// every caller until then, rebuilt after an undo, and safe to build from several threads at once.
+// every caller until then, rebuilt after an undo, and safe to build from several threads at once. The scene's
+// motion finds several objects' world poses together as it finds each one's.
 
 #include "model/commands/import_objects_command.h"
 #include "model/commands/rename_object_command.h"
@@ -12,6 +13,7 @@
 
 #include <Eigen/Geometry>
 
+#include <memory>
 #include <thread>
 #include <vector>
 
@@ -137,6 +139,31 @@ private slots:
         QCOMPARE(f.document.motionBuilds(), std::size_t(2));
         // The child turns 0.25 rad/s on a parent turning 0.5 rad/s about the same axis.
         QCOMPARE(Eigen::AngleAxisd(again.worldPose(f.ids[1], 2.0).orientation).angle(), 1.5);
+    }
+
+    void worldPosesAreEachObjectsWorldPose()
+    {
+        // A chain 1 ← 2 ← 3 and 4 beside 2, asked for out of order, one twice, with an object the scene lacks.
+        Scene scene;
+        scene.objects = {objectTurning(1, 0.5), objectTurning(2, 0.25, 1), objectTurning(3, -0.75, 2),
+                         objectTurning(4, 1.5, 1)};
+        scene.objects[2].track.keys[1].pose.position = {0.0, 2.0, -1.0};
+        const SceneMotion motion(scene, [](const SceneObject& object) {
+            return std::make_shared<const SharedTrackMotion>(object.track);
+        });
+        const std::vector<ObjectId> ids{3, 1, 4, 2, 3, 99};
+        for (const double time : {0.0, 0.4, 1.3, 2.0}) {
+            const std::vector<Pose> poses = motion.worldPoses(ids, time);
+            QCOMPARE(poses.size(), ids.size());
+            for (std::size_t i = 0; i < ids.size(); ++i) {
+                const Pose one = motion.worldPose(ids[i], time);
+                QVERIFY(poses[i].orientation.angularDistance(one.orientation) < 1e-12);
+                QVERIFY((poses[i].position - one.position).norm() < 1e-12);
+            }
+        }
+        // The grandchild's turns add up about z: 0.5 + 0.25 − 0.75 rad/s.
+        QVERIFY(std::abs(Eigen::AngleAxisd(motion.worldPoses({3}, 2.0).front().orientation).angle()) < 1e-12);
+        QVERIFY((motion.worldPoses({99}, 1.0).front().position).norm() == 0.0);
     }
 
     // Threads asking together wait for one build and share it.

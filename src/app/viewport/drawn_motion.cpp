@@ -1,65 +1,41 @@
 #include "app/viewport/drawn_motion.h"
 
-#include "app/viewport/default_shape.h"
-#include "app/viewport/pose_matrix.h"
-#include "app/viewport/skeleton.h"
-#include "model/scene_joints.h"
 #include "model/scene_queries.h"
 
-#include <Eigen/Geometry>
-
 #include <algorithm>
-#include <cmath>
 
 namespace gyre::app {
-
-namespace {
-
-// The centre of the mesh's bounding box, in its own frame.
-Eigen::Vector3d meshCentre(const model::Mesh& mesh)
-{
-    if (mesh.positions.empty())
-        return Eigen::Vector3d::Zero();
-    Eigen::Vector3f low = mesh.positions.front();
-    Eigen::Vector3f high = low;
-    for (const Eigen::Vector3f& position : mesh.positions) {
-        low = low.cwiseMin(position);
-        high = high.cwiseMax(position);
-    }
-    return (0.5F * (low + high)).cast<double>();
-}
-
-} // namespace
 
 DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObject* parent)
     : QObject(parent)
     , document_(document)
     , selection_(selection)
-    , selectedTrack_(document, selection)
     , motionJob_(jobs::JobPolicy::NewestWins,
                  {.finished = [this](std::shared_ptr<const model::SceneMotion> built) { receiveMotion(std::move(built)); },
                   .failed = [this](const QString& message) {
                       emit failed(tr("The motion could not be rebuilt: %1").arg(message));
                   }})
-    , sampledTrailJob_(jobs::JobPolicy::NewestWins,
-                       {.finished = [this](const std::vector<ObjectTrail>& trails) { receiveSampledTrails(trails); },
-                        .failed = [this](const QString& message) {
-                            dropTrail();
-                            emit changed();
-                            emit failed(tr("The trail could not be built: %1").arg(message));
-                        }})
+    , sampledJob_(jobs::JobPolicy::NewestWins,
+                  {.finished = [this](Sampled sampled) { receiveSampled(std::move(sampled)); },
+                   .failed = [this](const QString& message) {
+                       dropTrail();
+                       // Not asked for again until the motion, the selection or the range changes.
+                       trajectories_.clear();
+                       trajectoriesStale_ = false;
+                       emit changed();
+                       emit failed(tr("The trail could not be built: %1").arg(message));
+                   }})
 {
     connect(&document_, &model::Document::changed, this, &DrawnMotion::onDocumentChanged);
-    connect(&selectedTrack_, &SelectedTrack::changed, this, &DrawnMotion::onSelectedTrackChanged);
     connect(&document_.undoStack(), &QUndoStack::cleanChanged, this, [this](bool clean) {
         if (clean)
             snapshotOriginalMotion();
     });
     connect(&subdivision_, &jobs::SubdivisionJob::subdivided, this,
-            [this](std::uint64_t, const std::vector<Pose>& poses, qint64 nanoseconds) {
+            [this](std::uint64_t, const std::vector<jobs::SubdivisionJob::SubdividedPoses>& poses, qint64 nanoseconds) {
                 subdivisionMilliseconds_ = double(nanoseconds) / 1e6;
                 subdivisionLatencyMilliseconds_ = double(sinceTrailRequest_.nsecsElapsed()) / 1e6;
-                receiveScrewTrail(poses);
+                receiveScrewTrails(poses);
             });
     connect(&subdivision_, &jobs::SubdivisionJob::failed, this, [this](std::uint64_t, const QString& reason) {
         dropTrail();
@@ -73,6 +49,7 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
     });
     connect(&selection_, &Selection::changed, this, &DrawnMotion::onSelectionChanged);
     selectedObjects_ = selection_.objects();
+    activeObject_ = selection_.object();
     motion_ = std::make_shared<model::SceneMotion>(document_.scene(), motionOf());
     snapshotOriginalMotion();
     requestTrail();
@@ -98,17 +75,20 @@ void DrawnMotion::setPreviewTrack(model::ObjectId object, std::optional<model::M
     rebuildMotionInBackground();
 }
 
-void DrawnMotion::onDocumentChanged(model::ObjectId, model::Changes changes)
+void DrawnMotion::onDocumentChanged(model::ObjectId object, model::Changes changes)
 {
     using model::Change;
     if (changes.testFlag(Change::Scene)) {
-        // Opening a project may wait for its motion; only dragging must not. A preview was of the old scene.
+        // Opening a project may wait for its motion; only dragging must not. A preview was of the old scene,
+        // and so are the trails and paths in hand: none is shown until this scene's arrive.
         previewMotion_.reset();
         motionJob_.cancel();
         motion_ = std::make_shared<model::SceneMotion>(document_.scene(), motionOf());
-        trajectoryStale_ = true;
         snapshotOriginalMotion();
-        requestSampledTrail();
+        dropTrail();
+        trajectories_.clear();
+        trajectoriesStale_ = true;
+        requestTrail();
         emit sceneReset();
         return;
     }
@@ -116,25 +96,17 @@ void DrawnMotion::onDocumentChanged(model::ObjectId, model::Changes changes)
     // document's motions of the tracks that did not change.
     if (changes & (model::kMotionChanges | Change::Object))
         rebuildMotionInBackground();
-    if (changes & (Change::Added | Change::Removed | Change::Object | Change::SceneSettings))
-        trajectoryStale_ = true;
-    // The copies are spread over the scene's range, at its frames.
-    if (changes.testFlag(Change::SceneSettings))
+    // A selected screw track's keys or settings: its subdivision. Another interpolation or another budget share
+    // moves a track between the subdivided and the sampled trails.
+    if (selection_.isObjectSelected(object) && (changes & (Change::Keyframes | Change::TrackSettings)))
+        requestScrewTrails();
+    if (changes.testFlag(Change::SceneSettings)) {
+        // The copies are spread over the scene's range, at its frames, and so are the paths' points.
+        trajectoriesStale_ = true;
         requestSampledTrail();
-    emit changed();
-}
-
-void DrawnMotion::onSelectedTrackChanged(model::Changes changes)
-{
-    using model::Change;
-    if (changes & (SelectedTrack::kAnotherObject | Change::Scene)) {
-        // The trails in hand are of another selection, or the old scene's: show none until this one's arrive.
-        dropTrail();
-        trajectoryStale_ = true;
+    } else if (selection_.isObjectSelected(object) && changes.testFlag(Change::TrackSettings)) {
+        requestSampledTrail();
     }
-    // The trail subdivides the keys with the track's settings.
-    if (changes & (SelectedTrack::kAnotherObject | Change::Scene | Change::Keyframes | Change::TrackSettings))
-        requestTrail();
     emit changed();
 }
 
@@ -142,11 +114,17 @@ void DrawnMotion::onSelectionChanged()
 {
     // Selecting keys changes the selection too, and asks for nothing here.
     std::vector<model::ObjectId> objects = selection_.objects();
-    if (objects == selectedObjects_)
+    if (objects == selectedObjects_ && selection_.object() == activeObject_)
         return;
+    if (selection_.object() != activeObject_) {
+        // The trails and paths in hand are of another selection: show none until this one's arrive.
+        dropTrail();
+        trajectories_.clear();
+    }
     selectedObjects_ = std::move(objects);
-    trajectoryStale_ = true;
-    requestSampledTrail();
+    activeObject_ = selection_.object();
+    trajectoriesStale_ = true;
+    requestTrail();
     emit changed();
 }
 
@@ -180,8 +158,8 @@ void DrawnMotion::rebuildMotionInBackground()
 void DrawnMotion::receiveMotion(std::shared_ptr<const model::SceneMotion> built)
 {
     motion_ = std::move(built);
-    // A parent's change moves the selected object's trajectory and trail as well as its own.
-    trajectoryStale_ = true;
+    // A parent's change moves the selected objects' paths and trails as well as their own.
+    trajectoriesStale_ = true;
     requestSampledTrail();
     emit changed();
 }
@@ -193,7 +171,7 @@ bool DrawnMotion::isScrewBenderTrack(const model::SceneObject* object)
 
 void DrawnMotion::dropTrail()
 {
-    screwTrail_.clear();
+    screwTrails_.clear();
     sampledTrails_.clear();
     composeTrails();
 }
@@ -201,37 +179,64 @@ void DrawnMotion::dropTrail()
 void DrawnMotion::setTrailSpacing(const TrailSpacing& spacing)
 {
     trailSpacing_ = spacing.clamped();
-    requestSampledTrail();
+    requestTrail();
+}
+
+TrailPlan DrawnMotion::currentTrailPlan() const
+{
+    return planTrails(document_.scene(), selection_.objects(), selection_.object(), trailSpacing_);
 }
 
 void DrawnMotion::requestTrail()
 {
-    const model::SceneObject* object = selection_.selectedObject();
-    if (isScrewBenderTrack(object)) {
-        std::vector<Pose> controlPoses;
-        controlPoses.reserve(object->track.keys.size());
-        for (const model::Keyframe& key : object->track.keys)
-            controlPoses.push_back(key.pose);
-        screwTrailObject_ = object->id;
-        sinceTrailRequest_.start();
-        subdivision_.request(std::move(controlPoses), object->track.subdivision);
-    } else {
-        subdivision_.cancel();
-        screwTrailObject_ = model::kNoObject;
-        screwTrail_.clear();
-    }
-    // The others' trails, which leave the screw track out; newest wins, so none sampled before it became one lands.
+    requestScrewTrails();
+    // The others' trails, which leave the screw tracks out; newest wins, so none sampled before it became one lands.
     requestSampledTrail();
+}
+
+void DrawnMotion::requestScrewTrails()
+{
+    const TrailPlan plan = currentTrailPlan();
+    if (plan.subdivided.empty()) {
+        subdivision_.cancel();
+        screwTrailObjects_.clear();
+        if (!screwTrails_.empty()) {
+            screwTrails_.clear();
+            composeTrails();
+        }
+        return;
+    }
+    const model::Scene& scene = document_.scene();
+    std::vector<jobs::SubdivisionJob::Polyscrew> polyscrews;
+    screwTrailObjects_.clear();
+    for (const TrailPlan::Subdivided& subdivided : plan.subdivided) {
+        const model::SceneObject* object = model::findObject(scene, subdivided.object);
+        jobs::SubdivisionJob::Polyscrew& polyscrew = polyscrews.emplace_back();
+        polyscrew.controlPoses.reserve(object->track.keys.size());
+        for (const model::Keyframe& key : object->track.keys)
+            polyscrew.controlPoses.push_back(key.pose);
+        polyscrew.settings = object->track.subdivision;
+        polyscrew.settings.levels = subdivided.levels;
+        screwTrailObjects_.push_back(subdivided.object);
+    }
+    sinceTrailRequest_.start();
+    subdivision_.request(std::move(polyscrews));
 }
 
 void DrawnMotion::requestSampledTrail()
 {
     const model::Scene& scene = document_.scene();
-    // Every selected object's but the screw track's, which is ScrewBender's subdivision (requestTrail).
-    std::vector<model::ObjectId> trailed =
-        sampledTrailObjects(scene, selection_.objects(), selection_.object(), screwTrailObject_, trailSpacing_);
-    if (trailed.empty()) {
-        sampledTrailJob_.cancel();
+    std::vector<model::ObjectId> trailed = currentTrailPlan().sampled;
+    std::vector<PathObject> pathed;
+    if (trajectoriesStale_)
+        pathed = pathObjects(scene, selection_.objects(), selection_.object());
+    if (trailed.empty() && pathed.empty()) {
+        sampledJob_.cancel();
+        // No request in flight has paths wanted now: were they stale, there is no path to draw.
+        if (trajectoriesStale_) {
+            trajectories_.clear();
+            trajectoriesStale_ = false;
+        }
         // Composed again only when some went: a screw trail alone is not uploaded anew at every drag move.
         if (!sampledTrails_.empty()) {
             sampledTrails_.clear();
@@ -239,23 +244,36 @@ void DrawnMotion::requestSampledTrail()
         }
         return;
     }
-    sampledTrailJob_.post([motion = motion_, objects = std::move(trailed), times = trailTimes(scene, trailSpacing_)](
-                              const jobs::JobRun<jobs::NoProgress>& run) {
+    const bool withPaths = trajectoriesStale_;
+    sampledJob_.post([motion = motion_, objects = std::move(trailed), times = trailTimes(scene, trailSpacing_),
+                      pathed = std::move(pathed), pathTimes = pathTimes(scene),
+                      withPaths](const jobs::JobRun<jobs::NoProgress>& run) {
         run.throwIfStopped(); // superseded before it started
-        return trailPoses(*motion, objects, times);
+        Sampled sampled{trailPoses(*motion, objects, times), std::nullopt};
+        if (withPaths) {
+            sampled.paths = centrePaths(*motion, pathed, pathTimes, run.stopFlag());
+            run.throwIfStopped(); // superseded, the paths cut short: a newer request samples them
+        }
+        return sampled;
     });
 }
 
-void DrawnMotion::receiveScrewTrail(const std::vector<Pose>& poses)
+void DrawnMotion::receiveScrewTrails(const std::vector<jobs::SubdivisionJob::SubdividedPoses>& poses)
 {
-    screwTrail_ = poses;
+    screwTrails_.clear();
+    for (std::size_t i = 0; i < poses.size() && i < screwTrailObjects_.size(); ++i)
+        screwTrails_.push_back({screwTrailObjects_[i], poses[i]});
     composeTrails();
     emit changed();
 }
 
-void DrawnMotion::receiveSampledTrails(const std::vector<ObjectTrail>& trails)
+void DrawnMotion::receiveSampled(Sampled sampled)
 {
-    sampledTrails_ = trails;
+    sampledTrails_ = std::move(sampled.trails);
+    if (sampled.paths) {
+        trajectories_ = std::move(*sampled.paths);
+        trajectoriesStale_ = false;
+    }
     composeTrails();
     emit changed();
 }
@@ -269,51 +287,13 @@ void DrawnMotion::composeTrails()
         for (const Pose& pose : poses)
             appendPoseMatrix(trailMatrices_, pose);
     };
-    if (screwTrailObject_ != model::kNoObject && !screwTrail_.empty())
-        append(screwTrailObject_, screwTrail_, true);
+    for (const ScrewTrail& trail : screwTrails_)
+        if (!trail.poses->empty())
+            append(trail.object, *trail.poses, true);
     for (const ObjectTrail& trail : sampledTrails_)
         if (!trail.poses.empty())
             append(trail.object, trail.poses, false);
     trailChanged_ = true;
-}
-
-const std::vector<std::vector<Eigen::Vector3f>>& DrawnMotion::trajectories()
-{
-    if (trajectoryStale_)
-        rebuildTrajectories();
-    return trajectories_;
-}
-
-void DrawnMotion::rebuildTrajectories()
-{
-    trajectories_.clear();
-    trajectoryStale_ = false;
-    const model::Scene& scene = document_.scene();
-    if (!(scene.endTime > scene.startTime))
-        return;
-    std::vector<model::ObjectId> objects = selection_.objects();
-    // The active object's first, so that the budget never leaves it out.
-    std::stable_partition(objects.begin(), objects.end(), [this](model::ObjectId id) { return id == selection_.object(); });
-    objects.resize(std::min(objects.size(), kMaxTrajectoryObjects));
-    const std::vector<bool> joints = model::findJoints(scene);
-    // One sample per frame of the scene, fewer for very long scenes and for many objects.
-    const double frames = std::ceil((scene.endTime - scene.startTime) * scene.fps);
-    const double perPath = std::min<double>(kMaxTrajectorySamples,
-                                            kMaxTrajectoryPoints / static_cast<double>(std::max<std::size_t>(objects.size(), 1)));
-    const int samples = static_cast<int>(std::clamp(frames, 1.0, std::floor(perPath))) + 1;
-    for (const model::ObjectId id : objects) {
-        const model::SceneObject* object = model::findObject(scene, id);
-        if (object == nullptr)
-            continue;
-        // A joint's path is its origin's, where its bones meet.
-        const bool joint = joints[static_cast<std::size_t>(object - scene.objects.data())];
-        const Eigen::Vector3d centre = joint ? Eigen::Vector3d::Zero() : meshCentre(displayMesh(*object));
-        std::vector<Eigen::Vector3f>& path = trajectories_.emplace_back();
-        for (int i = 0; i < samples; ++i) {
-            const double time = scene.startTime + (scene.endTime - scene.startTime) * i / (samples - 1);
-            path.push_back(motion_->worldPose(id, time).apply(centre).cast<float>());
-        }
-    }
 }
 
 } // namespace gyre::app

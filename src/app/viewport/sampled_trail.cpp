@@ -1,21 +1,18 @@
 #include "app/viewport/sampled_trail.h"
 
 #include "app/viewport/skeleton.h"
+#include "core/subdivision.h"
 #include "model/scene_joints.h"
 #include "model/scene_queries.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace gyre::app {
 
 TrailSpacing TrailSpacing::clamped() const
 {
     return {std::clamp(copies, 2, kMaxCopies), std::clamp(everyFrames, 0, kMaxEveryFrames)};
-}
-
-std::size_t TrailSpacing::maxObjects() const
-{
-    return static_cast<std::size_t>(kMaxTotalCopies / clamped().copies);
 }
 
 std::vector<double> trailTimes(const model::Scene& scene, const TrailSpacing& setting)
@@ -59,9 +56,8 @@ std::vector<ObjectTrail> trailPoses(const model::SceneMotion& motion, const std:
     return trails;
 }
 
-std::vector<model::ObjectId> sampledTrailObjects(const model::Scene& scene, const std::vector<model::ObjectId>& selected,
-                                                 model::ObjectId active, model::ObjectId screwTrailObject,
-                                                 const TrailSpacing& spacing)
+TrailPlan planTrails(const model::Scene& scene, const std::vector<model::ObjectId>& selected, model::ObjectId active,
+                     const TrailSpacing& spacing)
 {
     std::vector<model::ObjectId> ordered;
     if (std::find(selected.begin(), selected.end(), active) != selected.end())
@@ -70,16 +66,37 @@ std::vector<model::ObjectId> sampledTrailObjects(const model::Scene& scene, cons
         if (id != active)
             ordered.push_back(id);
     const std::vector<bool> joints = model::findJoints(scene);
-    std::vector<model::ObjectId> trailed;
+    const std::size_t copies = static_cast<std::size_t>(spacing.clamped().copies);
+    std::size_t left = TrailSpacing::kMaxTotalCopies;
+    TrailPlan plan;
     for (const model::ObjectId id : ordered) {
         const model::SceneObject* object = model::findObject(scene, id);
-        if (trailed.size() == spacing.maxObjects())
-            break;
-        if (object != nullptr && id != screwTrailObject && !object->empty &&
-            !joints[static_cast<std::size_t>(object - scene.objects.data())])
-            trailed.push_back(id);
+        if (object == nullptr || object->empty || joints[static_cast<std::size_t>(object - scene.objects.data())])
+            continue;
+        const model::MotionTrack& track = object->track;
+        if (track.keys.empty() || track.interpolation != InterpolationMethod::Screw) {
+            if (copies <= left) {
+                plan.sampled.push_back(id);
+                left -= copies;
+            }
+            continue;
+        }
+        if (id == active) {
+            plan.subdivided.push_back({id, track.subdivision.levels});
+            continue;
+        }
+        // The most levels, up to the track's, whose poses fit (n·2^L for a cycle, (n − 1)·2^L + 1 open).
+        for (int levels = track.subdivision.levels; levels >= 0; --levels) {
+            const std::optional<std::size_t> poses =
+                subdividedPoseCount(track.keys.size(), levels, track.subdivision.cyclic);
+            if (poses && *poses <= left) {
+                plan.subdivided.push_back({id, levels});
+                left -= *poses;
+                break;
+            }
+        }
     }
-    return trailed;
+    return plan;
 }
 
 } // namespace gyre::app

@@ -7,6 +7,9 @@
 // Spacing: by default the copies are spread over the scene's whole range, as ScrewBender's trail shows
 // its whole motion; it then stays still while the motion plays. With every N frames the copies sit about
 // the current frame, half before and half after (Blender's onion skinning), and follow it.
+//
+// A screw track's trail is its polyscrew subdivided (ScrewBender's stroboscope, jobs/subdivision_job.h), not
+// sampled: planTrails says which selected object gets which, within the budget below.
 
 #include "core/pose.h"
 #include "model/scene.h"
@@ -18,10 +21,12 @@
 namespace gyre::app {
 
 struct TrailSpacing {
-    // The budget: at most this many copies an object, the setting clamped to it up front.
+    // The budget: at most this many copies an object's sampled trail, the setting clamped to it up front.
     static constexpr int kMaxCopies = 256;
-    // And at most this many across the selected objects: the trails of the first maxObjects() of them (the active
-    // one first), the rest none, decided up front from the setting (not from how many copies fall in the range).
+    // And at most this many across the selected objects' trails, the active screw track's left out (planTrails):
+    // with sampled trails alone, those of the first kMaxTotalCopies / copies of them (the active one first: 64
+    // objects at 16 copies, 4 at 256), the rest none, decided up front from the setting (not from how many copies
+    // fall in the range).
     static constexpr int kMaxTotalCopies = 1024;
     static constexpr int kMaxEveryFrames = 1000;
 
@@ -30,8 +35,6 @@ struct TrailSpacing {
 
     // The setting within [2, kMaxCopies] and [0, kMaxEveryFrames].
     TrailSpacing clamped() const;
-    // kMaxTotalCopies / the clamped copies: 64 objects at 16 copies, 4 at 256.
-    std::size_t maxObjects() const;
 };
 
 // One object's copies.
@@ -52,11 +55,24 @@ std::vector<Pose> trailPoses(const model::SceneMotion& motion, model::ObjectId o
 std::vector<ObjectTrail> trailPoses(const model::SceneMotion& motion, const std::vector<model::ObjectId>& objects,
                                     const std::vector<double>& times);
 
-// The objects that get a sampled trail: of `selected`, `active` first and then the others in their order, leaving
-// out `screwTrailObject` (whose trail is ScrewBender's subdivided motion), joints and empties (drawn as bones and
-// axes: their centre paths say where they go) and objects the scene lacks, at most spacing.maxObjects() of them.
-std::vector<model::ObjectId> sampledTrailObjects(const model::Scene& scene, const std::vector<model::ObjectId>& selected,
-                                                 model::ObjectId active, model::ObjectId screwTrailObject,
-                                                 const TrailSpacing& spacing);
+// Which selected object gets which trail, decided up front from the settings and the key counts (not from the
+// poses). The active object's screw track gets its whole subdivision, as ScrewBender edits it: its size is the
+// track's own budget (model::kMaxSubdividedPoses, checked whenever the track is set). The other selected objects,
+// the active one first and then in the selection's order, share TrailSpacing::kMaxTotalCopies: a screw track
+// takes its subdivision's pose count at its levels, or at the most levels that fit what is left (a coarser
+// stroboscope of the same motion, down to its control poses), any other object spacing.copies (clamped); one
+// whose trail does not fit what is left gets none. Joints and empties (drawn as bones and axes: their centre paths
+// say where they go) and objects the scene lacks get none.
+struct TrailPlan {
+    struct Subdivided {
+        model::ObjectId object = model::kNoObject;
+        int levels = 0; // the track's, or fewer
+        bool operator==(const Subdivided&) const = default;
+    };
+    std::vector<Subdivided> subdivided; // the screw tracks, the active one first if it is one
+    std::vector<model::ObjectId> sampled;
+};
+TrailPlan planTrails(const model::Scene& scene, const std::vector<model::ObjectId>& selected, model::ObjectId active,
+                     const TrailSpacing& spacing);
 
 } // namespace gyre::app

@@ -570,6 +570,13 @@ void Viewport::paintGL()
                                      [this](const model::SceneObject& object) { return drawn_.motion().contains(object.id); })) {
         framePending_ = false;
         frameScene();
+        reframeWithPaths_ = drawn_.trajectoriesPending();
+    } else if (reframeWithPaths_ && !drawn_.trajectoriesPending()) {
+        // The selected objects' paths, sampled on a worker, arrive after the motion: until the artist moves the
+        // camera, the framing takes them in too.
+        reframeWithPaths_ = false;
+        if (cameraIsFramed_)
+            frameScene();
     }
     updateSkeleton();
     const model::SceneObject* selected = selection_.selectedObject();

@@ -158,6 +158,7 @@ private:
     OrbitCamera camera_;
     bool cameraIsFramed_ = false; // by frameScene, and not moved since
     bool framePending_ = false;   // frameSceneWhenDrawn waits for the motion
+    bool reframeWithPaths_ = false; // framed by frameSceneWhenDrawn before the selected objects' paths arrived
     Skeleton skeleton_;
     Shading shading_;
     bool trailUploaded_ = false;  // to the renderer's present context

@@ -10,23 +10,33 @@
 //   key may store either. Each key is flipped into the hemisphere of the one before (q_i·q_{i−1} ≥ 0), the
 //   first as it is. Quaternion interpolation already joins keys along the short arc, so the motion stays;
 //   the quaternion channels, the project file and quaternion columns written out change.
+//
+// On some keys only (the selected ones, as Blender's filter works on selected keyframes), each of them is made
+// continuous with the key before it, filtered or not, in increasing order, so a run of selected keys follows
+// the one before the run; the other keys stay as they are, bit for bit.
 
 #include "model/commands/object_fields.h"
 
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace gyre::model {
 
 class ApplyEulerFilterCommand final : public ChangeValueCommand<KeyframesField> {
 public:
+    // The indices of the keys to filter, increasing (indices past the last key are left out); nullopt: every key.
+    using KeySubset = std::optional<std::vector<std::size_t>>;
+
     // Throws std::invalid_argument for an unknown object.
-    ApplyEulerFilterCommand(Document& document, ObjectId object, QUndoCommand* parent = nullptr);
+    ApplyEulerFilterCommand(Document& document, ObjectId object, const KeySubset& keys = std::nullopt,
+                            QUndoCommand* parent = nullptr);
 
     // The track's keys as the filter leaves them.
-    static std::vector<Keyframe> filteredKeys(const MotionTrack& track);
+    static std::vector<Keyframe> filteredKeys(const MotionTrack& track, const KeySubset& keys = std::nullopt);
 
     // Whether the filter would change the keys.
-    static bool changes(const MotionTrack& track);
+    static bool changes(const MotionTrack& track, const KeySubset& keys = std::nullopt);
 };
 
 } // namespace gyre::model
