@@ -91,18 +91,6 @@ template <std::size_t count>
     }
 }
 
-// fastAngleOnUnitCircle(cosine, sine), with the table read in a way GCC vectorises.
-[[gnu::always_inline]] inline double halfAngleOf(double cosine, double sine)
-{
-    const bool steep = sine > cosine;
-    const auto bin = static_cast<std::int32_t>((cosine < sine ? cosine : sine) * kAngleBins);
-    const TableAngle& below = kAngleTable[static_cast<std::size_t>(bin + (steep ? kAngleBinsPerHalf : 0))];
-    const double sigma = sine * below.cos - cosine * below.sin;
-    const double s2 = sigma * sigma;
-    const double series = (1.0 / 6 + s2 * (3.0 / 40)) + (s2 * s2) * (5.0 / 112);
-    return below.angle + (sigma + (sigma * s2) * series);
-}
-
 // Screw(from[l], to[l]) for the kLanes pairs, with its angle only if `withAngle`; the lanes without
 // rotation are left to the single screw, their sin a and cos a set to 0 and 1 so that every index below
 // stays in its table. Three loops, each short enough for the processor to run several of its
@@ -156,7 +144,7 @@ template <bool withAngle>
     }
     if constexpr (withAngle)
         for (std::size_t l = 0; l < kLanes; ++l)
-            block.halfAngle[l] = halfAngleOf(block.cosHalfAngle[l], block.sinHalfAngle[l]);
+            block.halfAngle[l] = fastAngleOnUnitCircle(block.cosHalfAngle[l], block.sinHalfAngle[l]);
 }
 
 // sin(ta) and cos(ta) of each lane at one t, with sin²(ta) and sin(ta)·cos(ta).
@@ -176,19 +164,9 @@ struct Turn {
         const double angle = t * block.halfAngle[l];
         const bool reduced = std::abs(angle) <= kLargestReduced;
         const double x = reduced ? angle : 0.0;
-        const double k = (x * kStepsPerRadian + kRoundingShift) - kRoundingShift;
-        const double r = (x - k * kStepHead) - k * kStepTail;
-        constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040;
-        constexpr double c2 = -1.0 / 2, c4 = 1.0 / 24, c6 = -1.0 / 720;
-        const double r2 = r * r;
-        const double r4 = r2 * r2;
-        const double sinR = r + (r * r2) * ((s3 + r2 * s5) + r4 * s7);
-        const double cosR = 1.0 + r2 * ((c2 + r2 * c4) + r4 * c6);
-        const auto j = static_cast<std::size_t>(static_cast<std::int32_t>(k) & (kStepsPerTurn - 1));
-        const double sinK = kSinCosTable.sin[j];
-        const double cosK = kSinCosTable.cos[j];
-        const double sinT = sinK * cosR + cosK * sinR;
-        const double cosT = cosK * cosR - sinK * sinR;
+        const SinCos sinCos = fastSinCosReduced(x);
+        const double sinT = sinCos.sin;
+        const double cosT = sinCos.cos;
         turn.sin[l] = sinT;
         turn.cos[l] = cosT;
         turn.sinSquared[l] = sinT * sinT;
@@ -250,32 +228,48 @@ struct PaddedPairs {
     return {padded.from.data(), padded.to.data(), used};
 }
 
+// out[l] = Screw::pose of each lane that holds a pair: posesOfBlock straight into `target` for a full
+// block, through `padded` for the last, partial one.
+[[gnu::always_inline]] inline void storeBlock(const Block& block, double t, const Turn& turn, std::size_t used,
+                                              Pose* target, std::array<Pose, kLanes>& padded)
+{
+    if (used == kLanes) {
+        posesOfBlock(block, t, turn, target);
+        return;
+    }
+    posesOfBlock(block, t, turn, padded.data());
+    std::copy_n(padded.begin(), used, target);
+}
+
+// What a batch reuses from block to block.
+struct Scratch {
+    Block block;
+    Turn turn;
+    PaddedPairs pairs;
+    std::array<Pose, kLanes> poses;
+};
+
 [[gnu::always_inline]] inline void screwsAtLanes(std::span<const Pose> from, std::span<const Pose> to,
                                                  std::span<const double> times, std::span<Pose> out)
 {
     const std::size_t n = from.size();
     if (to.size() != n || out.size() != n * times.size())
         throw std::invalid_argument("screwsAt: spans of different lengths");
-    Block block;
-    Turn turn;
-    PaddedPairs paddedPairs;
-    std::array<Pose, kLanes> paddedOut;
+    Scratch scratch;
     for (std::size_t first = 0; first < n; first += kLanes) {
-        const BlockPairs pairs = blockPairs(from, to, first, paddedPairs);
-        buildBlock<true>(pairs.from, pairs.to, block);
+        const BlockPairs pairs = blockPairs(from, to, first, scratch.pairs);
+        buildBlock<true>(pairs.from, pairs.to, scratch.block);
         for (std::size_t k = 0; k < times.size(); ++k) {
             Pose* target = out.data() + k * n + first;
-            turnAt(block, times[k], turn);
-            posesOfBlock(block, times[k], turn, pairs.used == kLanes ? target : paddedOut.data());
-            if (pairs.used < kLanes)
-                std::copy_n(paddedOut.begin(), pairs.used, target);
+            turnAt(scratch.block, times[k], scratch.turn);
+            storeBlock(scratch.block, times[k], scratch.turn, pairs.used, target, scratch.poses);
             // One branch a block, not one a lane: the sum of the flags.
             double leftToSingleScrew = 0.0;
-            for (const double flag : turn.singleScrew)
+            for (const double flag : scratch.turn.singleScrew)
                 leftToSingleScrew += flag;
             if (leftToSingleScrew != 0.0) [[unlikely]]
                 for (std::size_t l = 0; l < pairs.used; ++l)
-                    if (turn.singleScrew[l] != 0.0)
+                    if (scratch.turn.singleScrew[l] != 0.0)
                         target[l] = screwInterpolate(pairs.from[l], times[k], pairs.to[l]);
         }
     }
@@ -284,23 +278,17 @@ struct PaddedPairs {
 [[gnu::always_inline]] inline void screwMidpointsLanes(std::span<const Pose> from, std::span<const Pose> to,
                                                        std::span<Pose> out)
 {
-    const std::size_t n = from.size();
-    if (to.size() != n || out.size() != n)
+    if (to.size() != from.size() || out.size() != from.size())
         throw std::invalid_argument("screwMidpoints: spans of different lengths");
-    Block block;
-    Turn turn;
-    PaddedPairs paddedPairs;
-    std::array<Pose, kLanes> paddedOut;
-    for (std::size_t first = 0; first < n; first += kLanes) {
-        const BlockPairs pairs = blockPairs(from, to, first, paddedPairs);
-        buildBlock<false>(pairs.from, pairs.to, block);
+    Scratch scratch;
+    for (std::size_t first = 0; first < from.size(); first += kLanes) {
+        const BlockPairs pairs = blockPairs(from, to, first, scratch.pairs);
+        buildBlock<false>(pairs.from, pairs.to, scratch.block);
+        turnAtMidpoint(scratch.block, scratch.turn);
         Pose* target = out.data() + first;
-        turnAtMidpoint(block, turn);
-        posesOfBlock(block, 0.5, turn, pairs.used == kLanes ? target : paddedOut.data());
-        if (pairs.used < kLanes)
-            std::copy_n(paddedOut.begin(), pairs.used, target);
+        storeBlock(scratch.block, 0.5, scratch.turn, pairs.used, target, scratch.poses);
         for (std::size_t l = 0; l < pairs.used; ++l)
-            if (block.sinHalfAngle[l] == 0.0) [[unlikely]]
+            if (scratch.block.sinHalfAngle[l] == 0.0) [[unlikely]]
                 target[l] = Screw::midpoint(pairs.from[l], pairs.to[l]);
     }
 }
