@@ -19,6 +19,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace gyre::fit {
 
@@ -56,6 +57,10 @@ struct ControlPoint {
     std::array<double, 4> value{};     // w, x, y, z
     std::array<double, 4> derivative{}; // w, x, y, z per second
 };
+
+// The blocks the solve holds constant: a constrained key's or a held end's value, a held end's derivative.
+bool valueHeld(const ControlPoint& point) { return point.role != Role::Free; }
+bool derivativeHeld(const ControlPoint& point) { return point.role == Role::Held; }
 
 std::array<double, 4> wxyz(const Eigen::Quaterniond& q) { return {q.w(), q.x(), q.y(), q.z()}; }
 Eigen::Quaterniond quaternion(const std::array<double, 4>& a) { return {a[0], a[1], a[2], a[3]}; }
@@ -168,9 +173,10 @@ std::vector<double> fragmentIntegrals(const QuadratureRule& quadrature, const Ti
 
 double targetMeanSquare(const AngularVelocityTarget& target, const TimeWindow& window, double fragmentSeconds)
 {
+    AngularVelocityTarget::Reader reader(target);
     const std::vector<double> fragments =
         fragmentIntegrals(gaussLegendre(kMeasureNodes), window, fragmentSeconds, std::span<const double>{},
-                          [&target](double t) { return target.at(t).squaredNorm(); });
+                          [&reader](double t) { return reader.at(t).squaredNorm(); });
     return std::accumulate(fragments.begin(), fragments.end(), 0.0) / (window.end - window.start);
 }
 
@@ -227,8 +233,9 @@ private:
     void placeControlPoints();
     bool solveUnitNorm();
     bool solve();
-    ceres::CostFunction* segmentEnergy(std::size_t segment) const;
+    ceres::CostFunction* segmentEnergy(std::size_t segment, AngularVelocityTarget::Reader& target) const;
     const QuadratureRule& rule(int nodes) const;
+    const std::shared_ptr<const SegmentQuadrature>& segmentQuadrature(int nodes) const;
     HermiteQuaternionSpline spline() const { return HermiteQuaternionSpline(hermitePoints(points_)); }
     double largestNormDeviation(const HermiteQuaternionSpline& curve) const;
     // The control points' times, where integrals are cut: the spline's second derivative jumps there.
@@ -255,6 +262,7 @@ private:
     HermiteQuaternionSpline base_;
     std::vector<ControlPoint> points_;
     mutable std::map<int, QuadratureRule> rules_;
+    mutable std::map<int, std::shared_ptr<const SegmentQuadrature>> segmentQuadratures_;
     double penalty_;
     int round_ = 0;
     int iterations_ = 0;
@@ -347,7 +355,15 @@ const QuadratureRule& FitRun::rule(int nodes) const
     return found->second;
 }
 
-ceres::CostFunction* FitRun::segmentEnergy(std::size_t segment) const
+const std::shared_ptr<const SegmentQuadrature>& FitRun::segmentQuadrature(int nodes) const
+{
+    auto found = segmentQuadratures_.find(nodes);
+    if (found == segmentQuadratures_.end())
+        found = segmentQuadratures_.emplace(nodes, std::make_shared<const SegmentQuadrature>(rule(nodes))).first;
+    return found->second;
+}
+
+ceres::CostFunction* FitRun::segmentEnergy(std::size_t segment, AngularVelocityTarget::Reader& target) const
 {
     const double start = points_[segment].time;
     const double duration = points_[segment + 1].time - start;
@@ -355,13 +371,18 @@ ceres::CostFunction* FitRun::segmentEnergy(std::size_t segment) const
     const int nodes = static_cast<int>(std::clamp(std::ceil(duration * kNodesPerSecond),
                                                   static_cast<double>(kMinNodesPerSegment),
                                                   static_cast<double>(kMaxNodesPerSegment)));
-    const QuadratureRule& quadrature = rule(nodes);
+    const std::shared_ptr<const SegmentQuadrature>& quadrature = segmentQuadrature(nodes);
     std::vector<Eigen::Vector3d> targets;
-    targets.reserve(quadrature.nodes.size());
-    for (const double u : quadrature.nodes)
-        targets.push_back(target_.at(start + u * duration));
-    return new CompressedCost(std::make_unique<SegmentEnergy>(duration, quadrature.nodes, quadrature.weights, targets,
-                                                              EnergyWeights{settings_.alpha, settings_.beta, penalty_}));
+    targets.reserve(quadrature->nodes().size());
+    for (const SegmentQuadrature::Node& node : quadrature->nodes())
+        targets.push_back(target.at(start + node.u * duration));
+    // The blocks solve() holds constant, in the order they enter the residual: q₀, d₀, q₁, d₁.
+    const ControlPoint& from = points_[segment];
+    const ControlPoint& to = points_[segment + 1];
+    const std::vector<bool> held{valueHeld(from), derivativeHeld(from), valueHeld(to), derivativeHeld(to)};
+    return new CompressedCost(std::make_unique<SegmentEnergy>(duration, quadrature, std::move(targets),
+                                                              EnergyWeights{settings_.alpha, settings_.beta, penalty_}),
+                              held);
 }
 
 // Solves once at the current penalty. The hard constraints: a constrained key's quaternion and a held
@@ -373,15 +394,16 @@ bool FitRun::solve()
     for (ControlPoint& point : points_) {
         problem.AddParameterBlock(point.value.data(), 4);
         problem.AddParameterBlock(point.derivative.data(), 4);
-        if (point.role != Role::Free)
+        if (valueHeld(point))
             problem.SetParameterBlockConstant(point.value.data());
-        if (point.role == Role::Held)
+        if (derivativeHeld(point))
             problem.SetParameterBlockConstant(point.derivative.data());
     }
+    AngularVelocityTarget::Reader target(target_);
     for (std::size_t segment = 0; segment + 1 < points_.size(); ++segment) {
         ControlPoint& from = points_[segment];
         ControlPoint& to = points_[segment + 1];
-        problem.AddResidualBlock(segmentEnergy(segment), nullptr, from.value.data(), from.derivative.data(),
+        problem.AddResidualBlock(segmentEnergy(segment, target), nullptr, from.value.data(), from.derivative.data(),
                                  to.value.data(), to.derivative.data());
     }
 
@@ -444,8 +466,9 @@ EnergyTerms FitRun::energyTerms(const HermiteQuaternionSpline& curve) const
 {
     const QuadratureRule& quadrature = rule(kMeasureNodes);
     EnergyTerms terms;
+    AngularVelocityTarget::Reader target(target_);
     terms.angular = integrateInPieces(quadrature, window_.start, window_.end, controlPointTimes(), [&](double t) {
-        return (curve.sample(t).angularVelocity - target_.at(t)).squaredNorm();
+        return (curve.sample(t).angularVelocity - target.at(t)).squaredNorm();
     });
     terms.tangential = integrateInPieces(quadrature, window_.start, window_.end, controlPointTimes(), [&](double t) {
         const HermiteQuaternionSpline::RawSample raw = curve.raw(t);
@@ -460,9 +483,10 @@ EnergyTerms FitRun::energyTerms(const HermiteQuaternionSpline& curve) const
 FitRun::FragmentErrors FitRun::fragmentErrors(const HermiteQuaternionSpline& curve) const
 {
     FragmentErrors errors;
+    AngularVelocityTarget::Reader target(target_);
     const std::vector<double> fragments =
         fragmentIntegrals(rule(kMeasureNodes), window_, settings_.fragmentSeconds, controlPointTimes(),
-                          [&](double t) { return (curve.sample(t).angularVelocity - target_.at(t)).squaredNorm(); });
+                          [&](double t) { return (curve.sample(t).angularVelocity - target.at(t)).squaredNorm(); });
     for (const double error : fragments) {
         errors.relative.push_back(relativeFragmentError(error, targetMeanSquare_));
         errors.largest = std::max(errors.largest, error);

@@ -145,31 +145,25 @@ AngularVelocityTarget AngularVelocityTarget::fromSketch(std::vector<TimedVector>
 
 Eigen::Vector3d AngularVelocityTarget::at(double time) const
 {
+    SegmentCursor vectors;
+    SegmentCursor magnitudes;
+    return at(time, vectors, magnitudes);
+}
+
+Eigen::Vector3d AngularVelocityTarget::at(double time, SegmentCursor& vectors, SegmentCursor& magnitudes) const
+{
     time = std::clamp(time, start_, end_);
-    if (sketched_)
-        return magnitudeAt(time) * directionAt(time);
-    const std::size_t i = segmentAt(vectors_, time);
+    const std::size_t i = vectors.at(vectors_, time);
     const TimedVector& a = vectors_[i];
     const TimedVector& b = vectors_[i + 1];
     const double u = (time - a.time) / (b.time - a.time);
-    return (1.0 - u) * a.value + u * b.value;
-}
-
-Eigen::Vector3d AngularVelocityTarget::directionAt(double time) const
-{
-    const std::size_t i = segmentAt(vectors_, time);
-    const TimedVector& a = vectors_[i];
-    const TimedVector& b = vectors_[i + 1];
-    return alongArc(a.value, b.value, (time - a.time) / (b.time - a.time));
-}
-
-double AngularVelocityTarget::magnitudeAt(double time) const
-{
-    const std::size_t i = segmentAt(magnitudes_, time);
-    const TimedScalar& a = magnitudes_[i];
-    const TimedScalar& b = magnitudes_[i + 1];
-    const double u = (time - a.time) / (b.time - a.time);
-    return (1.0 - u) * a.value + u * b.value;
+    if (!sketched_)
+        return (1.0 - u) * a.value + u * b.value;
+    const std::size_t k = magnitudes.at(magnitudes_, time);
+    const TimedScalar& low = magnitudes_[k];
+    const TimedScalar& high = magnitudes_[k + 1];
+    const double v = (time - low.time) / (high.time - low.time);
+    return ((1.0 - v) * low.value + v * high.value) * alongArc(a.value, b.value, u);
 }
 
 std::vector<TimedVector> spreadByArcLength(const std::vector<Eigen::Vector3d>& directions, double startTime,

@@ -3,6 +3,8 @@
 // between them, or the artist's sketch: a direction curve on the unit sphere times a magnitude
 // curve over time (the sketch-editing paper's two views).
 
+#include "core/timed_keys.h"
+
 #include <Eigen/Core>
 
 #include <cstddef>
@@ -34,13 +36,28 @@ public:
 
     // Clamped to the end values outside [startTime(), endTime()].
     Eigen::Vector3d at(double time) const;
+
+    // at() for times that mostly increase, as the fit's integrals read the target: each lookup starts
+    // where the last one ended (SegmentCursor), not with a search of every sample. The same values as at().
+    class Reader {
+    public:
+        explicit Reader(const AngularVelocityTarget& target)
+            : target_(target)
+        {
+        }
+        Eigen::Vector3d at(double time) { return target_.at(time, vectors_, magnitudes_); }
+
+    private:
+        const AngularVelocityTarget& target_;
+        SegmentCursor vectors_;
+        SegmentCursor magnitudes_;
+    };
     double startTime() const { return start_; }
     double endTime() const { return end_; }
 
 private:
     AngularVelocityTarget() = default;
-    Eigen::Vector3d directionAt(double time) const;
-    double magnitudeAt(double time) const;
+    Eigen::Vector3d at(double time, SegmentCursor& vectors, SegmentCursor& magnitudes) const;
 
     // Samples of ω when given that way; otherwise the directions, with magnitudes_ alongside.
     std::vector<TimedVector> vectors_;

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 
 #include <numeric>
+#include <string>
 #include <stdexcept>
 #include <vector>
 
@@ -18,15 +19,22 @@ using RowMajorMap = Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dyna
 
 } // namespace
 
-CompressedCost::CompressedCost(std::unique_ptr<ceres::CostFunction> full)
+CompressedCost::CompressedCost(std::unique_ptr<ceres::CostFunction> full, const std::vector<bool>& heldBlocks)
     : full_(std::move(full))
+    , heldBlocks_(heldBlocks)
 {
     const std::vector<int>& sizes = full_->parameter_block_sizes();
     const int parameters = std::accumulate(sizes.begin(), sizes.end(), 0);
     if (parameters > kMaxParameters)
         throw std::invalid_argument("a compressed cost takes at most " + std::to_string(kMaxParameters) +
                                     " parameters, not " + std::to_string(parameters));
-    set_num_residuals(parameters + 1);
+    if (!heldBlocks.empty() && heldBlocks.size() != sizes.size())
+        throw std::invalid_argument("a compressed cost needs one held flag a parameter block");
+    int free = parameters;
+    for (std::size_t k = 0; k < heldBlocks.size(); ++k)
+        if (heldBlocks[k])
+            free -= sizes[k];
+    set_num_residuals(free + 1);
     *mutable_parameter_block_sizes() = sizes;
 }
 
@@ -53,6 +61,8 @@ bool CompressedCost::Evaluate(double const* const* parameters, double* residuals
     Eigen::Index columns = 0;
     for (std::size_t k = 0; k < sizes.size(); ++k) {
         if (jacobians[k] != nullptr) {
+            if (!heldBlocks_.empty() && heldBlocks_[k])
+                return false; // R has no rows for a held block's columns
             offsets[k] = columns;
             columns += sizes[k];
         }

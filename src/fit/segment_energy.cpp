@@ -1,11 +1,11 @@
 #include "fit/segment_energy.h"
 
-#include "core/position_curve.h"
-
 #include <Eigen/Geometry>
 
 #include <cmath>
 #include <cstddef>
+#include <stdexcept>
+#include <utility>
 
 namespace gyre::fit {
 
@@ -22,32 +22,44 @@ Eigen::Matrix3d crossMatrix(const Eigen::Vector3d& v)
     return m;
 }
 
+// The weights of a one-second segment's basis at u, for a segment of h seconds with 1/h and 1/h²
+// given. The slope weights h₁₀, h₁₁ multiply h·d, since d is a derivative in time, not in u; each
+// derivative in time divides by h once more.
+NodeBasis scaledBasis(const HermiteBasis& basis, double h, double inverse, double inverseSquare)
+{
+    return {{basis.value[0], basis.value[1] * h, basis.value[2], basis.value[3] * h},
+            {basis.first[0] * inverse, basis.first[1], basis.first[2] * inverse, basis.first[3]},
+            {basis.second[0] * inverseSquare, basis.second[1] * inverse, basis.second[2] * inverseSquare,
+             basis.second[3] * inverse}};
+}
+
 } // namespace
 
 NodeBasis nodeBasis(double u, double duration)
 {
-    const HermiteBasis basis = hermiteBasis(u);
-    // The slope weights h₁₀, h₁₁ multiply h·d, since d is a derivative in time, not in u.
-    const std::array<double, 4> slopeScale{1.0, duration, 1.0, duration};
-    NodeBasis node{};
-    for (std::size_t k = 0; k < 4; ++k) {
-        node.value[k] = basis.value[k] * slopeScale[k];
-        node.first[k] = basis.first[k] * slopeScale[k] / duration;
-        node.second[k] = basis.second[k] * slopeScale[k] / (duration * duration);
-    }
-    return node;
+    const double inverse = 1.0 / duration;
+    return scaledBasis(hermiteBasis(u), duration, inverse, inverse * inverse);
 }
 
-SegmentEnergy::SegmentEnergy(double duration, const std::vector<double>& nodes,
-                             const std::vector<double>& quadratureWeights, const std::vector<Eigen::Vector3d>& targets,
-                             const EnergyWeights& weights)
+SegmentQuadrature::SegmentQuadrature(const QuadratureRule& rule)
 {
-    for (std::size_t j = 0; j < nodes.size(); ++j) {
-        const double measure = quadratureWeights[j] * duration;
-        nodes_.push_back({nodeBasis(nodes[j], duration), targets[j], std::sqrt(weights.beta * measure),
-                          std::sqrt(weights.alpha * measure), std::sqrt(weights.unitNorm * measure)});
-    }
-    set_num_residuals(static_cast<int>(nodes_.size()) * kResidualsPerNode);
+    nodes_.reserve(rule.nodes.size());
+    for (std::size_t j = 0; j < rule.nodes.size(); ++j)
+        nodes_.push_back({rule.nodes[j], std::sqrt(rule.weights[j]), hermiteBasis(rule.nodes[j])});
+}
+
+SegmentEnergy::SegmentEnergy(double duration, std::shared_ptr<const SegmentQuadrature> quadrature,
+                             std::vector<Eigen::Vector3d> targets, const EnergyWeights& weights)
+    : duration_(duration)
+    , quadrature_(std::move(quadrature))
+    , targets_(std::move(targets))
+    , angularScale_(std::sqrt(weights.beta * duration))
+    , tangentialScale_(std::sqrt(weights.alpha * duration))
+    , unitScale_(std::sqrt(weights.unitNorm * duration))
+{
+    if (targets_.size() != quadrature_->nodes().size())
+        throw std::invalid_argument("a segment's energy needs one target a quadrature node");
+    set_num_residuals(static_cast<int>(targets_.size()) * kResidualsPerNode);
     *mutable_parameter_block_sizes() = {4, 4, 4, 4};
 }
 
@@ -57,9 +69,14 @@ bool SegmentEnergy::Evaluate(double const* const* parameters, double* residuals,
         Eigen::Map<const Eigen::Vector4d>(parameters[0]), Eigen::Map<const Eigen::Vector4d>(parameters[1]),
         Eigen::Map<const Eigen::Vector4d>(parameters[2]), Eigen::Map<const Eigen::Vector4d>(parameters[3])};
     const Eigen::Matrix4d identity = Eigen::Matrix4d::Identity();
-    for (std::size_t j = 0; j < nodes_.size(); ++j) {
-        const Node& node = nodes_[j];
-        const NodeBasis& b = node.basis;
+    const double inverse = 1.0 / duration_;
+    const double inverseSquare = inverse * inverse;
+    const std::vector<SegmentQuadrature::Node>& nodes = quadrature_->nodes();
+    for (std::size_t j = 0; j < nodes.size(); ++j) {
+        const NodeBasis b = scaledBasis(nodes[j].basis, duration_, inverse, inverseSquare);
+        const double angularScale = angularScale_ * nodes[j].rootWeight;
+        const double tangentialScale = tangentialScale_ * nodes[j].rootWeight;
+        const double unitScale = unitScale_ * nodes[j].rootWeight;
         Eigen::Vector4d q = Eigen::Vector4d::Zero();
         Eigen::Vector4d dq = Eigen::Vector4d::Zero();
         Eigen::Vector4d ddq = Eigen::Vector4d::Zero();
@@ -81,10 +98,10 @@ bool SegmentEnergy::Evaluate(double const* const* parameters, double* residuals,
         const double qDotAcceleration = q.dot(ddq);
 
         const int row = static_cast<int>(j) * kResidualsPerNode;
-        Eigen::Map<Eigen::Vector3d>(residuals + row) = node.angularScale * (omega - node.target);
+        Eigen::Map<Eigen::Vector3d>(residuals + row) = angularScale * (omega - targets_[j]);
         Eigen::Map<Eigen::Vector4d>(residuals + row + 3) =
-            node.tangentialScale * (ddq - (qDotAcceleration / norm2) * q);
-        residuals[row + 7] = node.unitScale * (1.0 - norm2);
+            tangentialScale * (ddq - (qDotAcceleration / norm2) * q);
+        residuals[row + 7] = unitScale * (1.0 - norm2);
         if (jacobians == nullptr)
             continue;
 
@@ -94,15 +111,15 @@ bool SegmentEnergy::Evaluate(double const* const* parameters, double* residuals,
         gByQ << dv, -dw * Eigen::Matrix3d::Identity() - crossMatrix(dv);
         Matrix34 gByDq;
         gByDq << -v, w * Eigen::Matrix3d::Identity() + crossMatrix(v);
-        const Matrix34 omegaByQ = node.angularScale * (2.0 / norm2) * (gByQ - omega * q.transpose());
-        const Matrix34 omegaByDq = node.angularScale * (2.0 / norm2) * gByDq;
+        const Matrix34 omegaByQ = angularScale * (2.0 / norm2) * (gByQ - omega * q.transpose());
+        const Matrix34 omegaByDq = angularScale * (2.0 / norm2) * gByDq;
         // r_T = a − (q·a/|q|²) q with a = q″:
         // ∂r_T/∂q = −((q·a/|q|²) I + q aᵀ/|q|² − 2 (q·a) q qᵀ/|q|⁴),  ∂r_T/∂a = I − q qᵀ/|q|².
         const Eigen::Matrix4d tangentialByQ =
-            -node.tangentialScale * ((qDotAcceleration / norm2) * identity + q * ddq.transpose() / norm2 -
+            -tangentialScale * ((qDotAcceleration / norm2) * identity + q * ddq.transpose() / norm2 -
                                      (2.0 * qDotAcceleration / (norm2 * norm2)) * q * q.transpose());
-        const Eigen::Matrix4d tangentialByDdq = node.tangentialScale * (identity - q * q.transpose() / norm2);
-        const Eigen::RowVector4d unitByQ = -2.0 * node.unitScale * q.transpose();
+        const Eigen::Matrix4d tangentialByDdq = tangentialScale * (identity - q * q.transpose() / norm2);
+        const Eigen::RowVector4d unitByQ = -2.0 * unitScale * q.transpose();
         for (std::size_t k = 0; k < 4; ++k) {
             if (jacobians[k] == nullptr)
                 continue;

@@ -100,8 +100,10 @@ private:
 };
 
 // The compressed form's cost and normal equations against the full form's, for each subset of blocks.
+// Blocks named in `held` are never asked for, as Ceres never asks for a constant block's Jacobian.
 void compareNormalEquations(const ceres::CostFunction& full, const CompressedCost& compressed,
-                            const std::vector<Eigen::VectorXd>& parameters, double tolerance)
+                            const std::vector<Eigen::VectorXd>& parameters, double tolerance,
+                            const std::vector<bool>& held = {})
 {
     const Evaluation plainFull = evaluate(full, parameters, {});
     const Evaluation plainCompressed = evaluate(compressed, parameters, {});
@@ -112,8 +114,13 @@ void compareNormalEquations(const ceres::CostFunction& full, const CompressedCos
     const std::size_t blockCount = parameters.size();
     for (unsigned subset = 1; subset < (1u << blockCount); ++subset) {
         std::vector<bool> wanted(blockCount);
-        for (std::size_t k = 0; k < blockCount; ++k)
+        bool asksHeld = false;
+        for (std::size_t k = 0; k < blockCount; ++k) {
             wanted[k] = ((subset >> k) & 1u) != 0;
+            asksHeld = asksHeld || (wanted[k] && !held.empty() && held[k]);
+        }
+        if (asksHeld)
+            continue;
         const Evaluation a = evaluate(full, parameters, wanted);
         const Evaluation b = evaluate(compressed, parameters, wanted);
         const QString which = QStringLiteral("blocks %1").arg(subset);
@@ -133,6 +140,7 @@ class TestCompressedCost : public QObject {
 private slots:
     void segmentEnergyKeepsCostAndNormalEquations();
     void rankDeficientBlockKeepsCostAndNormalEquations();
+    void heldBlocksHaveNoRows();
 };
 
 void TestCompressedCost::segmentEnergyKeepsCostAndNormalEquations()
@@ -146,8 +154,8 @@ void TestCompressedCost::segmentEnergyKeepsCostAndNormalEquations()
             targets.emplace_back(std::sin(3.0 * u), 2.0 * u, -1.0);
         const double duration = 0.2 + 0.01 * nodes;
         const EnergyWeights weights{0.002, 1.0, 1000.0};
-        const SegmentEnergy full(duration, rule.nodes, rule.weights, targets, weights);
-        const CompressedCost compressed(std::make_unique<SegmentEnergy>(duration, rule.nodes, rule.weights, targets, weights));
+        const SegmentEnergy full(duration, std::make_shared<const SegmentQuadrature>(rule), targets, weights);
+        const CompressedCost compressed(std::make_unique<SegmentEnergy>(duration, std::make_shared<const SegmentQuadrature>(rule), targets, weights));
         QCOMPARE(compressed.num_residuals(), 17);
         QCOMPARE(compressed.parameter_block_sizes(), full.parameter_block_sizes());
         std::vector<Eigen::VectorXd> parameters(4);
@@ -165,6 +173,33 @@ void TestCompressedCost::rankDeficientBlockKeepsCostAndNormalEquations()
     QCOMPARE(compressed.num_residuals(), 6);
     const std::vector<Eigen::VectorXd> parameters{Eigen::Vector2d(0.3, -1.2), Eigen::Vector3d(2.0, 0.5, -0.7)};
     compareNormalEquations(LinearCost(), compressed, parameters, 1e-12);
+}
+
+// A segment between two constrained keys: its values held, its derivatives free. R needs 8 columns
+// and the residual, 9 rows; the normal equations of the free blocks are still the full cost's, and a
+// held block's Jacobian is refused rather than written past the rows.
+void TestCompressedCost::heldBlocksHaveNoRows()
+{
+    const QuadratureRule rule = gaussLegendre(10);
+    std::vector<Eigen::Vector3d> targets;
+    for (const double u : rule.nodes)
+        targets.emplace_back(1.0 - u, 3.0 * u, 0.5);
+    const double duration = 0.21;
+    const EnergyWeights weights{0.002, 1.0, 100.0};
+    const auto quadrature = std::make_shared<const SegmentQuadrature>(rule);
+    const std::vector<bool> held{true, false, true, false};
+    const SegmentEnergy full(duration, quadrature, targets, weights);
+    const CompressedCost compressed(std::make_unique<SegmentEnergy>(duration, quadrature, targets, weights), held);
+    QCOMPARE(compressed.num_residuals(), 9);
+    const std::vector<Eigen::VectorXd> parameters{Eigen::Vector4d(0.9, 0.1, -0.3, 0.2).normalized(),
+                                                  Eigen::Vector4d(0.2, 1.5, -0.4, 0.7),
+                                                  Eigen::Vector4d(0.7, 0.5, 0.1, -0.4).normalized(),
+                                                  Eigen::Vector4d(-0.3, 0.9, 1.1, 0.2)};
+    compareNormalEquations(full, compressed, parameters, 1e-12, held);
+    QVERIFY_THROWS_EXCEPTION(std::runtime_error, evaluate(compressed, parameters, {true, true, false, false}));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             CompressedCost(std::make_unique<SegmentEnergy>(duration, quadrature, targets, weights),
+                                            std::vector<bool>{true, false}));
 }
 
 QTEST_GUILESS_MAIN(TestCompressedCost)

@@ -106,7 +106,7 @@ void TestFitEnergy::residualsSumToTheEnergy()
     std::vector<Eigen::Vector3d> targets;
     for (const double u : rule.nodes)
         targets.emplace_back(std::sin(u), 2.0 * u, -1.0);
-    const SegmentEnergy energy(duration, rule.nodes, rule.weights, targets, weights);
+    const SegmentEnergy energy(duration, std::make_shared<const SegmentQuadrature>(rule), targets, weights);
     const std::array<Eigen::Vector4d, 4> control = randomControl(rng);
     const std::vector<double> residuals = evaluate(energy, control, nullptr);
     double squares = 0.0;
@@ -136,7 +136,7 @@ void TestFitEnergy::jacobiansMatchCentralDifferences()
     const std::vector<Eigen::Vector3d> targets(rule.nodes.size(), Eigen::Vector3d(0.5, -1.0, 2.0));
     for (int trial = 0; trial < 20; ++trial) {
         const double duration = 0.05 + 0.5 * trial / 20.0;
-        const SegmentEnergy energy(duration, rule.nodes, rule.weights, targets, {0.002, 1.0, 100.0});
+        const SegmentEnergy energy(duration, std::make_shared<const SegmentQuadrature>(rule), targets, {0.002, 1.0, 100.0});
         std::array<Eigen::Vector4d, 4> control = randomControl(rng);
         std::array<Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor>, 4> analytic;
         evaluate(energy, control, &analytic);

@@ -8,6 +8,8 @@
 #include <QTest>
 
 #include <cmath>
+#include <random>
+#include <vector>
 #include <numbers>
 
 using namespace gyre::fit;
@@ -35,6 +37,7 @@ private slots:
     void sketchRefusesWhatHasNoMeaning();
     void spreadFollowsArcLength();
     void patternRepeatsAlongTheCurve();
+    void readerGivesTheTargetsValues();
 };
 
 void TestFitTarget::samplesAreLinearBetweenThemselves()
@@ -125,6 +128,38 @@ void TestFitTarget::patternRepeatsAlongTheCurve()
         {0.0, unitAt(0.0, 0.0)}, {1.0, unitAt(0.0, 0.0)}, {6.0, unitAt(1.2, 0.0)}};
     for (const TimedVector& point : applyPattern(withPause, triangle, 3))
         QVERIFY(point.value.allFinite() && std::abs(point.value.norm() - 1.0) < 1e-14);
+}
+
+// The fit reads the target through a Reader, in order; its values must be at()'s to the bit, for
+// sampled and sketched targets, read forward in small and large steps and backward.
+void TestFitTarget::readerGivesTheTargetsValues()
+{
+    std::mt19937_64 rng(8);
+    std::uniform_real_distribution<double> gap(0.001, 0.02);
+    std::normal_distribution<double> normal;
+    std::vector<TimedVector> samples{{0.0, {1.0, 0.0, 0.0}}};
+    std::vector<TimedScalar> magnitudes{{0.0, 1.0}};
+    while (samples.back().time < 20.0) {
+        const Eigen::Vector3d previous = samples.back().value;
+        samples.push_back({samples.back().time + gap(rng),
+                           (previous + 0.05 * Eigen::Vector3d(normal(rng), normal(rng), normal(rng))).normalized()});
+        magnitudes.push_back({magnitudes.back().time + 3.0 * gap(rng), 1.0 + std::abs(normal(rng))});
+    }
+    const AngularVelocityTarget sampled = AngularVelocityTarget::fromSamples(samples);
+    const AngularVelocityTarget sketched = AngularVelocityTarget::fromSketch(samples, magnitudes);
+    for (const AngularVelocityTarget* target : {&sampled, &sketched}) {
+        AngularVelocityTarget::Reader reader(*target);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        double time = -1.0;
+        for (int i = 0; i < 20000; ++i) {
+            const double choice = unit(rng);
+            time += choice < 0.8 ? 0.004 * unit(rng) : choice < 0.9 ? 2.0 * unit(rng) : -1.0 * unit(rng);
+            if (time > 21.0)
+                time = -0.5;
+            const Eigen::Vector3d expected = target->at(time);
+            QCOMPARE(reader.at(time), expected);
+        }
+    }
 }
 
 QTEST_GUILESS_MAIN(TestFitTarget)
