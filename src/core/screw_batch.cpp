@@ -11,9 +11,11 @@
 #include <cstring>
 #include <stdexcept>
 
-// Built with -fno-math-errno and -fno-trapping-math (src/core/CMakeLists.txt), so that std::sqrt is one
-// packed instruction and a select may compute both of its sides. Each loop below runs over the lanes of one block with no branch and no call, so that GCC vectorises
-// it; the table look-ups of the trigonometry are the only loads that are not packed.
+// Each loop below runs over the lanes of one block with no branch and no call, so that GCC vectorises
+// it (checked with -fopt-info-vec and in the disassembly: mulpd, not mulsd). The file is built with
+// -fno-math-errno and -fno-trapping-math (src/core/CMakeLists.txt), so that std::sqrt is one packed
+// instruction and a select may compute both of its sides; the table reads of the fast trigonometry
+// are the only loads done a lane at a time.
 
 namespace gyre {
 
