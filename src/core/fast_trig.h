@@ -54,12 +54,11 @@ constexpr double kRoundingShift = 6755399441055744.0;
 
 } // namespace fast_trig_detail
 
-// sin x and cos x, with an absolute error of a few 1e-16 for |x| ≤ 1024; beyond, the standard library's.
-inline SinCos fastSinCos(double x)
+// fastSinCos for |x| ≤ 1024, with no branch: the batch screw (screw_batch.cpp) calls it in loops that
+// GCC vectorises, and leaves larger arguments to the single screw.
+inline SinCos fastSinCosReduced(double x)
 {
     using namespace fast_trig_detail;
-    if (!(std::abs(x) <= kLargestReduced)) [[unlikely]]
-        return {std::sin(x), std::cos(x)};
     const double k = (x * kStepsPerRadian + kRoundingShift) - kRoundingShift;
     const double r = (x - k * kStepHead) - k * kStepTail; // |r| ≤ π/256
     // Taylor series to r⁷ and r⁶; the first terms left out, r⁹/9! and r⁸/8!, are below 2e-20.
@@ -69,10 +68,19 @@ inline SinCos fastSinCos(double x)
     const double r4 = r2 * r2;
     const double sinR = r + (r * r2) * ((s3 + r2 * s5) + r4 * s7);
     const double cosR = 1.0 + r2 * ((c2 + r2 * c4) + r4 * c6);
-    const auto j = static_cast<std::size_t>(static_cast<std::int64_t>(k) & (kStepsPerTurn - 1));
+    // |k| ≤ 1024·128/π fits 32 bits, which SSE2 converts two at a time.
+    const auto j = static_cast<std::size_t>(static_cast<std::int32_t>(k) & (kStepsPerTurn - 1));
     const double sinK = kSinCosTable.sin[j];
     const double cosK = kSinCosTable.cos[j];
     return {sinK * cosR + cosK * sinR, cosK * cosR - sinK * sinR};
+}
+
+// sin x and cos x, with an absolute error of a few 1e-16 for |x| ≤ 1024; beyond, the standard library's.
+inline SinCos fastSinCos(double x)
+{
+    if (!(std::abs(x) <= fast_trig_detail::kLargestReduced)) [[unlikely]]
+        return {std::sin(x), std::cos(x)};
+    return fastSinCosReduced(x);
 }
 
 // The angle a ∈ [0, π/2] of the point (cos a, sin a) of the unit circle, both coordinates
@@ -86,7 +94,7 @@ inline double fastAngleOnUnitCircle(double cosine, double sine)
 {
     using namespace fast_trig_detail;
     const bool steep = sine > cosine; // a > π/4
-    const auto bin = static_cast<std::size_t>(static_cast<std::int64_t>(std::min(sine, cosine) * kAngleBins));
+    const auto bin = static_cast<std::size_t>(static_cast<std::int32_t>(std::min(sine, cosine) * kAngleBins));
     const TableAngle& below = kAngleTable[bin + (steep ? kAngleBinsPerHalf : 0)];
     const double sigma = sine * below.cos - cosine * below.sin;
     // asin σ = σ + σ³/6 + 3σ⁵/40 + 5σ⁷/112; the first term left out, 35σ⁹/1152, is below 2e-22.

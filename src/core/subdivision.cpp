@@ -1,9 +1,11 @@
 #include "core/subdivision.h"
 
 #include "core/quaternion_math.h"
+#include "core/screw_batch.h"
 
 #include <array>
 #include <limits>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
@@ -35,9 +37,55 @@ private:
     Eigen::Vector3d log_;
 };
 
-// One Split&Tweak level from `in` to `out`; `extended` is scratch space.
-template <class Segment>
-void splitAndTweak(const std::vector<Pose>& in, std::vector<Pose>& extended, std::vector<Pose>& out,
+// A scheme's two-pose primitive on many pairs at once, with screw_batch.h's interface: the screw, or
+// the decoupled slerp and line.
+struct ScrewPrimitive {
+    static void at(std::span<const Pose> from, std::span<const Pose> to, std::span<const double> times,
+                   std::span<Pose> out)
+    {
+        screwsAt(from, to, times, out);
+    }
+    static void midpoints(std::span<const Pose> from, std::span<const Pose> to, std::span<Pose> out)
+    {
+        screwMidpoints(from, to, out);
+    }
+};
+
+struct DecoupledPrimitive {
+    static void at(std::span<const Pose> from, std::span<const Pose> to, std::span<const double> times,
+                   std::span<Pose> out)
+    {
+        for (std::size_t i = 0; i < from.size(); ++i) {
+            const DecoupledSegment segment(from[i], to[i]);
+            for (std::size_t k = 0; k < times.size(); ++k)
+                out[k * from.size() + i] = segment.at(times[k]);
+        }
+    }
+    static void midpoints(std::span<const Pose> from, std::span<const Pose> to, std::span<Pose> out)
+    {
+        for (std::size_t i = 0; i < from.size(); ++i)
+            out[i] = DecoupledSegment::midpoint(from[i], to[i]);
+    }
+};
+
+// out[2i + parity] = values[i] for every value.
+void interleave(std::span<const Pose> values, std::size_t parity, std::vector<Pose>& out)
+{
+    for (std::size_t i = 0; i < values.size(); ++i)
+        out[2 * i + parity] = values[i];
+}
+
+// The times at which each scheme evaluates the edges' screws.
+constexpr std::array kFourPointTimes{9.0 / 8.0, -1.0 / 8.0};
+constexpr std::array kHalfTime{0.5};
+constexpr std::array kFourPointBTweak{9.0 / 8.0};
+constexpr std::array kBSplineTimes{3.0 / 4.0, 1.0 / 4.0, 0.5};
+constexpr std::array kJarekTimes{7.0 / 8.0, 1.0 / 8.0, 17.0 / 16.0, -1.0 / 16.0};
+
+// One Split&Tweak level from `in` to `out`, each rule applied to every edge at once; `scratch` holds
+// the level's intermediate poses.
+template <class Primitive>
+void splitAndTweak(const std::vector<Pose>& in, SubdivisionScratch& scratch, std::vector<Pose>& out,
                    const SubdivisionSettings& settings)
 {
     const std::size_t n = in.size();
@@ -46,8 +94,15 @@ void splitAndTweak(const std::vector<Pose>& in, std::vector<Pose>& extended, std
         out = in;
         return;
     }
+    // s(from, t, to) for one pair.
+    const auto single = [](const Pose& from, double t, const Pose& to) {
+        Pose result;
+        Primitive::at({&from, 1}, {&to, 1}, {&t, 1}, {&result, 1});
+        return result;
+    };
     // extended[i + 1] = in[i], with the neighbours the rules reach past either end: the wrapped poses
     // of a cycle, or the ghost poses of the dummy screws of an open sequence.
+    std::vector<Pose>& extended = scratch.extended;
     extended.clear();
     if (cyclic) {
         extended.push_back(in[n - 1]);
@@ -55,41 +110,58 @@ void splitAndTweak(const std::vector<Pose>& in, std::vector<Pose>& extended, std
         extended.push_back(in[0]);
         extended.push_back(in[1 % n]);
     } else {
-        extended.push_back(Segment(in[1], in[0]).at(2.0));
+        extended.push_back(single(in[1], 2.0, in[0]));
         extended.insert(extended.end(), in.begin(), in.end());
-        extended.push_back(Segment(in[n - 2], in[n - 1]).at(2.0));
+        extended.push_back(single(in[n - 2], 2.0, in[n - 1]));
     }
 
     out.resize(cyclic ? 2 * n : 2 * n - 1);
     const std::size_t newPoses = cyclic ? n : n - 1;
-    // At in[i]: previous joins in[i−1]→in[i], current in[i]→in[i+1], next in[i+1]→in[i+2]. The rules
-    // of the paper are written with s(Lb, u, La) = s(La, 1 − u, Lb), so every screw is an edge's.
-    Segment previous(extended[0], extended[1]);
-    Segment current(extended[1], extended[2]);
-    for (std::size_t i = 0; i < newPoses; ++i) {
-        const Segment next(extended[i + 2], extended[i + 3]);
-        Pose& old = out[2 * i];
-        Pose& inserted = out[2 * i + 1];
-        switch (settings.scheme) {
-        case SubdivisionScheme::FourPoint:
-            old = in[i];
-            inserted = Segment::midpoint(previous.at(9.0 / 8.0), next.at(-1.0 / 8.0));
-            break;
-        case SubdivisionScheme::FourPointB:
-            old = in[i];
-            inserted = Segment(Segment::midpoint(extended[i], extended[i + 3]), current.at(0.5)).at(9.0 / 8.0);
-            break;
-        case SubdivisionScheme::BSpline:
-            old = Segment::midpoint(previous.at(3.0 / 4.0), current.at(1.0 / 4.0));
-            inserted = current.at(0.5);
-            break;
-        case SubdivisionScheme::Jarek:
-            old = Segment::midpoint(previous.at(7.0 / 8.0), current.at(1.0 / 8.0));
-            inserted = Segment::midpoint(previous.at(17.0 / 16.0), next.at(-1.0 / 16.0));
-            break;
-        }
-        previous = current;
-        current = next;
+    // Edge j joins extended[j] to extended[j + 1]. At in[i] the rules use edge i (in[i−1]→in[i]),
+    // i + 1 (in[i]→in[i+1]) and i + 2 (in[i+1]→in[i+2]); the rules of the paper are written with
+    // s(Lb, u, La) = s(La, 1 − u, Lb), so every screw is an edge's.
+    const std::span<const Pose> poses(extended);
+    const std::size_t edges = newPoses + 2;
+    // Every edge's screw at each of `times`; row(k, first) is then edge first + i at times[k], for each i.
+    const auto evaluateEdges = [&](std::span<const double> times) {
+        scratch.edgePoses.resize(edges * times.size());
+        Primitive::at(poses.first(edges), poses.subspan(1, edges), times, scratch.edgePoses);
+    };
+    const auto row = [&](std::size_t k, std::size_t first) {
+        return std::span<const Pose>(scratch.edgePoses).subspan(k * edges + first, newPoses);
+    };
+    std::vector<Pose>& tweaked = scratch.tweaked;
+    tweaked.resize(newPoses);
+    const auto midpoints = [&](std::span<const Pose> from, std::span<const Pose> to, std::size_t parity) {
+        Primitive::midpoints(from, to, tweaked);
+        interleave(tweaked, parity, out);
+    };
+    switch (settings.scheme) {
+    case SubdivisionScheme::FourPoint: // s(s(La, 9/8, Lb), 1/2, s(Ld, 9/8, Lc))
+        interleave(std::span(in).first(newPoses), 0, out);
+        evaluateEdges(kFourPointTimes);
+        midpoints(row(0, 0), row(1, 2), 1);
+        break;
+    case SubdivisionScheme::FourPointB: { // s(s(La, 1/2, Ld), 9/8, s(Lb, 1/2, Lc))
+        interleave(std::span(in).first(newPoses), 0, out);
+        std::vector<Pose>& outer = scratch.outer;
+        outer.resize(newPoses);
+        Primitive::midpoints(poses.first(newPoses), poses.subspan(3, newPoses), outer);
+        evaluateEdges(kHalfTime);
+        Primitive::at(outer, row(0, 1), kFourPointBTweak, tweaked);
+        interleave(tweaked, 1, out);
+        break;
+    }
+    case SubdivisionScheme::BSpline: // s(s(La, 3/4, Lb), 1/2, s(Lb, 1/4, Lc)) and s(Lb, 1/2, Lc)
+        evaluateEdges(kBSplineTimes);
+        midpoints(row(0, 0), row(1, 1), 0);
+        interleave(row(2, 1), 1, out);
+        break;
+    case SubdivisionScheme::Jarek:
+        evaluateEdges(kJarekTimes);
+        midpoints(row(0, 0), row(1, 1), 0);
+        midpoints(row(2, 0), row(3, 2), 1);
+        break;
     }
     if (!cyclic) {
         // The ghosts make every rule map the ends to themselves; keep them bit for bit.
@@ -139,9 +211,9 @@ const std::vector<Pose>& PolyscrewSubdivider::subdivide(const std::vector<Pose>&
     current_.assign(controlPoses.begin(), controlPoses.end());
     for (int level = 0; level < settings.levels; ++level) {
         if (settings.decoupled)
-            splitAndTweak<DecoupledSegment>(current_, extended_, next_, settings);
+            splitAndTweak<DecoupledPrimitive>(current_, scratch_, next_, settings);
         else
-            splitAndTweak<Screw>(current_, extended_, next_, settings);
+            splitAndTweak<ScrewPrimitive>(current_, scratch_, next_, settings);
         std::swap(current_, next_);
     }
     return current_;

@@ -54,6 +54,15 @@ struct SubdivisionSettings {
 // (n − 1)·2^L + 1 for an open sequence. nullopt if that does not fit in std::size_t.
 std::optional<std::size_t> subdividedPoseCount(std::size_t controlPoses, int levels, bool cyclic);
 
+// The poses a level computes on its way, kept by PolyscrewSubdivider so that they allocate only as
+// they grow.
+struct SubdivisionScratch {
+    std::vector<Pose> extended;  // the level's poses with the neighbours the rules reach past either end
+    std::vector<Pose> edgePoses; // every edge's screw at the scheme's times
+    std::vector<Pose> outer;     // FourPointB's midpoints of the outer poses
+    std::vector<Pose> tweaked;   // one rule's new poses
+};
+
 // Subdivides repeatedly into buffers it keeps, so that re-subdividing while the artist drags a pose
 // allocates nothing once the buffers have grown. Output pose i·2^L is the image of control pose i.
 class PolyscrewSubdivider {
@@ -64,7 +73,7 @@ public:
 private:
     std::vector<Pose> current_;
     std::vector<Pose> next_;
-    std::vector<Pose> extended_;
+    SubdivisionScratch scratch_;
 };
 
 // One-shot convenience over PolyscrewSubdivider.

@@ -7,6 +7,7 @@
 #include "core/orientation_curves.h"
 #include "core/quaternion_math.h"
 #include "core/screw.h"
+#include "core/screw_batch.h"
 #include "core/subdivision.h"
 #include "core/torque_free.h"
 #include "fit/angular_velocity_fit.h"
@@ -34,8 +35,10 @@
 #include <QTemporaryDir>
 
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <random>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -103,6 +106,37 @@ void BM_Screw(benchmark::State& state)
     state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_Screw);
+
+// BM_Screw's work on all kPairs pairs at once (screw_batch.h): every screw built and evaluated at one
+// t, which changes from one iteration to the next. Per screw: items are screws.
+template <class Batch>
+void screwBatchBenchmark(benchmark::State& state, Batch batch)
+{
+    const PosePairs pairs = randomPairs();
+    std::vector<Pose> out(kPairs);
+    std::size_t i = 0;
+    for (auto _ : state) {
+        batch(pairs.from, pairs.to, std::span(&pairs.t[i], 1), out);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+        i = (i + 1) & (kPairs - 1);
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kPairs));
+}
+
+// The version this processor runs (AVX2 where it has it).
+void BM_ScrewBatch(benchmark::State& state)
+{
+    screwBatchBenchmark(state, gyre::screwsAt);
+}
+BENCHMARK(BM_ScrewBatch);
+
+// The portable version, two doubles a register (SSE2): the one the floors below are for.
+void BM_ScrewBatchPortable(benchmark::State& state)
+{
+    screwBatchBenchmark(state, gyre::screw_batch_detail::screwsAtPortable);
+}
+BENCHMARK(BM_ScrewBatchPortable);
 
 // The screw of one pair computed once, then evaluated at a different t every iteration.
 void BM_ScrewEvaluate(benchmark::State& state)

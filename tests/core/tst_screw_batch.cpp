@@ -1,0 +1,243 @@
+// The batch screw (screw_batch.h) against the single screw (screw.h) and against the SE(3) geodesic
+// La·exp(t·log(La⁻¹Lb)) written in the test with 4×4 matrices, in both versions: the lanes this
+// processor runs (AVX2 where it has them) and the portable ones. The pairs mix random poses with the
+// cases the lanes hand to the single screw or meet at the edge of their formulas (identical poses,
+// pure translations, rotations tending to zero, rotations near a half turn, large translations, t·a
+// beyond the fast sine's range), so that one block holds lanes of every kind; and every batch length
+// around the block size.
+
+#include "core/screw.h"
+#include "core/screw_batch.h"
+
+#include "core_test_support.h"
+
+#include <QObject>
+#include <QTest>
+
+#include <algorithm>
+#include <span>
+#include <stdexcept>
+#include <vector>
+
+using namespace gyre;
+using namespace gyre::test;
+
+namespace {
+
+// The bound the batch keeps to the single screw: on each quaternion coefficient, and on each position
+// coordinate relative to max(1, |coordinate|).
+constexpr double kBound = 1e-15;
+
+const std::vector<double> kTimes = {-0.5, -1.0 / 16, 0.0, 0.25, 0.5, 0.75, 1.0, 9.0 / 8, 2.0};
+
+using ScrewsAt = void (*)(std::span<const Pose>, std::span<const Pose>, std::span<const double>, std::span<Pose>);
+using Midpoints = void (*)(std::span<const Pose>, std::span<const Pose>, std::span<Pose>);
+
+struct Pairs {
+    std::vector<Pose> from;
+    std::vector<Pose> to;
+};
+
+// b's pose relative to a: a's orientation turned by `rotation` in its own frame, moved by `translation`.
+Pose compose(const Pose& a, const Eigen::Quaterniond& rotation, const Eigen::Vector3d& translation)
+{
+    return {a.orientation * rotation, a.orientation * translation + a.position};
+}
+
+Pairs mixedPairs()
+{
+    Random random(2111);
+    Pairs pairs;
+    const auto add = [&](const Pose& a, const Pose& b) {
+        pairs.from.push_back(a);
+        pairs.to.push_back(b);
+        // A random pair after each, so that the special lanes share blocks with ordinary ones.
+        pairs.from.push_back(random.pose(5.0));
+        pairs.to.push_back(random.pose(5.0));
+    };
+    for (int i = 0; i < 100; ++i)
+        add(random.pose(5.0), random.pose(5.0));
+    for (int i = 0; i < 6; ++i) {
+        const Pose a = random.pose(5.0);
+        add(a, a);
+        add(a, {negated(a.orientation), a.position});
+        add(a, {a.orientation, a.position + random.vector(3.0)});
+        add(a, {negated(a.orientation), a.position + random.vector(3.0)});
+    }
+    for (double angle : {1e-3, 1e-7, 1e-10, 1e-14, 1e-150, 1e-200}) // the last two below kNoRotation
+        for (int i = 0; i < 4; ++i) {
+            const Pose a = random.pose(5.0);
+            add(a, compose(a, axisAngleQuaternion(random.unitVector(), angle), i % 2 ? random.vector(3.0) : Eigen::Vector3d::Zero()));
+        }
+    for (double delta : {1e-3, 1e-6, 1e-8, 0.0})
+        for (int i = 0; i < 4; ++i) {
+            const Pose a = random.pose(5.0);
+            add(a, compose(a, axisAngleQuaternion(random.unitVector(), kPi - delta), i % 2 ? random.vector(3.0) : Eigen::Vector3d::Zero()));
+        }
+    for (double scale : {1e3, 1e6})
+        for (int i = 0; i < 4; ++i)
+            add(random.pose(scale), random.pose(scale));
+    return pairs;
+}
+
+// The larger of the coefficients' difference and the coordinates' relative difference.
+double difference(const Pose& got, const Pose& expected)
+{
+    const double orientation = (got.orientation.coeffs() - expected.orientation.coeffs()).cwiseAbs().maxCoeff();
+    double position = 0.0;
+    for (int c = 0; c < 3; ++c)
+        position = std::max(position, std::abs(got.position[c] - expected.position[c]) / std::max(1.0, std::abs(expected.position[c])));
+    return std::max(orientation, position);
+}
+
+void addVersions()
+{
+    QTest::addColumn<ScrewsAt>("screws");
+    QTest::addColumn<Midpoints>("midpoints");
+    QTest::newRow("this processor's") << ScrewsAt(screwsAt) << Midpoints(screwMidpoints);
+    QTest::newRow("portable") << ScrewsAt(screw_batch_detail::screwsAtPortable)
+                              << Midpoints(screw_batch_detail::screwMidpointsPortable);
+}
+
+} // namespace
+
+Q_DECLARE_METATYPE(ScrewsAt)
+Q_DECLARE_METATYPE(Midpoints)
+
+class TestScrewBatch : public QObject {
+    Q_OBJECT
+
+private slots:
+    void matchesTheSingleScrew_data() { addVersions(); }
+    void matchesTheSingleScrew();
+    void midpointsMatchTheSingleScrew_data() { addVersions(); }
+    void midpointsMatchTheSingleScrew();
+    void followsTheGeodesic_data() { addVersions(); }
+    void followsTheGeodesic();
+    void everyLength_data() { addVersions(); }
+    void everyLength();
+    void beyondTheFastSineRange_data() { addVersions(); }
+    void beyondTheFastSineRange();
+    void refusesSpansOfDifferentLengths();
+};
+
+void TestScrewBatch::matchesTheSingleScrew()
+{
+    QFETCH(ScrewsAt, screws);
+    const Pairs pairs = mixedPairs();
+    const std::size_t n = pairs.from.size();
+    std::vector<Pose> out(n * kTimes.size());
+    screws(pairs.from, pairs.to, kTimes, out);
+    double largest = 0.0;
+    for (std::size_t k = 0; k < kTimes.size(); ++k)
+        for (std::size_t i = 0; i < n; ++i) {
+            const Pose expected = Screw(pairs.from[i], pairs.to[i]).at(kTimes[k]);
+            const double error = difference(out[k * n + i], expected);
+            largest = std::max(largest, error);
+            GYRE_CHECK(error <= kBound, QStringLiteral("pair %1, t %2: difference %3\n   got      %4\n   expected %5")
+                                            .arg(i).arg(str(kTimes[k]), str(error), str(out[k * n + i]), str(expected)));
+        }
+    qInfo("largest difference from the single screw: %g", largest);
+}
+
+void TestScrewBatch::midpointsMatchTheSingleScrew()
+{
+    QFETCH(Midpoints, midpoints);
+    const Pairs pairs = mixedPairs();
+    std::vector<Pose> out(pairs.from.size());
+    midpoints(pairs.from, pairs.to, out);
+    double largest = 0.0;
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        const Pose expected = Screw::midpoint(pairs.from[i], pairs.to[i]);
+        const double error = difference(out[i], expected);
+        largest = std::max(largest, error);
+        GYRE_CHECK(error <= kBound, QStringLiteral("pair %1: difference %2\n   got      %3\n   expected %4")
+                                        .arg(i).arg(str(error), str(out[i]), str(expected)));
+    }
+    qInfo("largest difference from the single midpoint: %g", largest);
+}
+
+void TestScrewBatch::followsTheGeodesic()
+{
+    QFETCH(ScrewsAt, screws);
+    QFETCH(Midpoints, midpoints);
+    const Pairs pairs = mixedPairs();
+    const std::size_t n = pairs.from.size();
+    std::vector<Pose> out(n * kTimes.size());
+    screws(pairs.from, pairs.to, kTimes, out);
+    std::vector<Pose> middles(n);
+    midpoints(pairs.from, pairs.to, middles);
+    for (std::size_t i = 0; i < n; ++i) {
+        // A half turn exactly has two geodesics, one each way round; the screw takes either.
+        if (kPi - angleBetween(pairs.from[i].orientation, pairs.to[i].orientation) < 1e-12)
+            continue;
+        for (std::size_t k = 0; k < kTimes.size(); ++k) {
+            const double error = poseMatrixDistance(out[k * n + i], geodesic(pairs.from[i], pairs.to[i], kTimes[k]));
+            GYRE_CHECK(error < 1e-9, QStringLiteral("pair %1, t %2: %3 from the geodesic").arg(i).arg(str(kTimes[k]), str(error)));
+        }
+        const double error = poseMatrixDistance(middles[i], geodesic(pairs.from[i], pairs.to[i], 0.5));
+        GYRE_CHECK(error < 1e-9, QStringLiteral("pair %1: midpoint %2 from the geodesic").arg(i).arg(str(error)));
+    }
+}
+
+void TestScrewBatch::everyLength()
+{
+    QFETCH(ScrewsAt, screws);
+    QFETCH(Midpoints, midpoints);
+    Random random(2112);
+    for (std::size_t n = 0; n <= 26; ++n) {
+        Pairs pairs;
+        for (std::size_t i = 0; i < n; ++i) {
+            pairs.from.push_back(random.pose(5.0));
+            pairs.to.push_back(random.pose(5.0));
+        }
+        // Guards past the end of each output: the batch writes no pose beyond its span.
+        const Pose guard{Eigen::Quaterniond(0.5, 0.5, 0.5, 0.5), Eigen::Vector3d(7.0, 8.0, 9.0)};
+        std::vector<Pose> out(2 * n + 1, guard);
+        screws(pairs.from, pairs.to, std::span(kTimes).first(2), std::span(out).first(2 * n));
+        std::vector<Pose> middles(n + 1, guard);
+        midpoints(pairs.from, pairs.to, std::span(middles).first(n));
+        GYRE_CHECK(difference(out.back(), guard) == 0.0 && difference(middles.back(), guard) == 0.0,
+                   QStringLiteral("%1 pairs: a pose written past the end").arg(n));
+        for (std::size_t i = 0; i < n; ++i) {
+            const Screw screw(pairs.from[i], pairs.to[i]);
+            for (std::size_t k = 0; k < 2; ++k)
+                GYRE_CHECK(difference(out[k * n + i], screw.at(kTimes[k])) <= kBound,
+                           QStringLiteral("%1 pairs: pair %2 at t %3").arg(n).arg(i).arg(str(kTimes[k])));
+            GYRE_CHECK(difference(middles[i], Screw::midpoint(pairs.from[i], pairs.to[i])) <= kBound,
+                       QStringLiteral("%1 pairs: midpoint %2").arg(n).arg(i));
+        }
+    }
+}
+
+void TestScrewBatch::beyondTheFastSineRange()
+{
+    QFETCH(ScrewsAt, screws);
+    // Half-angles near π/2 at t = 2000 put t·a past 1024 in most lanes, but not in the slow ones.
+    const Pairs pairs = mixedPairs();
+    const std::size_t n = pairs.from.size();
+    const std::vector<double> times = {2000.0, -3000.0};
+    std::vector<Pose> out(n * times.size());
+    screws(pairs.from, pairs.to, times, out);
+    for (std::size_t k = 0; k < times.size(); ++k)
+        for (std::size_t i = 0; i < n; ++i) {
+            const Pose expected = Screw(pairs.from[i], pairs.to[i]).at(times[k]);
+            GYRE_CHECK(difference(out[k * n + i], expected) <= kBound,
+                       QStringLiteral("pair %1, t %2: %3, expected %4").arg(i).arg(str(times[k]), str(out[k * n + i]), str(expected)));
+        }
+}
+
+void TestScrewBatch::refusesSpansOfDifferentLengths()
+{
+    const std::vector<Pose> three(3);
+    const std::vector<Pose> two(2);
+    std::vector<Pose> out(3);
+    const std::vector<double> times = {0.5};
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, screwsAt(three, two, times, out));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, screwsAt(three, three, times, std::span(out).first(2)));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, screwMidpoints(three, two, out));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, screwMidpoints(three, three, std::span(out).first(2)));
+}
+
+QTEST_APPLESS_MAIN(TestScrewBatch)
+#include "tst_screw_batch.moc"
