@@ -203,17 +203,7 @@ private slots:
         const std::size_t pathPoints = ids.size() * app::pathTimes(document.scene()).size();
         QTRY_COMPARE_WITH_TIMEOUT(viewport->pathPointCount(), pathPoints, 60000);
         const double allSelectedPaintMs = medianTime([&] { viewport->grabFramebuffer(); });
-        frames.clear();
-        window.playback().play();
-        clock.restart();
-        while (clock.elapsed() < kPlayingMilliseconds)
-            QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
-        const double allSelectedSeconds = static_cast<double>(clock.nsecsElapsed()) / 1e9;
-        window.playback().pause();
-        std::printf("every joint selected, %zu path points: viewport drawn %.2f ms; playing %.1f current times a second, "
-                    "the viewport's readout %.1f\n",
-                    pathPoints, allSelectedPaintMs, static_cast<double>(frames.count()) / allSelectedSeconds, viewportFps);
-        QVERIFY(frames.count() > 0);
+        std::printf("every joint selected, %zu path points: viewport drawn %.2f ms\n", pathPoints, allSelectedPaintMs);
     }
 
     // The Graph Editor with a bone of the capture selected: sampling its channels (the editor's job,
