@@ -19,6 +19,7 @@
 #include <QElapsedTimer>
 #include <QImage>
 #include <QMouseEvent>
+#include <QScopeGuard>
 #include <QSettings>
 #include <QTest>
 
@@ -310,8 +311,16 @@ private slots:
     {
         Session session;
         QVERIFY(QTest::qWaitForWindowExposed(&session.window));
+        // Hidden for this test alone: the View menu's choices are kept in the settings the later tests read.
+        std::vector<QAction*> hiddenHere;
         for (const char* name : {"actionShowTrail", "actionShowGhost", "actionShowControlPoses"})
-            session.window.findChild<QAction*>(QLatin1String(name))->setChecked(false);
+            hiddenHere.push_back(session.window.findChild<QAction*>(QLatin1String(name)));
+        const auto showAgain = qScopeGuard([&] {
+            for (QAction* action : hiddenHere)
+                action->setChecked(true);
+        });
+        for (QAction* action : hiddenHere)
+            action->setChecked(false);
         QTRY_VERIFY(session.viewport->pathPointCount() > 100);
         const auto yellowPixels = [](const QImage& image) {
             int count = 0;

@@ -79,7 +79,7 @@ public:
     // The world paths of the selected objects' mesh centres over the scene's time range (centre_path.h: the
     // active object's first, within its budget), as last sampled; none without a selected object.
     const std::vector<std::vector<Eigen::Vector3f>>& trajectories() const { return trajectories_; }
-    // Whether the paths changed since the last call, which then uploads them.
+    // Whether the paths changed since the last call (the viewport then uploads them).
     bool takeTrajectoriesChange() { return std::exchange(trajectoriesChanged_, false); }
     // Whether the paths are being sampled anew (after a change of the motion, the selection or the scene's
     // range): trajectories() is then a moment behind.

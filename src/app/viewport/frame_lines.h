@@ -40,7 +40,7 @@ struct LineRange {
 struct FrameLines {
     std::vector<LineVertex> vertices;
     LineRange grid, axes;             // lines, depth-tested, before the meshes
-    bool paths = false;               // the centre paths as last uploaded (SceneRenderer::setPaths), drawn with the grid
+    bool drawPaths = false;           // the centre paths as last uploaded (SceneRenderer::setPaths), with the grid
     LineRange handles, handlePoints;  // lines and points, on top of everything
     LineRange physics;                // lines on top: angular momentum, principal axes
 };

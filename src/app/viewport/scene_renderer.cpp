@@ -389,10 +389,10 @@ void SceneRenderer::drawFrame(const Eigen::Matrix4d& viewProjectionMatrix, const
     drawLines(GL_LINES, lines.grid);
     drawLines(GL_LINES, lines.axes);
     lineArray_->release();
-    if (lines.paths && !pathFirsts_.empty()) {
+    if (lines.drawPaths && !pathFirsts_.empty()) {
         pathArray_->bind();
-        desktopGl_->glMultiDrawArrays(GL_LINE_STRIP, pathFirsts_.data(), pathCounts_.data(),
-                                      static_cast<GLsizei>(pathFirsts_.size()));
+        for (std::size_t i = 0; i < pathFirsts_.size(); ++i)
+            glDrawArrays(GL_LINE_STRIP, pathFirsts_[i], pathCounts_[i]);
         pathArray_->release();
     }
 

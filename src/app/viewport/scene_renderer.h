@@ -1,7 +1,7 @@
 #pragma once
 // The viewport's OpenGL side: the mesh and line shaders, each mesh's buffers (uploaded on first use,
 // dropped when no object holds the mesh any more), the instance buffers of the trail and the control
-// poses, and one frame's drawing in its order: lines under the meshes, the objects, the translucent
+// poses, the centre paths (uploaded when they change), and one frame's drawing in its order: lines under the meshes, the objects, the translucent
 // trail, control poses and ghost, and the handles on top. It decides nothing about what is shown:
 // the viewport gathers that from the document, its motion and the selection.
 
@@ -80,7 +80,7 @@ public:
     // frame its FrameMeshes::trails entry gives.
     void setTrail(const std::vector<float>& matrices);
     // Uploads the selected objects' centre paths, each drawn as one line strip in `color` in the frames whose
-    // FrameLines::paths is set, until the next call: they change with the motion or the selection, not with
+    // FrameLines::drawPaths is set, until the next call: they change with the motion or the selection, not with
     // the current time.
     void setPaths(const std::vector<std::vector<Eigen::Vector3f>>& paths, const Rgba& color);
 

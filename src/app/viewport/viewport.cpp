@@ -464,7 +464,7 @@ void Viewport::buildLines()
     lines_.grid = rangeFrom(0);
 
     // The selected objects' paths, uploaded when they change (paintGL).
-    lines_.paths = showTrajectory_;
+    lines_.drawPaths = showTrajectory_;
 
     std::size_t first = vertices.size();
     // Each empty as Blender's plain axes: three lines through its origin.
@@ -598,7 +598,7 @@ void Viewport::paintGL()
     drawnPathPoints_ = 0;
     if (showTrajectory_)
         for (const std::vector<Eigen::Vector3f>& path : drawn_.trajectories())
-            drawnPathPoints_ += path.size();
+            drawnPathPoints_ += path.size() >= 2 ? path.size() : 0; // as SceneRenderer::setPaths draws them
     drewGhost_ = meshes.ghost.has_value();
 }
 
