@@ -35,6 +35,7 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
             [this](std::uint64_t, const std::vector<jobs::SubdivisionJob::SubdividedPoses>& poses, qint64 nanoseconds) {
                 subdivisionMilliseconds_ = double(nanoseconds) / 1e6;
                 subdivisionLatencyMilliseconds_ = double(sinceTrailRequest_.nsecsElapsed()) / 1e6;
+                ++trailWork_.screwAnswers;
                 receiveScrewTrails(poses);
             });
     connect(&subdivision_, &jobs::SubdivisionJob::failed, this, [this](std::uint64_t, const QString& reason) {
@@ -269,6 +270,9 @@ void DrawnMotion::receiveScrewTrails(const std::vector<jobs::SubdivisionJob::Sub
 
 void DrawnMotion::receiveSampled(Sampled sampled)
 {
+    ++trailWork_.sampledAnswers;
+    if (sampled.paths)
+        ++trailWork_.pathAnswers;
     sampledTrails_ = std::move(sampled.trails);
     if (sampled.paths) {
         trajectories_ = std::move(*sampled.paths);
@@ -294,6 +298,7 @@ void DrawnMotion::composeTrails()
         if (!trail.poses.empty())
             append(trail.object, trail.poses, false);
     trailChanged_ = true;
+    ++trailWork_.composes;
 }
 
 } // namespace gyre::app

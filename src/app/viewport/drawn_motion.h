@@ -75,6 +75,16 @@ public:
     // The worker's time for the newest screw trails, and the time from their request to their arrival.
     double subdivisionMilliseconds() const { return subdivisionMilliseconds_; }
     double subdivisionLatencyMilliseconds() const { return subdivisionLatencyMilliseconds_; }
+    // What following the document has cost since this was made: how many times the trails were composed (each
+    // compose is uploaded whole at the next frame drawn) and how many answers each worker's job delivered.
+    // tst_drawn_motion counts them over a drag and over playback.
+    struct TrailWork {
+        std::uint64_t composes = 0;
+        std::uint64_t screwAnswers = 0;
+        std::uint64_t sampledAnswers = 0;
+        std::uint64_t pathAnswers = 0;
+    };
+    const TrailWork& trailWork() const { return trailWork_; }
 
     // The world paths of the selected objects' mesh centres over the scene's time range (centre_path.h: the
     // active object's first, within its budget), as last sampled; none without a selected object.
@@ -148,6 +158,7 @@ private:
     std::vector<std::vector<Eigen::Vector3f>> trajectories_;
     bool trajectoriesStale_ = true;
 
+    TrailWork trailWork_;
     double subdivisionMilliseconds_ = 0.0;
     double subdivisionLatencyMilliseconds_ = 0.0;
     QElapsedTimer sinceTrailRequest_;
