@@ -39,8 +39,8 @@ std::vector<PathObject> pathObjects(const model::Scene& scene, const TrailPlan& 
         // The default shapes live as long as the program: an empty owner (the aliasing constructor) holds them.
         const model::SceneObject& object = scene.objects[each.index];
         objects.push_back({each.id, object.mesh ? object.mesh
-                                                : std::shared_ptr<const model::Mesh>(std::shared_ptr<const model::Mesh>(),
-                                                                                     &displayMesh(object))});
+                                                : std::shared_ptr<const model::Mesh>(
+                                                      std::shared_ptr<const model::Mesh>(), &displayMesh(object))});
     }
     return objects;
 }

@@ -117,7 +117,8 @@ void DrawnMotion::onDocumentChanged(model::ObjectId object, model::Changes chang
         rebuildMotionInBackground();
     // A selected screw track's keys or settings: its subdivision. Another interpolation or another budget share
     // moves a track between the subdivided and the sampled trails.
-    const bool selectedTrack = selection_.isObjectSelected(object) && (changes & (Change::Keyframes | Change::TrackSettings));
+    const bool selectedTrack =
+        selection_.isObjectSelected(object) && (changes & (Change::Keyframes | Change::TrackSettings));
     const bool range = changes.testFlag(Change::SceneSettings);
     if (selectedTrack || range) {
         const TrailPlan plan = currentTrailPlan();
@@ -271,7 +272,8 @@ void DrawnMotion::requestPaths(const TrailPlan& plan)
         return;
     }
     trajectoriesStale_ = true;
-    pathJob_.post([motion = motion_, pathed = std::move(pathed), times = pathTimes(scene)](const jobs::JobRun<jobs::NoProgress>& run) {
+    pathJob_.post([motion = motion_, pathed = std::move(pathed),
+                   times = pathTimes(scene)](const jobs::JobRun<jobs::NoProgress>& run) {
         run.throwIfStopped(); // superseded before it started
         Paths paths = centrePaths(*motion, pathed, times, run.stopFlag());
         run.throwIfStopped(); // superseded, the paths cut short: a newer request samples them
