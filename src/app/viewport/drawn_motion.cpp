@@ -29,13 +29,13 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
     , pathJob_(jobs::JobPolicy::NewestWins,
                {.finished = [this](Paths paths) {
                     ++trailWork_.pathAnswers;
-                    trajectories_ = std::move(paths);
+                    setTrajectories(std::move(paths));
                     trajectoriesStale_ = false;
                     emit changed();
                 },
                 .failed = [this](const QString& message) {
                     // Not asked for again until the motion, the selection or the range changes.
-                    trajectories_.clear();
+                    setTrajectories({});
                     trajectoriesStale_ = false;
                     emit changed();
                     emit failed(tr("The paths could not be sampled: %1").arg(message));
@@ -104,7 +104,7 @@ void DrawnMotion::onDocumentChanged(model::ObjectId object, model::Changes chang
         motion_ = std::make_shared<model::SceneMotion>(document_.scene(), motionOf());
         snapshotOriginalMotion();
         dropTrail();
-        trajectories_.clear();
+        setTrajectories({});
         const TrailPlan plan = currentTrailPlan();
         requestTrail(plan);
         requestPaths(plan);
@@ -144,7 +144,7 @@ void DrawnMotion::onSelectionChanged()
     if (selection_.object() != activeObject_) {
         // The trails and paths in hand are of another selection: show none until this one's arrive.
         dropTrail();
-        trajectories_.clear();
+        setTrajectories({});
     }
     selectedObjects_ = std::move(objects);
     activeObject_ = selection_.object();
@@ -189,6 +189,12 @@ void DrawnMotion::receiveMotion(std::shared_ptr<const model::SceneMotion> built)
     requestSampledTrail(plan);
     requestPaths(plan);
     emit changed();
+}
+
+void DrawnMotion::setTrajectories(Paths paths)
+{
+    trajectories_ = std::move(paths);
+    trajectoriesChanged_ = true;
 }
 
 void DrawnMotion::dropTrail()
@@ -267,7 +273,8 @@ void DrawnMotion::requestPaths(const TrailPlan& plan)
     std::vector<PathObject> pathed = pathObjects(scene, plan);
     if (pathed.empty()) {
         pathJob_.cancel();
-        trajectories_.clear();
+        if (!trajectories_.empty())
+            setTrajectories({});
         trajectoriesStale_ = false;
         return;
     }
