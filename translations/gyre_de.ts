@@ -2179,10 +2179,15 @@
         <translation>Die Bewegung konnte nicht neu aufgebaut werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="26"/>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="43"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="27"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="59"/>
         <source>The trail could not be built: %1</source>
         <translation>Die Stroboskopspur konnte nicht aufgebaut werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="41"/>
+        <source>The paths could not be sampled: %1</source>
+        <translation>Die Bahnen der Mittelpunkte konnten nicht berechnet werden: %1</translation>
     </message>
 </context>
 <context>

@@ -2178,10 +2178,15 @@
         <translation>无法重建运动：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="26"/>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="43"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="27"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="59"/>
         <source>The trail could not be built: %1</source>
         <translation>无法生成频闪轨迹：%1</translation>
+    </message>
+    <message>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="41"/>
+        <source>The paths could not be sampled: %1</source>
+        <translation>无法计算中心轨迹：%1</translation>
     </message>
 </context>
 <context>

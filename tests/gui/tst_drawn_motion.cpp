@@ -1,8 +1,11 @@
 // The viewport's drawn motion (drawn_motion.h) without OpenGL: every selected screw track's trail is its own
 // polyscrew subdivided, as core's subdivision makes it, within the trails' budget, and follows its keys; the
-// selected objects' centre paths are sampled off the UI thread, arrive, and follow an edit. One test prints what
-// the paths' whole budget costs the worker (tests never assert on time).
+// selected objects' centre paths are sampled off the UI thread, arrive, and follow an edit, while the trails about
+// the current time follow it without waiting for them; the trails are composed only when one changed. Tests print
+// what the paths' whole budget costs the worker, and what a drag and playback cost in composes and answers
+// (tests never assert on time).
 
+#include "app/playback.h"
 #include "app/selection.h"
 #include "app/viewport/centre_path.h"
 #include "app/viewport/drawn_motion.h"
@@ -20,6 +23,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -77,6 +81,48 @@ std::shared_ptr<const model::Mesh> offsetBox()
         mesh->positions.emplace_back(corner & 1 ? 3.0F : 1.0F, corner & 2 ? 3.0F : 1.0F, corner & 4 ? 3.0F : 1.0F);
     mesh->indices = {0, 1, 2, 1, 3, 2};
     return mesh;
+}
+
+// `count` objects keyed 40 s apart over a scene of 5000 frames at 24 fps, in chains of `chain` (each the child of
+// the one before; 1: none): their paths take the worker a while. Without a mesh they are joints, which have no trail.
+// Returns their ids.
+std::vector<model::ObjectId> importChains(model::Document& document, model::ObjectId count, model::ObjectId chain,
+                                          const std::shared_ptr<const model::Mesh>& mesh = nullptr)
+{
+    std::vector<model::SceneObject> objects;
+    for (model::ObjectId id = 1; id <= count; ++id) {
+        model::SceneObject object = keyed(id, InterpolationMethod::Hermite, 4, 0.0);
+        object.parent = (id - 1) % chain == 0 ? model::kNoObject : id - 1;
+        object.mesh = mesh;
+        for (model::Keyframe& key : object.track.keys)
+            key.time *= 40.0;
+        objects.push_back(object);
+    }
+    auto* import = new model::ImportObjectsCommand(document, objects);
+    document.push(import);
+    document.push(new model::SetTimeRangeCommand(document, {24, 0, 5000.0 / 24.0}));
+    return import->ids();
+}
+
+// Whether the drawn trail of each of `objects` is its world poses, in the motion drawn, at the trail's times now.
+bool drawsSampledTrails(const app::DrawnMotion& drawn, const model::Document& document,
+                        const std::vector<model::ObjectId>& objects)
+{
+    const std::vector<double> times = app::trailTimes(document.scene(), drawn.trailSpacing());
+    for (const model::ObjectId id : objects) {
+        const auto trail = std::find_if(drawn.trails().begin(), drawn.trails().end(),
+                                        [&](const app::DrawnMotion::DrawnTrail& each) { return each.object == id; });
+        if (trail == drawn.trails().end() || trail->inParentFrame || trail->count != times.size())
+            return false;
+        std::vector<float> expected;
+        for (const double time : times)
+            app::appendPoseMatrix(expected, drawn.motion().worldPose(id, time));
+        const auto first = drawn.trailMatrices().begin() + std::ptrdiff_t(trail->first * app::kFloatsPerMatrix);
+        const auto near = [](float a, float b) { return std::abs(a - b) < 1e-5F; };
+        if (!std::equal(expected.begin(), expected.end(), first, near))
+            return false;
+    }
+    return true;
 }
 
 } // namespace
@@ -182,23 +228,13 @@ private slots:
         constexpr model::ObjectId kObjects = app::kMaxPathObjects;
         constexpr model::ObjectId kChain = 32;
 #endif
-        std::vector<model::SceneObject> objects;
-        for (model::ObjectId id = 1; id <= kObjects; ++id) {
-            model::SceneObject object = keyed(id, InterpolationMethod::Hermite, 4, 0.0);
-            object.parent = id % kChain == 1 ? model::kNoObject : id - 1;
-            for (model::Keyframe& key : object.track.keys)
-                key.time *= 40.0;
-            objects.push_back(object);
-        }
-        auto* import = new model::ImportObjectsCommand(document, objects);
-        document.push(import);
-        document.push(new model::SetTimeRangeCommand(document, {24, 0, 5000.0 / 24.0}));
+        const std::vector<model::ObjectId> ids = importChains(document, kObjects, kChain);
         app::Selection selection(document);
         app::DrawnMotion drawn(document, selection);
-        QTRY_VERIFY(drawn.motion().contains(import->ids().back()));
+        QTRY_VERIFY(drawn.motion().contains(ids.back()));
         QElapsedTimer clock;
         clock.start();
-        selection.selectObjects(import->ids(), import->ids().front());
+        selection.selectObjects(ids, ids.front());
         QTRY_VERIFY_WITH_TIMEOUT(!drawn.trajectoriesPending(), 50000);
         const double milliseconds = double(clock.nsecsElapsed()) / 1e6;
         QCOMPARE(drawn.trajectories().size(), std::size_t(kObjects));
@@ -209,6 +245,130 @@ private slots:
         }
         qInfo("%zu paths of %d points (%zu points), chains of %zu: %.1f ms from the selection to their arrival",
               drawn.trajectories().size(), app::kMaxPathSamples + 1, points, std::size_t(kChain), milliseconds);
+    }
+
+    // With copies every frame about the current one, each step of the current time asks for the trails anew;
+    // the paths, stale after the selection and taking far longer than a step, are not asked for again, and the
+    // trails do not wait for them.
+    void theTrailsFollowTheCurrentTimeWhileThePathsAreSampled()
+    {
+        model::Document document;
+        const std::vector<model::ObjectId> ids = importChains(document, 8, 8, offsetBox());
+        app::Selection selection(document);
+        app::DrawnMotion drawn(document, selection);
+        drawn.setTrailSpacing({4, 1});
+        QTRY_VERIFY(drawn.motion().contains(ids.back()));
+        selection.selectObjects(ids, ids.front());
+        QVERIFY(drawn.trajectoriesPending());
+        for (int step = 1; step <= 3; ++step) {
+            document.setCurrentTime(10.0 + step / 24.0);
+            QTRY_VERIFY(drawsSampledTrails(drawn, document, ids));
+            QVERIFY(drawn.trajectoriesPending());
+        }
+        QTRY_VERIFY_WITH_TIMEOUT(!drawn.trajectoriesPending(), 50000);
+        QCOMPARE(drawn.trajectories().size(), ids.size());
+        QCOMPARE(drawn.trailWork().pathAnswers, std::uint64_t{1});
+    }
+
+    // One screw track selected alone, a key moved again and again (a drag, each move's answers awaited): the
+    // trail is composed (and so uploaded) once a move, when its subdivision arrives; the paths, sampled anew
+    // after each move's motion, and the empty sampled trails leave it alone. Prints the counts.
+    void aDraggedScrewTrackAloneIsComposedOnceAMove()
+    {
+        model::Document document;
+        auto* import = new model::ImportObjectsCommand(document, {keyed(1, InterpolationMethod::Screw, 6, 0.0)});
+        document.push(import);
+        const model::ObjectId id = import->ids().front();
+        app::Selection selection(document);
+        app::DrawnMotion drawn(document, selection);
+        selection.selectObject(id);
+        QTRY_VERIFY(drawsSubdivision(drawn, *document.object(id), 6) && !drawn.trajectoriesPending());
+        const app::DrawnMotion::TrailWork before = drawn.trailWork();
+        constexpr int kMoves = 10;
+        for (int move = 1; move <= kMoves; ++move) {
+            const Eigen::Vector3d position(0.1 * move, 2.0, -1.0);
+            document.push(new model::SetKeyframePositionCommand(document, id, 2, position));
+            // Key 2 stands at 2 s: the motion drawn passes through it once rebuilt.
+            QTRY_VERIFY(drawsSubdivision(drawn, *document.object(id), 6) &&
+                        (drawn.motion().worldPose(id, 2.0).position - position).norm() < 1e-9 &&
+                        !drawn.trajectoriesPending());
+        }
+        const app::DrawnMotion::TrailWork& after = drawn.trailWork();
+        qInfo("%d drag moves of a screw track of %zu poses, selected alone: %llu composes, %llu subdivisions, %llu "
+              "sampled answers, %llu path answers",
+              kMoves, drawn.trailPoseCount(), static_cast<unsigned long long>(after.composes - before.composes),
+              static_cast<unsigned long long>(after.screwAnswers - before.screwAnswers),
+              static_cast<unsigned long long>(after.sampledAnswers - before.sampledAnswers),
+              static_cast<unsigned long long>(after.pathAnswers - before.pathAnswers));
+        QCOMPARE(after.composes - before.composes, std::uint64_t{kMoves});
+        QCOMPARE(after.sampledAnswers, before.sampledAnswers);
+    }
+
+    // A key of a selected object that is no screw track moved: its sampled trail follows, and the screw trail,
+    // whose subdivision is the same, is not composed again for it.
+    void aKeyOfAnotherTrackLeavesTheScrewTrailAlone()
+    {
+        model::Document document;
+        auto* import = new model::ImportObjectsCommand(
+            document, {keyed(1, InterpolationMethod::Screw, 5, 0.0), keyed(2, InterpolationMethod::Hermite, 4, 10.0)});
+        document.push(import);
+        const std::vector<model::ObjectId> ids = import->ids();
+        app::Selection selection(document);
+        app::DrawnMotion drawn(document, selection);
+        selection.selectObjects(ids, ids[0]);
+        QTRY_VERIFY(drawsSubdivision(drawn, *document.object(ids[0]), 5) &&
+                    drawsSampledTrails(drawn, document, {ids[1]}) && !drawn.trajectoriesPending());
+        const app::DrawnMotion::TrailWork before = drawn.trailWork();
+        const Eigen::Vector3d position(14.0, -3.0, 1.0);
+        document.push(new model::SetKeyframePositionCommand(document, ids[1], 3, position));
+        // The subdivision is asked for again (a selected object's keys changed) and answers, every polyscrew the same.
+        QTRY_VERIFY((drawn.motion().worldPose(ids[1], 3.0).position - position).norm() < 1e-9 &&
+                    drawsSampledTrails(drawn, document, {ids[1]}) &&
+                    drawn.trailWork().screwAnswers > before.screwAnswers);
+        QVERIFY(drawsSubdivision(drawn, *document.object(ids[0]), 5));
+        // The sampled trail's, once.
+        QCOMPARE(drawn.trailWork().composes, before.composes + 1);
+    }
+
+    // Playback with copies every frame about the current one and stale paths (the selection's, taking longer than
+    // a frame): prints how many sampled answers arrive and how many composes they cost over two seconds of
+    // playback, with the paths' answers. The paths' whole budget, 64 objects in chains of 32 with 16 copies each;
+    // under the sanitizers, 16 objects each on its own with 4 copies, whose trails still take less than a frame.
+    void measuresTheTrailsDuringPlaybackWhileThePathsAreSampled()
+    {
+        model::Document document;
+#if defined(__SANITIZE_ADDRESS__)
+        const std::vector<model::ObjectId> ids = importChains(document, 16, 1, offsetBox());
+        constexpr int kCopies = 4;
+#else
+        const std::vector<model::ObjectId> ids = importChains(document, app::kMaxPathObjects, 32, offsetBox());
+        constexpr int kCopies = 16;
+#endif
+        app::Selection selection(document);
+        app::DrawnMotion drawn(document, selection);
+        drawn.setTrailSpacing({kCopies, 1});
+        app::Playback playback(document);
+        QTRY_VERIFY(drawn.motion().contains(ids.back()));
+        selection.selectObjects(ids, ids.front());
+        const app::DrawnMotion::TrailWork before = drawn.trailWork();
+        std::uint64_t steps = 0;
+        connect(&document, &model::Document::currentTimeChanged, this, [&] { ++steps; });
+        playback.play();
+        QTRY_VERIFY_WITH_TIMEOUT(document.scene().currentTime >= 2.0, 10000);
+        playback.pause();
+        const app::DrawnMotion::TrailWork during = drawn.trailWork();
+        const bool pathsPending = drawn.trajectoriesPending();
+        QTRY_VERIFY_WITH_TIMEOUT(!drawn.trajectoriesPending(), 50000);
+        const app::TrailPlan plan = app::planTrails(document.scene(), ids, ids.front(), drawn.trailSpacing());
+        QCOMPARE(plan.sampled.size(), ids.size());
+        QTRY_VERIFY(drawsSampledTrails(drawn, document, plan.sampled));
+        qInfo("%zu objects, %d copies every frame, 2 s of playback (%llu steps of the current time): %llu sampled "
+              "answers, %llu composes, %llu path answers arrived while playing (the paths %s when it paused)",
+              ids.size(), kCopies, static_cast<unsigned long long>(steps),
+              static_cast<unsigned long long>(during.sampledAnswers - before.sampledAnswers),
+              static_cast<unsigned long long>(during.composes - before.composes),
+              static_cast<unsigned long long>(during.pathAnswers - before.pathAnswers),
+              pathsPending ? "still pending" : "in hand");
     }
 };
 

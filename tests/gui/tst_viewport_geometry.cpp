@@ -10,6 +10,7 @@
 #include "app/viewport/skeleton.h"
 #include "core/subdivision.h"
 #include "model/object_mass.h"
+#include "model/scene_joints.h"
 #include "model/scene_motion.h"
 #include "model/track_evaluation.h"
 
@@ -511,6 +512,39 @@ private slots:
         // Another object active: it leads and takes the budget first; object 1 (3072 poses) then fits at 6 levels.
         QCOMPARE(app::planTrails(scene, selected, 6, {16, 0}).sampled, (std::vector<model::ObjectId>{6}));
         QCOMPARE(app::planTrails(scene, selected, 6, {16, 0}).subdivided.front(), (app::TrailPlan::Subdivided{1, 7}));
+    }
+
+    // A joint or an empty whose screw track is active shows its control poses, which the artist drags: its trail
+    // is its subdivision, as any active screw track's. Not active, it has no trail (its bones or axes and its
+    // centre's path say where it goes), nor has an active one whose track is another.
+    void anActiveScrewJointOrEmptyHasItsSubdividedTrail()
+    {
+        // Root (1) ─ Upper (2) ─ Lower (3): joints; Axes (4): an empty; Prop (5): a mesh.
+        auto mesh = std::make_shared<const model::Mesh>(tetrahedron());
+        model::Scene scene;
+        scene.objects = {placed(1, model::kNoObject, turned(0.3, {1, 2, 3}, {1, 0, 0})),
+                         placed(2, 1, turned(0.8, {0, 1, 0}, {0, 0, 2})),
+                         placed(3, 2, turned(-0.5, {1, 0, 1}, {1.5, 0, 0})),
+                         placed(4, model::kNoObject, turned(0.4, {1, 0, 0}, {5, 5, 0})),
+                         placed(5, model::kNoObject, turned(0.1, {0, 0, 1}, {0, 3, 0}), mesh)};
+        scene.objects[3].empty = true;
+        for (model::SceneObject& object : scene.objects)
+            object.track.keys.push_back({2.0, turned(1.2, {0, 1, 1}, {1, 2, 0}), true});
+        scene.objects[1].track.interpolation = InterpolationMethod::Screw;
+        scene.objects[3].track.interpolation = InterpolationMethod::Screw;
+        QCOMPARE(model::findJoints(scene), (std::vector<bool>{true, true, true, false, false}));
+        const std::vector<model::ObjectId> selected{1, 2, 3, 4, 5};
+        const int levels = scene.objects[1].track.subdivision.levels;
+        for (const model::ObjectId active : {model::ObjectId{2}, model::ObjectId{4}}) {
+            const app::TrailPlan plan = app::planTrails(scene, selected, active, {16, 0});
+            QCOMPARE(plan.subdivided, (std::vector<app::TrailPlan::Subdivided>{{active, levels}}));
+            QCOMPARE(plan.sampled, (std::vector<model::ObjectId>{5}));
+        }
+        for (const model::ObjectId active : {model::ObjectId{3}, model::ObjectId{5}}) {
+            const app::TrailPlan plan = app::planTrails(scene, selected, active, {16, 0});
+            QVERIFY(plan.subdivided.empty());
+            QCOMPARE(plan.sampled, (std::vector<model::ObjectId>{5}));
+        }
     }
 
     void aYUpViewOrbitsAboutY()

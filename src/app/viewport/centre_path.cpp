@@ -1,8 +1,6 @@
 #include "app/viewport/centre_path.h"
 
 #include "app/viewport/default_shape.h"
-#include "model/scene_joints.h"
-#include "model/scene_queries.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,28 +25,22 @@ Eigen::Vector3d meshCentre(const model::Mesh& mesh)
 
 } // namespace
 
-std::vector<PathObject> pathObjects(const model::Scene& scene, const std::vector<model::ObjectId>& selected,
-                                    model::ObjectId active)
+std::vector<PathObject> pathObjects(const model::Scene& scene, const TrailPlan& plan)
 {
-    std::vector<model::ObjectId> ordered = selected;
-    // The active object's first, so that the budget never leaves it out.
-    std::stable_partition(ordered.begin(), ordered.end(), [active](model::ObjectId id) { return id == active; });
-    const std::vector<bool> joints = model::findJoints(scene);
     std::vector<PathObject> objects;
-    for (const model::ObjectId id : ordered) {
+    objects.reserve(std::min(plan.objects.size(), kMaxPathObjects));
+    for (const TrailPlan::Object& each : plan.objects) {
         if (objects.size() == kMaxPathObjects)
             break;
-        const model::SceneObject* object = model::findObject(scene, id);
-        if (object == nullptr)
-            continue;
-        if (joints[static_cast<std::size_t>(object - scene.objects.data())]) {
-            objects.push_back({id, nullptr});
+        if (each.joint) {
+            objects.push_back({each.id, nullptr});
             continue;
         }
         // The default shapes live as long as the program: an empty owner (the aliasing constructor) holds them.
-        objects.push_back({id, object->mesh ? object->mesh
-                                            : std::shared_ptr<const model::Mesh>(std::shared_ptr<const model::Mesh>(),
-                                                                                 &displayMesh(*object))});
+        const model::SceneObject& object = scene.objects[each.index];
+        objects.push_back({each.id, object.mesh ? object.mesh
+                                                : std::shared_ptr<const model::Mesh>(
+                                                      std::shared_ptr<const model::Mesh>(), &displayMesh(object))});
     }
     return objects;
 }

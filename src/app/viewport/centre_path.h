@@ -1,13 +1,14 @@
 #pragma once
 // The selected objects' centre paths (View ▸ Trajectory): where each one's mesh centre (a joint's origin, where
 // its bones meet) is in the world over the scene's range, one point a frame, from the motion the viewport draws.
-// They are sampled off the UI thread with the sampled trails (drawn_motion.h); their budget, up front, bounds the
+// They are sampled off the UI thread on a job of their own (drawn_motion.h); their budget, up front, bounds the
 // worker's memory and time: at most kMaxPathObjects paths (the active object's first), each of at most
 // kMaxPathSamples + 1 points, so at most 64 × 4097 = 262,208 points (3 MB of floats) and as many track
 // evaluations a request (each ancestor's track evaluated once a time, however many selected objects hang below
 // it); a longer scene is sampled more sparsely than once a frame. No OpenGL: tests check the points against the
 // motion, and tst_drawn_motion prints what the whole budget costs.
 
+#include "app/viewport/sampled_trail.h"
 #include "model/scene.h"
 #include "model/scene_motion.h"
 
@@ -31,9 +32,8 @@ struct PathObject {
     std::shared_ptr<const model::Mesh> mesh;
 };
 
-// Of `selected`, `active` first and then the others in their order, those the scene holds, at most kMaxPathObjects.
-std::vector<PathObject> pathObjects(const model::Scene& scene, const std::vector<model::ObjectId>& selected,
-                                    model::ObjectId active);
+// The first kMaxPathObjects of the plan's selected objects (the active one first, then in the selection's order).
+std::vector<PathObject> pathObjects(const model::Scene& scene, const TrailPlan& plan);
 
 // One time a frame over the scene's range, both ends included, at most kMaxPathSamples + 1 of them evenly
 // spread; none for an empty range.

@@ -16,15 +16,30 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
                       emit failed(tr("The motion could not be rebuilt: %1").arg(message));
                   }})
     , sampledJob_(jobs::JobPolicy::NewestWins,
-                  {.finished = [this](Sampled sampled) { receiveSampled(std::move(sampled)); },
+                  {.finished = [this](std::vector<ObjectTrail> trails) {
+                       ++trailWork_.sampledAnswers;
+                       setSampledTrails(std::move(trails));
+                       emit changed();
+                   },
                    .failed = [this](const QString& message) {
-                       dropTrail();
-                       // Not asked for again until the motion, the selection or the range changes.
-                       setTrajectories({});
-                       trajectoriesStale_ = false;
+                       setSampledTrails({});
                        emit changed();
                        emit failed(tr("The trail could not be built: %1").arg(message));
                    }})
+    , pathJob_(jobs::JobPolicy::NewestWins,
+               {.finished = [this](Paths paths) {
+                    ++trailWork_.pathAnswers;
+                    setTrajectories(std::move(paths));
+                    trajectoriesStale_ = false;
+                    emit changed();
+                },
+                .failed = [this](const QString& message) {
+                    // Not asked for again until the motion, the selection or the range changes.
+                    setTrajectories({});
+                    trajectoriesStale_ = false;
+                    emit changed();
+                    emit failed(tr("The paths could not be sampled: %1").arg(message));
+                }})
 {
     connect(&document_, &model::Document::changed, this, &DrawnMotion::onDocumentChanged);
     connect(&document_.undoStack(), &QUndoStack::cleanChanged, this, [this](bool clean) {
@@ -35,24 +50,27 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
             [this](std::uint64_t, const std::vector<jobs::SubdivisionJob::SubdividedPoses>& poses, qint64 nanoseconds) {
                 subdivisionMilliseconds_ = double(nanoseconds) / 1e6;
                 subdivisionLatencyMilliseconds_ = double(sinceTrailRequest_.nsecsElapsed()) / 1e6;
+                ++trailWork_.screwAnswers;
                 receiveScrewTrails(poses);
             });
     connect(&subdivision_, &jobs::SubdivisionJob::failed, this, [this](std::uint64_t, const QString& reason) {
-        dropTrail();
+        setScrewTrails({});
         emit changed();
         emit failed(tr("The trail could not be built: %1").arg(reason));
     });
     // Copies about the current frame follow it.
     connect(&document_, &model::Document::currentTimeChanged, this, [this] {
         if (trailSpacing_.everyFrames > 0)
-            requestSampledTrail();
+            requestSampledTrail(currentTrailPlan());
     });
     connect(&selection_, &Selection::changed, this, &DrawnMotion::onSelectionChanged);
     selectedObjects_ = selection_.objects();
     activeObject_ = selection_.object();
     motion_ = std::make_shared<model::SceneMotion>(document_.scene(), motionOf());
     snapshotOriginalMotion();
-    requestTrail();
+    const TrailPlan plan = currentTrailPlan();
+    requestTrail(plan);
+    requestPaths(plan);
 }
 
 std::optional<Pose> DrawnMotion::originalWorldPose(model::ObjectId id, double time) const
@@ -87,8 +105,9 @@ void DrawnMotion::onDocumentChanged(model::ObjectId object, model::Changes chang
         snapshotOriginalMotion();
         dropTrail();
         setTrajectories({});
-        trajectoriesStale_ = true;
-        requestTrail();
+        const TrailPlan plan = currentTrailPlan();
+        requestTrail(plan);
+        requestPaths(plan);
         emit sceneReset();
         return;
     }
@@ -98,14 +117,20 @@ void DrawnMotion::onDocumentChanged(model::ObjectId object, model::Changes chang
         rebuildMotionInBackground();
     // A selected screw track's keys or settings: its subdivision. Another interpolation or another budget share
     // moves a track between the subdivided and the sampled trails.
-    if (selection_.isObjectSelected(object) && (changes & (Change::Keyframes | Change::TrackSettings)))
-        requestScrewTrails();
-    if (changes.testFlag(Change::SceneSettings)) {
-        // The copies are spread over the scene's range, at its frames, and so are the paths' points.
-        trajectoriesStale_ = true;
-        requestSampledTrail();
-    } else if (selection_.isObjectSelected(object) && changes.testFlag(Change::TrackSettings)) {
-        requestSampledTrail();
+    const bool selectedTrack =
+        selection_.isObjectSelected(object) && (changes & (Change::Keyframes | Change::TrackSettings));
+    const bool range = changes.testFlag(Change::SceneSettings);
+    if (selectedTrack || range) {
+        const TrailPlan plan = currentTrailPlan();
+        if (selectedTrack)
+            requestScrewTrails(plan);
+        if (range) {
+            // The copies are spread over the scene's range, at its frames, and so are the paths' points.
+            requestSampledTrail(plan);
+            requestPaths(plan);
+        } else if (changes.testFlag(Change::TrackSettings)) {
+            requestSampledTrail(plan);
+        }
     }
     emit changed();
 }
@@ -123,8 +148,9 @@ void DrawnMotion::onSelectionChanged()
     }
     selectedObjects_ = std::move(objects);
     activeObject_ = selection_.object();
-    trajectoriesStale_ = true;
-    requestTrail();
+    const TrailPlan plan = currentTrailPlan();
+    requestTrail(plan);
+    requestPaths(plan);
     emit changed();
 }
 
@@ -159,17 +185,13 @@ void DrawnMotion::receiveMotion(std::shared_ptr<const model::SceneMotion> built)
 {
     motion_ = std::move(built);
     // A parent's change moves the selected objects' paths and trails as well as their own.
-    trajectoriesStale_ = true;
-    requestSampledTrail();
+    const TrailPlan plan = currentTrailPlan();
+    requestSampledTrail(plan);
+    requestPaths(plan);
     emit changed();
 }
 
-bool DrawnMotion::isScrewBenderTrack(const model::SceneObject* object)
-{
-    return object != nullptr && !object->track.keys.empty() && object->track.interpolation == InterpolationMethod::Screw;
-}
-
-void DrawnMotion::setTrajectories(std::vector<std::vector<Eigen::Vector3f>> paths)
+void DrawnMotion::setTrajectories(Paths paths)
 {
     trajectories_ = std::move(paths);
     trajectoriesChanged_ = true;
@@ -185,7 +207,7 @@ void DrawnMotion::dropTrail()
 void DrawnMotion::setTrailSpacing(const TrailSpacing& spacing)
 {
     trailSpacing_ = spacing.clamped();
-    requestTrail();
+    requestTrail(currentTrailPlan());
 }
 
 TrailPlan DrawnMotion::currentTrailPlan() const
@@ -193,95 +215,108 @@ TrailPlan DrawnMotion::currentTrailPlan() const
     return planTrails(document_.scene(), selection_.objects(), selection_.object(), trailSpacing_);
 }
 
-void DrawnMotion::requestTrail()
+void DrawnMotion::requestTrail(const TrailPlan& plan)
 {
-    requestScrewTrails();
+    requestScrewTrails(plan);
     // The others' trails, which leave the screw tracks out; newest wins, so none sampled before it became one lands.
-    requestSampledTrail();
+    requestSampledTrail(plan);
 }
 
-void DrawnMotion::requestScrewTrails()
+void DrawnMotion::requestScrewTrails(const TrailPlan& plan)
 {
-    const TrailPlan plan = currentTrailPlan();
+    screwTrailObjects_.clear();
     if (plan.subdivided.empty()) {
         subdivision_.cancel();
-        screwTrailObjects_.clear();
-        if (!screwTrails_.empty()) {
-            screwTrails_.clear();
-            composeTrails();
-        }
+        setScrewTrails({});
         return;
     }
     const model::Scene& scene = document_.scene();
     std::vector<jobs::SubdivisionJob::Polyscrew> polyscrews;
-    screwTrailObjects_.clear();
-    for (const TrailPlan::Subdivided& subdivided : plan.subdivided) {
-        const model::SceneObject* object = model::findObject(scene, subdivided.object);
+    // The subdivided tracks come in the plan's objects' order: one walk finds each.
+    auto next = plan.subdivided.begin();
+    for (const TrailPlan::Object& each : plan.objects) {
+        if (next == plan.subdivided.end())
+            break;
+        if (each.id != next->object)
+            continue;
+        const model::MotionTrack& track = scene.objects[each.index].track;
         jobs::SubdivisionJob::Polyscrew& polyscrew = polyscrews.emplace_back();
-        polyscrew.controlPoses.reserve(object->track.keys.size());
-        for (const model::Keyframe& key : object->track.keys)
+        polyscrew.controlPoses.reserve(track.keys.size());
+        for (const model::Keyframe& key : track.keys)
             polyscrew.controlPoses.push_back(key.pose);
-        polyscrew.settings = object->track.subdivision;
-        polyscrew.settings.levels = subdivided.levels;
-        screwTrailObjects_.push_back(subdivided.object);
+        polyscrew.settings = track.subdivision;
+        polyscrew.settings.levels = next->levels;
+        screwTrailObjects_.push_back(each.id);
+        ++next;
     }
     sinceTrailRequest_.start();
     subdivision_.request(std::move(polyscrews));
 }
 
-void DrawnMotion::requestSampledTrail()
+void DrawnMotion::requestSampledTrail(const TrailPlan& plan)
 {
-    const model::Scene& scene = document_.scene();
-    std::vector<model::ObjectId> trailed = currentTrailPlan().sampled;
-    std::vector<PathObject> pathed;
-    if (trajectoriesStale_)
-        pathed = pathObjects(scene, selection_.objects(), selection_.object());
-    if (trailed.empty() && pathed.empty()) {
+    if (plan.sampled.empty()) {
         sampledJob_.cancel();
-        // No request in flight has paths wanted now: were they stale, there is no path to draw.
-        if (trajectoriesStale_) {
-            setTrajectories({});
-            trajectoriesStale_ = false;
-        }
-        // Composed again only when some went: a screw trail alone is not uploaded anew at every drag move.
-        if (!sampledTrails_.empty()) {
-            sampledTrails_.clear();
-            composeTrails();
-        }
+        setSampledTrails({});
         return;
     }
-    const bool withPaths = trajectoriesStale_;
-    sampledJob_.post([motion = motion_, objects = std::move(trailed), times = trailTimes(scene, trailSpacing_),
-                      pathed = std::move(pathed), pathTimes = pathTimes(scene),
-                      withPaths](const jobs::JobRun<jobs::NoProgress>& run) {
+    sampledJob_.post([motion = motion_, objects = plan.sampled,
+                      times = trailTimes(document_.scene(), trailSpacing_)](const jobs::JobRun<jobs::NoProgress>& run) {
         run.throwIfStopped(); // superseded before it started
-        Sampled sampled{trailPoses(*motion, objects, times), std::nullopt};
-        if (withPaths) {
-            sampled.paths = centrePaths(*motion, pathed, pathTimes, run.stopFlag());
-            run.throwIfStopped(); // superseded, the paths cut short: a newer request samples them
-        }
-        return sampled;
+        return trailPoses(*motion, objects, times);
+    });
+}
+
+void DrawnMotion::requestPaths(const TrailPlan& plan)
+{
+    const model::Scene& scene = document_.scene();
+    std::vector<PathObject> pathed = pathObjects(scene, plan);
+    if (pathed.empty()) {
+        pathJob_.cancel();
+        if (!trajectories_.empty())
+            setTrajectories({});
+        trajectoriesStale_ = false;
+        return;
+    }
+    trajectoriesStale_ = true;
+    pathJob_.post([motion = motion_, pathed = std::move(pathed),
+                   times = pathTimes(scene)](const jobs::JobRun<jobs::NoProgress>& run) {
+        run.throwIfStopped(); // superseded before it started
+        Paths paths = centrePaths(*motion, pathed, times, run.stopFlag());
+        run.throwIfStopped(); // superseded, the paths cut short: a newer request samples them
+        return paths;
     });
 }
 
 void DrawnMotion::receiveScrewTrails(const std::vector<jobs::SubdivisionJob::SubdividedPoses>& poses)
 {
-    screwTrails_.clear();
+    std::vector<ScrewTrail> trails;
     for (std::size_t i = 0; i < poses.size() && i < screwTrailObjects_.size(); ++i)
-        screwTrails_.push_back({screwTrailObjects_[i], poses[i]});
-    composeTrails();
-    emit changed();
+        trails.push_back({screwTrailObjects_[i], poses[i]});
+    // Every polyscrew as before (another object's keys changed) leaves nothing to draw anew.
+    if (setScrewTrails(std::move(trails)))
+        emit changed();
 }
 
-void DrawnMotion::receiveSampled(Sampled sampled)
+bool DrawnMotion::setScrewTrails(std::vector<ScrewTrail> trails)
 {
-    sampledTrails_ = std::move(sampled.trails);
-    if (sampled.paths) {
-        setTrajectories(std::move(*sampled.paths));
-        trajectoriesStale_ = false;
-    }
+    if (trails == screwTrails_)
+        return false;
+    screwTrails_ = std::move(trails);
     composeTrails();
-    emit changed();
+    return true;
+}
+
+void DrawnMotion::setSampledTrails(std::vector<ObjectTrail> trails)
+{
+    const auto drawsCopies = [](const std::vector<ObjectTrail>& each) {
+        return std::any_of(each.begin(), each.end(), [](const ObjectTrail& trail) { return !trail.poses.empty(); });
+    };
+    // A screw trail alone is not composed and uploaded anew for sampled trails that were and stay empty.
+    const bool drawn = drawsCopies(sampledTrails_) || drawsCopies(trails);
+    sampledTrails_ = std::move(trails);
+    if (drawn)
+        composeTrails();
 }
 
 void DrawnMotion::composeTrails()
@@ -300,6 +335,7 @@ void DrawnMotion::composeTrails()
         if (!trail.poses.empty())
             append(trail.object, trail.poses, false);
     trailChanged_ = true;
+    ++trailWork_.composes;
 }
 
 } // namespace gyre::app

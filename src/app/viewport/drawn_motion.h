@@ -6,11 +6,16 @@
 // object its centre's path and its stroboscopic trail, as sampled_trail.h's planTrails shares their budget:
 // each selected screw track's subdivided polyscrew (all of them on one newest-wins SubdivisionJob, as
 // ScrewBender edits them; while a pose of the active one is dragged, only its track is subdivided again), and
-// every other selected object's motion sampled at evenly spaced times. The sampled trails and the centre paths
-// (centre_path.h, within its budget) are sampled off the UI thread from the motion drawn, on one newest-wins
-// job: like the trails, the paths are a moment behind an edit, and follow it once sampled; they are sampled
-// again only when the motion, the selection or the scene's range changed, not when the current time moves the
-// copies.
+// every other selected object's motion sampled at evenly spaced times.
+//
+// Three newest-wins jobs, so that none waits for or cancels another's work: the subdivision, the sampled trails
+// and the centre paths (centre_path.h, within its budget), the last two sampled from the motion drawn. The
+// sampled trails are asked for again whenever the motion, the selection, the spacing or the scene's range
+// changes, and at each current time when the copies sit about it; the paths only when they are stale (the
+// motion, the selection or the scene's range changed), not when the current time moves the copies, so that
+// playback neither stops the paths nor waits for them. Both are a moment behind an edit and follow it once
+// sampled. The trails are composed into one array (and uploaded whole) only when one of them changed: not for an
+// answer with the same subdivisions, nor for sampled trails that were and stay empty.
 
 #include "app/selection.h"
 #include "app/viewport/centre_path.h"
@@ -48,10 +53,6 @@ public:
     // Follows `track` for `object` instead of its own track, until called with nullopt.
     void setPreviewTrack(model::ObjectId object, std::optional<model::MotionTrack> track);
 
-    // The control poses belong to ScrewBender's editing. Another track's keys may all sit in one place
-    // (a spinning top's 85 keys at its tip), where they would only hide the object.
-    static bool isScrewBenderTrack(const model::SceneObject* object);
-
     // How the trail of a track other than a screw one is spaced (sampled_trail.h), clamped to its budget; the
     // copies also decide how the selected objects share the trails' budget (planTrails).
     void setTrailSpacing(const TrailSpacing& spacing);
@@ -75,6 +76,16 @@ public:
     // The worker's time for the newest screw trails, and the time from their request to their arrival.
     double subdivisionMilliseconds() const { return subdivisionMilliseconds_; }
     double subdivisionLatencyMilliseconds() const { return subdivisionLatencyMilliseconds_; }
+    // What following the document has cost since this was made: how many times the trails were composed (each
+    // compose is uploaded whole at the next frame drawn) and how many answers each worker's job delivered.
+    // tst_drawn_motion counts them over a drag and over playback.
+    struct TrailWork {
+        std::uint64_t composes = 0;
+        std::uint64_t screwAnswers = 0;
+        std::uint64_t sampledAnswers = 0;
+        std::uint64_t pathAnswers = 0;
+    };
+    const TrailWork& trailWork() const { return trailWork_; }
 
     // The world paths of the selected objects' mesh centres over the scene's time range (centre_path.h: the
     // active object's first, within its budget), as last sampled; none without a selected object.
@@ -90,20 +101,18 @@ signals:
     void changed();
     // A new scene's motion is in place: the viewport frames it.
     void sceneReset();
-    // The motion or the trail could not be built; the one drawn stays, the trail goes.
+    // The motion, a trail or the paths could not be built: the motion drawn stays, and what failed goes (the
+    // screw trails, the sampled ones or the paths), the rest staying.
     void failed(const QString& message);
 
 private:
-    // What the sampled-trail job makes: the sampled trails and, when they were stale, the centre paths.
-    struct Sampled {
-        std::vector<ObjectTrail> trails;
-        std::optional<std::vector<std::vector<Eigen::Vector3f>>> paths;
-    };
     // One selected screw track's subdivided poses.
     struct ScrewTrail {
         model::ObjectId object = model::kNoObject;
         jobs::SubdivisionJob::SubdividedPoses poses;
+        bool operator==(const ScrewTrail&) const = default; // the same shared poses
     };
+    using Paths = std::vector<std::vector<Eigen::Vector3f>>;
 
     void onDocumentChanged(model::ObjectId object, model::Changes changes);
     // Another set of selected objects or another active one: their trails and paths.
@@ -113,19 +122,24 @@ private:
     model::SceneMotion::MotionOf motionOf() const;
     void rebuildMotionInBackground();
     void receiveMotion(std::shared_ptr<const model::SceneMotion> built);
-    // planTrails on the selection as it is now.
+    // planTrails on the selection as it is now: made once for each change and passed to the requests.
     TrailPlan currentTrailPlan() const;
     // Every trail: the screw tracks' and the sampled ones.
-    void requestTrail();
+    void requestTrail(const TrailPlan& plan);
     // The selected screw tracks' subdivisions, from their keys.
-    void requestScrewTrails();
-    // The trails of the tracks other than screw ones, and the centre paths if stale, from the motion drawn now.
-    void requestSampledTrail();
+    void requestScrewTrails(const TrailPlan& plan);
+    // The trails of the tracks other than screw ones, from the motion drawn now.
+    void requestSampledTrail(const TrailPlan& plan);
+    // The centre paths, from the motion drawn now: they are stale until they arrive.
+    void requestPaths(const TrailPlan& plan);
     void receiveScrewTrails(const std::vector<jobs::SubdivisionJob::SubdividedPoses>& poses);
-    void receiveSampled(Sampled sampled);
+    // These trails in place of those in hand, composed anew only if either draws a copy.
+    void setSampledTrails(std::vector<ObjectTrail> trails);
+    // These in place of those in hand, composed anew only if they differ; returns whether they did.
+    bool setScrewTrails(std::vector<ScrewTrail> trails);
     // trailMatrices_ and trails_ from the screw trails and the sampled ones.
     void composeTrails();
-    void setTrajectories(std::vector<std::vector<Eigen::Vector3f>> paths);
+    void setTrajectories(Paths paths);
     void dropTrail();
 
     model::Document& document_;
@@ -148,10 +162,11 @@ private:
     // As the trails and paths were last asked for.
     std::vector<model::ObjectId> selectedObjects_;
     model::ObjectId activeObject_ = model::kNoObject;
-    std::vector<std::vector<Eigen::Vector3f>> trajectories_; // set by setTrajectories alone
+    Paths trajectories_; // set by setTrajectories alone
     bool trajectoriesChanged_ = false;
     bool trajectoriesStale_ = true;
 
+    TrailWork trailWork_;
     double subdivisionMilliseconds_ = 0.0;
     double subdivisionLatencyMilliseconds_ = 0.0;
     QElapsedTimer sinceTrailRequest_;
@@ -159,7 +174,8 @@ private:
     // Last: done first, so no trail or motion arrives once the members above are gone.
     jobs::SubdivisionJob subdivision_;
     jobs::Job<std::shared_ptr<const model::SceneMotion>> motionJob_;
-    jobs::Job<Sampled> sampledJob_;
+    jobs::Job<std::vector<ObjectTrail>> sampledJob_;
+    jobs::Job<Paths> pathJob_;
 };
 
 } // namespace gyre::app

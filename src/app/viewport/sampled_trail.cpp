@@ -3,10 +3,11 @@
 #include "app/viewport/skeleton.h"
 #include "core/subdivision.h"
 #include "model/scene_joints.h"
-#include "model/scene_queries.h"
 
 #include <algorithm>
 #include <optional>
+#include <unordered_map>
+#include <utility>
 
 namespace gyre::app {
 
@@ -56,33 +57,47 @@ std::vector<ObjectTrail> trailPoses(const model::SceneMotion& motion, const std:
     return trails;
 }
 
+bool isScrewBenderTrack(const model::SceneObject* object)
+{
+    return object != nullptr && !object->track.keys.empty() && object->track.interpolation == InterpolationMethod::Screw;
+}
+
 TrailPlan planTrails(const model::Scene& scene, const std::vector<model::ObjectId>& selected, model::ObjectId active,
                      const TrailSpacing& spacing)
 {
-    std::vector<model::ObjectId> ordered;
-    if (std::find(selected.begin(), selected.end(), active) != selected.end())
-        ordered.push_back(active);
-    for (const model::ObjectId id : selected)
-        if (id != active)
-            ordered.push_back(id);
+    // Each selected object's rank, the active one's first, found in one pass over the scene, then put in rank order.
+    std::unordered_map<model::ObjectId, std::size_t> ranks;
+    ranks.reserve(selected.size());
+    for (std::size_t i = 0; i < selected.size(); ++i)
+        ranks.emplace(selected[i], selected[i] == active ? 0 : i + 1);
     const std::vector<bool> joints = model::findJoints(scene);
+    std::vector<std::pair<std::size_t, TrailPlan::Object>> ranked;
+    ranked.reserve(selected.size());
+    for (std::size_t index = 0; index < scene.objects.size(); ++index)
+        if (const auto rank = ranks.find(scene.objects[index].id); rank != ranks.end())
+            ranked.push_back({rank->second, {rank->first, index, joints[index]}});
+    std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+
+    TrailPlan plan;
+    plan.objects.reserve(ranked.size());
     const std::size_t copies = static_cast<std::size_t>(spacing.clamped().copies);
     std::size_t left = TrailSpacing::kMaxTotalCopies;
-    TrailPlan plan;
-    for (const model::ObjectId id : ordered) {
-        const model::SceneObject* object = model::findObject(scene, id);
-        if (object == nullptr || object->empty || joints[static_cast<std::size_t>(object - scene.objects.data())])
-            continue;
-        const model::MotionTrack& track = object->track;
-        if (track.keys.empty() || track.interpolation != InterpolationMethod::Screw) {
-            if (copies <= left) {
-                plan.sampled.push_back(id);
-                left -= copies;
-            }
+    for (const auto& [rank, each] : ranked) {
+        plan.objects.push_back(each);
+        const model::SceneObject& object = scene.objects[each.index];
+        const model::MotionTrack& track = object.track;
+        const bool screw = isScrewBenderTrack(&object);
+        if (screw && each.id == active) {
+            plan.subdivided.push_back({each.id, track.subdivision.levels});
             continue;
         }
-        if (id == active) {
-            plan.subdivided.push_back({id, track.subdivision.levels});
+        if (object.empty || each.joint)
+            continue;
+        if (!screw) {
+            if (copies <= left) {
+                plan.sampled.push_back(each.id);
+                left -= copies;
+            }
             continue;
         }
         // The most levels, up to the track's, whose poses fit (n·2^L for a cycle, (n − 1)·2^L + 1 open).
@@ -90,7 +105,7 @@ TrailPlan planTrails(const model::Scene& scene, const std::vector<model::ObjectI
             const std::optional<std::size_t> poses =
                 subdividedPoseCount(track.keys.size(), levels, track.subdivision.cyclic);
             if (poses && *poses <= left) {
-                plan.subdivided.push_back({id, levels});
+                plan.subdivided.push_back({each.id, levels});
                 left -= *poses;
                 break;
             }

@@ -55,23 +55,39 @@ std::vector<Pose> trailPoses(const model::SceneMotion& motion, model::ObjectId o
 std::vector<ObjectTrail> trailPoses(const model::SceneMotion& motion, const std::vector<model::ObjectId>& objects,
                                     const std::vector<double>& times);
 
+// Whether ScrewBender edits the object's track: a screw track with keys. Its control poses are drawn and dragged,
+// and its trail is its subdivided polyscrew. Another track's keys may all sit in one place (a spinning top's 85
+// keys at its tip), where control poses would only hide the object. False for null.
+bool isScrewBenderTrack(const model::SceneObject* object);
+
 // Which selected object gets which trail, decided up front from the settings and the key counts (not from the
-// poses). The active object's screw track gets its whole subdivision, as ScrewBender edits it: its size is the
-// track's own budget (model::kMaxSubdividedPoses, checked whenever the track is set). The other selected objects,
-// the active one first and then in the selection's order, share TrailSpacing::kMaxTotalCopies: a screw track
-// takes its subdivision's pose count at its levels, or at the most levels that fit what is left (a coarser
-// stroboscope of the same motion, down to its control poses), any other object spacing.copies (clamped); one
-// whose trail does not fit what is left gets none. Joints and empties (drawn as bones and axes: their centre paths
-// say where they go) and objects the scene lacks get none.
+// poses). The active object's screw track gets its whole subdivision, as ScrewBender edits it, whatever the object
+// (a joint's or an empty's too: its control poses are drawn and dragged like any other's): its size is the track's
+// own budget (model::kMaxSubdividedPoses, checked whenever the track is set). The other selected objects, the
+// active one first and then in the selection's order, share TrailSpacing::kMaxTotalCopies: a screw track takes its
+// subdivision's pose count at its levels, or at the most levels that fit what is left (a coarser stroboscope of the
+// same motion, down to its control poses), any other object spacing.copies (clamped); one whose trail does not fit
+// what is left gets none. Other joints and empties (drawn as bones and axes: their centre paths say where they go)
+// and objects the scene lacks get none.
 struct TrailPlan {
+    // A selected object the scene holds.
+    struct Object {
+        model::ObjectId id = model::kNoObject;
+        std::size_t index = 0; // in scene.objects
+        bool joint = false;    // model::findJoints
+    };
     struct Subdivided {
         model::ObjectId object = model::kNoObject;
         int levels = 0; // the track's, or fewer
         bool operator==(const Subdivided&) const = default;
     };
-    std::vector<Subdivided> subdivided; // the screw tracks, the active one first if it is one
+    // The selected objects the scene holds, the active one first and then in the selection's order: the order in
+    // which the trails share their budget, and the centre paths theirs (centre_path.h).
+    std::vector<Object> objects;
+    std::vector<Subdivided> subdivided; // the screw tracks, in the objects' order
     std::vector<model::ObjectId> sampled;
 };
+// The scene is searched once, whatever the number of selected objects.
 TrailPlan planTrails(const model::Scene& scene, const std::vector<model::ObjectId>& selected, model::ObjectId active,
                      const TrailSpacing& spacing);
 

@@ -259,7 +259,7 @@ void Viewport::setShading(Shading shading)
 
 bool Viewport::showsControlPoses() const
 {
-    return showControlPoses_ && DrawnMotion::isScrewBenderTrack(selection_.selectedObject());
+    return showControlPoses_ && isScrewBenderTrack(selection_.selectedObject());
 }
 
 std::optional<HandleFrame> Viewport::handleFrame() const
