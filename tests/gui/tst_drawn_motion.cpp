@@ -199,6 +199,9 @@ private slots:
             QVERIFY((paths[1][i] - centreAt(ids[0], Eigen::Vector3d(2, 2, 2), times[i])).norm() < 1e-5F);
             QVERIFY(paths[0][i].allFinite());
         }
+        // The viewport uploads paths when they change, and only then.
+        QVERIFY(drawn.takeTrajectoriesChange());
+        QVERIFY(!drawn.takeTrajectoriesChange());
 
         // Key 1 (1 s, the path's point 24) moved: the path follows once sampled anew, a moment behind.
         const Eigen::Vector3d moved(-4.0, 7.0, 2.5);
@@ -207,11 +210,13 @@ private slots:
             (moved + document.object(ids[0])->track.keys[1].pose.orientation * Eigen::Vector3d(2, 2, 2)).cast<float>();
         QTRY_VERIFY(drawn.trajectories().size() == 2 && (drawn.trajectories()[1][24] - expected).norm() < 1e-5F);
         QVERIFY(!drawn.trajectoriesPending());
+        QVERIFY(drawn.takeTrajectoriesChange());
 
         // Nothing selected: no path.
         selection.clear();
         QVERIFY(drawn.trajectories().empty());
         QVERIFY(!drawn.trajectoriesPending());
+        QVERIFY(drawn.takeTrajectoriesChange());
     }
 
     // The paths' budget in full: 64 selected objects, two chains of 32 (a motion capture's depth), 4097 points
