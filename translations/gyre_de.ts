@@ -1277,7 +1277,7 @@
         <translation>Objekt %1 „%2“ wird als „%3“ geschrieben, damit sein Name eindeutig ist</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="445"/>
+        <location filename="../src/io/scene_export.cpp" line="481"/>
         <source>cannot be written as FBX: %1</source>
         <translation>kann nicht als FBX geschrieben werden: %1</translation>
     </message>
@@ -1304,7 +1304,7 @@
     <message>
         <location filename="../src/io/scene_export.cpp" line="157"/>
         <source>the skin of &apos;%1&apos; names object %2, which the scene does not hold; its mesh is written rigid</source>
-        <translation>die Haut von '%1' nennt Objekt %2, das die Szene nicht enthält; ihr Mesh wird starr geschrieben</translation>
+        <translation>die Haut von &apos;%1&apos; nennt Objekt %2, das die Szene nicht enthält; ihr Mesh wird starr geschrieben</translation>
     </message>
     <message>
         <location filename="../src/io/scene_export.cpp" line="184"/>
@@ -1312,42 +1312,42 @@
         <translation>das Mesh von „%1“ hat einen Index jenseits seiner Eckpunkte</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="375"/>
+        <location filename="../src/io/scene_export.cpp" line="411"/>
         <source>Assimp cannot write it</source>
         <translation>Assimp kann sie nicht schreiben</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="376"/>
+        <location filename="../src/io/scene_export.cpp" line="412"/>
         <source>Assimp cannot write it: %1</source>
         <translation>Assimp kann sie nicht schreiben: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="382"/>
+        <location filename="../src/io/scene_export.cpp" line="418"/>
         <source>Assimp wrote nothing</source>
         <translation>Assimp hat nichts geschrieben</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="401"/>
+        <location filename="../src/io/scene_export.cpp" line="437"/>
         <source>cannot be written as glTF: %1</source>
         <translation>kann nicht als glTF geschrieben werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="425"/>
+        <location filename="../src/io/scene_export.cpp" line="461"/>
         <source>the frame rate must be a finite number above zero</source>
         <translation>die Bildrate muss eine endliche Zahl über null sein</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="427"/>
+        <location filename="../src/io/scene_export.cpp" line="463"/>
         <source>the scene&apos;s time range is empty or not finite</source>
         <translation>der Zeitbereich der Szene ist leer oder nicht endlich</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="430"/>
+        <location filename="../src/io/scene_export.cpp" line="466"/>
         <source>the scene has no meshes, and OBJ holds nothing else</source>
         <translation>die Szene hat keine Meshes, und OBJ enthält nichts anderes</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="432"/>
+        <location filename="../src/io/scene_export.cpp" line="468"/>
         <source>OBJ holds no motion: the meshes are written as posed at the start time</source>
         <translation>OBJ enthält keine Bewegung: die Meshes werden so geschrieben, wie sie zur Startzeit stehen</translation>
     </message>
@@ -2174,13 +2174,13 @@
 <context>
     <name>gyre::app::DrawnMotion</name>
     <message>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="42"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="16"/>
         <source>The motion could not be rebuilt: %1</source>
         <translation>Die Bewegung konnte nicht neu aufgebaut werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="49"/>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="67"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="26"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="43"/>
         <source>The trail could not be built: %1</source>
         <translation>Die Stroboskopspur konnte nicht aufgebaut werden: %1</translation>
     </message>
@@ -2683,22 +2683,22 @@
 <context>
     <name>gyre::app::KeyframeActions</name>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="78"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="77"/>
         <source>Cannot add a keyframe: %1</source>
         <translation>Schlüsselbild kann nicht hinzugefügt werden: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="129"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="133"/>
         <source>Apply Euler Filter</source>
         <translation>Euler-Filter anwenden</translation>
     </message>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="145"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="149"/>
         <source>This span has a single free flight</source>
         <translation>Dieser Abschnitt hat nur einen freien Flug</translation>
     </message>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="147"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="151"/>
         <source>Cannot step the flight: %1</source>
         <translation>Flug kann nicht gewechselt werden: %1</translation>
     </message>
@@ -2824,167 +2824,162 @@
         <translation>&lt;geöffnet&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="287"/>
-        <source>Drawing the direction on the sphere needs OpenGL 3.3, which this display does not offer. The speed plot and the fit work without it.</source>
-        <translation>Das Zeichnen der Richtung auf der Kugel braucht OpenGL 3.3, das diese Anzeige nicht bietet. Das Geschwindigkeitsdiagramm und die Anpassung funktionieren ohne.</translation>
-    </message>
-    <message>
-        <location filename="../src/app/main_window.cpp" line="306"/>
+        <location filename="../src/app/main_window.cpp" line="293"/>
         <source>The 3D viewport needs OpenGL 3.3, which this display does not offer. Editing, the panels and the timeline work without it.</source>
         <translation>Das 3D-Ansichtsfenster braucht OpenGL 3.3, das diese Anzeige nicht bietet. Bearbeiten, die Bedienfelder und die Zeitleiste funktionieren ohne.</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="359"/>
+        <location filename="../src/app/main_window.cpp" line="346"/>
         <source>Viewport frame rate while something moves, and the time to subdivide the trail: on the worker, and from the request to its arrival</source>
         <translation>Bildrate des Ansichtsfensters, während sich etwas bewegt, und die Zeit zum Unterteilen der Stroboskopspur: im Hintergrund-Thread und von der Anforderung bis zum Eintreffen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="369"/>
+        <location filename="../src/app/main_window.cpp" line="356"/>
         <source>%1 fps · subdivision %2 ms (%3 ms to arrive)</source>
         <translation>%1 fps · Unterteilung %2 ms (%3 ms bis zur Ankunft)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="413"/>
+        <location filename="../src/app/main_window.cpp" line="400"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="415"/>
+        <location filename="../src/app/main_window.cpp" line="402"/>
         <source>%1[*] — Gyre</source>
         <translation>%1[*] — Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="430"/>
+        <location filename="../src/app/main_window.cpp" line="417"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="448"/>
+        <location filename="../src/app/main_window.cpp" line="435"/>
         <source>Cannot open the project</source>
         <translation>Das Projekt kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="471"/>
+        <location filename="../src/app/main_window.cpp" line="458"/>
         <source>L-shaped cycle (ScrewBender)</source>
         <translation>L-förmiger Zyklus (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="472"/>
+        <location filename="../src/app/main_window.cpp" line="459"/>
         <source>Spinning top (sketched angular velocity)</source>
         <translation>Kreisel (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="473"/>
+        <location filename="../src/app/main_window.cpp" line="460"/>
         <source>Letter M (sketched angular velocity)</source>
         <translation>Buchstabe M (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="474"/>
+        <location filename="../src/app/main_window.cpp" line="461"/>
         <source>Hat (sketched angular velocity)</source>
         <translation>Hut (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="475"/>
+        <location filename="../src/app/main_window.cpp" line="462"/>
         <source>Falling leaf (sketched angular velocity)</source>
         <translation>Fallendes Blatt (skizzierte Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="476"/>
+        <location filename="../src/app/main_window.cpp" line="463"/>
         <source>Pen (sketched angular speed)</source>
         <translation>Stift (skizzierter Betrag der Winkelgeschwindigkeit)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="477"/>
+        <location filename="../src/app/main_window.cpp" line="464"/>
         <source>Pendulum (ScrewBender)</source>
         <translation>Pendel (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="478"/>
+        <location filename="../src/app/main_window.cpp" line="465"/>
         <source>Spinning block (ScrewBender)</source>
         <translation>Rotierender Block (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="479"/>
+        <location filename="../src/app/main_window.cpp" line="466"/>
         <source>Critter&apos;s non-planar cycle (ScrewBender)</source>
         <translation>Nicht-ebener Zyklus eines Tierchens (ScrewBender)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="480"/>
+        <location filename="../src/app/main_window.cpp" line="467"/>
         <source>Tossed T-handle (free flight)</source>
         <translation>Geworfener T-Griff (freier Flug)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="481"/>
+        <location filename="../src/app/main_window.cpp" line="468"/>
         <source>Flipped coin (free flight)</source>
         <translation>Geworfene Münze (freier Flug)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="482"/>
+        <location filename="../src/app/main_window.cpp" line="469"/>
         <source>Thrown book (free flight)</source>
         <translation>Geworfenes Buch (freier Flug)</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="501"/>
+        <location filename="../src/app/main_window.cpp" line="488"/>
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="514"/>
+        <location filename="../src/app/main_window.cpp" line="501"/>
         <source>Cannot save the project</source>
         <translation>Das Projekt kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="518"/>
+        <location filename="../src/app/main_window.cpp" line="505"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="527"/>
+        <location filename="../src/app/main_window.cpp" line="514"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="527"/>
+        <location filename="../src/app/main_window.cpp" line="514"/>
         <source>The project has unsaved changes. Save them first?</source>
         <translation>Das Projekt hat ungespeicherte Änderungen. Zuerst speichern?</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="566"/>
+        <location filename="../src/app/main_window.cpp" line="553"/>
         <source>About Gyre</source>
         <translation>Über Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="567"/>
+        <location filename="../src/app/main_window.cpp" line="554"/>
         <source>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Edit the rotations of animated rigid objects: every way of writing an orientation, interpolation that behaves, sketched angular velocity, and ScrewBender motions.&lt;/p&gt;&lt;p&gt;Built on Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 and QCustomPlot %8.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Rotationen animierter starrer Objekte bearbeiten: jede Schreibweise einer Orientierung, Interpolation, die sich gut verhält, skizzierte Winkelgeschwindigkeit und ScrewBender-Bewegungen.&lt;/p&gt;&lt;p&gt;Aufgebaut auf Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 und QCustomPlot %8.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="587"/>
+        <location filename="../src/app/main_window.cpp" line="574"/>
         <source>Autosave failed: %1</source>
         <translation>Automatische Sicherung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="596"/>
+        <location filename="../src/app/main_window.cpp" line="583"/>
         <source>an untitled project</source>
         <translation>ein unbenanntes Projekt</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="599"/>
+        <location filename="../src/app/main_window.cpp" line="586"/>
         <source>Recover unsaved work</source>
         <translation>Ungesicherte Arbeit wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="600"/>
+        <location filename="../src/app/main_window.cpp" line="587"/>
         <source>Gyre ended without saving changes to %1 (last copy %2). Recover them?</source>
         <translation>Gyre wurde beendet, ohne Änderungen an %1 zu speichern (letzte Kopie %2). Wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="615"/>
+        <location filename="../src/app/main_window.cpp" line="602"/>
         <source>Cannot recover</source>
         <translation>Wiederherstellen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="590"/>
+        <location filename="../src/app/main_window.cpp" line="577"/>
         <source>Autosave is off: %1</source>
         <translation>Automatische Sicherung ist aus: %1</translation>
     </message>
@@ -3438,82 +3433,82 @@
 <context>
     <name>gyre::app::SphereView</name>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="190"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="192"/>
         <source>Draw</source>
         <translation>Zeichnen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="191"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="193"/>
         <source>Draw the direction of the angular velocity on the front of the sphere</source>
         <translation>Die Richtung der Winkelgeschwindigkeit auf die Vorderseite der Kugel zeichnen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="192"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="194"/>
         <source>Erase</source>
         <translation>Radieren</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="192"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="194"/>
         <source>Erase the strokes&apos; points under the pointer</source>
         <translation>Die Punkte der Striche unter dem Zeiger radieren</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="193"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="195"/>
         <source>Pattern</source>
         <translation>Muster</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="194"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="196"/>
         <source>Draw a pattern to repeat along the strokes, on the pad</source>
         <translation>Auf dem Feld ein Muster zeichnen, das sich entlang der Striche wiederholt</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="197"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="199"/>
         <source>Reset View</source>
         <translation>Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="200"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="202"/>
         <source>Turn the sphere back to its first view, z up (R)</source>
         <translation>Die Kugel in ihre erste Ansicht zurückdrehen, z oben (R)</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="244"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="246"/>
         <source>Select an object to sketch the direction of its angular velocity.</source>
         <translation>Wählen Sie ein Objekt, um die Richtung seiner Winkelgeschwindigkeit zu skizzieren.</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="246"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="248"/>
         <source>%1 does not turn: key it in two orientations to give it an angular velocity to sketch.</source>
         <translation>%1 dreht sich nicht: Setzen Sie Schlüsselbilder in zwei Orientierungen, damit es eine Winkelgeschwindigkeit zum Skizzieren hat.</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="621"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="623"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="654"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="656"/>
         <source>motion: ω/|ω|</source>
         <translation>Bewegung: ω/|ω|</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="656"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="658"/>
         <source>fitted</source>
         <translation>angepasst</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="657"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="659"/>
         <source>before the fit</source>
         <translation>vor der Anpassung</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="659"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="661"/>
         <source>sketch as drawn</source>
         <translation>Skizze wie gezeichnet</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="660"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="662"/>
         <source>sketch as fitted, pattern applied</source>
         <translation>Skizze wie angepasst, mit Muster</translation>
     </message>
@@ -3813,7 +3808,7 @@
         <translation>Objekt ausblenden</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/apply_euler_filter_command.cpp" line="13"/>
+        <location filename="../src/model/commands/apply_euler_filter_command.cpp" line="15"/>
         <source>Apply Euler Filter</source>
         <translation>Euler-Filter anwenden</translation>
     </message>

@@ -1277,7 +1277,7 @@
         <translation>对象 %1“%2”写为“%3”，以使其名称唯一</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="445"/>
+        <location filename="../src/io/scene_export.cpp" line="481"/>
         <source>cannot be written as FBX: %1</source>
         <translation>无法写成 FBX：%1</translation>
     </message>
@@ -1304,7 +1304,7 @@
     <message>
         <location filename="../src/io/scene_export.cpp" line="157"/>
         <source>the skin of &apos;%1&apos; names object %2, which the scene does not hold; its mesh is written rigid</source>
-        <translation>'%1' 的蒙皮引用了场景中不存在的物体 %2；其网格按刚体写出</translation>
+        <translation>&apos;%1&apos; 的蒙皮引用了场景中不存在的物体 %2；其网格按刚体写出</translation>
     </message>
     <message>
         <location filename="../src/io/scene_export.cpp" line="184"/>
@@ -1312,42 +1312,42 @@
         <translation>“%1”的网格有超出其顶点范围的索引</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="375"/>
+        <location filename="../src/io/scene_export.cpp" line="411"/>
         <source>Assimp cannot write it</source>
         <translation>Assimp 无法写入</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="376"/>
+        <location filename="../src/io/scene_export.cpp" line="412"/>
         <source>Assimp cannot write it: %1</source>
         <translation>Assimp 无法写入：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="382"/>
+        <location filename="../src/io/scene_export.cpp" line="418"/>
         <source>Assimp wrote nothing</source>
         <translation>Assimp 没有写出任何内容</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="401"/>
+        <location filename="../src/io/scene_export.cpp" line="437"/>
         <source>cannot be written as glTF: %1</source>
         <translation>无法写成 glTF：%1</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="425"/>
+        <location filename="../src/io/scene_export.cpp" line="461"/>
         <source>the frame rate must be a finite number above zero</source>
         <translation>帧率必须是大于零的有限数</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="427"/>
+        <location filename="../src/io/scene_export.cpp" line="463"/>
         <source>the scene&apos;s time range is empty or not finite</source>
         <translation>场景的时间范围为空或不是有限值</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="430"/>
+        <location filename="../src/io/scene_export.cpp" line="466"/>
         <source>the scene has no meshes, and OBJ holds nothing else</source>
         <translation>场景没有网格，而 OBJ 不能保存其他内容</translation>
     </message>
     <message>
-        <location filename="../src/io/scene_export.cpp" line="432"/>
+        <location filename="../src/io/scene_export.cpp" line="468"/>
         <source>OBJ holds no motion: the meshes are written as posed at the start time</source>
         <translation>OBJ 不包含运动：网格按起始时间的姿态写出</translation>
     </message>
@@ -2173,13 +2173,13 @@
 <context>
     <name>gyre::app::DrawnMotion</name>
     <message>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="42"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="16"/>
         <source>The motion could not be rebuilt: %1</source>
         <translation>无法重建运动：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="49"/>
-        <location filename="../src/app/viewport/drawn_motion.cpp" line="67"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="26"/>
+        <location filename="../src/app/viewport/drawn_motion.cpp" line="43"/>
         <source>The trail could not be built: %1</source>
         <translation>无法生成频闪轨迹：%1</translation>
     </message>
@@ -2682,22 +2682,22 @@
 <context>
     <name>gyre::app::KeyframeActions</name>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="78"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="77"/>
         <source>Cannot add a keyframe: %1</source>
         <translation>无法添加关键帧：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="129"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="133"/>
         <source>Apply Euler Filter</source>
         <translation>应用欧拉滤波器</translation>
     </message>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="145"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="149"/>
         <source>This span has a single free flight</source>
         <translation>此区间只有一个自由飞行</translation>
     </message>
     <message>
-        <location filename="../src/app/keyframe_actions.cpp" line="147"/>
+        <location filename="../src/app/keyframe_actions.cpp" line="151"/>
         <source>Cannot step the flight: %1</source>
         <translation>无法切换飞行：%1</translation>
     </message>
@@ -2823,167 +2823,162 @@
         <translation>&lt;已打开&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="287"/>
-        <source>Drawing the direction on the sphere needs OpenGL 3.3, which this display does not offer. The speed plot and the fit work without it.</source>
-        <translation>在球面上绘制方向需要 OpenGL 3.3，而此显示环境不支持。速度图和拟合无需它也能工作。</translation>
-    </message>
-    <message>
-        <location filename="../src/app/main_window.cpp" line="306"/>
+        <location filename="../src/app/main_window.cpp" line="293"/>
         <source>The 3D viewport needs OpenGL 3.3, which this display does not offer. Editing, the panels and the timeline work without it.</source>
         <translation>3D 视口需要 OpenGL 3.3，而此显示环境不支持。编辑、面板和时间轴无需它也能工作。</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="359"/>
+        <location filename="../src/app/main_window.cpp" line="346"/>
         <source>Viewport frame rate while something moves, and the time to subdivide the trail: on the worker, and from the request to its arrival</source>
         <translation>有物体运动时视口的帧率，以及细分频闪轨迹所用的时间：在后台线程中的用时，以及从请求到送达的用时</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="369"/>
+        <location filename="../src/app/main_window.cpp" line="356"/>
         <source>%1 fps · subdivision %2 ms (%3 ms to arrive)</source>
         <translation>%1 fps · 细分 %2 毫秒（%3 毫秒后到达）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="413"/>
+        <location filename="../src/app/main_window.cpp" line="400"/>
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="415"/>
+        <location filename="../src/app/main_window.cpp" line="402"/>
         <source>%1[*] — Gyre</source>
         <translation>%1[*] — Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="430"/>
+        <location filename="../src/app/main_window.cpp" line="417"/>
         <source>Open Project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="448"/>
+        <location filename="../src/app/main_window.cpp" line="435"/>
         <source>Cannot open the project</source>
         <translation>无法打开项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="471"/>
+        <location filename="../src/app/main_window.cpp" line="458"/>
         <source>L-shaped cycle (ScrewBender)</source>
         <translation>L 形循环（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="472"/>
+        <location filename="../src/app/main_window.cpp" line="459"/>
         <source>Spinning top (sketched angular velocity)</source>
         <translation>陀螺（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="473"/>
+        <location filename="../src/app/main_window.cpp" line="460"/>
         <source>Letter M (sketched angular velocity)</source>
         <translation>字母 M（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="474"/>
+        <location filename="../src/app/main_window.cpp" line="461"/>
         <source>Hat (sketched angular velocity)</source>
         <translation>帽子（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="475"/>
+        <location filename="../src/app/main_window.cpp" line="462"/>
         <source>Falling leaf (sketched angular velocity)</source>
         <translation>飘落的树叶（草图绘制的角速度）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="476"/>
+        <location filename="../src/app/main_window.cpp" line="463"/>
         <source>Pen (sketched angular speed)</source>
         <translation>笔（草图绘制的角速度大小）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="477"/>
+        <location filename="../src/app/main_window.cpp" line="464"/>
         <source>Pendulum (ScrewBender)</source>
         <translation>摆（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="478"/>
+        <location filename="../src/app/main_window.cpp" line="465"/>
         <source>Spinning block (ScrewBender)</source>
         <translation>旋转的方块（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="479"/>
+        <location filename="../src/app/main_window.cpp" line="466"/>
         <source>Critter&apos;s non-planar cycle (ScrewBender)</source>
         <translation>小动物的非平面循环（ScrewBender）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="480"/>
+        <location filename="../src/app/main_window.cpp" line="467"/>
         <source>Tossed T-handle (free flight)</source>
         <translation>抛出的 T 形手柄（自由飞行）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="481"/>
+        <location filename="../src/app/main_window.cpp" line="468"/>
         <source>Flipped coin (free flight)</source>
         <translation>抛起的硬币（自由飞行）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="482"/>
+        <location filename="../src/app/main_window.cpp" line="469"/>
         <source>Thrown book (free flight)</source>
         <translation>抛出的书（自由飞行）</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="501"/>
+        <location filename="../src/app/main_window.cpp" line="488"/>
         <source>Save Project As</source>
         <translation>项目另存为</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="514"/>
+        <location filename="../src/app/main_window.cpp" line="501"/>
         <source>Cannot save the project</source>
         <translation>无法保存项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="518"/>
+        <location filename="../src/app/main_window.cpp" line="505"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="527"/>
+        <location filename="../src/app/main_window.cpp" line="514"/>
         <source>Unsaved changes</source>
         <translation>未保存的更改</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="527"/>
+        <location filename="../src/app/main_window.cpp" line="514"/>
         <source>The project has unsaved changes. Save them first?</source>
         <translation>项目有未保存的更改。要先保存吗？</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="566"/>
+        <location filename="../src/app/main_window.cpp" line="553"/>
         <source>About Gyre</source>
         <translation>关于 Gyre</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="567"/>
+        <location filename="../src/app/main_window.cpp" line="554"/>
         <source>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;Edit the rotations of animated rigid objects: every way of writing an orientation, interpolation that behaves, sketched angular velocity, and ScrewBender motions.&lt;/p&gt;&lt;p&gt;Built on Qt %2, Eigen %3.%4.%5, Ceres Solver %6, Assimp %7 and QCustomPlot %8.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Gyre %1&lt;/h3&gt;&lt;p&gt;编辑动画刚体的旋转：各种朝向表示方式、表现良好的插值、草图绘制的角速度，以及 ScrewBender 运动。&lt;/p&gt;&lt;p&gt;基于 Qt %2、Eigen %3.%4.%5、Ceres Solver %6、Assimp %7 和 QCustomPlot %8 构建。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="587"/>
+        <location filename="../src/app/main_window.cpp" line="574"/>
         <source>Autosave failed: %1</source>
         <translation>自动保存失败：%1</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="596"/>
+        <location filename="../src/app/main_window.cpp" line="583"/>
         <source>an untitled project</source>
         <translation>一个未命名项目</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="599"/>
+        <location filename="../src/app/main_window.cpp" line="586"/>
         <source>Recover unsaved work</source>
         <translation>恢复未保存的工作</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="600"/>
+        <location filename="../src/app/main_window.cpp" line="587"/>
         <source>Gyre ended without saving changes to %1 (last copy %2). Recover them?</source>
         <translation>Gyre 结束时未保存对 %1 的更改（最后一次副本 %2）。要恢复吗？</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="615"/>
+        <location filename="../src/app/main_window.cpp" line="602"/>
         <source>Cannot recover</source>
         <translation>无法恢复</translation>
     </message>
     <message>
-        <location filename="../src/app/main_window.cpp" line="590"/>
+        <location filename="../src/app/main_window.cpp" line="577"/>
         <source>Autosave is off: %1</source>
         <translation>自动保存已关闭：%1</translation>
     </message>
@@ -3433,82 +3428,82 @@
 <context>
     <name>gyre::app::SphereView</name>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="190"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="192"/>
         <source>Draw</source>
         <translation>绘制</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="191"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="193"/>
         <source>Draw the direction of the angular velocity on the front of the sphere</source>
         <translation>在球的正面绘制角速度的方向</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="192"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="194"/>
         <source>Erase</source>
         <translation>擦除</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="192"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="194"/>
         <source>Erase the strokes&apos; points under the pointer</source>
         <translation>擦除指针下的笔画点</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="193"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="195"/>
         <source>Pattern</source>
         <translation>图案</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="194"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="196"/>
         <source>Draw a pattern to repeat along the strokes, on the pad</source>
         <translation>在画板上绘制沿笔画重复的图案</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="197"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="199"/>
         <source>Reset View</source>
         <translation>重置视图</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="200"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="202"/>
         <source>Turn the sphere back to its first view, z up (R)</source>
         <translation>将球转回初始视图，z 朝上（R）</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="244"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="246"/>
         <source>Select an object to sketch the direction of its angular velocity.</source>
         <translation>选择一个对象以绘制其角速度方向的草图。</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="246"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="248"/>
         <source>%1 does not turn: key it in two orientations to give it an angular velocity to sketch.</source>
         <translation>%1 没有转动：请在两个朝向上设置关键帧，使其具有可绘制的角速度。</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="621"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="623"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="654"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="656"/>
         <source>motion: ω/|ω|</source>
         <translation>运动：ω/|ω|</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="656"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="658"/>
         <source>fitted</source>
         <translation>拟合后</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="657"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="659"/>
         <source>before the fit</source>
         <translation>拟合前</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="659"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="661"/>
         <source>sketch as drawn</source>
         <translation>绘制的草图</translation>
     </message>
     <message>
-        <location filename="../src/app/sketch/sphere_view.cpp" line="660"/>
+        <location filename="../src/app/sketch/sphere_view.cpp" line="662"/>
         <source>sketch as fitted, pattern applied</source>
         <translation>拟合后的草图，已应用图案</translation>
     </message>
@@ -3806,7 +3801,7 @@
         <translation>隐藏对象</translation>
     </message>
     <message>
-        <location filename="../src/model/commands/apply_euler_filter_command.cpp" line="13"/>
+        <location filename="../src/model/commands/apply_euler_filter_command.cpp" line="15"/>
         <source>Apply Euler Filter</source>
         <translation>应用欧拉滤波器</translation>
     </message>

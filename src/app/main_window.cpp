@@ -275,20 +275,7 @@ void MainWindow::createViews()
     createFitViews();
     createViewport();
     new ViewPreferences(*ui_->menuView, *ui_->actionShowTrail, *ui_->actionOrthographic, viewport_, this);
-    createSphereView();
-}
-
-void MainWindow::createSphereView()
-{
-    if (Viewport::isSupported()) {
-        ui_->sphereDockLayout->addWidget(new DirectionSketchPanel(document_, selection_, ui_->sphereDockContents));
-        return;
-    }
-    auto* missing = new QLabel(tr("Drawing the direction on the sphere needs OpenGL 3.3, which this display does "
-                                  "not offer. The speed plot and the fit work without it."),
-                               ui_->sphereDockContents);
-    missing->setWordWrap(true);
-    ui_->sphereDockLayout->addWidget(missing);
+    ui_->sphereDockLayout->addWidget(new DirectionSketchPanel(document_, selection_, ui_->sphereDockContents));
 }
 
 void MainWindow::createFitViews()

@@ -69,8 +69,6 @@ private:
     // closes it when it is in front.
     void toggleUndoHistory();
     void createViews();
-    // The sphere to draw the angular velocity's direction on, or a note saying why there is none.
-    void createSphereView();
     // The fit panel, and the fit's progress in the status bar, sharing one controller.
     void createFitViews();
     // The 3D viewport in the middle, or a note saying why there is none.

@@ -351,7 +351,7 @@ private slots:
 
         view_->drawAction()->trigger();
         panel_->resize(500, 560); // a shown widget gets its resize event at once
-        const QImage shot = view_->grabFramebuffer();
+        const QImage shot = view_->grab().toImage();
         QVERIFY(!shot.isNull());
         shot.save(QStringLiteral("sphere-view.png"));
         panel_->grab().save(QStringLiteral("sphere-panel.png"));
@@ -436,8 +436,8 @@ private slots:
         const QPointF centre(view_->width() / 2.0, view_->height() / 2.0);
         dragThrough(view_, {view_->projectToWidget(Eigen::Vector3d::UnitZ()), centre - QPointF(0.0, 0.3 * view_->sphereRadius())},
                     Qt::RightButton);
-        // grabFramebuffer draws the view as it is now, turned by the drag.
-        view_->grabFramebuffer().save(QStringLiteral("sphere-view-top.png"));
+        // grab draws the view as it is now, turned by the drag.
+        view_->grab().toImage().save(QStringLiteral("sphere-view-top.png"));
     }
 
     void withoutASelectionItSaysSo()
@@ -452,11 +452,11 @@ private slots:
 
     void movingTheCurrentTimeRedrawsOnlyTheDot()
     {
-        view_->grabFramebuffer(); // whatever the set-up left to redraw
+        view_->grab(); // whatever the set-up left to redraw
         const int builds = view_->layerBuilds();
         for (double seconds : {1.2, 1.6, 2.0}) {
             document_->setCurrentTime(seconds);
-            const QImage shot = view_->grabFramebuffer();
+            const QImage shot = view_->grab().toImage();
             const Eigen::Vector3d dot = *app::directionAt(view_->curves().motion, seconds);
             QVERIFY(view_->facesViewer(dot));
             const QPointF pixel = view_->projectToWidget(dot) * view_->devicePixelRatioF();
@@ -469,26 +469,26 @@ private slots:
         // Turning the sphere redraws the layers once, however many moves the paint follows.
         const QPointF centre(view_->width() / 2.0, view_->height() / 2.0);
         dragThrough(view_, {centre, centre + QPointF(20, 0), centre + QPointF(40, 10)}, Qt::RightButton);
-        view_->grabFramebuffer();
+        view_->grab();
         QCOMPARE(view_->layerBuilds(), builds + 1);
 
         // New curves redraw them too.
         QSignalSpy updated(view_, &app::SphereView::curvesUpdated);
         addKeyAfterTheLast();
         QVERIFY(updated.wait(5000));
-        view_->grabFramebuffer();
+        view_->grab();
         QCOMPARE(view_->layerBuilds(), builds + 2);
     }
 
     void aKeyMovedButNotTurnedRedrawsNothing()
     {
-        view_->grabFramebuffer(); // whatever the set-up left to redraw
+        view_->grab(); // whatever the set-up left to redraw
         const int builds = view_->layerBuilds();
         QSignalSpy updated(view_, &app::SphereView::curvesUpdated);
         document_->undoStack().push(
             new model::SetKeyframePositionCommand(*document_, object_, 10, Eigen::Vector3d(0.5, 0.0, 0.0)));
         QVERIFY(updated.wait(5000));
-        view_->grabFramebuffer();
+        view_->grab();
         QCOMPARE(view_->layerBuilds(), builds);
     }
 

@@ -133,7 +133,7 @@ std::vector<Eigen::Vector3d> directionsOf(const std::vector<fit::TimedVector>& s
 } // namespace
 
 SphereView::SphereView(model::Document& document, Selection& selection, QWidget* parent)
-    : QOpenGLWidget(parent)
+    : QWidget(parent)
     , document_(document)
     , selection_(selection)
     , selectedTrack_(document, selection)
@@ -148,6 +148,8 @@ SphereView::SphereView(model::Document& document, Selection& selection, QWidget*
           [this](const SphereCurves& curves) { showCurves(curves); })
 {
     setFocusPolicy(Qt::StrongFocus);
+    // The back layer, filled with the background, covers the view: Qt need not clear it first.
+    setAttribute(Qt::WA_OpaquePaintEvent);
     setCursor(Qt::CrossCursor);
     createActions();
 
@@ -277,14 +279,14 @@ void SphereView::resizeEvent(QResizeEvent* event)
 {
     projection_.setViewportSize(width(), height());
     layersStale_ = true;
-    QOpenGLWidget::resizeEvent(event);
+    QWidget::resizeEvent(event);
 }
 
 void SphereView::changeEvent(QEvent* event)
 {
     if (event->type() == QEvent::FontChange || event->type() == QEvent::LanguageChange)
         invalidateLayers();
-    QOpenGLWidget::changeEvent(event);
+    QWidget::changeEvent(event);
 }
 
 void SphereView::mousePressEvent(QMouseEvent* event)
@@ -347,7 +349,7 @@ void SphereView::keyPressEvent(QKeyEvent* event)
         cancelDrag();
         return;
     }
-    QOpenGLWidget::keyPressEvent(event);
+    QWidget::keyPressEvent(event);
 }
 
 void SphereView::extendStroke(const QPointF& position)
@@ -470,7 +472,7 @@ void SphereView::rebuildLayers()
     ++layerBuilds_;
 }
 
-void SphereView::paintGL()
+void SphereView::paintEvent(QPaintEvent*)
 {
     // The screen's pixel ratio changes when the window moves to another screen.
     if (layersStale_ || backLayer_.devicePixelRatio() != devicePixelRatioF())

@@ -36,10 +36,11 @@
 // All but the current-time dot changes only with the curves, the strokes, the turn of the sphere, the
 // range and the size, so it is drawn once, with the raster engine's antialiasing, into two images: what
 // lies behind the disc, and the disc with what lies in front. Each frame paints the two images with the
-// dot between and over them, all as textures the OpenGL paint engine keeps while an image is unchanged;
-// the dot too is an image, so the surface needs no multisampling. Drawing it all every frame, with 4×
-// multisampling, took 190 to 220 ms a frame on llvmpipe for a bone of a 31-joint capture, the cached
-// images under 4 ms (tst_view_drawing, README.md).
+// dot, itself an image, between and over them. Drawing it all every frame, with 4× multisampling in
+// OpenGL, took 190 to 220 ms a frame on llvmpipe for a bone of a 31-joint capture, the cached images
+// under 4 ms (tst_view_drawing, README.md). The view is a raster widget: painting three images needs no
+// OpenGL, and an OpenGL widget would have Qt compose the whole window through OpenGL at every frame
+// (offscreen_gl_widget.h).
 
 #include "app/selected_track.h"
 #include "app/selected_track_sampler.h"
@@ -51,9 +52,9 @@
 
 #include <Eigen/Core>
 #include <QImage>
-#include <QOpenGLWidget>
 #include <QPointF>
 #include <QTimer>
+#include <QWidget>
 
 #include <array>
 #include <cstddef>
@@ -68,7 +69,7 @@ class QPen;
 
 namespace gyre::app {
 
-class SphereView final : public QOpenGLWidget {
+class SphereView final : public QWidget {
     Q_OBJECT
 
 public:
@@ -116,7 +117,7 @@ signals:
 protected:
     void resizeEvent(QResizeEvent* event) override;
     void changeEvent(QEvent* event) override;
-    void paintGL() override;
+    void paintEvent(QPaintEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;

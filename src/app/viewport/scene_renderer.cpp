@@ -115,8 +115,8 @@ void SceneRenderer::initialize()
     lineBuffer_.release();
 
     glEnable(GL_PROGRAM_POINT_SIZE);
-    // Colour blends by the source's alpha; the framebuffer's own alpha stays 1 (1·a + 1·(1 − a)), so
-    // the widget is opaque wherever it is composed: on screen and in QWidget::grab's pictures.
+    // Colour blends by the source's alpha; the framebuffer's own alpha stays 1 (1·a + 1·(1 − a)), as the
+    // viewport's frame is read back as an opaque image (offscreen_gl_widget.h).
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 }
 

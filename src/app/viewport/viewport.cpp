@@ -11,6 +11,7 @@
 
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QResizeEvent>
 #include <QWheelEvent>
 
 #include <Eigen/Geometry>
@@ -59,13 +60,12 @@ bool Viewport::isSupported()
 }
 
 Viewport::Viewport(model::Document& document, Selection& selection, QWidget* parent)
-    : QOpenGLWidget(parent)
+    : OffscreenGlWidget(surfaceFormat(), parent)
     , document_(document)
     , selection_(selection)
     , drawn_(document, selection)
     , handleDrag_(document)
 {
-    setFormat(surfaceFormat());
     setMinimumSize(200, 150);
     setFocusPolicy(Qt::ClickFocus);
 
@@ -83,11 +83,11 @@ Viewport::Viewport(model::Document& document, Selection& selection, QWidget* par
 
 Viewport::~Viewport()
 {
-    // QOpenGLWidget's destructor destroys the context after this part of the object is gone: its
-    // aboutToBeDestroyed must not reach releaseGl then.
-    if (QOpenGLContext* glContext = context())
-        disconnect(glContext, nullptr, this, nullptr);
-    releaseGl();
+    // The renderer's buffers live in the context, which OffscreenGlWidget destroys after this.
+    if (renderer_.isInitialized() && makeCurrent()) {
+        renderer_.release();
+        doneCurrent();
+    }
 }
 
 void Viewport::setPreviewTrack(model::ObjectId object, std::optional<model::MotionTrack> track)
@@ -426,31 +426,20 @@ void Viewport::wheelEvent(QWheelEvent* event)
 
 void Viewport::initializeGL()
 {
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGl, Qt::UniqueConnection);
     renderer_.initialize();
-    trailUploaded_ = false;
 }
 
-void Viewport::releaseGl()
+void Viewport::resizeEvent(QResizeEvent* event)
 {
-    if (!renderer_.isInitialized())
-        return;
-    makeCurrent();
-    renderer_.release();
-    doneCurrent();
-}
-
-void Viewport::resizeGL(int width, int height)
-{
-    // The camera works in widget pixels, as mouse events give them; OpenGL's viewport, in device
-    // pixels, is set by QOpenGLWidget.
-    Q_UNUSED(width);
-    Q_UNUSED(height);
-    camera_.setViewportSize(this->width(), this->height());
+    // The camera works in widget pixels, as mouse events give them, and follows the size at once, not
+    // at the next frame: a click may come first. OpenGL's viewport, in device pixels, is set by
+    // OffscreenGlWidget.
+    camera_.setViewportSize(width(), height());
     // A project opens before the window has its final size; until the artist moves the camera,
     // the framing follows the size.
     if (cameraIsFramed_)
         frameScene();
+    OffscreenGlWidget::resizeEvent(event);
 }
 
 void Viewport::buildLines()
@@ -580,10 +569,8 @@ void Viewport::paintGL()
     }
     updateSkeleton();
     const model::SceneObject* selected = selection_.selectedObject();
-    if (drawn_.takeTrailChange() || !trailUploaded_) {
+    if (drawn_.takeTrailChange())
         renderer_.setTrail(drawn_.trailMatrices());
-        trailUploaded_ = true;
-    }
     buildLines();
 
     FrameMeshes meshes;

@@ -19,6 +19,7 @@
 #include "app/viewport/drawn_motion.h"
 #include "app/viewport/frame_lines.h"
 #include "app/viewport/handle_drag.h"
+#include "app/viewport/offscreen_gl_widget.h"
 #include "app/viewport/orbit_camera.h"
 #include "app/viewport/pose_handles.h"
 #include "app/viewport/scene_renderer.h"
@@ -26,7 +27,6 @@
 #include "model/document.h"
 
 #include <QElapsedTimer>
-#include <QOpenGLWidget>
 #include <QPointF>
 #include <QSurfaceFormat>
 
@@ -38,7 +38,7 @@
 
 namespace gyre::app {
 
-class Viewport final : public QOpenGLWidget {
+class Viewport final : public OffscreenGlWidget {
     Q_OBJECT
 
 public:
@@ -49,8 +49,8 @@ public:
 
     // What the viewport draws with: OpenGL 3.3, core profile, a depth buffer.
     static QSurfaceFormat surfaceFormat();
-    // Whether the display gives such a context. Without one, Qt 6.4 brings the whole window down as
-    // soon as a QOpenGLWidget is shown, so the window asks first.
+    // Whether the display gives such a context. Without one the window shows a message in the
+    // viewport's place.
     static bool isSupported();
 
     // The viewport is what the window is for: it asks for most of it.
@@ -118,7 +118,7 @@ signals:
 
 protected:
     void initializeGL() override;
-    void resizeGL(int width, int height) override;
+    void resizeEvent(QResizeEvent* event) override;
     void paintGL() override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
@@ -146,7 +146,6 @@ private:
     Eigen::AlignedBox3d objectBox(std::size_t index) const;
     void updateSkeleton();
     void frameBox(Eigen::AlignedBox3d box);
-    void releaseGl();
     void buildLines();
     void measureFrame();
     void setDragging(bool dragging);
@@ -161,7 +160,6 @@ private:
     bool reframeWithPaths_ = false; // framed by frameSceneWhenDrawn before the selected objects' paths arrived
     Skeleton skeleton_;
     Shading shading_;
-    bool trailUploaded_ = false;  // to the renderer's present context
 
     bool showGhost_ = true;
     bool showTrajectory_ = true;
