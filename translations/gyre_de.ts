@@ -3092,6 +3092,29 @@
     </message>
 </context>
 <context>
+    <name>gyre::app::OffscreenGlWidget</name>
+    <message>
+        <location filename="../src/app/viewport/offscreen_gl_widget.cpp" line="33"/>
+        <source>The display could not make an offscreen surface for OpenGL.</source>
+        <translation>Die Anzeige konnte keine Offscreen-Oberfläche für OpenGL anlegen.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/viewport/offscreen_gl_widget.cpp" line="35"/>
+        <source>The display could not make an OpenGL %1.%2 context.</source>
+        <translation>Die Anzeige konnte keinen OpenGL-%1.%2-Kontext anlegen.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/viewport/offscreen_gl_widget.cpp" line="39"/>
+        <source>The display could not make its OpenGL context current.</source>
+        <translation>Die Anzeige konnte ihren OpenGL-Kontext nicht aktivieren.</translation>
+    </message>
+    <message>
+        <location filename="../src/app/viewport/offscreen_gl_widget.cpp" line="73"/>
+        <source>OpenGL could not make a framebuffer of %1 × %2 pixels.</source>
+        <translation>OpenGL konnte keinen Framebuffer von %1 × %2 Pixeln anlegen.</translation>
+    </message>
+</context>
+<context>
     <name>gyre::app::OutlinerPanel</name>
     <message>
         <location filename="../src/app/outliner/outliner_panel.cpp" line="28"/>

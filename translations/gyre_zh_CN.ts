@@ -3091,6 +3091,29 @@
     </message>
 </context>
 <context>
+    <name>gyre::app::OffscreenGlWidget</name>
+    <message>
+        <location filename="../src/app/viewport/offscreen_gl_widget.cpp" line="33"/>
+        <source>The display could not make an offscreen surface for OpenGL.</source>
+        <translation>显示系统无法为 OpenGL 创建离屏表面。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/viewport/offscreen_gl_widget.cpp" line="35"/>
+        <source>The display could not make an OpenGL %1.%2 context.</source>
+        <translation>显示系统无法创建 OpenGL %1.%2 上下文。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/viewport/offscreen_gl_widget.cpp" line="39"/>
+        <source>The display could not make its OpenGL context current.</source>
+        <translation>显示系统无法激活其 OpenGL 上下文。</translation>
+    </message>
+    <message>
+        <location filename="../src/app/viewport/offscreen_gl_widget.cpp" line="73"/>
+        <source>OpenGL could not make a framebuffer of %1 × %2 pixels.</source>
+        <translation>OpenGL 无法创建 %1 × %2 像素的帧缓冲区。</translation>
+    </message>
+</context>
+<context>
     <name>gyre::app::OutlinerPanel</name>
     <message>
         <location filename="../src/app/outliner/outliner_panel.cpp" line="28"/>

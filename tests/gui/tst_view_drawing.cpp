@@ -10,6 +10,7 @@
 #include "app/scene_file_actions.h"
 #include "app/sketch/sphere_view.h"
 #include "app/timeline_widget.h"
+#include "app/viewport/centre_path.h"
 #include "app/viewport/viewport.h"
 #include "built_scene_worker.h"
 #include "gui_test_support.h"
@@ -196,6 +197,13 @@ private slots:
         std::printf("playing: %.1f current times a second over %.1f s; the viewport's readout %.1f frames a second\n",
                     static_cast<double>(frames.count()) / seconds, seconds, viewportFps);
         QVERIFY(frames.count() > 0);
+
+        // Every joint selected: each one's centre path over the whole capture, sampled on a worker, drawn each frame.
+        window.selection().selectObjects(ids, bone);
+        const std::size_t pathPoints = ids.size() * app::pathTimes(document.scene()).size();
+        QTRY_COMPARE_WITH_TIMEOUT(viewport->pathPointCount(), pathPoints, 60000);
+        const double allSelectedPaintMs = medianTime([&] { viewport->grabFramebuffer(); });
+        std::printf("every joint selected, %zu path points: viewport drawn %.2f ms\n", pathPoints, allSelectedPaintMs);
     }
 
     // The Graph Editor with a bone of the capture selected: sampling its channels (the editor's job,

@@ -19,6 +19,7 @@
 #include <QElapsedTimer>
 #include <QImage>
 #include <QMouseEvent>
+#include <QScopeGuard>
 #include <QSettings>
 #include <QTest>
 
@@ -302,6 +303,45 @@ private slots:
         }
         // The choice outlives the window.
         QCOMPARE(QSettings().value(QStringLiteral("view/trailCopies")).toInt(), 32);
+    }
+
+    // The selected object's centre path, uploaded when it arrives and drawn from then on: its yellow shows while
+    // View ▸ Trajectory is on, goes when it is off, and goes with the selection, the path then emptied.
+    void theCentrePathIsDrawnUntilTheSelectionGoes()
+    {
+        Session session;
+        QVERIFY(QTest::qWaitForWindowExposed(&session.window));
+        // Hidden for this test alone: the View menu's choices are kept in the settings the later tests read.
+        std::vector<QAction*> hiddenHere;
+        for (const char* name : {"actionShowTrail", "actionShowGhost", "actionShowControlPoses"})
+            hiddenHere.push_back(session.window.findChild<QAction*>(QLatin1String(name)));
+        const auto showAgain = qScopeGuard([&] {
+            for (QAction* action : hiddenHere)
+                action->setChecked(true);
+        });
+        for (QAction* action : hiddenHere)
+            action->setChecked(false);
+        QTRY_VERIFY(session.viewport->pathPointCount() > 100);
+        const auto yellowPixels = [](const QImage& image) {
+            int count = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) {
+                    const QColor colour = image.pixelColor(x, y);
+                    count += colour.red() > 230 && colour.green() > 200 && colour.blue() < 130;
+                }
+            return count;
+        };
+        QAction* showTrajectory = session.window.findChild<QAction*>(QStringLiteral("actionShowTrajectory"));
+        const int shown = yellowPixels(drawnImage(*session.viewport));
+        showTrajectory->setChecked(false);
+        const int hidden = yellowPixels(drawnImage(*session.viewport));
+        QCOMPARE(session.viewport->pathPointCount(), std::size_t{0});
+        showTrajectory->setChecked(true);
+        QCOMPARE(yellowPixels(drawnImage(*session.viewport)), shown);
+        QVERIFY2(shown > hidden + 100, qPrintable(QStringLiteral("%1 yellow pixels shown, %2 hidden").arg(shown).arg(hidden)));
+        session.window.selection().clear();
+        QTRY_COMPARE(session.viewport->pathPointCount(), std::size_t{0});
+        QCOMPARE(yellowPixels(drawnImage(*session.viewport)), hidden);
     }
 
     void everySelectedObjectHasItsTrail()

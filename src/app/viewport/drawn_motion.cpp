@@ -20,7 +20,7 @@ DrawnMotion::DrawnMotion(model::Document& document, Selection& selection, QObjec
                    .failed = [this](const QString& message) {
                        dropTrail();
                        // Not asked for again until the motion, the selection or the range changes.
-                       trajectories_.clear();
+                       setTrajectories({});
                        trajectoriesStale_ = false;
                        emit changed();
                        emit failed(tr("The trail could not be built: %1").arg(message));
@@ -86,7 +86,7 @@ void DrawnMotion::onDocumentChanged(model::ObjectId object, model::Changes chang
         motion_ = std::make_shared<model::SceneMotion>(document_.scene(), motionOf());
         snapshotOriginalMotion();
         dropTrail();
-        trajectories_.clear();
+        setTrajectories({});
         trajectoriesStale_ = true;
         requestTrail();
         emit sceneReset();
@@ -119,7 +119,7 @@ void DrawnMotion::onSelectionChanged()
     if (selection_.object() != activeObject_) {
         // The trails and paths in hand are of another selection: show none until this one's arrive.
         dropTrail();
-        trajectories_.clear();
+        setTrajectories({});
     }
     selectedObjects_ = std::move(objects);
     activeObject_ = selection_.object();
@@ -167,6 +167,12 @@ void DrawnMotion::receiveMotion(std::shared_ptr<const model::SceneMotion> built)
 bool DrawnMotion::isScrewBenderTrack(const model::SceneObject* object)
 {
     return object != nullptr && !object->track.keys.empty() && object->track.interpolation == InterpolationMethod::Screw;
+}
+
+void DrawnMotion::setTrajectories(std::vector<std::vector<Eigen::Vector3f>> paths)
+{
+    trajectories_ = std::move(paths);
+    trajectoriesChanged_ = true;
 }
 
 void DrawnMotion::dropTrail()
@@ -234,7 +240,7 @@ void DrawnMotion::requestSampledTrail()
         sampledJob_.cancel();
         // No request in flight has paths wanted now: were they stale, there is no path to draw.
         if (trajectoriesStale_) {
-            trajectories_.clear();
+            setTrajectories({});
             trajectoriesStale_ = false;
         }
         // Composed again only when some went: a screw trail alone is not uploaded anew at every drag move.
@@ -271,7 +277,7 @@ void DrawnMotion::receiveSampled(Sampled sampled)
 {
     sampledTrails_ = std::move(sampled.trails);
     if (sampled.paths) {
-        trajectories_ = std::move(*sampled.paths);
+        setTrajectories(std::move(*sampled.paths));
         trajectoriesStale_ = false;
     }
     composeTrails();

@@ -79,6 +79,8 @@ public:
     // The world paths of the selected objects' mesh centres over the scene's time range (centre_path.h: the
     // active object's first, within its budget), as last sampled; none without a selected object.
     const std::vector<std::vector<Eigen::Vector3f>>& trajectories() const { return trajectories_; }
+    // Whether the paths changed since the last call (the viewport then uploads them).
+    bool takeTrajectoriesChange() { return std::exchange(trajectoriesChanged_, false); }
     // Whether the paths are being sampled anew (after a change of the motion, the selection or the scene's
     // range): trajectories() is then a moment behind.
     bool trajectoriesPending() const { return trajectoriesStale_; }
@@ -123,6 +125,7 @@ private:
     void receiveSampled(Sampled sampled);
     // trailMatrices_ and trails_ from the screw trails and the sampled ones.
     void composeTrails();
+    void setTrajectories(std::vector<std::vector<Eigen::Vector3f>> paths);
     void dropTrail();
 
     model::Document& document_;
@@ -145,7 +148,8 @@ private:
     // As the trails and paths were last asked for.
     std::vector<model::ObjectId> selectedObjects_;
     model::ObjectId activeObject_ = model::kNoObject;
-    std::vector<std::vector<Eigen::Vector3f>> trajectories_;
+    std::vector<std::vector<Eigen::Vector3f>> trajectories_; // set by setTrajectories alone
+    bool trajectoriesChanged_ = false;
     bool trajectoriesStale_ = true;
 
     double subdivisionMilliseconds_ = 0.0;

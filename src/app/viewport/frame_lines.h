@@ -39,7 +39,8 @@ struct LineRange {
 // The lines of one frame, by how they are drawn.
 struct FrameLines {
     std::vector<LineVertex> vertices;
-    LineRange grid, trajectory, axes; // lines, depth-tested, before the meshes
+    LineRange grid, axes;             // lines, depth-tested, before the meshes
+    bool drawPaths = false;           // the centre paths as last uploaded (SceneRenderer::setPaths), with the grid
     LineRange handles, handlePoints;  // lines and points, on top of everything
     LineRange physics;                // lines on top: angular momentum, principal axes
 };

@@ -24,13 +24,21 @@ OffscreenGlWidget::~OffscreenGlWidget()
 
 bool OffscreenGlWidget::makeCurrent()
 {
-    if (!context_ && !contextFailed_) {
+    if (!context_ && failure_.isEmpty()) {
         surface_.setFormat(format_);
         surface_.create();
         auto context = std::make_unique<QOpenGLContext>();
         context->setFormat(format_);
-        if (!surface_.isValid() || !context->create() || !context->makeCurrent(&surface_)) {
-            contextFailed_ = true;
+        if (!surface_.isValid())
+            failure_ = tr("The display could not make an offscreen surface for OpenGL.");
+        else if (!context->create())
+            failure_ = tr("The display could not make an OpenGL %1.%2 context.")
+                           .arg(format_.majorVersion())
+                           .arg(format_.minorVersion());
+        else if (!context->makeCurrent(&surface_))
+            failure_ = tr("The display could not make its OpenGL context current.");
+        if (!failure_.isEmpty()) {
+            qWarning("%s: %s", metaObject()->className(), qPrintable(failure_));
             return false;
         }
         context_ = std::move(context);
@@ -38,7 +46,7 @@ bool OffscreenGlWidget::makeCurrent()
     }
     if (!context_ || !context_->makeCurrent(&surface_))
         return false;
-    if (framebuffer_)
+    if (framebuffer_ && framebuffer_->isValid())
         framebuffer_->bind();
     return true;
 }
@@ -55,9 +63,20 @@ bool OffscreenGlWidget::render()
         return false;
     const QSize pixels = (QSizeF(size()) * devicePixelRatioF()).toSize().expandedTo(QSize(1, 1));
     if (!framebuffer_ || framebuffer_->size() != pixels) {
+        // Asked for once a size: a refused one is not asked for again at every frame.
         framebuffer_ = std::make_unique<QOpenGLFramebufferObject>(pixels, QOpenGLFramebufferObject::CombinedDepthStencil);
-        framebuffer_->bind();
-        image_ = QImage(pixels, QImage::Format_RGB32);
+        if (framebuffer_->isValid()) {
+            failure_.clear();
+            framebuffer_->bind();
+            image_ = QImage(pixels, QImage::Format_RGB32);
+        } else {
+            failure_ = tr("OpenGL could not make a framebuffer of %1 × %2 pixels.").arg(pixels.width()).arg(pixels.height());
+            qWarning("%s: %s", metaObject()->className(), qPrintable(failure_));
+        }
+    }
+    if (!framebuffer_->isValid()) {
+        doneCurrent();
+        return false;
     }
     QOpenGLFunctions* gl = context_->functions();
     gl->glViewport(0, 0, pixels.width(), pixels.height());
@@ -75,10 +94,12 @@ bool OffscreenGlWidget::render()
 void OffscreenGlWidget::paintEvent(QPaintEvent*)
 {
     QPainter painter(this);
-    if (render())
+    if (render()) {
         painter.drawImage(QPointF(0.0, 0.0), image_);
-    else
-        painter.fillRect(rect(), palette().window());
+        return;
+    }
+    painter.fillRect(rect(), palette().window());
+    painter.drawText(rect().adjusted(8, 8, -8, -8), Qt::AlignCenter | Qt::TextWordWrap, failure_);
 }
 
 QImage OffscreenGlWidget::grabFramebuffer()

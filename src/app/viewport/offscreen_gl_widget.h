@@ -7,13 +7,16 @@
 // repaint of any of its widgets, which uploads and draws the window's every pixel. On Mesa's llvmpipe
 // (no GPU) a repaint of Gyre's 1500 × 950 window took 22 to 52 ms on a busy machine however little had
 // changed, while the viewport drew itself in 1 to 4 ms, and held playback to 23 to 57 frames a second. A
-// window of raster widgets flushes only what changed. The price here is reading the frame back, 1.5 MB at 748 × 503, which
-// on llvmpipe is a copy in memory and on a GPU a wait for the frame to finish; README.md gives the figures.
+// window of raster widgets flushes only what changed. The price here is reading the frame back, 1.4 MB
+// at 748 × 460, which on llvmpipe is a copy in memory and on a GPU a wait for the frame to finish;
+// README.md gives the figures.
 // A QOpenGLWindow in a window container would avoid both, but it is a native window that QWidget::grab does
 // not see and that takes the input events from the widget tree.
 //
 // The context and its offscreen surface are made at the first paint (or makeCurrent) and live as long as
-// the widget, wherever it is moved: unlike QOpenGLWidget's, they do not change when a dock floats.
+// the widget, wherever it is moved: unlike QOpenGLWidget's, they do not change when a dock floats. Should
+// the display refuse them, or the framebuffer at the widget's size, the widget says so in its place and
+// the log says which step failed.
 
 #include <QImage>
 #include <QOffscreenSurface>
@@ -27,6 +30,8 @@
 namespace gyre::app {
 
 class OffscreenGlWidget : public QWidget {
+    Q_OBJECT
+
 public:
     OffscreenGlWidget(const QSurfaceFormat& format, QWidget* parent);
     // Subclasses release what they made in their context in their own destructors (makeCurrent first);
@@ -52,15 +57,16 @@ protected:
     void paintEvent(QPaintEvent* event) override;
 
 private:
-    // Draws into the framebuffer and reads it into image_; false without a context.
+    // Draws into the framebuffer and reads it into image_; false without a context or a framebuffer.
     bool render();
 
     QSurfaceFormat format_;
+    QOffscreenSurface surface_; // outlives the context made on it
     std::unique_ptr<QOpenGLContext> context_;
-    QOffscreenSurface surface_;
     std::unique_ptr<QOpenGLFramebufferObject> framebuffer_;
     QImage image_; // the last frame, kept so that reading back allocates nothing while the size holds
-    bool contextFailed_ = false;
+    // Why no frame can be drawn, shown in the widget's place; empty while drawing works.
+    QString failure_;
 };
 
 } // namespace gyre::app

@@ -97,22 +97,30 @@ void SceneRenderer::initialize()
     const Eigen::Matrix4f identity = Eigen::Matrix4f::Identity();
     identityInstance_.allocate(identity.data(), kFloatsPerMatrix * sizeof(float));
     identityInstance_.release();
-    for (QOpenGLBuffer* buffer : {&trailInstances_, &controlPoseInstances_, &lineBuffer_}) {
+    for (QOpenGLBuffer* buffer : {&trailInstances_, &controlPoseInstances_, &lineBuffer_, &pathBuffer_}) {
         buffer->create();
         buffer->setUsagePattern(QOpenGLBuffer::DynamicDraw);
     }
     trailInstanceCount_ = 0;
+    pathFirsts_.clear();
+    pathCounts_.clear();
 
-    lineArray_ = std::make_unique<QOpenGLVertexArrayObject>();
-    lineArray_->create();
-    lineArray_->bind();
-    lineBuffer_.bind();
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(LineVertex), reinterpret_cast<const void*>(offsetof(LineVertex, position)));
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(LineVertex), reinterpret_cast<const void*>(offsetof(LineVertex, color)));
-    lineArray_->release();
-    lineBuffer_.release();
+    // LineVertex as the line shader reads it, from `buffer`.
+    const auto lineArray = [this](QOpenGLBuffer& buffer) {
+        auto array = std::make_unique<QOpenGLVertexArrayObject>();
+        array->create();
+        array->bind();
+        buffer.bind();
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(LineVertex), reinterpret_cast<const void*>(offsetof(LineVertex, position)));
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(LineVertex), reinterpret_cast<const void*>(offsetof(LineVertex, color)));
+        array->release();
+        buffer.release();
+        return array;
+    };
+    lineArray_ = lineArray(lineBuffer_);
+    pathArray_ = lineArray(pathBuffer_);
 
     glEnable(GL_PROGRAM_POINT_SIZE);
     // Colour blends by the source's alpha; the framebuffer's own alpha stays 1 (1·a + 1·(1 − a)), as the
@@ -126,7 +134,8 @@ void SceneRenderer::release()
         return;
     gpuMeshes_.clear();
     lineArray_.reset();
-    for (QOpenGLBuffer* buffer : {&identityInstance_, &trailInstances_, &controlPoseInstances_, &lineBuffer_})
+    pathArray_.reset();
+    for (QOpenGLBuffer* buffer : {&identityInstance_, &trailInstances_, &controlPoseInstances_, &lineBuffer_, &pathBuffer_})
         buffer->destroy();
     glDeleteBuffers(1, &jointMatrices_);
     jointMatrices_ = 0;
@@ -259,6 +268,24 @@ void SceneRenderer::uploadLines(const FrameLines& lines)
     lineBuffer_.release();
 }
 
+void SceneRenderer::setPaths(const std::vector<std::vector<Eigen::Vector3f>>& paths, const Rgba& color)
+{
+    pathFirsts_.clear();
+    pathCounts_.clear();
+    std::vector<LineVertex> vertices;
+    for (const std::vector<Eigen::Vector3f>& path : paths) {
+        if (path.size() < 2)
+            continue;
+        pathFirsts_.push_back(static_cast<GLint>(vertices.size()));
+        pathCounts_.push_back(static_cast<GLsizei>(path.size()));
+        for (const Eigen::Vector3f& point : path)
+            vertices.push_back({{point.x(), point.y(), point.z()}, {color.r, color.g, color.b, color.a}});
+    }
+    pathBuffer_.bind();
+    pathBuffer_.allocate(vertices.data(), static_cast<int>(vertices.size() * sizeof(LineVertex)));
+    pathBuffer_.release();
+}
+
 void SceneRenderer::drawLines(GLenum mode, LineRange range)
 {
     if (range.count > 0)
@@ -360,9 +387,14 @@ void SceneRenderer::drawFrame(const Eigen::Matrix4d& viewProjectionMatrix, const
     uploadLines(lines);
     lineArray_->bind();
     drawLines(GL_LINES, lines.grid);
-    drawLines(GL_LINES, lines.trajectory);
     drawLines(GL_LINES, lines.axes);
     lineArray_->release();
+    if (lines.drawPaths && !pathFirsts_.empty()) {
+        pathArray_->bind();
+        for (std::size_t i = 0; i < pathFirsts_.size(); ++i)
+            glDrawArrays(GL_LINE_STRIP, pathFirsts_[i], pathCounts_[i]);
+        pathArray_->release();
+    }
 
     meshProgram_->bind();
     meshProgram_->setUniformValue("uViewProjection", viewProjection);

@@ -1,7 +1,7 @@
 #pragma once
 // The viewport's OpenGL side: the mesh and line shaders, each mesh's buffers (uploaded on first use,
 // dropped when no object holds the mesh any more), the instance buffers of the trail and the control
-// poses, and one frame's drawing in its order: lines under the meshes, the objects, the translucent
+// poses, the centre paths (uploaded when they change), and one frame's drawing in its order: lines under the meshes, the objects, the translucent
 // trail, control poses and ghost, and the handles on top. It decides nothing about what is shown:
 // the viewport gathers that from the document, its motion and the selection.
 
@@ -79,6 +79,10 @@ public:
     // Uploads the trails' instances, every selected object's: column-major 4×4 matrices, each object's in the
     // frame its FrameMeshes::trails entry gives.
     void setTrail(const std::vector<float>& matrices);
+    // Uploads the selected objects' centre paths, each drawn as one line strip in `color` in the frames whose
+    // FrameLines::drawPaths is set, until the next call: they change with the motion or the selection, not with
+    // the current time.
+    void setPaths(const std::vector<std::vector<Eigen::Vector3f>>& paths, const Rgba& color);
 
     void drawFrame(const Eigen::Matrix4d& viewProjection, const Eigen::Vector3d& eye, const FrameLines& lines,
                    const FrameMeshes& meshes);
@@ -123,6 +127,10 @@ private:
     // (QOpenGLBuffer has no uniform buffer type).
     GLuint jointMatrices_ = 0;
     std::unique_ptr<QOpenGLVertexArrayObject> lineArray_;
+    QOpenGLBuffer pathBuffer_{QOpenGLBuffer::VertexBuffer};
+    std::unique_ptr<QOpenGLVertexArrayObject> pathArray_;
+    std::vector<GLint> pathFirsts_;   // each path's first vertex in pathBuffer_
+    std::vector<GLsizei> pathCounts_; // and its vertex count
     int trailInstanceCount_ = 0;
     std::vector<float> controlPoseMatrices_; // kept from frame to frame: drawing allocates nothing once grown
 };

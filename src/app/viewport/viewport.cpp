@@ -463,16 +463,10 @@ void Viewport::buildLines()
     }
     lines_.grid = rangeFrom(0);
 
-    std::size_t first = vertices.size();
-    // Each selected object's path, as segments (GL_LINES), so that one path does not run on into the next.
-    if (showTrajectory_)
-        for (const std::vector<Eigen::Vector3f>& path : drawn_.trajectories())
-            for (std::size_t i = 1; i < path.size(); ++i)
-                for (const Eigen::Vector3f& point : {path[i - 1], path[i]})
-                    vertices.push_back(lineVertex(point.cast<double>(), kTrajectoryColor));
-    lines_.trajectory = rangeFrom(first);
+    // The selected objects' paths, uploaded when they change (paintGL).
+    lines_.drawPaths = showTrajectory_;
 
-    first = vertices.size();
+    std::size_t first = vertices.size();
     // Each empty as Blender's plain axes: three lines through its origin.
     const model::Scene& scene = document_.scene();
     for (const model::SceneObject& object : scene.objects) {
@@ -569,6 +563,8 @@ void Viewport::paintGL()
     }
     updateSkeleton();
     const model::SceneObject* selected = selection_.selectedObject();
+    if (drawn_.takeTrajectoriesChange())
+        renderer_.setPaths(drawn_.trajectories(), kTrajectoryColor);
     if (drawn_.takeTrailChange())
         renderer_.setTrail(drawn_.trailMatrices());
     buildLines();
@@ -599,6 +595,10 @@ void Viewport::paintGL()
             }
     renderer_.drawFrame(camera_.viewProjectionMatrix(), camera_.eye(), lines_, meshes);
     drawnTrailInstances_ = trailInstances;
+    drawnPathPoints_ = 0;
+    if (showTrajectory_)
+        for (const std::vector<Eigen::Vector3f>& path : drawn_.trajectories())
+            drawnPathPoints_ += path.size() >= 2 ? path.size() : 0; // as SceneRenderer::setPaths draws them
     drewGhost_ = meshes.ghost.has_value();
 }
 

@@ -93,6 +93,8 @@ public:
     OrbitCamera& camera() { return camera_; }
     // Instances in the last trails drawn, every selected object's together (0 when the last frame drew none).
     std::size_t trailInstanceCount() const { return drawnTrailInstances_; }
+    // Points in the centre paths the last frame drew, every selected object's (0 while they are hidden).
+    std::size_t pathPointCount() const { return drawnPathPoints_; }
     // Whether the last frame drew the ghost: the original motion differs at the current time.
     bool drewGhost() const { return drewGhost_; }
     std::uint64_t framesDrawn() const { return framesDrawn_; }
@@ -171,6 +173,7 @@ private:
     FrameLines lines_; // kept from frame to frame, so that drawing allocates nothing once it has grown
 
     std::size_t drawnTrailInstances_ = 0;
+    std::size_t drawnPathPoints_ = 0;
     bool drewGhost_ = false;
     std::uint64_t framesDrawn_ = 0;
 
