@@ -11,6 +11,7 @@
 #include <QStatusBar>
 
 #include <algorithm>
+#include <memory>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -110,30 +111,27 @@ void KeyframeActions::toggleConstraint()
     updateActions();
 }
 
-std::vector<std::pair<model::ObjectId, model::ApplyEulerFilterCommand::KeySubset>> KeyframeActions::keysToFilter() const
+model::ApplyEulerFilterCommand::KeySubset KeyframeActions::keysToFilter(model::ObjectId object) const
 {
-    const bool keysSelected = !selection_.keys().empty();
-    std::vector<std::pair<model::ObjectId, model::ApplyEulerFilterCommand::KeySubset>> filtered;
-    for (model::ObjectId id : selection_.objects()) {
-        model::ApplyEulerFilterCommand::KeySubset keys;
-        if (keysSelected)
-            keys = selection_.keysOf(id);
-        if (model::ApplyEulerFilterCommand::changes(document_.object(id)->track, keys))
-            filtered.emplace_back(id, std::move(keys));
-    }
-    return filtered;
+    if (selection_.keys().empty())
+        return std::nullopt;
+    return selection_.keysOf(object);
+}
+
+bool KeyframeActions::eulerFilterChanges(model::ObjectId object) const
+{
+    return model::ApplyEulerFilterCommand::changes(document_.object(object)->track, keysToFilter(object));
 }
 
 void KeyframeActions::applyEulerFilter()
 {
-    const auto filtered = keysToFilter();
-    if (filtered.empty())
-        return;
     // One undo step for all of them, named as one object's.
-    auto* step = new QUndoCommand(tr("Apply Euler Filter"));
-    for (const auto& [id, keys] : filtered)
-        new model::ApplyEulerFilterCommand(document_, id, keys, step);
-    document_.push(step);
+    auto step = std::make_unique<QUndoCommand>(tr("Apply Euler Filter"));
+    for (model::ObjectId id : selection_.objects())
+        if (eulerFilterChanges(id))
+            new model::ApplyEulerFilterCommand(document_, id, keysToFilter(id), step.get());
+    if (step->childCount() > 0)
+        document_.push(step.release());
 }
 
 void KeyframeActions::stepFlightSolution(int direction)
@@ -157,7 +155,11 @@ void KeyframeActions::updateActions()
 {
     const model::Keyframe* key = selection_.selectedKey();
     const model::SceneObject* object = selection_.selectedObject();
-    actions_.eulerFilter->setEnabled(!keysToFilter().empty());
+    // On every Keyframes change, each step of a drag included: stops at the first object, and in it at the first
+    // key, the filter would change.
+    const std::vector<model::ObjectId> objects = selection_.objects();
+    actions_.eulerFilter->setEnabled(
+        std::ranges::any_of(objects, [this](model::ObjectId id) { return eulerFilterChanges(id); }));
     const bool flies = object != nullptr && object->track.interpolation == InterpolationMethod::Ballistic &&
                        object->track.keys.size() >= 2;
     actions_.nextFlight->setEnabled(flies);

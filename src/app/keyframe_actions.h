@@ -13,9 +13,6 @@
 
 #include <QObject>
 
-#include <utility>
-#include <vector>
-
 class QAction;
 class QStatusBar;
 
@@ -50,9 +47,11 @@ public:
 
 private:
     void updateActions();
-    // The keys the Euler filter works on, of each object whose keys it would change: the selected keys of
-    // each object that has some, or with no key selected every key of every selected object.
-    std::vector<std::pair<model::ObjectId, model::ApplyEulerFilterCommand::KeySubset>> keysToFilter() const;
+    // The keys of a selected object the Euler filter works on: its selected keys (none, if others have keys
+    // selected and it has not), or with no key selected all of them.
+    model::ApplyEulerFilterCommand::KeySubset keysToFilter(model::ObjectId object) const;
+    // Whether the filter would change a key of keysToFilter(object) (ApplyEulerFilterCommand::changes).
+    bool eulerFilterChanges(model::ObjectId object) const;
 
     model::Document& document_;
     Selection& selection_;

@@ -160,6 +160,16 @@ std::vector<PositionSplineKey> positionSplineOf(const model::MotionTrack& track,
     return result;
 }
 
+std::vector<std::vector<JointInfluence>> jointInfluences(const model::Skin& skin)
+{
+    std::vector<std::vector<JointInfluence>> result(skin.joints.size());
+    for (std::size_t v = 0; v < skin.vertexJoints.size(); ++v)
+        for (std::size_t k = 0; k < 4; ++k)
+            if (const float weight = skin.vertexWeights[v][static_cast<Eigen::Index>(k)]; weight > 0.0F)
+                result[skin.vertexJoints[v][k]].push_back({static_cast<std::uint32_t>(v), weight});
+    return result;
+}
+
 QStringList prepareGltfTimes(BakedScene& baked, const model::Scene& scene)
 {
     QStringList warnings;

@@ -11,6 +11,7 @@
 #include <QStringList>
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +48,17 @@ struct BakedObject {
     // they are no such curve.
     std::vector<PositionSplineKey> positionSpline;
 };
+
+// A position a skin joint moves, and by how much.
+struct JointInfluence {
+    std::uint32_t vertex = 0;
+    float weight = 0.0F; // > 0
+};
+
+// For each of a checked skin's joints (model/value_checks.h: every joint index in range), the positions
+// it moves with a nonzero weight, in increasing order, found in one pass over the positions. Both
+// writers write a joint's weights as such a list: Assimp's bone, FBX's Cluster.
+std::vector<std::vector<JointInfluence>> jointInfluences(const model::Skin& skin);
 
 struct BakedScene {
     std::vector<BakedObject> objects;

@@ -296,15 +296,14 @@ private:
             deformer.addChild("Link_DeformAcuracy").addDouble(50.0);
             connect(skinId, geometryId);
             ++counts_["Deformer"];
+            const std::vector<std::vector<JointInfluence>> influences = jointInfluences(skin);
             for (std::size_t j = 0; j < object.skinJoints.size(); ++j) {
                 std::vector<std::int32_t> indexes;
                 std::vector<double> weights;
-                for (std::size_t v = 0; v < skin.vertexJoints.size(); ++v)
-                    for (std::size_t k = 0; k < 4; ++k)
-                        if (skin.vertexJoints[v][k] == j && skin.vertexWeights[v][static_cast<Eigen::Index>(k)] > 0.0F) {
-                            indexes.push_back(static_cast<std::int32_t>(v));
-                            weights.push_back(skin.vertexWeights[v][static_cast<Eigen::Index>(k)]);
-                        }
+                for (const JointInfluence& influence : influences[j]) {
+                    indexes.push_back(static_cast<std::int32_t>(influence.vertex));
+                    weights.push_back(influence.weight);
+                }
                 const std::size_t joint = object.skinJoints[j];
                 const Eigen::Matrix4d link = mesh * skin.inverseBinds[j].cast<double>().inverse();
                 bindMatrices[modelIds[joint]] = link;

@@ -245,11 +245,7 @@ aiMesh* assimpMesh(const model::Mesh& mesh)
 void addBones(aiMesh& mesh, const BakedObject& object, const BakedScene& baked)
 {
     const model::Skin& skin = object.mesh->skin;
-    std::vector<std::vector<aiVertexWeight>> weights(object.skinJoints.size());
-    for (std::size_t v = 0; v < skin.vertexWeights.size(); ++v)
-        for (int k = 0; k < 4; ++k)
-            if (const float weight = skin.vertexWeights[v][k]; weight > 0.0F)
-                weights[skin.vertexJoints[v][static_cast<std::size_t>(k)]].emplace_back(static_cast<unsigned>(v), weight);
+    const std::vector<std::vector<JointInfluence>> influences = jointInfluences(skin);
     mesh.mNumBones = static_cast<unsigned>(object.skinJoints.size());
     mesh.mBones = new aiBone*[mesh.mNumBones];
     for (std::size_t j = 0; j < object.skinJoints.size(); ++j) {
@@ -259,9 +255,11 @@ void addBones(aiMesh& mesh, const BakedObject& object, const BakedScene& baked)
         const Eigen::Matrix4f& b = skin.inverseBinds[j];
         bone->mOffsetMatrix = aiMatrix4x4(b(0, 0), b(0, 1), b(0, 2), b(0, 3), b(1, 0), b(1, 1), b(1, 2), b(1, 3),
                                           b(2, 0), b(2, 1), b(2, 2), b(2, 3), b(3, 0), b(3, 1), b(3, 2), b(3, 3));
-        bone->mNumWeights = static_cast<unsigned>(weights[j].size());
-        bone->mWeights = newArray<aiVertexWeight>(weights[j].size());
-        std::ranges::copy(weights[j], bone->mWeights);
+        bone->mNumWeights = static_cast<unsigned>(influences[j].size());
+        bone->mWeights = newArray<aiVertexWeight>(influences[j].size());
+        std::ranges::transform(influences[j], bone->mWeights, [](const JointInfluence& influence) {
+            return aiVertexWeight(influence.vertex, influence.weight);
+        });
     }
 }
 

@@ -288,16 +288,46 @@ private slots:
             QVERIFY(*document.object(ids[1])->track.keys[key].eulerAngles == *turnBefore.keys[key].eulerAngles);
         }
 
-        // With no key selected, the whole tracks of the selected objects, as before.
+        // With no key selected, the whole tracks of the selected objects, as before, in one more undo step: the spin
+        // on from 350° (140° → 500°, −60° → 660°) and the turn to 300°, their orientations the same rotations.
         window_->selection().deselectKeys();
         QVERIFY(filter->isEnabled());
+        const model::MotionTrack spinKeysFiltered = document.object(ids[0])->track;
+        filter->trigger();
+        QCOMPARE(document.undoStack().count(), 2);
+        QCOMPARE(document.undoStack().index(), 2);
+        QCOMPARE(document.undoStack().undoText(), QStringLiteral("Apply Euler Filter"));
+        QVERIFY(!filter->isEnabled());
+        const auto expectRamp = [&](model::ObjectId id, const model::MotionTrack& before, const std::vector<Eigen::Vector3d>& ramp) {
+            const model::MotionTrack& whole = document.object(id)->track;
+            for (std::size_t key = 0; key < ramp.size(); ++key) {
+                const Eigen::Vector3d degrees = *whole.keys[key].eulerAngles * kDegrees;
+                QVERIFY2((degrees - ramp[key]).norm() < 1e-9,
+                         qPrintable(QStringLiteral("key %1: %2 %3 %4").arg(key).arg(degrees.x()).arg(degrees.y()).arg(degrees.z())));
+                QVERIFY(std::abs(std::abs(whole.keys[key].pose.orientation.dot(before.keys[key].pose.orientation)) - 1.0) < 1e-12);
+                if (key > 0)
+                    QVERIFY(whole.keys[key].pose.orientation.dot(whole.keys[key - 1].pose.orientation) >= 0.0);
+            }
+        };
+        expectRamp(ids[0], spinBefore, {{0, 0, 0}, {0, 0, 170}, {0, 0, 190}, {0, 0, 350}, {0, 0, 500}, {0, 0, 660}});
+        if (QTest::currentTestFailed())
+            return;
+        expectRamp(ids[1], turnBefore, {{0, 0, 0}, {170, 0, 0}, {300, 0, 0}});
+        if (QTest::currentTestFailed())
+            return;
+
+        // One undo takes back the whole tracks' step, the next the selected keys'.
+        document.undoStack().undo();
+        for (std::size_t key = 0; key < spin.size(); ++key)
+            QVERIFY(*document.object(ids[0])->track.keys[key].eulerAngles == *spinKeysFiltered.keys[key].eulerAngles);
+        for (std::size_t key = 0; key < turn.size(); ++key)
+            QVERIFY(*document.object(ids[1])->track.keys[key].eulerAngles == *turnBefore.keys[key].eulerAngles);
         document.undoStack().undo();
         for (std::size_t key = 0; key < spin.size(); ++key) {
             QVERIFY(document.object(ids[0])->track.keys[key].pose.orientation.coeffs() ==
                     spinBefore.keys[key].pose.orientation.coeffs());
             QVERIFY(*document.object(ids[0])->track.keys[key].eulerAngles == *spinBefore.keys[key].eulerAngles);
         }
-        QCOMPARE(document.undoStack().count(), 1);
         QCOMPARE(document.undoStack().index(), 0);
     }
 

@@ -509,7 +509,8 @@ private slots:
             shared += *subdividedPoseCount(6, plan.subdivided[i].levels, true);
         QCOMPARE(shared, std::size_t{768 + 192 + 48 + 12});
         QVERIFY(shared <= std::size_t(app::TrailSpacing::kMaxTotalCopies));
-        // Another object active: it leads and takes the budget first; object 1 (3072 poses) then fits at 6 levels.
+        // Another object active: it leads and takes the budget first (16 copies); object 1 (3072 poses at 9 levels)
+        // then fits in the 1008 left at 7 levels, 768 poses.
         QCOMPARE(app::planTrails(scene, selected, 6, {16, 0}).sampled, (std::vector<model::ObjectId>{6}));
         QCOMPARE(app::planTrails(scene, selected, 6, {16, 0}).subdivided.front(), (app::TrailPlan::Subdivided{1, 7}));
     }

@@ -1,11 +1,14 @@
 // prepareGltfTimes (io/baked_scene.h): which baked sample survives where times collide in float32,
-// that every float32 time is then there exactly once, increasing, and that times start at 0 or later.
+// that every float32 time is then there exactly once, increasing, and that times start at 0 or later;
+// and jointInfluences, each skin joint's positions and weights.
 
 #include "io/baked_scene.h"
 
 #include <QTest>
 
+#include <cstdint>
 #include <set>
+#include <utility>
 
 using namespace gyre;
 using namespace gyre::io;
@@ -135,6 +138,30 @@ private slots:
         QCOMPARE(times, (std::vector<double>{0.0, 0.25, 0.5, 0.75}));
         QCOMPARE(warnings.size(), 2);
         QVERIFY2(warnings[0].contains("0.25 s later"), qPrintable(warnings[0]));
+    }
+
+    // Each joint's nonzero weights by increasing position, whichever of a position's four slots holds
+    // it; a joint no position leans on has none.
+    void jointInfluencesByJoint()
+    {
+        model::Skin skin;
+        skin.joints = {1, 2, 3, 4};
+        skin.vertexJoints = {{2, 0, 1, 0}, {0, 0, 0, 0}, {1, 2, 0, 0}, {3, 0, 2, 1}};
+        skin.vertexWeights = {Eigen::Vector4f(0.5F, 0.25F, 0.25F, 0.0F), Eigen::Vector4f::Zero(),
+                              Eigen::Vector4f(0.75F, 0.125F, 0.0F, 0.0F), Eigen::Vector4f(0.0F, 0.0F, 0.5F, 0.5F)};
+        const std::vector<std::vector<JointInfluence>> influences = jointInfluences(skin);
+        const auto listOf = [&influences](std::size_t joint) {
+            std::vector<std::pair<std::uint32_t, float>> result;
+            for (const JointInfluence& influence : influences.at(joint))
+                result.emplace_back(influence.vertex, influence.weight);
+            return result;
+        };
+        using List = std::vector<std::pair<std::uint32_t, float>>;
+        QCOMPARE(influences.size(), std::size_t{4});
+        QCOMPARE(listOf(0), (List{{0, 0.25F}}));
+        QCOMPARE(listOf(1), (List{{0, 0.25F}, {2, 0.75F}, {3, 0.5F}}));
+        QCOMPARE(listOf(2), (List{{0, 0.5F}, {2, 0.125F}, {3, 0.5F}}));
+        QVERIFY(listOf(3).empty());
     }
 };
 

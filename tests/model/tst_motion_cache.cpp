@@ -141,6 +141,9 @@ private slots:
         QCOMPARE(Eigen::AngleAxisd(again.worldPose(f.ids[1], 2.0).orientation).angle(), 1.5);
     }
 
+    // Only the values: that worldPoses evaluates each shared ancestor's track once per time is not observable
+    // here, since MotionOf hands SceneMotion the concrete SharedTrackMotion and TrackMotion::at is not virtual,
+    // so a test cannot slip in a track motion that counts its evaluations.
     void worldPosesAreEachObjectsWorldPose()
     {
         // A chain 1 ← 2 ← 3 and 4 beside 2, asked for out of order, one twice, with an object the scene lacks.

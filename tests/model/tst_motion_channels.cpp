@@ -2,8 +2,10 @@
 // whose answers are known without Gyre: a spin of 450° about z keyed every 90°, whose z angle must
 // be a ramp past ±180° (unwrapped), whose quaternion keeps one sign through a full turn, and whose
 // stored keys, flipped to −q at random, the filter puts back in one hemisphere without moving the
-// motion at any time.
+// motion at any time; and whether the filter would change a key, as the menu asks it, against the keys
+// the filter makes.
 
+#include "core/euler_angles.h"
 #include "model/commands/apply_euler_filter_command.h"
 #include "model/document.h"
 #include "model/motion_channels.h"
@@ -13,6 +15,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
+#include <vector>
 
 using namespace gyre;
 using namespace gyre::model;
@@ -25,6 +29,33 @@ constexpr int kKeys = 6; // 0°, 90°, ..., 450° at 0, 1, ..., 5 s
 Eigen::Quaterniond aboutZ(double degrees)
 {
     return Eigen::Quaterniond(Eigen::AngleAxisd(degrees * kPi / 180.0, Eigen::Vector3d::UnitZ()));
+}
+
+// Seven keys of a random tumble: in Euler mode (unless `quaternion`) with the angles of each key stored a turn
+// off, or as the convention's twin, at random, or as read from the quaternion; each quaternion's sign at random.
+MotionTrack randomTrack(std::mt19937& random, const EulerConvention& convention, bool quaternion)
+{
+    std::uniform_real_distribution<double> angle(-kPi, kPi);
+    MotionTrack track;
+    track.rotationMode = {quaternion ? RotationMode::Kind::Quaternion : RotationMode::Kind::Euler, convention};
+    Eigen::Vector3d angles = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 7; ++k) {
+        angles += Eigen::Vector3d(angle(random), angle(random), angle(random)) * 0.4;
+        Eigen::Quaterniond q = quaternionFromEulerAngles(angles, convention);
+        if (random() % 2 == 0)
+            q.coeffs() = -q.coeffs();
+        Keyframe key{double(k), Pose{q, Eigen::Vector3d::Zero()}, true};
+        if (!quaternion) {
+            Eigen::Vector3d stored = eulerAnglesFromQuaternion(q, convention).angles;
+            if (random() % 4 == 0) // the twin: R_i(e1 + π)·R_j(π − e2)·R_k(e3 + π), or −e2 for proper Euler
+                stored = {stored[0] + kPi, convention.isProperEuler() ? -stored[1] : kPi - stored[1], stored[2] + kPi};
+            if (random() % 3 == 0)
+                stored[random() % 3] += 2.0 * kPi * (random() % 2 == 0 ? 1.0 : -1.0);
+            key.eulerAngles = stored;
+        }
+        track.keys.push_back(key);
+    }
+    return track;
 }
 
 SceneObject spin(bool flipOddKeys)
@@ -132,6 +163,38 @@ private slots:
         document.undoStack().undo();
         for (int k = 0; k < kKeys; ++k)
             QCOMPARE(document.object(id)->track.keys[k].pose.orientation.coeffs(), before.keys[k].pose.orientation.coeffs());
+    }
+
+    // changes finds the first key the filter would change without filtering a copy: on tracks of every kind of
+    // jump (signs flipped, angles a turn off or on the twin solution, or continuous already) and on every kind of
+    // subset (runs, the first key, indices past the last), it says whether filteredKeys differs from the keys.
+    void changesSaysWhetherTheFilterChangesAKey()
+    {
+        std::mt19937 random(3517);
+        const std::vector<EulerConvention> conventions = EulerConvention::all();
+        int changing = 0;
+        int unchanging = 0;
+        for (int trial = 0; trial < 400; ++trial) {
+            MotionTrack track = randomTrack(random, conventions[random() % conventions.size()], trial % 4 == 0);
+            // A quarter of the tracks filtered once already, where little or nothing is left to change.
+            if (trial % 4 == 1)
+                track.keys = ApplyEulerFilterCommand::filteredKeys(track);
+            ApplyEulerFilterCommand::KeySubset subset;
+            if (trial % 3 != 0) {
+                subset.emplace();
+                for (std::size_t i = 0; i < track.keys.size() + 2; ++i)
+                    if (random() % 3 == 0)
+                        subset->push_back(i);
+            }
+            const std::vector<Keyframe> filtered = ApplyEulerFilterCommand::filteredKeys(track, subset);
+            bool differs = false;
+            for (std::size_t i = 0; i < filtered.size(); ++i)
+                differs = differs || filtered[i].pose.orientation.coeffs() != track.keys[i].pose.orientation.coeffs() ||
+                          filtered[i].eulerAngles != track.keys[i].eulerAngles;
+            QVERIFY2(ApplyEulerFilterCommand::changes(track, subset) == differs, qPrintable(QString::number(trial)));
+            ++(differs ? changing : unchanging);
+        }
+        QVERIFY(changing > 50 && unchanging > 50);
     }
 };
 

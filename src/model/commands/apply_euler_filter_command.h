@@ -35,7 +35,8 @@ public:
     // The track's keys as the filter leaves them.
     static std::vector<Keyframe> filteredKeys(const MotionTrack& track, const KeySubset& keys = std::nullopt);
 
-    // Whether the filter would change the keys.
+    // Whether the filter would change the keys: filteredKeys(track, keys) != track.keys, found without a copy of the
+    // keys, up to the first key it changes (the menu asks on every key edit).
     static bool changes(const MotionTrack& track, const KeySubset& keys = std::nullopt);
 };
 
