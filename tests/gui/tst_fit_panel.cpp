@@ -256,7 +256,6 @@ private slots:
         QVERIFY(track().sketch.fittedCurve.empty());
         stack.redo();
         QVERIFY(!track().sketch.fittedCurve.empty());
-        panel_->grab().save(QStringLiteral("/tmp/fit-panel.png"));
     }
 
     void cancelLeavesTheDocumentAndHidesTheProgress()
@@ -277,8 +276,6 @@ private slots:
         firstProgress = connect(controller_.get(), &app::FitController::progressed, this, [&] {
             disconnect(firstProgress);
             roundsShown = progress_->progressBar()->maximum();
-            progress_->grab().save(QStringLiteral("/tmp/fit-progress.png"));
-            window_->grab().save(QStringLiteral("/tmp/fit-panel-running.png"));
             QTest::mouseClick(progress_->findChild<QPushButton*>(QStringLiteral("cancelFit")), Qt::LeftButton);
         });
         QTRY_VERIFY_WITH_TIMEOUT(!progress_->isVisible(), kFitTimeoutMilliseconds);
