@@ -54,35 +54,91 @@ ComponentPair componentPair(double x, double y)
     return {x, y, std::sqrt(x * x + y * y)};
 }
 
-// atan2(y, x) ∈ (−π, π] to a few ulp, from the core's fast arctangent: (|x|, |y|)/length is folded into
-// the first quadrant for fastAngleOnUnitCircle, then unfolded, a → π − a for x < 0 and a → −a for
-// y < 0. Unlike atan2 it gives π, not −π, for y = −0 and x < 0, which wrapAngle makes alike.
-double angleOf(const ComponentPair& pair)
+// π − kPi, to 17 digits.
+constexpr double kPiTail = 1.2246467991473532e-16;
+
+// An angle halfTurns·π + tableAngle + correction, halfTurns ∈ {−1, 0, 1}, tableAngle exactly a double
+// and |correction| < 0.006, kept unrounded so that two can be added with one rounding.
+struct UnroundedAngle {
+    double halfTurns;
+    double tableAngle;
+    double correction;
+};
+
+// m·angle for m ∈ {−1, 0, 1}, exactly.
+UnroundedAngle times(double m, const UnroundedAngle& angle)
 {
-    const double inverse = 1.0 / pair.length;
-    const double a = fastAngleOnUnitCircle(std::abs(pair.x) * inverse, std::abs(pair.y) * inverse);
-    const double unfolded = pair.x < 0.0 ? kPi - a : a;
-    return pair.y < 0.0 ? -unfolded : unfolded;
+    return {m * angle.halfTurns, m * angle.tableAngle, m * angle.correction};
+}
+
+// atan2(y, x) ∈ (−π, π], unrounded: (|x|, |y|) folded into the first quadrant for
+// preciseAngleInFirstQuadrant, then unfolded, a → π − a for x < 0 and a → −a for y < 0. The signs are
+// random from call to call, so the unfolding is arithmetic, not branches. Unlike atan2 it gives π,
+// not −π, for y = −0 and x < 0.
+UnroundedAngle angleOf(const ComponentPair& pair)
+{
+    const TableAngleSum a = preciseAngleInFirstQuadrant(std::abs(pair.x), std::abs(pair.y), pair.length);
+    const double leftHalf = pair.x < 0.0 ? 1.0 : 0.0;
+    const double fold = 1.0 - 2.0 * leftHalf;
+    return times(pair.y < 0.0 ? -1.0 : 1.0, {leftHalf, fold * a.tableAngle, fold * a.correction});
+}
+
+// a + b = head + tail exactly, for any two finite doubles (Knuth's two-sum).
+struct ExactSum {
+    double head;
+    double tail;
+};
+
+ExactSum exactSum(double a, double b)
+{
+    const double head = a + b;
+    const double bPart = head - a;
+    return {head, (a - (head - bPart)) + (b - bPart)};
+}
+
+// The outer angle a + b, each in (−π, π], wrapped into (−π, π] and rounded once: within about 1e-17
+// beyond half an ulp of the exact sum, where a sum of two rounded half angles and a turn of the rounded
+// 2π would be off by up to 2 ulp of 2π. The three large terms, the table angles and halfTurns·kPi (exact,
+// halfTurns an integer of at most 2), are added exactly, and the small ones after. The turn comes from
+// an estimate; where the estimate and the exact sum fall on either side of ±π, the sum is taken again
+// with the other turn.
+double wrappedSum(const UnroundedAngle& a, const UnroundedAngle& b)
+{
+    const ExactSum tables = exactSum(a.tableAngle, b.tableAngle);
+    const double corrections = a.correction + b.correction;
+    const auto withHalfTurns = [&](double halfTurns) {
+        const ExactSum sum = exactSum(tables.head, halfTurns * kPi);
+        return sum.head + (sum.tail + (tables.tail + (halfTurns * kPiTail + corrections)));
+    };
+    const double estimate = (a.halfTurns + b.halfTurns) * kPi + tables.head + corrections;
+    const double halfTurns = a.halfTurns + b.halfTurns - ((estimate > kPi ? 2.0 : 0.0) - (estimate <= -kPi ? 2.0 : 0.0));
+    double angle = withHalfTurns(halfTurns);
+    if (angle > kPi) [[unlikely]]
+        angle = withHalfTurns(halfTurns - 2.0);
+    else if (angle <= -kPi) [[unlikely]]
+        angle = withHalfTurns(halfTurns + 2.0);
+    // Still outside only for an exact sum within an ulp or so of ±π, for which kPi stands.
+    return angle > -kPi && angle <= kPi ? angle : kPi;
 }
 
 // The half-sum and half-difference of e1 and e3, from the two quaternion pairs that carry them. At
 // exact lock one of them is undetermined and is chosen so that the angle that does not take the turn
 // is 0: e3 = 0 means sum = difference, e1 = 0 means sum = −difference.
 struct HalfAngles {
-    double sum;
-    double difference;
+    UnroundedAngle sum;
+    UnroundedAngle difference;
 };
 
 HalfAngles halfAngles(const ComponentPair& sumPair, const ComponentPair& differencePair, LockedTurn lockedTurn)
 {
     const double sign = lockedTurn == LockedTurn::First ? 1.0 : -1.0;
     if (differencePair.length < kLockPairNorm) {
-        const double sum = angleOf(sumPair);
-        return {sum, sign * sum};
+        const UnroundedAngle sum = angleOf(sumPair);
+        return {sum, times(sign, sum)};
     }
     if (sumPair.length < kLockPairNorm) {
-        const double difference = angleOf(differencePair);
-        return {sign * difference, difference};
+        const UnroundedAngle difference = angleOf(differencePair);
+        return {times(sign, difference), difference};
     }
     return {angleOf(sumPair), angleOf(differencePair)};
 }
@@ -108,7 +164,7 @@ EulerAngles intrinsicAngles(const Eigen::Quaterniond& q, int i, int j, int k, Lo
         const ComponentPair differencePair = componentPair(y, z);
         const HalfAngles h = halfAngles(sumPair, differencePair, lockedTurn);
         const double middle = 2.0 * fastAngleOnUnitCircle(sumPair.length, differencePair.length);
-        result.angles = {wrapAngle(h.sum + h.difference), middle, wrapAngle(h.sum - h.difference)};
+        result.angles = {wrappedSum(h.sum, h.difference), middle, wrappedSum(h.sum, times(-1.0, h.difference))};
         result.gimbalLockDistance = std::min(middle, kPi - middle);
     } else {
         const double z = epsilon * component(q, k);
@@ -117,7 +173,7 @@ EulerAngles intrinsicAngles(const Eigen::Quaterniond& q, int i, int j, int k, Lo
         const HalfAngles h = halfAngles(sumPair, differencePair, lockedTurn);
         constexpr double kHalfSqrt2 = std::numbers::sqrt2 / 2.0;
         const double middle = 0.5 * kPi - 2.0 * fastAngleOnUnitCircle(kHalfSqrt2 * sumPair.length, kHalfSqrt2 * differencePair.length);
-        result.angles = {wrapAngle(h.sum + h.difference), middle, wrapAngle(epsilon * (h.sum - h.difference))};
+        result.angles = {wrappedSum(h.sum, h.difference), middle, wrappedSum(times(epsilon, h.sum), times(-epsilon, h.difference))};
         result.gimbalLockDistance = 0.5 * kPi - std::abs(middle);
     }
     return result;
@@ -227,6 +283,8 @@ std::vector<Eigen::Vector3d> unwrappedEulerAngles(const std::vector<Eigen::Quate
 
 double wrapAngle(double e)
 {
+    if (e > -kPi && e <= kPi)
+        return e;
     // Within 2.5π of 0 (every sum of two angles in [−π, π]) one turn added or taken away is exact by
     // Sterbenz's lemma and is what std::remainder gives, at a fraction of its cost.
     if (e > kPi && e < 2.5 * kPi)

@@ -2,11 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace gyre::fast_trig_detail {
 
 namespace {
+// The tables' tails are differences of long doubles and doubles: they need its 64 significant bits.
+static_assert(std::numeric_limits<long double>::digits >= 64);
 constexpr long double kPiLong = std::numbers::pi_v<long double>;
+
+// The lowest angle of bin b: asin(b/256) in the first half (half 0), π/2 − asin((b+1)/256) in the second.
+long double lowestAngleOfBin(std::size_t b, std::size_t half)
+{
+    if (half == 0)
+        return std::asin(static_cast<long double>(b) / kAngleBins);
+    return kPiLong / 2 - std::asin(std::min(static_cast<long double>(b + 1) / kAngleBins, 1.0L));
+}
 } // namespace
 
 // Filled from the long double functions, so that every entry is the double nearest the true value.
@@ -27,12 +38,25 @@ const std::array<TableAngle, 2 * kAngleBinsPerHalf> kAngleTable = [] {
         const long double rounded = angle; // sine and cosine of the double actually stored
         return TableAngle{angle, static_cast<double>(std::sin(rounded)), static_cast<double>(std::cos(rounded))};
     };
-    for (std::size_t b = 0; b < kAngleBinsPerHalf; ++b) {
-        const long double low = static_cast<long double>(b) / kAngleBins;
-        const long double high = std::min(static_cast<long double>(b + 1) / kAngleBins, 1.0L);
-        table[b] = entry(std::asin(low));
-        table[kAngleBinsPerHalf + b] = entry(kPiLong / 2 - std::asin(high));
-    }
+    for (std::size_t b = 0; b < kAngleBinsPerHalf; ++b)
+        for (std::size_t half : {0, 1})
+            table[half * kAngleBinsPerHalf + b] = entry(lowestAngleOfBin(b, half));
+    return table;
+}();
+
+const std::array<ShortTableAngle, 2 * kAngleBinsPerHalf> kShortAngleTable = [] {
+    std::array<ShortTableAngle, 2 * kAngleBinsPerHalf> table{};
+    const auto entry = [](long double exact) {
+        const long double sin = halves(static_cast<double>(std::sin(exact))).high;
+        const long double cos = halves(static_cast<double>(std::cos(exact))).high;
+        const long double angle = std::atan2(sin, cos);
+        const auto head = static_cast<double>(angle);
+        return ShortTableAngle{head, static_cast<double>(angle - head), static_cast<double>(sin), static_cast<double>(cos),
+                               static_cast<double>(1.0L / std::sqrt(sin * sin + cos * cos))};
+    };
+    for (std::size_t b = 0; b < kAngleBinsPerHalf; ++b)
+        for (std::size_t half : {0, 1})
+            table[half * kAngleBinsPerHalf + b] = entry(lowestAngleOfBin(b, half));
     return table;
 }();
 

@@ -4,7 +4,8 @@
 // target machine, most of the 35 ns budget of one screw. These reduce the argument against a table of
 // exactly rounded values (filled from the long double functions at start-up) and finish with a short
 // Taylor series, with no division. Their absolute error is a few units of 2⁻⁵³, which is what a pose
-// needs; unlike glibc's, sin does not keep its relative precision at its zeros far from 0.
+// needs; unlike glibc's, sin does not keep its relative precision at its zeros far from 0. The
+// precise angle, for the Euler decomposition's outer angles, is left unrounded, within 4e-18.
 // Inline, so that the screw's code keeps its values in registers.
 
 #include <algorithm>
@@ -41,6 +42,33 @@ struct TableAngle {
 // For bin b of the first half, θ = asin(b/256): the lowest angle whose sine falls in the bin. For bin
 // b of the second half, θ = π/2 − asin((b+1)/256): the lowest angle whose cosine falls in bin b.
 extern const std::array<TableAngle, 2 * kAngleBinsPerHalf> kAngleTable;
+
+// For preciseAngleInFirstQuadrant, the same bins' angles moved to a point (cos, sin) whose two
+// coordinates have 26 significant bits, so that their products with 26-bit halves of a double are
+// exact. The point is off the unit circle by about 2⁻²⁷: its exact angle is angle + tail, and its
+// length 1/inverseLength.
+struct ShortTableAngle {
+    double angle;
+    double tail;
+    double sin;
+    double cos;
+    double inverseLength;
+};
+extern const std::array<ShortTableAngle, 2 * kAngleBinsPerHalf> kShortAngleTable;
+
+// v = high + low, each of at most 26 significant bits (Veltkamp's split).
+struct Halves {
+    double high;
+    double low;
+};
+
+inline Halves halves(double v)
+{
+    constexpr double kSplitter = 134217729.0; // 2²⁷ + 1
+    const double scaled = kSplitter * v;
+    const double high = scaled - (scaled - v);
+    return {high, v - high};
+}
 
 constexpr double kStepsPerRadian = 128.0 / std::numbers::pi;
 constexpr double kLargestReduced = 1024.0; // beyond, k·(error of π) exceeds 1e-16
@@ -101,6 +129,42 @@ inline double fastAngleOnUnitCircle(double cosine, double sine)
     const double s2 = sigma * sigma;
     const double series = (1.0 / 6 + s2 * (3.0 / 40)) + (s2 * s2) * (5.0 / 112);
     return below.angle + (sigma + (sigma * s2) * series);
+}
+
+// An angle as a table angle, a double, plus a correction below 0.006 in magnitude, not added: the
+// exact sum is within 4e-18 of the angle.
+struct TableAngleSum {
+    double tableAngle;
+    double correction;
+};
+
+// The angle a ∈ [0, π/2] of the point (x, y), x, y ≥ 0, of length √(x² + y²) > 0 (to a few ulp),
+// within 4e-18 of atan2(y, x) before any rounding of the sum: a sum of two such angles, rounded once,
+// is within about 1e-17 beyond half an ulp of the exact sum. The same steps as fastAngleOnUnitCircle,
+// from a table point (c, s) of 26-bit coordinates at angle θ: y·c − x·s, whose near cancellation
+// would cost up to 1e-16, is taken from exact products of halves, so that
+// σ = (y·c − x·s)/(length·|(c, s)|) is only rounded relatively, and θ's tail is added. The Euler
+// decomposition reads its outer angles with it (euler_angles.cpp).
+inline TableAngleSum preciseAngleInFirstQuadrant(double x, double y, double length)
+{
+    using namespace fast_trig_detail;
+    const double inverse = 1.0 / length;
+    const bool steep = y > x;
+    // A NaN (from a zero or NaN quaternion) reads bin 0 and gives NaN, not an index from an undefined
+    // conversion.
+    const double binPosition = std::min(x, y) * inverse * kAngleBins;
+    const std::size_t bin = binPosition < kAngleBinsPerHalf ? static_cast<std::size_t>(static_cast<std::int32_t>(binPosition)) : 0;
+    const ShortTableAngle& below = kShortAngleTable[bin + (steep ? kAngleBinsPerHalf : 0)];
+    const Halves xParts = halves(x);
+    const Halves yParts = halves(y);
+    // Each product of a half and a table coordinate is exact. The high parts' products nearly cancel,
+    // so their difference is rounded at most at σ's own scale; the low parts' terms are below 2⁻²⁶
+    // of the length, and rounded far below σ's precision.
+    const double crossed = (yParts.high * below.cos - xParts.high * below.sin) + (yParts.low * below.cos - xParts.low * below.sin);
+    const double sigma = crossed * (inverse * below.inverseLength);
+    const double s2 = sigma * sigma;
+    const double series = (1.0 / 6 + s2 * (3.0 / 40)) + (s2 * s2) * (5.0 / 112);
+    return {below.angle, below.tail + (sigma + (sigma * s2) * series)};
 }
 
 } // namespace gyre

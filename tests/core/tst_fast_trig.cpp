@@ -70,6 +70,7 @@ private slots:
     void sinCosWithinAFewUlpNearZero();
     void sinCosBeyondTheTableRange();
     void angleOnUnitCircleWithinAFewUlp();
+    void preciseAngleWithinAFewUnitsOf2ToThe60();
 };
 
 void TestFastTrig::sinCosAbsoluteErrorIsRounding()
@@ -158,6 +159,46 @@ void TestFastTrig::angleOnUnitCircleWithinAFewUlp()
     QVERIFY2(worst <= kFewUlp, qPrintable(QStringLiteral("angle of (%1, %2): fast %3, std %4 (%5 ulp)")
                                               .arg(str(worstCos), str(worstSin), str(fastAngleOnUnitCircle(worstCos, worstSin)),
                                                    str(std::atan2(worstSin, worstCos)), str(worst))));
+}
+
+void TestFastTrig::preciseAngleWithinAFewUnitsOf2ToThe60()
+{
+    // Points of lengths from 1e-12 to √2 in the first quadrant, as an Euler decomposition's quaternion
+    // pairs give them; the reference is the long double atan2 of the very same two doubles. The table angle and
+    // its correction are added in long double, unrounded, as the Euler decomposition adds them.
+    constexpr long double kBound = 4e-18L; // rad: a few units of 2⁻⁶⁰, as fast_trig.h states
+    Random random(302);
+    std::vector<double> angles = {0.0, 1e-300, 1e-20, 1e-8, kPi / 4.0, kPi / 2.0};
+    for (int i = 0; i < 50000; ++i)
+        angles.push_back(random.uniform(0.0, kPi / 2.0));
+    for (int i = 0; i < 5000; ++i) {
+        angles.push_back(std::pow(10.0, random.uniform(-15.0, 0.0)));
+        angles.push_back(kPi / 2.0 - std::pow(10.0, random.uniform(-15.0, 0.0)));
+        angles.push_back(kPi / 4.0 + random.uniform(-1e-6, 1e-6));
+        angles.push_back(std::asin(std::round(random.uniform(0.0, 190.0)) / 256.0) + random.uniform(-1e-9, 1e-9)); // bin edges
+    }
+    long double worst = 0.0L;
+    double worstX = 1.0;
+    double worstY = 0.0;
+    double largestCorrection = 0.0;
+    for (double a : angles) {
+        for (double length : {1.0, std::pow(10.0, random.uniform(-12.0, 0.2)), std::sqrt(2.0)}) {
+            const double x = length * std::cos(a);
+            const double y = length * std::sin(a);
+            const TableAngleSum angle = preciseAngleInFirstQuadrant(x, y, std::sqrt(x * x + y * y));
+            const long double error = std::abs(static_cast<long double>(angle.tableAngle) + angle.correction -
+                                               std::atan2(static_cast<long double>(y), static_cast<long double>(x)));
+            largestCorrection = std::max(largestCorrection, std::abs(angle.correction));
+            if (error > worst) {
+                worst = error;
+                worstX = x;
+                worstY = y;
+            }
+        }
+    }
+    qInfo("worst precise angle error %.3Lg rad at (%.17g, %.17g); largest correction %.3g", worst, worstX, worstY, largestCorrection);
+    QVERIFY2(worst <= kBound, qPrintable(QStringLiteral("angle of (%1, %2) off by %3").arg(str(worstX), str(worstY)).arg(static_cast<double>(worst))));
+    QVERIFY(largestCorrection < 0.006);
 }
 
 QTEST_APPLESS_MAIN(TestFastTrig)
