@@ -120,7 +120,15 @@ model::ApplyEulerFilterCommand::KeySubset KeyframeActions::keysToFilter(model::O
 
 bool KeyframeActions::eulerFilterChanges(model::ObjectId object) const
 {
-    return model::ApplyEulerFilterCommand::changes(document_.object(object)->track, keysToFilter(object));
+    const model::MotionTrack& track = document_.object(object)->track;
+    model::ApplyEulerFilterCommand::KeySubset subset = keysToFilter(object);
+    const auto known = eulerFilterAnswers_.find(object);
+    if (known != eulerFilterAnswers_.end() && known->second.keys.sharesElementsWith(track.keys) &&
+        known->second.rotationMode == track.rotationMode && known->second.subset == subset)
+        return known->second.changes;
+    const bool changes = model::ApplyEulerFilterCommand::changes(track, subset);
+    eulerFilterAnswers_.insert_or_assign(object, EulerFilterAnswer{track.keys, track.rotationMode, std::move(subset), changes});
+    return changes;
 }
 
 void KeyframeActions::applyEulerFilter()
@@ -158,6 +166,7 @@ void KeyframeActions::updateActions()
     // On every Keyframes change, each step of a drag included: stops at the first object, and in it at the first
     // key, the filter would change.
     const std::vector<model::ObjectId> objects = selection_.objects();
+    std::erase_if(eulerFilterAnswers_, [&objects](const auto& answer) { return std::ranges::find(objects, answer.first) == objects.end(); });
     actions_.eulerFilter->setEnabled(
         std::ranges::any_of(objects, [this](model::ObjectId id) { return eulerFilterChanges(id); }));
     const bool flies = object != nullptr && object->track.interpolation == InterpolationMethod::Ballistic &&

@@ -11,6 +11,7 @@
 #include "gui_test_support.h"
 #include "inspected_window.h"
 #include "model/commands/import_objects_command.h"
+#include "model/commands/replace_keyframes_command.h"
 #include "model/track_evaluation.h"
 
 #include <QAction>
@@ -195,14 +196,9 @@ private slots:
         const std::vector<Eigen::Vector3d> tilt{{0, 0, 0}, {-60, 0, 0}, {-150, 0, 0}};
         const std::vector<Eigen::Vector3d> turn{{0, 0, 0}, {170, 0, 0}, {-60, 0, 0}};
         const std::vector<Eigen::Vector3d> turnRamp{{0, 0, 0}, {170, 0, 0}, {300, 0, 0}};
-        auto* import = new model::ImportObjectsCommand(
-            document, {eulerKeyed(1, QStringLiteral("spin"), spin), eulerKeyed(2, QStringLiteral("turn"), turn),
-                       eulerKeyed(3, QStringLiteral("tilt"), tilt)});
-        document.push(import);
-        const std::vector<model::ObjectId> ids = import->ids();
-        document.undoStack().clear();
-        auto* filter = window_->findChild<QAction*>(QStringLiteral("actionEulerFilter"));
-        QVERIFY(filter != nullptr);
+        const std::vector<model::ObjectId> ids = importAndSelect(
+            {eulerKeyed(1, QStringLiteral("spin"), spin), eulerKeyed(2, QStringLiteral("turn"), turn), eulerKeyed(3, QStringLiteral("tilt"), tilt)});
+        QAction* filter = eulerFilter();
         window_->selection().selectObjects({ids[2]}, ids[2]);
         QVERIFY(!filter->isEnabled()); // the tilt's angles are continuous already
         window_->selection().selectObjects({ids[2], ids[0], ids[1]}, ids[2]);
@@ -237,19 +233,49 @@ private slots:
         QVERIFY(filter->isEnabled());
     }
 
+    void theEulerFilterFollowsEveryEditOfASelectedObject()
+    {
+        // Two continuous tracks selected: nothing to filter. The keys of the one that is not active are then
+        // edited, the turn's 300° stored as −60°, and the edit undone and redone: the action follows each,
+        // though each object's answer is remembered while its keys stay the same.
+        model::Document& document = window_->document();
+        const std::vector<Eigen::Vector3d> tilt{{0, 0, 0}, {-60, 0, 0}, {-150, 0, 0}};
+        const std::vector<Eigen::Vector3d> turnRamp{{0, 0, 0}, {170, 0, 0}, {300, 0, 0}};
+        const std::vector<model::ObjectId> ids =
+            importAndSelect({eulerKeyed(1, QStringLiteral("tilt"), tilt), eulerKeyed(2, QStringLiteral("turn"), turnRamp)});
+        QAction* filter = eulerFilter();
+        QVERIFY(!filter->isEnabled());
+
+        std::vector<model::Keyframe> keys = document.object(ids[1])->track.keys;
+        keys[2].eulerAngles = Eigen::Vector3d(-60.0, 0.0, 0.0) / kDegrees;
+        keys[2].pose.orientation = quaternionFromEulerAngles(*keys[2].eulerAngles, {});
+        document.push(new model::ReplaceKeyframesCommand(document, {{ids[1], keys}}, model::ReplaceKeyframesCommand::Edit::Move));
+        QVERIFY(filter->isEnabled());
+        document.undoStack().undo();
+        QVERIFY(!filter->isEnabled());
+        document.undoStack().redo();
+        QVERIFY(filter->isEnabled());
+        // The tilt alone selected, then both again.
+        window_->selection().selectObjects({ids[0]}, ids[0]);
+        QVERIFY(!filter->isEnabled());
+        window_->selection().selectObjects({ids[0], ids[1]}, ids[0]);
+        QVERIFY(filter->isEnabled());
+        // Other keys of the same, unchanged keys: the turn's 170°, continuous, then its −60°.
+        window_->selection().selectKeys({{ids[1], 1}}, false);
+        QVERIFY(!filter->isEnabled());
+        window_->selection().selectKeys({{ids[1], 2}}, false);
+        QVERIFY(filter->isEnabled());
+    }
+
     void theEulerFilterOnSelectedKeysFiltersThoseAlone()
     {
         model::Document& document = window_->document();
         // The spin of the test above and a key after it, stored wrapped; the turn to 300° stored as −60°.
         const std::vector<Eigen::Vector3d> spin{{0, 0, 0}, {0, 0, 170}, {0, 0, -170}, {180, 180, 170}, {0, 0, 140}, {0, 0, -60}};
         const std::vector<Eigen::Vector3d> turn{{0, 0, 0}, {170, 0, 0}, {-60, 0, 0}};
-        auto* import = new model::ImportObjectsCommand(
-            document, {eulerKeyed(1, QStringLiteral("spin"), spin), eulerKeyed(2, QStringLiteral("turn"), turn)});
-        document.push(import);
-        const std::vector<model::ObjectId> ids = import->ids();
-        document.undoStack().clear();
-        auto* filter = window_->findChild<QAction*>(QStringLiteral("actionEulerFilter"));
-        window_->selection().selectObjects({ids[0], ids[1]}, ids[0]);
+        const std::vector<model::ObjectId> ids =
+            importAndSelect({eulerKeyed(1, QStringLiteral("spin"), spin), eulerKeyed(2, QStringLiteral("turn"), turn)});
+        QAction* filter = eulerFilter();
         // The spin's first key (none before it) and a key already continuous with the one before: nothing to do.
         window_->selection().selectKeys({{ids[0], 0}, {ids[0], 1}}, false);
         QVERIFY(!filter->isEnabled());
@@ -332,6 +358,26 @@ private slots:
     }
 
 private:
+    // Imports `objects` in one step, which is then forgotten, and selects them all, the first active.
+    std::vector<model::ObjectId> importAndSelect(std::vector<model::SceneObject> objects)
+    {
+        model::Document& document = window_->document();
+        auto* import = new model::ImportObjectsCommand(document, std::move(objects));
+        document.push(import);
+        const std::vector<model::ObjectId> ids = import->ids();
+        document.undoStack().clear();
+        window_->selection().selectObjects(ids, ids.front());
+        return ids;
+    }
+
+    QAction* eulerFilter() const
+    {
+        auto* action = window_->findChild<QAction*>(QStringLiteral("actionEulerFilter"));
+        if (action == nullptr)
+            qFatal("no Euler Filter action");
+        return action;
+    }
+
     std::unique_ptr<app::MainWindow> window_;
     model::ObjectId object_ = model::kNoObject;
 };
