@@ -270,7 +270,8 @@ private slots:
     void theEulerFilterOnSelectedKeysFiltersThoseAlone()
     {
         model::Document& document = window_->document();
-        // The spin of the test above and a key after it, stored wrapped; the turn to 300° stored as −60°.
+        // The spin of theEulerFilterUnwrapsEverySelectedObjectsAnglesInOneStep and a key after it, stored wrapped;
+        // the turn to 300° stored as −60°.
         const std::vector<Eigen::Vector3d> spin{{0, 0, 0}, {0, 0, 170}, {0, 0, -170}, {180, 180, 170}, {0, 0, 140}, {0, 0, -60}};
         const std::vector<Eigen::Vector3d> turn{{0, 0, 0}, {170, 0, 0}, {-60, 0, 0}};
         const std::vector<model::ObjectId> ids =
