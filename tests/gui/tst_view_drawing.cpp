@@ -2,7 +2,8 @@
 // frames at 120 Hz (the one gyre-bench imports), a bone of it selected, the docks as the window lays
 // them out. Prints the time to repaint the timeline and the sphere view for a new current time, and
 // the frame rate of playback with every view drawing; what the Graph Editor costs with the bone
-// selected (issue 23); and the time to open the capture in the window as File ▸ Import does (issue 22).
+// selected (issue 23); the UI thread's CPU for a key edit with every joint selected; and the time to
+// open the capture in the window as File ▸ Import does (issue 22).
 // Tests never assert on time.
 
 #include "app/graph_editor/graph_editor_panel.h"
@@ -16,6 +17,7 @@
 #include "gui_test_support.h"
 #include "io/bvh_fixture.h"
 #include "io/scene_import.h"
+#include "model/commands/apply_euler_filter_command.h"
 #include "model/commands/import_objects_command.h"
 #include "model/commands/set_keyframe_orientation_command.h"
 #include "model/commands/set_time_range_command.h"
@@ -52,6 +54,8 @@ constexpr int kMeasuredFrames = 31;
 // function came within a few seconds of the per-function minute on a loaded machine.
 constexpr int kGraphEditorRuns = 7;
 constexpr qint64 kPlayingMilliseconds = 4000;
+
+constexpr int kKeyEditSteps = 21;
 
 double median(std::vector<double> values)
 {
@@ -210,6 +214,36 @@ private slots:
 
     // The Graph Editor with a bone of the capture selected: sampling its channels (the editor's job,
     // off the UI thread), and redrawing the plot with the Euler angles shown and with all 14 channels.
+    void measuresAKeyEditWithEveryObjectSelected()
+    {
+        // The UI thread's CPU for one step of a key's drag with every joint selected: the document's
+        // change and everything that answers it on this thread, the Euler Filter's enabled state included.
+        app::MainWindow window;
+        const auto [imported, ids] = openCapture(window);
+        QVERIFY(!ids.empty());
+        model::Document& document = window.document();
+        const model::ObjectId bone = ids.at(kSelectedJoint);
+        window.selection().selectObjects(ids, bone);
+        QCoreApplication::processEvents();
+        std::vector<double> milliseconds;
+        for (int step = 0; step < kKeyEditSteps; ++step) {
+            const Eigen::Quaterniond turned = document.object(bone)->track.keys[1].pose.orientation *
+                                              Eigen::Quaterniond(Eigen::AngleAxisd(0.001, Eigen::Vector3d::UnitX()));
+            const double before = test::threadMilliseconds();
+            document.push(new model::SetKeyframeOrientationCommand(document, bone, 1, turned));
+            milliseconds.push_back(test::threadMilliseconds() - before);
+            QCoreApplication::processEvents();
+        }
+        std::printf("a key edit with all %zu objects selected: %.2f ms of the UI thread's CPU (median of %d)\n", ids.size(),
+                    median(milliseconds), kKeyEditSteps);
+        // The enabled state the edits left is the one every object's keys give.
+        auto* filter = window.findChild<QAction*>(QStringLiteral("actionEulerFilter"));
+        QVERIFY(filter != nullptr);
+        QCOMPARE(filter->isEnabled(), std::ranges::any_of(ids, [&](model::ObjectId id) {
+                     return model::ApplyEulerFilterCommand::changes(document.object(id)->track);
+                 }));
+    }
+
     void measuresTheGraphEditorOnAMotionCapture()
     {
         app::MainWindow window;
