@@ -79,6 +79,13 @@ Pose turned(double angle, const Eigen::Vector3d& axis, const Eigen::Vector3d& po
     return {Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis.normalized())), position};
 }
 
+// Root (1) ─ Upper (2) ─ Lower (3), meshless and turned, the chain several tests start from.
+std::vector<model::SceneObject> rootUpperLower()
+{
+    return {placed(1, model::kNoObject, turned(0.3, {1, 2, 3}, {1, 0, 0})), placed(2, 1, turned(0.8, {0, 1, 0}, {0, 0, 2})),
+            placed(3, 2, turned(-0.5, {1, 0, 1}, {1.5, 0, 0}))};
+}
+
 } // namespace
 
 class TestViewportGeometry : public QObject {
@@ -310,12 +317,10 @@ private slots:
         // Lone (6, meshless, alone).
         auto mesh = std::make_shared<const model::Mesh>(tetrahedron());
         model::Scene scene;
-        scene.objects = {placed(1, model::kNoObject, turned(0.3, {1, 2, 3}, {1, 0, 0})),
-                         placed(2, 1, turned(0.8, {0, 1, 0}, {0, 0, 2})),
-                         placed(3, 2, turned(-0.5, {1, 0, 1}, {1.5, 0, 0})),
-                         placed(4, 1, turned(0.1, {0, 0, 1}, {0, 3, 0}), mesh),
-                         placed(5, 4, turned(0.2, {0, 0, 1}, {0, 1, 0})),
-                         placed(6, model::kNoObject, turned(0.4, {1, 0, 0}, {5, 5, 0}))};
+        scene.objects = rootUpperLower();
+        scene.objects.insert(scene.objects.end(), {placed(4, 1, turned(0.1, {0, 0, 1}, {0, 3, 0}), mesh),
+                                                   placed(5, 4, turned(0.2, {0, 0, 1}, {0, 1, 0})),
+                                                   placed(6, model::kNoObject, turned(0.4, {1, 0, 0}, {5, 5, 0}))});
         const model::SceneMotion motion(scene, ownMotion);
         app::Skeleton skeleton;
         skeleton.update(scene, motion, 0.0);
@@ -344,8 +349,7 @@ private slots:
         // Root (1, meshless) ─ Pivot (2, an empty) ─ Tip (3, meshless): with the empty, no two meshless
         // objects are joined, so none is a joint; without it, all three are.
         model::Scene scene;
-        scene.objects = {placed(1, model::kNoObject, turned(0.3, {1, 2, 3}, {1, 0, 0})),
-                         placed(2, 1, turned(0.8, {0, 1, 0}, {0, 0, 2})), placed(3, 2, turned(-0.5, {1, 0, 1}, {1.5, 0, 0}))};
+        scene.objects = rootUpperLower();
         scene.objects[1].empty = true;
         QCOMPARE(model::findJoints(scene), std::vector<bool>(3, false));
         scene.objects[1].empty = false;
@@ -523,11 +527,9 @@ private slots:
         // Root (1) ─ Upper (2) ─ Lower (3): joints; Axes (4): an empty; Prop (5): a mesh.
         auto mesh = std::make_shared<const model::Mesh>(tetrahedron());
         model::Scene scene;
-        scene.objects = {placed(1, model::kNoObject, turned(0.3, {1, 2, 3}, {1, 0, 0})),
-                         placed(2, 1, turned(0.8, {0, 1, 0}, {0, 0, 2})),
-                         placed(3, 2, turned(-0.5, {1, 0, 1}, {1.5, 0, 0})),
-                         placed(4, model::kNoObject, turned(0.4, {1, 0, 0}, {5, 5, 0})),
-                         placed(5, model::kNoObject, turned(0.1, {0, 0, 1}, {0, 3, 0}), mesh)};
+        scene.objects = rootUpperLower();
+        scene.objects.insert(scene.objects.end(), {placed(4, model::kNoObject, turned(0.4, {1, 0, 0}, {5, 5, 0})),
+                                                   placed(5, model::kNoObject, turned(0.1, {0, 0, 1}, {0, 3, 0}), mesh)});
         scene.objects[3].empty = true;
         for (model::SceneObject& object : scene.objects)
             object.track.keys.push_back({2.0, turned(1.2, {0, 1, 1}, {1, 2, 0}), true});
