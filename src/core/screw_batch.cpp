@@ -9,13 +9,24 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
-// Each loop below runs over the lanes of one block with no branch and no call, so that GCC vectorises
-// it (checked with -fopt-info-vec and in the disassembly: mulpd, not mulsd). The file is built with
-// -fno-math-errno and -fno-trapping-math (src/core/CMakeLists.txt), so that std::sqrt is one packed
-// instruction and a select may compute both of its sides; the table reads of the fast trigonometry
-// are the only loads done a lane at a time.
+// The lanes are written with GCC's and Clang's vector extension: a register of `width` doubles takes
+// +, −, ×, ÷, comparisons (64-bit masks of all ones or zeros) and selects (mask ? a : b), which compile
+// to packed instructions, SSE2's at width 2 and AVX's at width 4 inside the AVX2 functions below. The
+// file is built with -fno-math-errno and -fno-trapping-math (src/core/CMakeLists.txt), so that the
+// square root of a register is one packed instruction. Every function is forced inline, in a Debug
+// build too: a register of four doubles passed to a function built without AVX would cross a calling
+// convention that differs.
+//
+// What shapes the loops (perf, and llvm-mca's model of the development machine's AMD EPYC): the
+// floating-point loads and stores, two a cycle together and one store, limit the screw as much as its
+// multiplies do. So values cross from loop to loop through memory only where a long chain of latency
+// has to be broken: the square root and the division, and each table read with the series after it.
+// Each loop of a block is short and its registers independent, so that the processor overlaps them.
+// Each table read takes its index from memory as an integer: moving an index from a SIMD register to
+// a general one costs more than storing it and loading it.
 
 namespace gyre {
 
@@ -23,187 +34,384 @@ namespace {
 
 using namespace fast_trig_detail;
 
-// Screws a block, the trip count of every loop below. With 8 BM_ScrewBatch took a third longer with
-// AVX2 (the loops too short to overlap their iterations); 32 and 64 gained nothing over 16.
+// Screws a block. 8 and 32 were no faster.
 constexpr std::size_t kLanes = 16;
-using Lanes = std::array<double, kLanes>;
+
+template <int width>
+struct Registers;
+template <>
+struct Registers<2> {
+    using Doubles = double __attribute__((vector_size(16)));
+    using Mask = std::int64_t __attribute__((vector_size(16)));
+};
+template <>
+struct Registers<4> {
+    using Doubles = double __attribute__((vector_size(32)));
+    using Mask = std::int64_t __attribute__((vector_size(32)));
+};
+template <int width>
+using Doubles = typename Registers<width>::Doubles;
+template <int width>
+using Mask = typename Registers<width>::Mask;
+
+template <int width>
+constexpr std::size_t kRegisters = kLanes / width;
+
+template <int width>
+using Lanes = std::array<Doubles<width>, kRegisters<width>>;
 
 // One block's screws, Screw's members in lanes; quaternions as x, y, z, w like Eigen's coefficients.
+template <int width>
 struct Block {
-    std::array<Lanes, 4> fromOrientation;   // qa
-    std::array<Lanes, 3> fromPosition;      // pa
-    std::array<Lanes, 4> toOrientation;     // qb
-    std::array<Lanes, 3> toPosition;        // pb
-    std::array<Lanes, 4> turnedOrientation; // (0, S)·qa
-    std::array<Lanes, 3> axis;              // S
-    std::array<Lanes, 3> sinSquaredTerm;    // V₁
-    std::array<Lanes, 3> sinCosTerm;        // V₂
-    Lanes sinHalfAngle;                     // sin a, or 0 in a lane without rotation
-    Lanes cosHalfAngle;                     // cos a, or 1 in a lane without rotation
-    Lanes cotangent;                        // cot a
-    Lanes toWeight;                         // σ / sin a
-    Lanes halfAngle;                        // a
-    Lanes slide;                            // d
+    template <std::size_t count>
+    using Components = std::array<Lanes<width>, count>;
+    Components<4> fromOrientation;   // qa
+    Components<3> fromPosition;      // pa
+    Components<4> turnedOrientation; // (0, S)·qa
+    Components<3> axis;              // S
+    Components<3> sinSquaredTerm;    // V₁
+    Components<3> sinCosTerm;        // V₂
+    Lanes<width> sinHalfAngle;       // sin a, or 0 in a lane without rotation
+    Lanes<width> cosHalfAngle;       // cos a, or 1 in a lane without rotation
+    Lanes<width> cotangent;          // cot a
+    Lanes<width> halfAngle;          // a, or NaN in a lane without rotation (see turnAt)
+    Lanes<width> slide;              // d
+    // Between the loops of buildBlock:
+    Components<3> relativeVector;          // σ·(qb·conj(qa)).vec()
+    Lanes<width> productW;                 // (qb·conj(qa)).w, whose sign is σ
+    Lanes<width> normSquared;              // sin²a
+    std::array<std::int64_t, kLanes> rows; // each lane's row of kAngleTable
 };
 
-// Two doubles, one SSE2 register (GCC's and Clang's vector extension).
-using DoublePair = double __attribute__((vector_size(16)));
-
-[[gnu::always_inline]] inline DoublePair loadPair(const double* p)
+template <int width>
+[[gnu::always_inline]] inline Doubles<width> squareRoot(Doubles<width> value)
 {
-    DoublePair pair;
-    std::memcpy(&pair, p, sizeof pair);
-    return pair;
+    Doubles<width> root;
+    for (int i = 0; i < width; ++i)
+        root[i] = std::sqrt(value[i]); // one packed square root: GCC joins the lanes
+    return root;
 }
 
-[[gnu::always_inline]] inline void storePair(double* p, DoublePair pair)
+// value with its sign bit flipped where `sign` has it set: value·σ, exactly, for σ = ±1.
+template <int width>
+[[gnu::always_inline]] inline Doubles<width> withSignOf(Doubles<width> value, Mask<width> sign)
 {
-    std::memcpy(p, &pair, sizeof pair);
+    return reinterpret_cast<Doubles<width>>(reinterpret_cast<Mask<width>>(value) ^ sign);
 }
 
-// The poses of two lanes into `coefficients` (a quaternion's four or a position's three arrays of lanes)
-// at lanes l and l + 1: each two adjacent coefficients of a pose loaded together, and the pairs of the
-// two poses interleaved. A loop over the lanes that read the poses' coefficients one by one, as GCC
-// vectorises it, took a fifth of the screw's time.
-template <std::size_t count>
-[[gnu::always_inline]] inline void loadTwoLanes(const double* first, const double* second,
-                                                std::array<Lanes, count>& coefficients, std::size_t l)
+// The masks of __builtin_shuffle that interleave two registers, even and odd, two doubles at a time:
+// (even₀, odd₀, even₂, odd₂, …) and (even₁, odd₁, even₃, odd₃, …). Within each 128-bit half, as
+// unpcklpd and unpckhpd do.
+template <int width>
+[[gnu::always_inline]] inline Mask<width> interleaving(int half)
 {
-    for (std::size_t c = 0; c + 1 < count; c += 2) {
-        const DoublePair a = loadPair(first + c);
-        const DoublePair b = loadPair(second + c);
-        storePair(&coefficients[c][l], DoublePair{a[0], b[0]});
-        storePair(&coefficients[c + 1][l], DoublePair{a[1], b[1]});
+    Mask<width> mask{};
+    for (int i = 0; i < width; ++i)
+        mask[i] = i % 2 == 0 ? i + half : width + i - 1 + half;
+    return mask;
+}
+
+// rows[i][0] and rows[i][1] of `width` rows as two registers of lanes: each row's pair loaded together
+// (one load, where two single ones would each take a load port), then the lanes interleaved.
+template <int width>
+[[gnu::always_inline]] inline void loadPairs(const std::array<const double*, width>& rows, Doubles<width>& first,
+                                             Doubles<width>& second)
+{
+    Doubles<width> even; // rows 0, 2, …, two doubles each
+    Doubles<width> odd;  // rows 1, 3, …
+    for (int i = 0; i < width / 2; ++i) {
+        even[2 * i] = rows[2 * i][0];
+        even[2 * i + 1] = rows[2 * i][1];
+        odd[2 * i] = rows[2 * i + 1][0];
+        odd[2 * i + 1] = rows[2 * i + 1][1];
     }
-    if constexpr (count % 2 == 1) {
-        coefficients[count - 1][l] = first[count - 1];
-        coefficients[count - 1][l + 1] = second[count - 1];
+    first = __builtin_shuffle(even, odd, interleaving<width>(0));
+    second = __builtin_shuffle(even, odd, interleaving<width>(1));
+}
+
+// The inverse of loadPairs: lanes first and second to rows[i][0] and rows[i][1].
+template <int width>
+[[gnu::always_inline]] inline void storePairs(Doubles<width> first, Doubles<width> second,
+                                              const std::array<double*, width>& rows)
+{
+    const Doubles<width> even = __builtin_shuffle(first, second, interleaving<width>(0));
+    const Doubles<width> odd = __builtin_shuffle(first, second, interleaving<width>(1));
+    for (int i = 0; i < width / 2; ++i) {
+        rows[2 * i][0] = even[2 * i];
+        rows[2 * i][1] = even[2 * i + 1];
+        rows[2 * i + 1][0] = odd[2 * i];
+        rows[2 * i + 1][1] = odd[2 * i + 1];
     }
 }
 
-// The block's pairs into its lanes.
-[[gnu::always_inline]] inline void loadBlock(const Pose* from, const Pose* to, Block& block)
+// The orientations of `width` poses in lanes: x, y, z, w.
+template <int width>
+[[gnu::always_inline]] inline std::array<Doubles<width>, 4> loadOrientations(const Pose* poses)
 {
-    static_assert(kLanes % 2 == 0);
-    for (std::size_t l = 0; l < kLanes; l += 2) {
-        loadTwoLanes(from[l].orientation.coeffs().data(), from[l + 1].orientation.coeffs().data(), block.fromOrientation, l);
-        loadTwoLanes(to[l].orientation.coeffs().data(), to[l + 1].orientation.coeffs().data(), block.toOrientation, l);
-        loadTwoLanes(from[l].position.data(), from[l + 1].position.data(), block.fromPosition, l);
-        loadTwoLanes(to[l].position.data(), to[l + 1].position.data(), block.toPosition, l);
+    std::array<const double*, width> xy;
+    std::array<const double*, width> zw;
+    for (int i = 0; i < width; ++i) {
+        xy[i] = poses[i].orientation.coeffs().data();
+        zw[i] = xy[i] + 2;
     }
+    std::array<Doubles<width>, 4> q;
+    loadPairs<width>(xy, q[0], q[1]);
+    loadPairs<width>(zw, q[2], q[3]);
+    return q;
 }
 
-// Screw(from[l], to[l]) for the kLanes pairs, with its angle only if `withAngle`; the lanes without
-// rotation are left to the single screw, their sin a and cos a set to 0 and 1 so that every index below
-// stays in its table. Three loops, each short enough for the processor to run several of its
-// iterations at once: otherwise each waits for its own square root and division, and then its table.
-template <bool withAngle>
-[[gnu::always_inline]] inline void buildBlock(const Pose* from, const Pose* to, Block& block)
+// The positions of `width` poses in lanes: z from the pairs (y, z).
+template <int width>
+[[gnu::always_inline]] inline std::array<Doubles<width>, 3> loadPositions(const Pose* poses)
 {
-    loadBlock(from, to, block);
-    for (std::size_t l = 0; l < kLanes; ++l) {
-        // qb·conj(qa) in the order of Eigen's SSE2 product (Geometry_SIMD.h), whose result Screw uses.
-        const double ax = -block.fromOrientation[0][l], ay = -block.fromOrientation[1][l];
-        const double az = -block.fromOrientation[2][l], aw = block.fromOrientation[3][l];
-        const double bx = block.toOrientation[0][l], by = block.toOrientation[1][l];
-        const double bz = block.toOrientation[2][l], bw = block.toOrientation[3][l];
-        const double px = (bw * ax + by * az) - (bz * ay - bx * aw);
-        const double py = (bw * ay + by * aw) + (bz * ax - bx * az);
-        const double pz = (bw * az - by * ax) + (bz * aw + bx * ay);
-        const double pw = (bw * aw - by * ay) - (bz * az + bx * ax);
-        const double side = std::copysign(1.0, pw); // σ
-        const double rx = side * px, ry = side * py, rz = side * pz, rw = side * pw;
-        const double s = std::sqrt((rx * rx + ry * ry) + rz * rz);
-        const bool rotating = s > Screw::kNoRotation;
-        const double inverseSin = 1.0 / s;
-        block.axis[0][l] = inverseSin * rx;
-        block.axis[1][l] = inverseSin * ry;
-        block.axis[2][l] = inverseSin * rz;
-        block.cotangent[l] = rw * inverseSin;
-        block.toWeight[l] = side * inverseSin;
-        block.sinHalfAngle[l] = rotating ? s : 0.0;
-        block.cosHalfAngle[l] = rotating ? rw : 1.0;
+    std::array<const double*, width> xy;
+    std::array<const double*, width> yz;
+    for (int i = 0; i < width; ++i) {
+        xy[i] = poses[i].position.data();
+        yz[i] = xy[i] + 1;
     }
-    for (std::size_t l = 0; l < kLanes; ++l) {
-        const double sx = block.axis[0][l], sy = block.axis[1][l], sz = block.axis[2][l];
-        const double cotangent = block.cotangent[l];
-        const double cx = block.toPosition[0][l] - block.fromPosition[0][l]; // Δ
-        const double cy = block.toPosition[1][l] - block.fromPosition[1][l];
-        const double cz = block.toPosition[2][l] - block.fromPosition[2][l];
-        const double d = (sx * cx + sy * cy) + sz * cz;
-        const double acrossX = cx - d * sx, acrossY = cy - d * sy, acrossZ = cz - d * sz; // Δ⊥
-        const double turnedX = sy * cz - sz * cy, turnedY = sz * cx - sx * cz, turnedZ = sx * cy - sy * cx; // S×Δ
-        block.sinSquaredTerm[0][l] = acrossX + cotangent * turnedX;
-        block.sinSquaredTerm[1][l] = acrossY + cotangent * turnedY;
-        block.sinSquaredTerm[2][l] = acrossZ + cotangent * turnedZ;
-        block.sinCosTerm[0][l] = cotangent * acrossX - turnedX;
-        block.sinCosTerm[1][l] = cotangent * acrossY - turnedY;
-        block.sinCosTerm[2][l] = cotangent * acrossZ - turnedZ;
-        block.slide[l] = d;
-        for (std::size_t c = 0; c < 4; ++c)
-            block.turnedOrientation[c][l] =
-                block.toWeight[l] * block.toOrientation[c][l] + -cotangent * block.fromOrientation[c][l];
+    std::array<Doubles<width>, 3> p;
+    Doubles<width> y;
+    loadPairs<width>(xy, p[0], p[1]);
+    loadPairs<width>(yz, y, p[2]);
+    return p;
+}
+
+// out[i] = the pose of lane i, its seven coefficients as loadOrientations and loadPositions give them.
+template <int width>
+[[gnu::always_inline]] inline void storePoses(const std::array<Doubles<width>, 7>& c, Pose* out)
+{
+    std::array<double*, width> xy;
+    std::array<double*, width> zw;
+    std::array<double*, width> position;
+    for (int i = 0; i < width; ++i) {
+        xy[i] = out[i].orientation.coeffs().data();
+        zw[i] = xy[i] + 2;
+        position[i] = out[i].position.data();
     }
+    storePairs<width>(c[0], c[1], xy);
+    storePairs<width>(c[2], c[3], zw);
+    storePairs<width>(c[4], c[5], position);
+    for (int i = 0; i < width; ++i)
+        position[i][2] = c[6][i];
+}
+
+// The product qb·conj(qa) of register v's pairs, in the order of Eigen's SSE2 product (Geometry_SIMD.h),
+// whose result Screw uses; and qa, in lanes for the poses.
+template <int width>
+[[gnu::always_inline]] inline void relativeRotation(const Pose* from, const Pose* to, Block<width>& block, std::size_t v)
+{
+    using D = Doubles<width>;
+    const std::array<D, 4> qa = loadOrientations<width>(from + v * width);
+    const std::array<D, 4> qb = loadOrientations<width>(to + v * width);
+    const D ax = -qa[0], ay = -qa[1], az = -qa[2], aw = qa[3];
+    const D bx = qb[0], by = qb[1], bz = qb[2], bw = qb[3];
+    const D px = (bw * ax + by * az) - (bz * ay - bx * aw);
+    const D py = (bw * ay + by * aw) + (bz * ax - bx * az);
+    const D pz = (bw * az - by * ax) + (bz * aw + bx * ay);
+    const D pw = (bw * aw - by * ay) - (bz * az + bx * ax);
+    const Mask<width> side = reinterpret_cast<Mask<width>>(pw) & std::numeric_limits<std::int64_t>::min(); // σ
+    const D rx = withSignOf<width>(px, side), ry = withSignOf<width>(py, side), rz = withSignOf<width>(pz, side);
+    block.relativeVector[0][v] = rx;
+    block.relativeVector[1][v] = ry;
+    block.relativeVector[2][v] = rz;
+    block.productW[v] = pw;
+    block.normSquared[v] = (rx * rx + ry * ry) + rz * rz;
+    for (std::size_t c = 0; c < 4; ++c)
+        block.fromOrientation[c][v] = qa[c];
+}
+
+// Screw's members that follow from sin a: the square root and the division, then the axis, cot a and
+// (0, S)·qa; with each lane's row of the angle table if `withAngle`. The lanes without rotation are
+// left to the single screw, their sin a and cos a set to 0 and 1 so that every row stays in its table.
+template <int width, bool withAngle>
+[[gnu::always_inline]] inline void rotationTerms(const Pose* to, Block<width>& block, std::size_t v)
+{
+    using D = Doubles<width>;
+    const D s = squareRoot<width>(block.normSquared[v]);
+    const Mask<width> rotating = s > Screw::kNoRotation;
+    const D inverseSin = 1.0 / s;
+    const Mask<width> side = reinterpret_cast<Mask<width>>(block.productW[v]) & std::numeric_limits<std::int64_t>::min();
+    const D rw = withSignOf<width>(block.productW[v], side);
+    for (std::size_t c = 0; c < 3; ++c)
+        block.axis[c][v] = inverseSin * block.relativeVector[c][v];
+    const D cotangent = rw * inverseSin;
+    const D toWeight = withSignOf<width>(inverseSin, side); // σ / sin a
+    block.cotangent[v] = cotangent;
+    const D sine = rotating ? s : D{};
+    const D cosine = rotating ? rw : D{} + 1.0;
+    block.sinHalfAngle[v] = sine;
+    block.cosHalfAngle[v] = cosine;
+    if constexpr (withAngle) {
+        // fastAngleOnUnitCircle's row: the bin of the smaller coordinate, in the half of the larger.
+        const D smaller = cosine < sine ? cosine : sine;
+        const D binPosition = smaller * static_cast<double>(kAngleBins);
+        const Mask<width> steep = sine > cosine;
+        for (int i = 0; i < width; ++i)
+            block.rows[v * width + i] = static_cast<std::int32_t>(binPosition[i]) + (steep[i] != 0 ? kAngleBinsPerHalf : 0);
+    }
+    const std::array<D, 4> qb = loadOrientations<width>(to + v * width);
+    const D minusCotangent = -cotangent;
+    for (std::size_t c = 0; c < 4; ++c)
+        block.turnedOrientation[c][v] = toWeight * qb[c] + minusCotangent * block.fromOrientation[c][v];
+}
+
+// Screw's members that carry the positions: d, V₁ and V₂.
+template <int width>
+[[gnu::always_inline]] inline void translationTerms(const Pose* from, const Pose* to, Block<width>& block, std::size_t v)
+{
+    using D = Doubles<width>;
+    const std::array<D, 3> pa = loadPositions<width>(from + v * width);
+    const std::array<D, 3> pb = loadPositions<width>(to + v * width);
+    const D cx = pb[0] - pa[0], cy = pb[1] - pa[1], cz = pb[2] - pa[2]; // Δ
+    const D sx = block.axis[0][v], sy = block.axis[1][v], sz = block.axis[2][v];
+    const D cotangent = block.cotangent[v];
+    const D d = (sx * cx + sy * cy) + sz * cz;
+    const D acrossX = cx - d * sx, acrossY = cy - d * sy, acrossZ = cz - d * sz; // Δ⊥
+    const D turnedX = sy * cz - sz * cy, turnedY = sz * cx - sx * cz, turnedZ = sx * cy - sy * cx; // S×Δ
+    block.sinSquaredTerm[0][v] = acrossX + cotangent * turnedX;
+    block.sinSquaredTerm[1][v] = acrossY + cotangent * turnedY;
+    block.sinSquaredTerm[2][v] = acrossZ + cotangent * turnedZ;
+    block.sinCosTerm[0][v] = cotangent * acrossX - turnedX;
+    block.sinCosTerm[1][v] = cotangent * acrossY - turnedY;
+    block.sinCosTerm[2][v] = cotangent * acrossZ - turnedZ;
+    block.slide[v] = d;
+    for (std::size_t c = 0; c < 3; ++c)
+        block.fromPosition[c][v] = pa[c];
+}
+
+// fastAngleOnUnitCircle of register v, from its rows; NaN in a lane without rotation.
+template <int width>
+[[gnu::always_inline]] inline void fastHalfAngle(Block<width>& block, std::size_t v)
+{
+    using D = Doubles<width>;
+    const D cosine = block.cosHalfAngle[v], sine = block.sinHalfAngle[v];
+    D belowAngle, belowSin, belowCos;
+    for (int i = 0; i < width; ++i) {
+        const TableAngle& below = kAngleTable[static_cast<std::size_t>(block.rows[v * width + i])];
+        belowAngle[i] = below.angle;
+        belowSin[i] = below.sin;
+        belowCos[i] = below.cos;
+    }
+    const D sigma = sine * belowCos - cosine * belowSin;
+    const D s2 = sigma * sigma;
+    const D series = (1.0 / 6 + s2 * (3.0 / 40)) + (s2 * s2) * (5.0 / 112);
+    const D angle = belowAngle + (sigma + (sigma * s2) * series);
+    block.halfAngle[v] = sine == 0.0 ? D{} + std::numeric_limits<double>::quiet_NaN() : angle;
+}
+
+// Screw(from[l], to[l]) for the kLanes pairs, with its angle only if `withAngle`.
+template <int width, bool withAngle>
+[[gnu::always_inline]] inline void buildBlock(const Pose* from, const Pose* to, Block<width>& block)
+{
+    for (std::size_t v = 0; v < kRegisters<width>; ++v)
+        relativeRotation(from, to, block, v);
+    for (std::size_t v = 0; v < kRegisters<width>; ++v)
+        rotationTerms<width, withAngle>(to, block, v);
+    for (std::size_t v = 0; v < kRegisters<width>; ++v)
+        translationTerms(from, to, block, v);
     if constexpr (withAngle)
-        for (std::size_t l = 0; l < kLanes; ++l)
-            block.halfAngle[l] = fastAngleOnUnitCircle(block.cosHalfAngle[l], block.sinHalfAngle[l]);
+        for (std::size_t v = 0; v < kRegisters<width>; ++v)
+            fastHalfAngle(block, v);
 }
 
 // sin(ta) and cos(ta) of each lane at one t, with sin²(ta) and sin(ta)·cos(ta).
+template <int width>
 struct Turn {
-    Lanes sin;
-    Lanes cos;
-    Lanes sinSquared;
-    Lanes sinCos;
-    Lanes singleScrew; // turnAt's: 1 in a lane left to the single screw, else 0
+    Lanes<width> sin;
+    Lanes<width> cos;
+    Lanes<width> sinSquared;
+    Lanes<width> sinCos;
+    // Between the loops of turnAt: fastSinCosReduced's argument reduced, and its table steps.
+    Lanes<width> reducedAngle;
+    std::array<std::int64_t, kLanes> steps;
 };
 
-// The turn of Screw::at(t): fastSinCos(t·a). A lane beyond the reduction's range gets the turn of 0
-// here, and the single screw after.
-[[gnu::always_inline]] inline void turnAt(const Block& block, double t, Turn& turn)
+// The turn of Screw::at(t): fastSinCosReduced(t·a), in two loops, the reduction and then the table and
+// the series. A lane whose t·a is beyond the reduction's range, or NaN (a lane without rotation), gets
+// the turn of 0 here and the single screw after: the result counts those lanes, 0 if there are none.
+template <int width>
+[[gnu::always_inline]] inline double turnAt(const Block<width>& block, double t, Turn<width>& turn)
 {
-    for (std::size_t l = 0; l < kLanes; ++l) {
-        const double angle = t * block.halfAngle[l];
-        const bool reduced = std::abs(angle) <= kLargestReduced;
-        const double x = reduced ? angle : 0.0;
-        const SinCos sinCos = fastSinCosReduced(x);
-        const double sinT = sinCos.sin;
-        const double cosT = sinCos.cos;
-        turn.sin[l] = sinT;
-        turn.cos[l] = cosT;
-        turn.sinSquared[l] = sinT * sinT;
-        turn.sinCos[l] = sinT * cosT;
-        turn.singleScrew[l] = (!reduced | (block.sinHalfAngle[l] == 0.0)) ? 1.0 : 0.0;
+    using D = Doubles<width>;
+    D singleScrew{};
+    for (std::size_t v = 0; v < kRegisters<width>; ++v) {
+        const D angle = t * block.halfAngle[v];
+        const D magnitude = reinterpret_cast<D>(reinterpret_cast<Mask<width>>(angle) & std::numeric_limits<std::int64_t>::max());
+        const Mask<width> reduced = magnitude <= kLargestReduced;
+        const D x = reduced ? angle : D{};
+        // k in the low bits of the shifted sum: the step of the table, as fastSinCosReduced's k & 255.
+        const D shifted = x * kStepsPerRadian + kRoundingShift;
+        const D k = shifted - kRoundingShift;
+        turn.reducedAngle[v] = (x - k * kStepHead) - k * kStepTail;
+        const Mask<width> steps = reinterpret_cast<Mask<width>>(shifted) & (kStepsPerTurn - 1);
+        std::memcpy(&turn.steps[v * width], &steps, sizeof steps); // one store, not one a lane
+        singleScrew += reduced ? D{} : D{} + 1.0;
     }
+    for (std::size_t v = 0; v < kRegisters<width>; ++v) {
+        const D r = turn.reducedAngle[v];
+        constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040;
+        constexpr double c2 = -1.0 / 2, c4 = 1.0 / 24, c6 = -1.0 / 720;
+        const D r2 = r * r;
+        const D r4 = r2 * r2;
+        const D sinR = r + (r * r2) * ((s3 + r2 * s5) + r4 * s7);
+        const D cosR = 1.0 + r2 * ((c2 + r2 * c4) + r4 * c6);
+        D sinK, cosK;
+        for (int i = 0; i < width; ++i) {
+            const auto step = static_cast<std::size_t>(turn.steps[v * width + i]);
+            sinK[i] = kSinCosTable.sin[step];
+            cosK[i] = kSinCosTable.cos[step];
+        }
+        const D sinT = sinK * cosR + cosK * sinR;
+        const D cosT = cosK * cosR - sinK * sinR;
+        turn.sin[v] = sinT;
+        turn.cos[v] = cosT;
+        turn.sinSquared[v] = sinT * sinT;
+        turn.sinCos[v] = sinT * cosT;
+    }
+    double count = 0.0;
+    for (int i = 0; i < width; ++i)
+        count += singleScrew[i];
+    return count;
 }
 
 // The turn of Screw::midpoint, by its half-angle formulas.
-[[gnu::always_inline]] inline void turnAtMidpoint(const Block& block, Turn& turn)
+template <int width>
+[[gnu::always_inline]] inline void turnAtMidpoint(const Block<width>& block, Turn<width>& turn)
 {
-    for (std::size_t l = 0; l < kLanes; ++l) {
-        const double sinA = block.sinHalfAngle[l];
-        const double onePlusCos = 1.0 + block.cosHalfAngle[l];
-        const double cosT = std::sqrt(0.5 * onePlusCos);
-        turn.sin[l] = 0.5 * sinA / cosT;
-        turn.cos[l] = cosT;
-        turn.sinSquared[l] = 0.5 * sinA * sinA / onePlusCos;
-        turn.sinCos[l] = 0.5 * sinA;
+    using D = Doubles<width>;
+    for (std::size_t v = 0; v < kRegisters<width>; ++v) {
+        const D sinA = block.sinHalfAngle[v];
+        const D onePlusCos = 1.0 + block.cosHalfAngle[v];
+        const D cosT = squareRoot<width>(0.5 * onePlusCos);
+        turn.sin[v] = 0.5 * sinA / cosT;
+        turn.cos[v] = cosT;
+        turn.sinSquared[v] = 0.5 * sinA * sinA / onePlusCos;
+        turn.sinCos[v] = 0.5 * sinA;
     }
 }
 
 // out[l] = Screw::pose of lane l at t with `turn`.
-[[gnu::always_inline]] inline void posesOfBlock(const Block& block, double t, const Turn& turn, Pose* out)
+template <int width>
+[[gnu::always_inline]] inline void posesOfBlock(const Block<width>& block, double t, const Turn<width>& turn, Pose* out)
 {
-    for (std::size_t l = 0; l < kLanes; ++l) {
-        Eigen::Quaterniond& q = out[l].orientation;
-        for (int c = 0; c < 4; ++c)
-            q.coeffs()[c] = turn.cos[l] * block.fromOrientation[c][l] + turn.sin[l] * block.turnedOrientation[c][l];
-        const double along = t * block.slide[l];
-        Eigen::Vector3d& p = out[l].position;
-        for (int c = 0; c < 3; ++c)
-            p[c] = ((block.fromPosition[c][l] + along * block.axis[c][l]) + turn.sinSquared[l] * block.sinSquaredTerm[c][l])
-                   + turn.sinCos[l] * block.sinCosTerm[c][l];
+    using D = Doubles<width>;
+    for (std::size_t v = 0; v < kRegisters<width>; ++v) {
+        std::array<D, 7> c;
+        for (std::size_t k = 0; k < 4; ++k)
+            c[k] = turn.cos[v] * block.fromOrientation[k][v] + turn.sin[v] * block.turnedOrientation[k][v];
+        const D along = t * block.slide[v];
+        for (std::size_t k = 0; k < 3; ++k)
+            c[4 + k] = ((block.fromPosition[k][v] + along * block.axis[k][v]) + turn.sinSquared[v] * block.sinSquaredTerm[k][v])
+                       + turn.sinCos[v] * block.sinCosTerm[k][v];
+        storePoses<width>(c, out + v * width);
     }
+}
+
+template <int width>
+[[gnu::always_inline]] inline double lane(const Lanes<width>& lanes, std::size_t l)
+{
+    return lanes[l / width][l % width];
 }
 
 // The pairs of the block that starts at pair `first`: the caller's own, or for a last, partial block
@@ -232,8 +440,9 @@ struct PaddedPairs {
 
 // out[l] = Screw::pose of each lane that holds a pair: posesOfBlock straight into `target` for a full
 // block, through `padded` for the last, partial one.
-[[gnu::always_inline]] inline void storeBlock(const Block& block, double t, const Turn& turn, std::size_t used,
-                                              Pose* target, std::array<Pose, kLanes>& padded)
+template <int width>
+[[gnu::always_inline]] inline void storeBlock(const Block<width>& block, double t, const Turn<width>& turn,
+                                              std::size_t used, Pose* target, std::array<Pose, kLanes>& padded)
 {
     if (used == kLanes) {
         posesOfBlock(block, t, turn, target);
@@ -244,53 +453,52 @@ struct PaddedPairs {
 }
 
 // What a batch reuses from block to block.
+template <int width>
 struct Scratch {
-    Block block;
-    Turn turn;
+    Block<width> block;
+    Turn<width> turn;
     PaddedPairs pairs;
     std::array<Pose, kLanes> poses;
 };
 
+template <int width>
 [[gnu::always_inline]] inline void screwsAtLanes(std::span<const Pose> from, std::span<const Pose> to,
                                                  std::span<const double> times, std::span<Pose> out)
 {
     const std::size_t n = from.size();
     if (to.size() != n || out.size() != n * times.size())
         throw std::invalid_argument("screwsAt: spans of different lengths");
-    Scratch scratch;
+    Scratch<width> scratch;
     for (std::size_t first = 0; first < n; first += kLanes) {
         const BlockPairs pairs = blockPairs(from, to, first, scratch.pairs);
-        buildBlock<true>(pairs.from, pairs.to, scratch.block);
+        buildBlock<width, true>(pairs.from, pairs.to, scratch.block);
         for (std::size_t k = 0; k < times.size(); ++k) {
             Pose* target = out.data() + k * n + first;
-            turnAt(scratch.block, times[k], scratch.turn);
+            const double leftToSingleScrew = turnAt(scratch.block, times[k], scratch.turn);
             storeBlock(scratch.block, times[k], scratch.turn, pairs.used, target, scratch.poses);
-            // One branch a block, not one a lane: the sum of the flags.
-            double leftToSingleScrew = 0.0;
-            for (const double flag : scratch.turn.singleScrew)
-                leftToSingleScrew += flag;
             if (leftToSingleScrew != 0.0) [[unlikely]]
                 for (std::size_t l = 0; l < pairs.used; ++l)
-                    if (scratch.turn.singleScrew[l] != 0.0)
+                    if (!(std::abs(times[k] * lane<width>(scratch.block.halfAngle, l)) <= kLargestReduced))
                         target[l] = screwInterpolate(pairs.from[l], times[k], pairs.to[l]);
         }
     }
 }
 
+template <int width>
 [[gnu::always_inline]] inline void screwMidpointsLanes(std::span<const Pose> from, std::span<const Pose> to,
                                                        std::span<Pose> out)
 {
     if (to.size() != from.size() || out.size() != from.size())
         throw std::invalid_argument("screwMidpoints: spans of different lengths");
-    Scratch scratch;
+    Scratch<width> scratch;
     for (std::size_t first = 0; first < from.size(); first += kLanes) {
         const BlockPairs pairs = blockPairs(from, to, first, scratch.pairs);
-        buildBlock<false>(pairs.from, pairs.to, scratch.block);
+        buildBlock<width, false>(pairs.from, pairs.to, scratch.block);
         turnAtMidpoint(scratch.block, scratch.turn);
         Pose* target = out.data() + first;
         storeBlock(scratch.block, 0.5, scratch.turn, pairs.used, target, scratch.poses);
         for (std::size_t l = 0; l < pairs.used; ++l)
-            if (scratch.block.sinHalfAngle[l] == 0.0) [[unlikely]]
+            if (lane<width>(scratch.block.sinHalfAngle, l) == 0.0) [[unlikely]]
                 target[l] = Screw::midpoint(pairs.from[l], pairs.to[l]);
     }
 }
@@ -300,13 +508,13 @@ struct Scratch {
 [[gnu::target("avx2")]] void screwsAtAvx2(std::span<const Pose> from, std::span<const Pose> to,
                                           std::span<const double> times, std::span<Pose> out)
 {
-    screwsAtLanes(from, to, times, out);
+    screwsAtLanes<4>(from, to, times, out);
 }
 
 [[gnu::target("avx2")]] void screwMidpointsAvx2(std::span<const Pose> from, std::span<const Pose> to,
                                                 std::span<Pose> out)
 {
-    screwMidpointsLanes(from, to, out);
+    screwMidpointsLanes<4>(from, to, out);
 }
 
 bool hasAvx2()
@@ -325,12 +533,12 @@ namespace screw_batch_detail {
 void screwsAtPortable(std::span<const Pose> from, std::span<const Pose> to, std::span<const double> times,
                       std::span<Pose> out)
 {
-    screwsAtLanes(from, to, times, out);
+    screwsAtLanes<2>(from, to, times, out);
 }
 
 void screwMidpointsPortable(std::span<const Pose> from, std::span<const Pose> to, std::span<Pose> out)
 {
-    screwMidpointsLanes(from, to, out);
+    screwMidpointsLanes<2>(from, to, out);
 }
 
 } // namespace screw_batch_detail

@@ -1,8 +1,8 @@
 #pragma once
 // Many screws at once: Screw (screw.h) for a list of pose pairs, computed in blocks of lanes held as
-// one array of doubles per component (structure of arrays), so that the compiler runs every step on
-// several screws per SIMD register: two doubles a register at the project's flags (SSE2), four in the
-// AVX2 version chosen at run time on processors that have it. The subdivision evaluates each level's
+// SIMD registers per component (structure of arrays), each step done on several screws at once: two
+// doubles a register at the project's flags (SSE2), four in the AVX2 version chosen at run time on
+// processors that have it. The subdivision evaluates each level's
 // screws this way, and with it ScrewBender's trail, which is the subdivided polyscrew.
 //
 // Each lane does Screw's own operations in Screw's order (Eigen's quaternion product included) and
