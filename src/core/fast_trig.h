@@ -80,27 +80,67 @@ constexpr double kStepTail = static_cast<double>(kStepLong - static_cast<long do
 // Adding and subtracting 1.5·2^52 rounds a double of magnitude below 2^51 to the nearest integer.
 constexpr double kRoundingShift = 6755399441055744.0;
 
+// The steps below take T a double or a register of doubles (the batch screw's lanes, screw_batch.cpp),
+// so that both compute each value by the same operations.
+
+// x = k·π/128 + remainder, |remainder| ≤ π/256 (Cody and Waite), for |x| ≤ 1024. k, rounded from
+// x·128/π, is also in the low bits of `shifted`, that product plus 1.5·2⁵².
+template <class T>
+struct StepReduction {
+    T shifted;
+    T remainder;
+};
+
+template <class T>
+[[gnu::always_inline]] inline StepReduction<T> reducedByStep(T x)
+{
+    const T shifted = x * kStepsPerRadian + kRoundingShift;
+    const T k = shifted - kRoundingShift;
+    return {shifted, (x - k * kStepHead) - k * kStepTail};
+}
+
+// sin r and cos r for |r| ≤ π/256 by their Taylor series to r⁷ and r⁶; the first terms left out, r⁹/9!
+// and r⁸/8!, are below 2e-20.
+template <class T>
+struct SinCosOf {
+    T sin;
+    T cos;
+};
+
+template <class T>
+[[gnu::always_inline]] inline SinCosOf<T> sinCosSeries(T r)
+{
+    constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040;
+    constexpr double c2 = -1.0 / 2, c4 = 1.0 / 24, c6 = -1.0 / 720;
+    const T r2 = r * r;
+    const T r4 = r2 * r2;
+    return {r + (r * r2) * ((s3 + r2 * s5) + r4 * s7), 1.0 + r2 * ((c2 + r2 * c4) + r4 * c6)};
+}
+
+// asin σ for |σ| < 0.006: σ + σ³/6 + 3σ⁵/40 + 5σ⁷/112; the first term left out, 35σ⁹/1152, is below
+// 2e-22.
+template <class T>
+[[gnu::always_inline]] inline T arcsineSeries(T sigma)
+{
+    const T s2 = sigma * sigma;
+    const T series = (1.0 / 6 + s2 * (3.0 / 40)) + (s2 * s2) * (5.0 / 112);
+    return sigma + (sigma * s2) * series;
+}
+
 } // namespace fast_trig_detail
 
-// fastSinCos for |x| ≤ 1024, with no branch: the batch screw (screw_batch.cpp) calls it in loops that
-// GCC vectorises, and leaves larger arguments to the single screw.
+// fastSinCos for |x| ≤ 1024, with no branch.
 inline SinCos fastSinCosReduced(double x)
 {
     using namespace fast_trig_detail;
-    const double k = (x * kStepsPerRadian + kRoundingShift) - kRoundingShift;
-    const double r = (x - k * kStepHead) - k * kStepTail; // |r| ≤ π/256
-    // Taylor series to r⁷ and r⁶; the first terms left out, r⁹/9! and r⁸/8!, are below 2e-20.
-    constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040;
-    constexpr double c2 = -1.0 / 2, c4 = 1.0 / 24, c6 = -1.0 / 720;
-    const double r2 = r * r;
-    const double r4 = r2 * r2;
-    const double sinR = r + (r * r2) * ((s3 + r2 * s5) + r4 * s7);
-    const double cosR = 1.0 + r2 * ((c2 + r2 * c4) + r4 * c6);
-    // |k| ≤ 1024·128/π fits 32 bits, which SSE2 converts two at a time.
+    const StepReduction<double> reduced = reducedByStep(x);
+    const SinCosOf<double> ofRemainder = sinCosSeries(reduced.remainder);
+    // |k| ≤ 1024·128/π fits 32 bits.
+    const double k = reduced.shifted - kRoundingShift;
     const auto j = static_cast<std::size_t>(static_cast<std::int32_t>(k) & (kStepsPerTurn - 1));
     const double sinK = kSinCosTable.sin[j];
     const double cosK = kSinCosTable.cos[j];
-    return {sinK * cosR + cosK * sinR, cosK * cosR - sinK * sinR};
+    return {sinK * ofRemainder.cos + cosK * ofRemainder.sin, cosK * ofRemainder.cos - sinK * ofRemainder.sin};
 }
 
 // sin x and cos x, with an absolute error of a few 1e-16 for |x| ≤ 1024; beyond, the standard library's.
@@ -124,11 +164,7 @@ inline double fastAngleOnUnitCircle(double cosine, double sine)
     const bool steep = sine > cosine; // a > π/4
     const auto bin = static_cast<std::size_t>(static_cast<std::int32_t>(std::min(sine, cosine) * kAngleBins));
     const TableAngle& below = kAngleTable[bin + (steep ? kAngleBinsPerHalf : 0)];
-    const double sigma = sine * below.cos - cosine * below.sin;
-    // asin σ = σ + σ³/6 + 3σ⁵/40 + 5σ⁷/112; the first term left out, 35σ⁹/1152, is below 2e-22.
-    const double s2 = sigma * sigma;
-    const double series = (1.0 / 6 + s2 * (3.0 / 40)) + (s2 * s2) * (5.0 / 112);
-    return below.angle + (sigma + (sigma * s2) * series);
+    return below.angle + arcsineSeries(sine * below.cos - cosine * below.sin);
 }
 
 // An angle as a table angle, a double, plus a correction below 0.006 in magnitude, not added: the
@@ -161,10 +197,7 @@ inline TableAngleSum preciseAngleInFirstQuadrant(double x, double y, double leng
     // so their difference is rounded at most at σ's own scale; the low parts' terms are below 2⁻²⁶
     // of the length, and rounded far below σ's precision.
     const double crossed = (yParts.high * below.cos - xParts.high * below.sin) + (yParts.low * below.cos - xParts.low * below.sin);
-    const double sigma = crossed * (inverse * below.inverseLength);
-    const double s2 = sigma * sigma;
-    const double series = (1.0 / 6 + s2 * (3.0 / 40)) + (s2 * s2) * (5.0 / 112);
-    return {below.angle, below.tail + (sigma + (sigma * s2) * series)};
+    return {below.angle, below.tail + arcsineSeries(crossed * (inverse * below.inverseLength))};
 }
 
 } // namespace gyre

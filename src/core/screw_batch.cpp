@@ -16,17 +16,18 @@
 // +, −, ×, ÷, comparisons (64-bit masks of all ones or zeros) and selects (mask ? a : b), which compile
 // to packed instructions, SSE2's at width 2 and AVX's at width 4 inside the AVX2 functions below. The
 // file is built with -fno-math-errno and -fno-trapping-math (src/core/CMakeLists.txt), so that the
-// square root of a register is one packed instruction. Every function is forced inline, in a Debug
-// build too: a register of four doubles passed to a function built without AVX would cross a calling
-// convention that differs.
+// square root of a register is one packed instruction. Every helper that takes or returns a register
+// is forced inline, in a Debug build too: a register of four doubles passed to a function built
+// without AVX would cross a calling convention that differs.
 //
 // What shapes the loops (perf, and llvm-mca's model of the development machine's AMD EPYC): the
 // floating-point loads and stores, two a cycle together and one store, limit the screw as much as its
 // multiplies do. So values cross from loop to loop through memory only where a long chain of latency
 // has to be broken: the square root and the division, and each table read with the series after it.
 // Each loop of a block is short and its registers independent, so that the processor overlaps them.
-// Each table read takes its index from memory as an integer: moving an index from a SIMD register to
-// a general one costs more than storing it and loading it.
+// The table rows are worked out in one loop and read in the next, their indices loaded from memory as
+// integers: moving an index from a SIMD register to a general one costs more than storing it and
+// loading it.
 
 namespace gyre {
 
@@ -99,16 +100,20 @@ template <int width>
     return reinterpret_cast<Doubles<width>>(reinterpret_cast<Mask<width>>(value) ^ sign);
 }
 
-// The masks of __builtin_shuffle that interleave two registers, even and odd, two doubles at a time:
-// (even₀, odd₀, even₂, odd₂, …) and (even₁, odd₁, even₃, odd₃, …). Within each 128-bit half, as
-// unpcklpd and unpckhpd do.
+// Two registers of pairs, even = (e₀, e₁, e₂, e₃, …) and odd = (o₀, o₁, o₂, o₃, …), interleaved within
+// each pair of lanes, as unpcklpd and unpckhpd do: first = (e₀, o₀, e₂, o₂, …), second = (e₁, o₁, e₃,
+// o₃, …). __builtin_shufflevector, which GCC and Clang both have.
 template <int width>
-[[gnu::always_inline]] inline Mask<width> interleaving(int half)
+[[gnu::always_inline]] inline void interleave(Doubles<width> even, Doubles<width> odd, Doubles<width>& first,
+                                              Doubles<width>& second)
 {
-    Mask<width> mask{};
-    for (int i = 0; i < width; ++i)
-        mask[i] = i % 2 == 0 ? i + half : width + i - 1 + half;
-    return mask;
+    if constexpr (width == 2) {
+        first = __builtin_shufflevector(even, odd, 0, 2);
+        second = __builtin_shufflevector(even, odd, 1, 3);
+    } else {
+        first = __builtin_shufflevector(even, odd, 0, 4, 2, 6);
+        second = __builtin_shufflevector(even, odd, 1, 5, 3, 7);
+    }
 }
 
 // rows[i][0] and rows[i][1] of `width` rows as two registers of lanes: each row's pair loaded together
@@ -125,8 +130,7 @@ template <int width>
         odd[2 * i] = rows[2 * i + 1][0];
         odd[2 * i + 1] = rows[2 * i + 1][1];
     }
-    first = __builtin_shuffle(even, odd, interleaving<width>(0));
-    second = __builtin_shuffle(even, odd, interleaving<width>(1));
+    interleave<width>(even, odd, first, second);
 }
 
 // The inverse of loadPairs: lanes first and second to rows[i][0] and rows[i][1].
@@ -134,8 +138,9 @@ template <int width>
 [[gnu::always_inline]] inline void storePairs(Doubles<width> first, Doubles<width> second,
                                               const std::array<double*, width>& rows)
 {
-    const Doubles<width> even = __builtin_shuffle(first, second, interleaving<width>(0));
-    const Doubles<width> odd = __builtin_shuffle(first, second, interleaving<width>(1));
+    Doubles<width> even; // rows 0, 2, …
+    Doubles<width> odd;  // rows 1, 3, …
+    interleave<width>(first, second, even, odd);
     for (int i = 0; i < width / 2; ++i) {
         rows[2 * i][0] = even[2 * i];
         rows[2 * i][1] = even[2 * i + 1];
@@ -171,9 +176,9 @@ template <int width>
         yz[i] = xy[i] + 1;
     }
     std::array<Doubles<width>, 3> p;
-    Doubles<width> y;
+    Doubles<width> yAgain;
     loadPairs<width>(xy, p[0], p[1]);
-    loadPairs<width>(yz, y, p[2]);
+    loadPairs<width>(yz, yAgain, p[2]);
     return p;
 }
 
@@ -197,7 +202,8 @@ template <int width>
 }
 
 // The product qb·conj(qa) of register v's pairs, in the order of Eigen's SSE2 product (Geometry_SIMD.h),
-// whose result Screw uses; and qa, in lanes for the poses.
+// whose result Screw uses: its vector turned to σ·vec, its w and the vector's squared norm, sin²a; and
+// qa in lanes, for the poses.
 template <int width>
 [[gnu::always_inline]] inline void relativeRotation(const Pose* from, const Pose* to, Block<width>& block, std::size_t v)
 {
@@ -293,10 +299,7 @@ template <int width>
         belowSin[i] = below.sin;
         belowCos[i] = below.cos;
     }
-    const D sigma = sine * belowCos - cosine * belowSin;
-    const D s2 = sigma * sigma;
-    const D series = (1.0 / 6 + s2 * (3.0 / 40)) + (s2 * s2) * (5.0 / 112);
-    const D angle = belowAngle + (sigma + (sigma * s2) * series);
+    const D angle = belowAngle + arcsineSeries(sine * belowCos - cosine * belowSin);
     block.halfAngle[v] = sine == 0.0 ? D{} + std::numeric_limits<double>::quiet_NaN() : angle;
 }
 
@@ -323,15 +326,15 @@ struct Turn {
     Lanes<width> sinSquared;
     Lanes<width> sinCos;
     // Between the loops of turnAt: fastSinCosReduced's argument reduced, and its table steps.
-    Lanes<width> reducedAngle;
+    Lanes<width> remainder;
     std::array<std::int64_t, kLanes> steps;
 };
 
 // The turn of Screw::at(t): fastSinCosReduced(t·a), in two loops, the reduction and then the table and
-// the series. A lane whose t·a is beyond the reduction's range, or NaN (a lane without rotation), gets
-// the turn of 0 here and the single screw after: the result counts those lanes, 0 if there are none.
+// the series. A lane whose t·a is beyond the reduction's range, or NaN (a lane without rotation, a
+// padding lane included), gets the turn of 0 here and the single screw after: true if there is one.
 template <int width>
-[[gnu::always_inline]] inline double turnAt(const Block<width>& block, double t, Turn<width>& turn)
+[[gnu::always_inline]] inline bool turnAt(const Block<width>& block, double t, Turn<width>& turn)
 {
     using D = Doubles<width>;
     D singleScrew{};
@@ -340,30 +343,25 @@ template <int width>
         const D magnitude = reinterpret_cast<D>(reinterpret_cast<Mask<width>>(angle) & std::numeric_limits<std::int64_t>::max());
         const Mask<width> reduced = magnitude <= kLargestReduced;
         const D x = reduced ? angle : D{};
-        // k in the low bits of the shifted sum: the step of the table, as fastSinCosReduced's k & 255.
-        const D shifted = x * kStepsPerRadian + kRoundingShift;
-        const D k = shifted - kRoundingShift;
-        turn.reducedAngle[v] = (x - k * kStepHead) - k * kStepTail;
-        const Mask<width> steps = reinterpret_cast<Mask<width>>(shifted) & (kStepsPerTurn - 1);
+        const StepReduction<D> reduction = reducedByStep(x);
+        turn.remainder[v] = reduction.remainder;
+        // fastSinCosReduced's k & 255, from the low bits of the shifted sum: that sum is 1.5·2⁵² + k
+        // exactly, a double whose last place is 1, and 2⁵¹, the rest of its significand, is a multiple
+        // of 256.
+        const Mask<width> steps = reinterpret_cast<Mask<width>>(reduction.shifted) & (kStepsPerTurn - 1);
         std::memcpy(&turn.steps[v * width], &steps, sizeof steps); // one store, not one a lane
         singleScrew += reduced ? D{} : D{} + 1.0;
     }
     for (std::size_t v = 0; v < kRegisters<width>; ++v) {
-        const D r = turn.reducedAngle[v];
-        constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040;
-        constexpr double c2 = -1.0 / 2, c4 = 1.0 / 24, c6 = -1.0 / 720;
-        const D r2 = r * r;
-        const D r4 = r2 * r2;
-        const D sinR = r + (r * r2) * ((s3 + r2 * s5) + r4 * s7);
-        const D cosR = 1.0 + r2 * ((c2 + r2 * c4) + r4 * c6);
+        const SinCosOf<D> ofRemainder = sinCosSeries(turn.remainder[v]);
         D sinK, cosK;
         for (int i = 0; i < width; ++i) {
             const auto step = static_cast<std::size_t>(turn.steps[v * width + i]);
             sinK[i] = kSinCosTable.sin[step];
             cosK[i] = kSinCosTable.cos[step];
         }
-        const D sinT = sinK * cosR + cosK * sinR;
-        const D cosT = cosK * cosR - sinK * sinR;
+        const D sinT = sinK * ofRemainder.cos + cosK * ofRemainder.sin;
+        const D cosT = cosK * ofRemainder.cos - sinK * ofRemainder.sin;
         turn.sin[v] = sinT;
         turn.cos[v] = cosT;
         turn.sinSquared[v] = sinT * sinT;
@@ -372,7 +370,7 @@ template <int width>
     double count = 0.0;
     for (int i = 0; i < width; ++i)
         count += singleScrew[i];
-    return count;
+    return count != 0.0;
 }
 
 // The turn of Screw::midpoint, by its half-angle formulas.
@@ -474,9 +472,9 @@ template <int width>
         buildBlock<width, true>(pairs.from, pairs.to, scratch.block);
         for (std::size_t k = 0; k < times.size(); ++k) {
             Pose* target = out.data() + k * n + first;
-            const double leftToSingleScrew = turnAt(scratch.block, times[k], scratch.turn);
+            const bool leftToSingleScrew = turnAt(scratch.block, times[k], scratch.turn);
             storeBlock(scratch.block, times[k], scratch.turn, pairs.used, target, scratch.poses);
-            if (leftToSingleScrew != 0.0) [[unlikely]]
+            if (leftToSingleScrew) [[unlikely]]
                 for (std::size_t l = 0; l < pairs.used; ++l)
                     if (!(std::abs(times[k] * lane<width>(scratch.block.halfAngle, l)) <= kLargestReduced))
                         target[l] = screwInterpolate(pairs.from[l], times[k], pairs.to[l]);

@@ -2,8 +2,8 @@
 // Many screws at once: Screw (screw.h) for a list of pose pairs, computed in blocks of lanes held as
 // SIMD registers per component (structure of arrays), each step done on several screws at once: two
 // doubles a register at the project's flags (SSE2), four in the AVX2 version chosen at run time on
-// processors that have it. The subdivision evaluates each level's
-// screws this way, and with it ScrewBender's trail, which is the subdivided polyscrew.
+// processors that have it. The subdivision evaluates each level's screws this way, and with it
+// ScrewBender's trail, which is the subdivided polyscrew.
 //
 // Each lane does Screw's own operations in Screw's order (Eigen's quaternion product included) and
 // no multiply-add is fused, so each result is the one Screw gives, to the bit. The lanes of a block
