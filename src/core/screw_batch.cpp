@@ -38,6 +38,7 @@ using namespace fast_trig_detail;
 // Screws a block. 8 and 32 were no faster.
 constexpr std::size_t kLanes = 16;
 
+// A register of `width` doubles, and of the 64-bit masks (all ones or zeros) its comparisons give.
 template <int width>
 struct Registers;
 template <>
@@ -93,11 +94,19 @@ template <int width>
     return root;
 }
 
-// value with its sign bit flipped where `sign` has it set: value·σ, exactly, for σ = ±1.
+// The sign bit of each lane.
 template <int width>
-[[gnu::always_inline]] inline Doubles<width> withSignOf(Doubles<width> value, Mask<width> sign)
+[[gnu::always_inline]] inline Mask<width> signBits(Doubles<width> value)
 {
-    return reinterpret_cast<Doubles<width>>(reinterpret_cast<Mask<width>>(value) ^ sign);
+    return reinterpret_cast<Mask<width>>(value) & std::numeric_limits<std::int64_t>::min();
+}
+
+// value·σ with σ = −1 in the lanes whose `side` has the sign bit and 1 in the others: exactly, as a
+// flip of the sign bit.
+template <int width>
+[[gnu::always_inline]] inline Doubles<width> timesSide(Doubles<width> value, Mask<width> side)
+{
+    return reinterpret_cast<Doubles<width>>(reinterpret_cast<Mask<width>>(value) ^ side);
 }
 
 // Two registers of pairs, even = (e₀, e₁, e₂, e₃, …) and odd = (o₀, o₁, o₂, o₃, …), interleaved within
@@ -216,8 +225,8 @@ template <int width>
     const D py = (bw * ay + by * aw) + (bz * ax - bx * az);
     const D pz = (bw * az - by * ax) + (bz * aw + bx * ay);
     const D pw = (bw * aw - by * ay) - (bz * az + bx * ax);
-    const Mask<width> side = reinterpret_cast<Mask<width>>(pw) & std::numeric_limits<std::int64_t>::min(); // σ
-    const D rx = withSignOf<width>(px, side), ry = withSignOf<width>(py, side), rz = withSignOf<width>(pz, side);
+    const Mask<width> side = signBits<width>(pw); // σ
+    const D rx = timesSide<width>(px, side), ry = timesSide<width>(py, side), rz = timesSide<width>(pz, side);
     block.relativeVector[0][v] = rx;
     block.relativeVector[1][v] = ry;
     block.relativeVector[2][v] = rz;
@@ -237,12 +246,12 @@ template <int width, bool withAngle>
     const D s = squareRoot<width>(block.normSquared[v]);
     const Mask<width> rotating = s > Screw::kNoRotation;
     const D inverseSin = 1.0 / s;
-    const Mask<width> side = reinterpret_cast<Mask<width>>(block.productW[v]) & std::numeric_limits<std::int64_t>::min();
-    const D rw = withSignOf<width>(block.productW[v], side);
+    const Mask<width> side = signBits<width>(block.productW[v]);
+    const D rw = timesSide<width>(block.productW[v], side);
     for (std::size_t c = 0; c < 3; ++c)
         block.axis[c][v] = inverseSin * block.relativeVector[c][v];
     const D cotangent = rw * inverseSin;
-    const D toWeight = withSignOf<width>(inverseSin, side); // σ / sin a
+    const D toWeight = timesSide<width>(inverseSin, side); // σ / sin a
     block.cotangent[v] = cotangent;
     const D sine = rotating ? s : D{};
     const D cosine = rotating ? rw : D{} + 1.0;
