@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -84,7 +85,9 @@ constexpr double kRoundingShift = 6755399441055744.0;
 // so that both compute each value by the same operations.
 
 // x = k·π/128 + remainder, |remainder| ≤ π/256 (Cody and Waite), for |x| ≤ 1024. k, rounded from
-// x·128/π, is also in the low bits of `shifted`, that product plus 1.5·2⁵².
+// x·128/π, is also in the low bits of `shifted`, that product plus 1.5·2⁵²: the sum is 1.5·2⁵² + k
+// exactly, a double whose last place is 1, and 2⁵¹, the rest of its significand, is a multiple of 256,
+// so the low 8 bits of its representation are k's table step, k mod 256.
 template <class T>
 struct StepReduction {
     T shifted;
@@ -135,9 +138,7 @@ inline SinCos fastSinCosReduced(double x)
     using namespace fast_trig_detail;
     const StepReduction<double> reduced = reducedByStep(x);
     const SinCosOf<double> ofRemainder = sinCosSeries(reduced.remainder);
-    // |k| ≤ 1024·128/π fits 32 bits.
-    const double k = reduced.shifted - kRoundingShift;
-    const auto j = static_cast<std::size_t>(static_cast<std::int32_t>(k) & (kStepsPerTurn - 1));
+    const auto j = static_cast<std::size_t>(std::bit_cast<std::uint64_t>(reduced.shifted) & (kStepsPerTurn - 1));
     const double sinK = kSinCosTable.sin[j];
     const double cosK = kSinCosTable.cos[j];
     return {sinK * ofRemainder.cos + cosK * ofRemainder.sin, cosK * ofRemainder.cos - sinK * ofRemainder.sin};

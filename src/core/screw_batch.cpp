@@ -354,9 +354,7 @@ template <int width>
         const D x = reduced ? angle : D{};
         const StepReduction<D> reduction = reducedByStep(x);
         turn.remainder[v] = reduction.remainder;
-        // fastSinCosReduced's k & 255, from the low bits of the shifted sum: that sum is 1.5·2⁵² + k
-        // exactly, a double whose last place is 1, and 2⁵¹, the rest of its significand, is a multiple
-        // of 256.
+        // The table step from the low bits of the shifted sum, as fastSinCosReduced takes it.
         const Mask<width> steps = reinterpret_cast<Mask<width>>(reduction.shifted) & (kStepsPerTurn - 1);
         std::memcpy(&turn.steps[v * width], &steps, sizeof steps); // one store, not one a lane
         singleScrew += reduced ? D{} : D{} + 1.0;
