@@ -21,12 +21,11 @@ long double lowestAngleOfBin(std::size_t b, std::size_t half)
 } // namespace
 
 // Filled from the long double functions, so that every entry is the double nearest the true value.
-const SinCosTable kSinCosTable = [] {
-    SinCosTable table{};
+const std::array<TableSinCos, kStepsPerTurn> kSinCosTable = [] {
+    std::array<TableSinCos, kStepsPerTurn> table{};
     for (std::size_t j = 0; j < kStepsPerTurn; ++j) {
         const long double angle = static_cast<long double>(j) * kPiLong / (kStepsPerTurn / 2);
-        table.sin[j] = static_cast<double>(std::sin(angle));
-        table.cos[j] = static_cast<double>(std::cos(angle));
+        table[j] = {static_cast<double>(std::sin(angle)), static_cast<double>(std::cos(angle))};
     }
     return table;
 }();
@@ -36,7 +35,9 @@ const std::array<TableAngle, 2 * kAngleBinsPerHalf> kAngleTable = [] {
     const auto entry = [](long double exact) {
         const double angle = static_cast<double>(exact);
         const long double rounded = angle; // sine and cosine of the double actually stored
-        return TableAngle{angle, static_cast<double>(std::sin(rounded)), static_cast<double>(std::cos(rounded))};
+        return TableAngle{.angle = angle,
+                          .sin = static_cast<double>(std::sin(rounded)),
+                          .cos = static_cast<double>(std::cos(rounded))};
     };
     for (std::size_t b = 0; b < kAngleBinsPerHalf; ++b)
         for (std::size_t half : {0, 1})

@@ -28,17 +28,20 @@ constexpr int kStepsPerTurn = 256; // sin and cos tabulated at k·π/128
 constexpr int kAngleBins = 256;    // bins of width 1/256 in sin a (a ≤ π/4) or in cos a (a > π/4)
 constexpr int kAngleBinsPerHalf = kAngleBins * 3 / 4; // up to 0.75, past 1/√2 for a little drift
 
-struct SinCosTable {
-    std::array<double, kStepsPerTurn> sin;
-    std::array<double, kStepsPerTurn> cos;
+// sin and cos of one step side by side, and each entry of kAngleTable in 32 bytes, so that the batch
+// screw (screw_batch.cpp) reads an entry with one load and none splits a cache line.
+struct alignas(2 * sizeof(double)) TableSinCos {
+    double sin;
+    double cos;
 };
-extern const SinCosTable kSinCosTable;
+extern const std::array<TableSinCos, kStepsPerTurn> kSinCosTable;
 
 // An angle θ of the unit circle, a double, with the doubles nearest its sine and cosine.
-struct TableAngle {
+struct alignas(4 * sizeof(double)) TableAngle {
     double angle;
     double sin;
     double cos;
+    double unused = 0.0;
 };
 // For bin b of the first half, θ = asin(b/256): the lowest angle whose sine falls in the bin. For bin
 // b of the second half, θ = π/2 − asin((b+1)/256): the lowest angle whose cosine falls in bin b.
@@ -139,8 +142,8 @@ inline SinCos fastSinCosReduced(double x)
     const StepReduction<double> reduced = reducedByStep(x);
     const SinCosOf<double> ofRemainder = sinCosSeries(reduced.remainder);
     const auto j = static_cast<std::size_t>(std::bit_cast<std::uint64_t>(reduced.shifted) & (kStepsPerTurn - 1));
-    const double sinK = kSinCosTable.sin[j];
-    const double cosK = kSinCosTable.cos[j];
+    const double sinK = kSinCosTable[j].sin;
+    const double cosK = kSinCosTable[j].cos;
     return {sinK * ofRemainder.cos + cosK * ofRemainder.sin, cosK * ofRemainder.cos - sinK * ofRemainder.sin};
 }
 

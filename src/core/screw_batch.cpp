@@ -11,6 +11,7 @@
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 // The lanes are written with GCC's and Clang's vector extension: a register of `width` doubles takes
 // +, −, ×, ÷, comparisons (64-bit masks of all ones or zeros) and selects (mask ? a : b), which compile
@@ -20,14 +21,17 @@
 // is forced inline, in a Debug build too: a register of four doubles passed to a function built
 // without AVX would cross a calling convention that differs.
 //
-// What shapes the loops (perf, and llvm-mca's model of the development machine's AMD EPYC): the
-// floating-point loads and stores, two a cycle together and one store, limit the screw as much as its
-// multiplies do. So values cross from loop to loop through memory only where a long chain of latency
-// has to be broken: the square root and the division, and each table read with the series after it.
-// Each loop of a block is short and its registers independent, so that the processor overlaps them.
-// The table rows are worked out in one loop and read in the next, their indices loaded from memory as
-// integers: moving an index from a SIMD register to a general one costs more than storing it and
-// loading it.
+// What shapes the loops (perf, llvm-mca, and throwaway loops timed on the development machine's AMD
+// EPYC): it stores one register a cycle, and its loads, stores and shuffles limit the screw as much as
+// its multiplies do. So values cross from loop to loop through memory only where a long chain of
+// latency has to be broken: the square root and the division, and each table read with the series
+// after it. Each loop of a block is short and its registers independent, so that the processor
+// overlaps them, and the loop with the square root and the division also loads the positions, work
+// that waits on neither. A pose's quaternion and position are each loaded and stored as four doubles
+// at once and transposed in registers, and so is a table entry: one load or store where two or three
+// would each take a cycle of the load and store ports. The table rows are worked out in one loop and
+// read in the next, their indices loaded from memory as integers: moving an index from a SIMD
+// register to a general one costs more than storing it and loading it.
 
 namespace gyre {
 
@@ -35,29 +39,35 @@ namespace {
 
 using namespace fast_trig_detail;
 
-// Screws a block. 8 and 32 were no faster.
-constexpr std::size_t kLanes = 16;
+// Screws a block: eight registers, each loop's independent chains. Four or sixteen registers were slower.
+template <int width>
+constexpr std::size_t kLanes = 8 * width;
 
-// A register of `width` doubles, and of the 64-bit masks (all ones or zeros) its comparisons give.
+// A register of `width` doubles, of the 64-bit masks (all ones or zeros) its comparisons give, and
+// `width` 32-bit integers, a conversion's result.
 template <int width>
 struct Registers;
 template <>
 struct Registers<2> {
     using Doubles = double __attribute__((vector_size(16)));
     using Mask = std::int64_t __attribute__((vector_size(16)));
+    using Int32s = std::int32_t __attribute__((vector_size(8)));
 };
 template <>
 struct Registers<4> {
     using Doubles = double __attribute__((vector_size(32)));
     using Mask = std::int64_t __attribute__((vector_size(32)));
+    using Int32s = std::int32_t __attribute__((vector_size(16)));
 };
 template <int width>
 using Doubles = typename Registers<width>::Doubles;
 template <int width>
 using Mask = typename Registers<width>::Mask;
+template <int width>
+using Int32s = typename Registers<width>::Int32s;
 
 template <int width>
-constexpr std::size_t kRegisters = kLanes / width;
+constexpr std::size_t kRegisters = kLanes<width> / width;
 
 template <int width>
 using Lanes = std::array<Doubles<width>, kRegisters<width>>;
@@ -69,9 +79,9 @@ struct Block {
     using Components = std::array<Lanes<width>, count>;
     Components<4> fromOrientation;   // qa
     Components<3> fromPosition;      // pa
-    Components<4> turnedOrientation; // (0, S)·qa
+    Components<4> turnedOrientation; // (0, S)·qa; qb between relativeRotation and rotationTerms
     Components<3> axis;              // S
-    Components<3> sinSquaredTerm;    // V₁
+    Components<3> sinSquaredTerm;    // V₁; Δ = pb − pa between rotationTerms and translationTerms
     Components<3> sinCosTerm;        // V₂
     Lanes<width> sinHalfAngle;       // sin a, or 0 in a lane without rotation
     Lanes<width> cosHalfAngle;       // cos a, or 1 in a lane without rotation
@@ -82,7 +92,7 @@ struct Block {
     Components<3> relativeVector;          // σ·(qb·conj(qa)).vec()
     Lanes<width> productW;                 // (qb·conj(qa)).w, whose sign is σ
     Lanes<width> normSquared;              // sin²a
-    std::array<std::int64_t, kLanes> rows; // each lane's row of kAngleTable
+    std::array<std::int32_t, kLanes<width>> rows; // each lane's row of kAngleTable
 };
 
 template <int width>
@@ -109,110 +119,132 @@ template <int width>
     return reinterpret_cast<Doubles<width>>(reinterpret_cast<Mask<width>>(value) ^ side);
 }
 
-// Two registers of pairs, even = (e₀, e₁, e₂, e₃, …) and odd = (o₀, o₁, o₂, o₃, …), interleaved within
-// each pair of lanes, as unpcklpd and unpckhpd do: first = (e₀, o₀, e₂, o₂, …), second = (e₁, o₁, e₃,
-// o₃, …). __builtin_shufflevector, which GCC and Clang both have.
+// A pose's coefficients as two quads, runs of four doubles that one load or store moves: its
+// quaternion x, y, z, w, and its position x, y, z with the 8 bytes of padding that end a Pose. The
+// padding is part of the pose, so a quad store there writes this pose's bytes alone.
+static_assert(std::is_standard_layout_v<Pose> && sizeof(Pose) == 8 * sizeof(double)
+              && offsetof(Pose, position) == 4 * sizeof(double));
+using Quad = double __attribute__((vector_size(32), aligned(8)));
+
+inline const unsigned char* quadAt(const Pose& pose, std::size_t offset)
+{
+    return reinterpret_cast<const unsigned char*>(&pose) + offset;
+}
+inline unsigned char* quadAt(Pose& pose, std::size_t offset)
+{
+    return reinterpret_cast<unsigned char*>(&pose) + offset;
+}
+
+// The pairs of two doubles at rows[i], transposed to two registers of lanes: lane i of register c
+// holds rows[i][c].
 template <int width>
-[[gnu::always_inline]] inline void interleave(Doubles<width> even, Doubles<width> odd, Doubles<width>& first,
-                                              Doubles<width>& second)
+[[gnu::always_inline]] inline std::array<Doubles<width>, 2> transposePairs(const std::array<const unsigned char*, width>& rows)
+{
+    std::array<Doubles<2>, width> pairs;
+    for (int i = 0; i < width; ++i)
+        std::memcpy(&pairs[i], rows[i], sizeof pairs[i]);
+    if constexpr (width == 2) {
+        return {__builtin_shufflevector(pairs[0], pairs[1], 0, 2), __builtin_shufflevector(pairs[0], pairs[1], 1, 3)};
+    } else {
+        const Doubles<4> rows02 = __builtin_shufflevector(pairs[0], pairs[2], 0, 1, 2, 3);
+        const Doubles<4> rows13 = __builtin_shufflevector(pairs[1], pairs[3], 0, 1, 2, 3);
+        return {__builtin_shufflevector(rows02, rows13, 0, 4, 2, 6), __builtin_shufflevector(rows02, rows13, 1, 5, 3, 7)};
+    }
+}
+
+// The quads, runs of four doubles, at rows[i], transposed to four registers of lanes: lane i of
+// register c holds rows[i][c]. Four doubles are one AVX load.
+template <int width>
+[[gnu::always_inline]] inline std::array<Doubles<width>, 4> transposeQuads(const std::array<const unsigned char*, width>& rows)
 {
     if constexpr (width == 2) {
-        first = __builtin_shufflevector(even, odd, 0, 2);
-        second = __builtin_shufflevector(even, odd, 1, 3);
+        const std::array<Doubles<2>, 2> low = transposePairs<2>(rows);
+        const std::array<Doubles<2>, 2> high = transposePairs<2>({rows[0] + 2 * sizeof(double), rows[1] + 2 * sizeof(double)});
+        return {low[0], low[1], high[0], high[1]};
     } else {
-        first = __builtin_shufflevector(even, odd, 0, 4, 2, 6);
-        second = __builtin_shufflevector(even, odd, 1, 5, 3, 7);
+        Quad q0, q1, q2, q3;
+        std::memcpy(&q0, rows[0], sizeof q0);
+        std::memcpy(&q1, rows[1], sizeof q1);
+        std::memcpy(&q2, rows[2], sizeof q2);
+        std::memcpy(&q3, rows[3], sizeof q3);
+        const Doubles<4> low02 = __builtin_shufflevector(q0, q2, 0, 1, 4, 5); // c₀ c₁ of rows 0 and 2
+        const Doubles<4> low13 = __builtin_shufflevector(q1, q3, 0, 1, 4, 5);
+        const Doubles<4> high02 = __builtin_shufflevector(q0, q2, 2, 3, 6, 7); // c₂ c₃
+        const Doubles<4> high13 = __builtin_shufflevector(q1, q3, 2, 3, 6, 7);
+        return {__builtin_shufflevector(low02, low13, 0, 4, 2, 6), __builtin_shufflevector(low02, low13, 1, 5, 3, 7),
+                __builtin_shufflevector(high02, high13, 0, 4, 2, 6), __builtin_shufflevector(high02, high13, 1, 5, 3, 7)};
     }
 }
 
-// rows[i][0] and rows[i][1] of `width` rows as two registers of lanes: each row's pair loaded together
-// (one load, where two single ones would each take a load port), then the lanes interleaved.
+// The quads at `offset` of `width` poses as registers of lanes.
 template <int width>
-[[gnu::always_inline]] inline void loadPairs(const std::array<const double*, width>& rows, Doubles<width>& first,
-                                             Doubles<width>& second)
+[[gnu::always_inline]] inline std::array<Doubles<width>, 4> loadQuads(const Pose* poses, std::size_t offset)
 {
-    Doubles<width> even; // rows 0, 2, …, two doubles each
-    Doubles<width> odd;  // rows 1, 3, …
-    for (int i = 0; i < width / 2; ++i) {
-        even[2 * i] = rows[2 * i][0];
-        even[2 * i + 1] = rows[2 * i][1];
-        odd[2 * i] = rows[2 * i + 1][0];
-        odd[2 * i + 1] = rows[2 * i + 1][1];
-    }
-    interleave<width>(even, odd, first, second);
+    std::array<const unsigned char*, width> rows;
+    for (int i = 0; i < width; ++i)
+        rows[i] = quadAt(poses[i], offset);
+    return transposeQuads<width>(rows);
 }
 
-// The inverse of loadPairs: lanes first and second to rows[i][0] and rows[i][1].
+// The inverse of loadQuads: coefficient c of lane i to the quad at `offset` of out[i].
 template <int width>
-[[gnu::always_inline]] inline void storePairs(Doubles<width> first, Doubles<width> second,
-                                              const std::array<double*, width>& rows)
+[[gnu::always_inline]] inline void storeQuads(const std::array<Doubles<width>, 4>& c, Pose* out, std::size_t offset)
 {
-    Doubles<width> even; // rows 0, 2, …
-    Doubles<width> odd;  // rows 1, 3, …
-    interleave<width>(first, second, even, odd);
-    for (int i = 0; i < width / 2; ++i) {
-        rows[2 * i][0] = even[2 * i];
-        rows[2 * i][1] = even[2 * i + 1];
-        rows[2 * i + 1][0] = odd[2 * i];
-        rows[2 * i + 1][1] = odd[2 * i + 1];
+    if constexpr (width == 2) {
+        const Doubles<2> low0 = __builtin_shufflevector(c[0], c[1], 0, 2);
+        const Doubles<2> low1 = __builtin_shufflevector(c[0], c[1], 1, 3);
+        const Doubles<2> high0 = __builtin_shufflevector(c[2], c[3], 0, 2);
+        const Doubles<2> high1 = __builtin_shufflevector(c[2], c[3], 1, 3);
+        std::memcpy(quadAt(out[0], offset), &low0, sizeof low0);
+        std::memcpy(quadAt(out[0], offset) + sizeof low0, &high0, sizeof high0);
+        std::memcpy(quadAt(out[1], offset), &low1, sizeof low1);
+        std::memcpy(quadAt(out[1], offset) + sizeof low1, &high1, sizeof high1);
+    } else {
+        const Doubles<4> low02 = __builtin_shufflevector(c[0], c[1], 0, 4, 2, 6); // c₀ c₁ of lanes 0 and 2
+        const Doubles<4> low13 = __builtin_shufflevector(c[0], c[1], 1, 5, 3, 7);
+        const Doubles<4> high02 = __builtin_shufflevector(c[2], c[3], 0, 4, 2, 6);
+        const Doubles<4> high13 = __builtin_shufflevector(c[2], c[3], 1, 5, 3, 7);
+        const Quad q0 = __builtin_shufflevector(low02, high02, 0, 1, 4, 5);
+        const Quad q1 = __builtin_shufflevector(low13, high13, 0, 1, 4, 5);
+        const Quad q2 = __builtin_shufflevector(low02, high02, 2, 3, 6, 7);
+        const Quad q3 = __builtin_shufflevector(low13, high13, 2, 3, 6, 7);
+        std::memcpy(quadAt(out[0], offset), &q0, sizeof q0);
+        std::memcpy(quadAt(out[1], offset), &q1, sizeof q1);
+        std::memcpy(quadAt(out[2], offset), &q2, sizeof q2);
+        std::memcpy(quadAt(out[3], offset), &q3, sizeof q3);
     }
 }
+
+constexpr std::size_t kOrientationQuad = 0;
+constexpr std::size_t kPositionQuad = offsetof(Pose, position);
 
 // The orientations of `width` poses in lanes: x, y, z, w.
 template <int width>
 [[gnu::always_inline]] inline std::array<Doubles<width>, 4> loadOrientations(const Pose* poses)
 {
-    std::array<const double*, width> xy;
-    std::array<const double*, width> zw;
-    for (int i = 0; i < width; ++i) {
-        xy[i] = poses[i].orientation.coeffs().data();
-        zw[i] = xy[i] + 2;
-    }
-    std::array<Doubles<width>, 4> q;
-    loadPairs<width>(xy, q[0], q[1]);
-    loadPairs<width>(zw, q[2], q[3]);
-    return q;
+    return loadQuads<width>(poses, kOrientationQuad);
 }
 
-// The positions of `width` poses in lanes: z from the pairs (y, z).
+// The positions of `width` poses in lanes: x, y, z.
 template <int width>
 [[gnu::always_inline]] inline std::array<Doubles<width>, 3> loadPositions(const Pose* poses)
 {
-    std::array<const double*, width> xy;
-    std::array<const double*, width> yz;
-    for (int i = 0; i < width; ++i) {
-        xy[i] = poses[i].position.data();
-        yz[i] = xy[i] + 1;
-    }
-    std::array<Doubles<width>, 3> p;
-    Doubles<width> yAgain;
-    loadPairs<width>(xy, p[0], p[1]);
-    loadPairs<width>(yz, yAgain, p[2]);
-    return p;
+    const std::array<Doubles<width>, 4> quads = loadQuads<width>(poses, kPositionQuad);
+    return {quads[0], quads[1], quads[2]};
 }
 
-// out[i] = the pose of lane i, its seven coefficients as loadOrientations and loadPositions give them.
+// out[i] = the pose of lane i, its seven coefficients as loadOrientations and loadPositions give them;
+// the padding gets z again.
 template <int width>
 [[gnu::always_inline]] inline void storePoses(const std::array<Doubles<width>, 7>& c, Pose* out)
 {
-    std::array<double*, width> xy;
-    std::array<double*, width> zw;
-    std::array<double*, width> position;
-    for (int i = 0; i < width; ++i) {
-        xy[i] = out[i].orientation.coeffs().data();
-        zw[i] = xy[i] + 2;
-        position[i] = out[i].position.data();
-    }
-    storePairs<width>(c[0], c[1], xy);
-    storePairs<width>(c[2], c[3], zw);
-    storePairs<width>(c[4], c[5], position);
-    for (int i = 0; i < width; ++i)
-        position[i][2] = c[6][i];
+    storeQuads<width>({c[0], c[1], c[2], c[3]}, out, kOrientationQuad);
+    storeQuads<width>({c[4], c[5], c[6], c[6]}, out, kPositionQuad);
 }
 
 // The product qb·conj(qa) of register v's pairs, in the order of Eigen's SSE2 product (Geometry_SIMD.h),
 // whose result Screw uses: its vector turned to σ·vec, its w and the vector's squared norm, sin²a; and
-// qa in lanes, for the poses.
+// qa and qb in lanes.
 template <int width>
 [[gnu::always_inline]] inline void relativeRotation(const Pose* from, const Pose* to, Block<width>& block, std::size_t v)
 {
@@ -232,15 +264,18 @@ template <int width>
     block.relativeVector[2][v] = rz;
     block.productW[v] = pw;
     block.normSquared[v] = (rx * rx + ry * ry) + rz * rz;
-    for (std::size_t c = 0; c < 4; ++c)
+    for (std::size_t c = 0; c < 4; ++c) {
         block.fromOrientation[c][v] = qa[c];
+        block.turnedOrientation[c][v] = qb[c]; // until rotationTerms
+    }
 }
 
 // Screw's members that follow from sin a: the square root and the division, then the axis, cot a and
 // (0, S)·qa; with each lane's row of the angle table if `withAngle`. The lanes without rotation are
 // left to the single screw, their sin a and cos a set to 0 and 1 so that every row stays in its table.
+// The positions too, which keep the processor busy while it divides: pa in lanes, and Δ.
 template <int width, bool withAngle>
-[[gnu::always_inline]] inline void rotationTerms(const Pose* to, Block<width>& block, std::size_t v)
+[[gnu::always_inline]] inline void rotationTerms(const Pose* from, const Pose* to, Block<width>& block, std::size_t v)
 {
     using D = Doubles<width>;
     const D s = squareRoot<width>(block.normSquared[v]);
@@ -260,25 +295,28 @@ template <int width, bool withAngle>
     if constexpr (withAngle) {
         // fastAngleOnUnitCircle's row: the bin of the smaller coordinate, in the half of the larger.
         const D smaller = cosine < sine ? cosine : sine;
-        const D binPosition = smaller * static_cast<double>(kAngleBins);
-        const Mask<width> steep = sine > cosine;
-        for (int i = 0; i < width; ++i)
-            block.rows[v * width + i] = static_cast<std::int32_t>(binPosition[i]) + (steep[i] != 0 ? kAngleBinsPerHalf : 0);
+        const Int32s<width> bins = __builtin_convertvector(smaller * static_cast<double>(kAngleBins), Int32s<width>);
+        const Int32s<width> steepHalf = __builtin_convertvector(sine > cosine, Int32s<width>) & kAngleBinsPerHalf;
+        const Int32s<width> rows = bins + steepHalf;
+        std::memcpy(&block.rows[v * width], &rows, sizeof rows);
     }
-    const std::array<D, 4> qb = loadOrientations<width>(to + v * width);
     const D minusCotangent = -cotangent;
     for (std::size_t c = 0; c < 4; ++c)
-        block.turnedOrientation[c][v] = toWeight * qb[c] + minusCotangent * block.fromOrientation[c][v];
+        block.turnedOrientation[c][v] = toWeight * block.turnedOrientation[c][v] + minusCotangent * block.fromOrientation[c][v];
+    const std::array<D, 3> pa = loadPositions<width>(from + v * width);
+    const std::array<D, 3> pb = loadPositions<width>(to + v * width);
+    for (std::size_t c = 0; c < 3; ++c) {
+        block.sinSquaredTerm[c][v] = pb[c] - pa[c]; // Δ, until translationTerms
+        block.fromPosition[c][v] = pa[c];
+    }
 }
 
 // Screw's members that carry the positions: d, V₁ and V₂.
 template <int width>
-[[gnu::always_inline]] inline void translationTerms(const Pose* from, const Pose* to, Block<width>& block, std::size_t v)
+[[gnu::always_inline]] inline void translationTerms(Block<width>& block, std::size_t v)
 {
     using D = Doubles<width>;
-    const std::array<D, 3> pa = loadPositions<width>(from + v * width);
-    const std::array<D, 3> pb = loadPositions<width>(to + v * width);
-    const D cx = pb[0] - pa[0], cy = pb[1] - pa[1], cz = pb[2] - pa[2]; // Δ
+    const D cx = block.sinSquaredTerm[0][v], cy = block.sinSquaredTerm[1][v], cz = block.sinSquaredTerm[2][v]; // Δ
     const D sx = block.axis[0][v], sy = block.axis[1][v], sz = block.axis[2][v];
     const D cotangent = block.cotangent[v];
     const D d = (sx * cx + sy * cy) + sz * cz;
@@ -291,8 +329,6 @@ template <int width>
     block.sinCosTerm[1][v] = cotangent * acrossY - turnedY;
     block.sinCosTerm[2][v] = cotangent * acrossZ - turnedZ;
     block.slide[v] = d;
-    for (std::size_t c = 0; c < 3; ++c)
-        block.fromPosition[c][v] = pa[c];
 }
 
 // fastAngleOnUnitCircle of register v, from its rows; NaN in a lane without rotation.
@@ -301,14 +337,11 @@ template <int width>
 {
     using D = Doubles<width>;
     const D cosine = block.cosHalfAngle[v], sine = block.sinHalfAngle[v];
-    D belowAngle, belowSin, belowCos;
-    for (int i = 0; i < width; ++i) {
-        const TableAngle& below = kAngleTable[static_cast<std::size_t>(block.rows[v * width + i])];
-        belowAngle[i] = below.angle;
-        belowSin[i] = below.sin;
-        belowCos[i] = below.cos;
-    }
-    const D angle = belowAngle + arcsineSeries(sine * belowCos - cosine * belowSin);
+    std::array<const unsigned char*, width> rows;
+    for (int i = 0; i < width; ++i)
+        rows[i] = reinterpret_cast<const unsigned char*>(&kAngleTable[static_cast<std::size_t>(block.rows[v * width + i])]);
+    const std::array<D, 4> below = transposeQuads<width>(rows); // TableAngle's angle, sin, cos, unused
+    const D angle = below[0] + arcsineSeries(sine * below[2] - cosine * below[1]);
     block.halfAngle[v] = sine == 0.0 ? D{} + std::numeric_limits<double>::quiet_NaN() : angle;
 }
 
@@ -319,9 +352,9 @@ template <int width, bool withAngle>
     for (std::size_t v = 0; v < kRegisters<width>; ++v)
         relativeRotation(from, to, block, v);
     for (std::size_t v = 0; v < kRegisters<width>; ++v)
-        rotationTerms<width, withAngle>(to, block, v);
+        rotationTerms<width, withAngle>(from, to, block, v);
     for (std::size_t v = 0; v < kRegisters<width>; ++v)
-        translationTerms(from, to, block, v);
+        translationTerms(block, v);
     if constexpr (withAngle)
         for (std::size_t v = 0; v < kRegisters<width>; ++v)
             fastHalfAngle(block, v);
@@ -336,7 +369,7 @@ struct Turn {
     Lanes<width> sinCos;
     // Between the loops of turnAt: fastSinCosReduced's argument reduced, and its table steps.
     Lanes<width> remainder;
-    std::array<std::int64_t, kLanes> steps;
+    std::array<std::int64_t, kLanes<width>> steps;
 };
 
 // The turn of Screw::at(t): fastSinCosReduced(t·a), in two loops, the reduction and then the table and
@@ -361,12 +394,10 @@ template <int width>
     }
     for (std::size_t v = 0; v < kRegisters<width>; ++v) {
         const SinCosOf<D> ofRemainder = sinCosSeries(turn.remainder[v]);
-        D sinK, cosK;
-        for (int i = 0; i < width; ++i) {
-            const auto step = static_cast<std::size_t>(turn.steps[v * width + i]);
-            sinK[i] = kSinCosTable.sin[step];
-            cosK[i] = kSinCosTable.cos[step];
-        }
+        std::array<const unsigned char*, width> steps;
+        for (int i = 0; i < width; ++i)
+            steps[i] = reinterpret_cast<const unsigned char*>(&kSinCosTable[static_cast<std::size_t>(turn.steps[v * width + i])]);
+        const auto [sinK, cosK] = transposePairs<width>(steps);
         const D sinT = sinK * ofRemainder.cos + cosK * ofRemainder.sin;
         const D cosT = cosK * ofRemainder.cos - sinK * ofRemainder.sin;
         turn.sin[v] = sinT;
@@ -427,16 +458,18 @@ struct BlockPairs {
     std::size_t used; // lanes that hold a pair
 };
 
+template <int width>
 struct PaddedPairs {
-    std::array<Pose, kLanes> from;
-    std::array<Pose, kLanes> to;
+    std::array<Pose, kLanes<width>> from;
+    std::array<Pose, kLanes<width>> to;
 };
 
+template <int width>
 [[gnu::always_inline]] inline BlockPairs blockPairs(std::span<const Pose> from, std::span<const Pose> to,
-                                                    std::size_t first, PaddedPairs& padded)
+                                                    std::size_t first, PaddedPairs<width>& padded)
 {
-    const std::size_t used = std::min(kLanes, from.size() - first);
-    if (used == kLanes)
+    const std::size_t used = std::min(kLanes<width>, from.size() - first);
+    if (used == kLanes<width>)
         return {from.data() + first, to.data() + first, used};
     std::copy_n(from.begin() + static_cast<std::ptrdiff_t>(first), used, padded.from.begin());
     std::copy_n(to.begin() + static_cast<std::ptrdiff_t>(first), used, padded.to.begin());
@@ -447,9 +480,9 @@ struct PaddedPairs {
 // block, through `padded` for the last, partial one.
 template <int width>
 [[gnu::always_inline]] inline void storeBlock(const Block<width>& block, double t, const Turn<width>& turn,
-                                              std::size_t used, Pose* target, std::array<Pose, kLanes>& padded)
+                                              std::size_t used, Pose* target, std::array<Pose, kLanes<width>>& padded)
 {
-    if (used == kLanes) {
+    if (used == kLanes<width>) {
         posesOfBlock(block, t, turn, target);
         return;
     }
@@ -462,8 +495,8 @@ template <int width>
 struct Scratch {
     Block<width> block;
     Turn<width> turn;
-    PaddedPairs pairs;
-    std::array<Pose, kLanes> poses;
+    PaddedPairs<width> pairs;
+    std::array<Pose, kLanes<width>> poses;
 };
 
 template <int width>
@@ -474,7 +507,7 @@ template <int width>
     if (to.size() != n || out.size() != n * times.size())
         throw std::invalid_argument("screwsAt: spans of different lengths");
     Scratch<width> scratch;
-    for (std::size_t first = 0; first < n; first += kLanes) {
+    for (std::size_t first = 0; first < n; first += kLanes<width>) {
         const BlockPairs pairs = blockPairs(from, to, first, scratch.pairs);
         buildBlock<width, true>(pairs.from, pairs.to, scratch.block);
         for (std::size_t k = 0; k < times.size(); ++k) {
@@ -496,7 +529,7 @@ template <int width>
     if (to.size() != from.size() || out.size() != from.size())
         throw std::invalid_argument("screwMidpoints: spans of different lengths");
     Scratch<width> scratch;
-    for (std::size_t first = 0; first < from.size(); first += kLanes) {
+    for (std::size_t first = 0; first < from.size(); first += kLanes<width>) {
         const BlockPairs pairs = blockPairs(from, to, first, scratch.pairs);
         buildBlock<width, false>(pairs.from, pairs.to, scratch.block);
         turnAtMidpoint(scratch.block, scratch.turn);
