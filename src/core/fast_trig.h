@@ -28,20 +28,21 @@ constexpr int kStepsPerTurn = 256; // sin and cos tabulated at k·π/128
 constexpr int kAngleBins = 256;    // bins of width 1/256 in sin a (a ≤ π/4) or in cos a (a > π/4)
 constexpr int kAngleBinsPerHalf = kAngleBins * 3 / 4; // up to 0.75, past 1/√2 for a little drift
 
-// sin and cos of one step side by side, and each entry of kAngleTable in 32 bytes, so that the batch
-// screw (screw_batch.cpp) reads an entry with one load and none splits a cache line.
+// sin and cos of one step side by side, aligned to their 16 bytes: the batch screw
+// (screw_batch.cpp) reads an entry with one load, which never splits a cache line.
 struct alignas(2 * sizeof(double)) TableSinCos {
     double sin;
     double cos;
 };
 extern const std::array<TableSinCos, kStepsPerTurn> kSinCosTable;
 
-// An angle θ of the unit circle, a double, with the doubles nearest its sine and cosine.
+// An angle θ of the unit circle, a double, with the doubles nearest its sine and cosine; padded and
+// aligned to 32 bytes, which the batch screw reads in one AVX load, or two SSE2 ones.
 struct alignas(4 * sizeof(double)) TableAngle {
     double angle;
     double sin;
     double cos;
-    double unused = 0.0;
+    double padding = 0.0;
 };
 // For bin b of the first half, θ = asin(b/256): the lowest angle whose sine falls in the bin. For bin
 // b of the second half, θ = π/2 − asin((b+1)/256): the lowest angle whose cosine falls in bin b.

@@ -27,9 +27,9 @@
 // latency has to be broken: the square root and the division, and each table read with the series
 // after it. Each loop of a block is short and its registers independent, so that the processor
 // overlaps them, and the loop with the square root and the division also loads the positions, work
-// that waits on neither. A pose's quaternion and position are each loaded and stored as four doubles
-// at once and transposed in registers, and so is a table entry: one load or store where two or three
-// would each take a cycle of the load and store ports. The table rows are worked out in one loop and
+// that waits on neither. A pose's quaternion and position, and a table entry, are loaded and stored
+// whole, four doubles (two for a sine table entry) with AVX2 and two with SSE2, and transposed in
+// registers: where GCC stored each coefficient alone, it took a store for each. The table rows are worked out in one loop and
 // read in the next, their indices loaded from memory as integers: moving an index from a SIMD
 // register to a general one costs more than storing it and loading it.
 
@@ -89,9 +89,9 @@ struct Block {
     Lanes<width> halfAngle;          // a, or NaN in a lane without rotation (see turnAt)
     Lanes<width> slide;              // d
     // Between the loops of buildBlock:
-    Components<3> relativeVector;          // σ·(qb·conj(qa)).vec()
-    Lanes<width> productW;                 // (qb·conj(qa)).w, whose sign is σ
-    Lanes<width> normSquared;              // sin²a
+    Components<3> relativeVector;                 // σ·(qb·conj(qa)).vec()
+    Lanes<width> productW;                        // (qb·conj(qa)).w, whose sign is σ
+    Lanes<width> normSquared;                     // sin²a
     std::array<std::int32_t, kLanes<width>> rows; // each lane's row of kAngleTable
 };
 
@@ -119,118 +119,121 @@ template <int width>
     return reinterpret_cast<Doubles<width>>(reinterpret_cast<Mask<width>>(value) ^ side);
 }
 
-// A pose's coefficients as two quads, runs of four doubles that one load or store moves: its
-// quaternion x, y, z, w, and its position x, y, z with the 8 bytes of padding that end a Pose. The
-// padding is part of the pose, so a quad store there writes this pose's bytes alone.
-static_assert(std::is_standard_layout_v<Pose> && sizeof(Pose) == 8 * sizeof(double)
-              && offsetof(Pose, position) == 4 * sizeof(double));
-using Quad = double __attribute__((vector_size(32), aligned(8)));
-
-inline const unsigned char* quadAt(const Pose& pose, std::size_t offset)
-{
-    return reinterpret_cast<const unsigned char*>(&pose) + offset;
-}
-inline unsigned char* quadAt(Pose& pose, std::size_t offset)
-{
-    return reinterpret_cast<unsigned char*>(&pose) + offset;
-}
-
-// The pairs of two doubles at rows[i], transposed to two registers of lanes: lane i of register c
-// holds rows[i][c].
+// Lanes of a and b interleaved, (a₀, b₀, a₂, b₂, …) and (a₁, b₁, a₃, b₃, …): within each pair of
+// lanes, the transpose of the 2 × 2 matrix whose rows are a's and b's.
 template <int width>
-[[gnu::always_inline]] inline std::array<Doubles<width>, 2> transposePairs(const std::array<const unsigned char*, width>& rows)
+[[gnu::always_inline]] inline std::array<Doubles<width>, 2> interleaved(Doubles<width> a, Doubles<width> b)
 {
-    std::array<Doubles<2>, width> pairs;
-    for (int i = 0; i < width; ++i)
-        std::memcpy(&pairs[i], rows[i], sizeof pairs[i]);
+    if constexpr (width == 2)
+        return {__builtin_shufflevector(a, b, 0, 2), __builtin_shufflevector(a, b, 1, 3)};
+    else
+        return {__builtin_shufflevector(a, b, 0, 4, 2, 6), __builtin_shufflevector(a, b, 1, 5, 3, 7)};
+}
+
+// The transpose of the 4 × 4 matrix whose rows are the four registers: halves exchanged between
+// registers, then pairs interleaved. A transpose is its own inverse, so this one takes four quads
+// just loaded to lanes, and lanes to four quads to store.
+[[gnu::always_inline]] inline std::array<Doubles<4>, 4> transposed(const std::array<Doubles<4>, 4>& rows)
+{
+    const auto [c0, c1] = interleaved<4>(__builtin_shufflevector(rows[0], rows[2], 0, 1, 4, 5),
+                                         __builtin_shufflevector(rows[1], rows[3], 0, 1, 4, 5));
+    const auto [c2, c3] = interleaved<4>(__builtin_shufflevector(rows[0], rows[2], 2, 3, 6, 7),
+                                         __builtin_shufflevector(rows[1], rows[3], 2, 3, 6, 7));
+    return {c0, c1, c2, c3};
+}
+
+// `width` rows of two doubles in memory as two registers of lanes: lane i of register c holds
+// rows[i][c]. A row is one load.
+template <int width>
+[[gnu::always_inline]] inline std::array<Doubles<width>, 2> loadPairs(const std::array<const unsigned char*, width>& rows)
+{
+    // Named registers, each loaded on its own: GCC copies an array of them loaded in a loop through the
+    // stack.
+    Doubles<2> p0, p1;
+    std::memcpy(&p0, rows[0], sizeof p0);
+    std::memcpy(&p1, rows[1], sizeof p1);
     if constexpr (width == 2) {
-        return {__builtin_shufflevector(pairs[0], pairs[1], 0, 2), __builtin_shufflevector(pairs[0], pairs[1], 1, 3)};
+        return interleaved<2>(p0, p1);
     } else {
-        const Doubles<4> rows02 = __builtin_shufflevector(pairs[0], pairs[2], 0, 1, 2, 3);
-        const Doubles<4> rows13 = __builtin_shufflevector(pairs[1], pairs[3], 0, 1, 2, 3);
-        return {__builtin_shufflevector(rows02, rows13, 0, 4, 2, 6), __builtin_shufflevector(rows02, rows13, 1, 5, 3, 7)};
+        Doubles<2> p2, p3;
+        std::memcpy(&p2, rows[2], sizeof p2);
+        std::memcpy(&p3, rows[3], sizeof p3);
+        return interleaved<4>(__builtin_shufflevector(p0, p2, 0, 1, 2, 3), __builtin_shufflevector(p1, p3, 0, 1, 2, 3));
     }
 }
 
-// The quads, runs of four doubles, at rows[i], transposed to four registers of lanes: lane i of
-// register c holds rows[i][c]. Four doubles are one AVX load.
+// `width` quads, rows of four doubles in memory, as four registers of lanes: lane i of register c
+// holds rows[i][c]. A quad is one load with AVX2, two with SSE2.
 template <int width>
-[[gnu::always_inline]] inline std::array<Doubles<width>, 4> transposeQuads(const std::array<const unsigned char*, width>& rows)
+[[gnu::always_inline]] inline std::array<Doubles<width>, 4> loadQuads(const std::array<const unsigned char*, width>& rows)
 {
     if constexpr (width == 2) {
-        const std::array<Doubles<2>, 2> low = transposePairs<2>(rows);
-        const std::array<Doubles<2>, 2> high = transposePairs<2>({rows[0] + 2 * sizeof(double), rows[1] + 2 * sizeof(double)});
-        return {low[0], low[1], high[0], high[1]};
+        const auto [c0, c1] = loadPairs<2>(rows);
+        const auto [c2, c3] = loadPairs<2>({rows[0] + 2 * sizeof(double), rows[1] + 2 * sizeof(double)});
+        return {c0, c1, c2, c3};
     } else {
-        Quad q0, q1, q2, q3;
+        Doubles<4> q0, q1, q2, q3; // named, as in loadPairs
         std::memcpy(&q0, rows[0], sizeof q0);
         std::memcpy(&q1, rows[1], sizeof q1);
         std::memcpy(&q2, rows[2], sizeof q2);
         std::memcpy(&q3, rows[3], sizeof q3);
-        const Doubles<4> low02 = __builtin_shufflevector(q0, q2, 0, 1, 4, 5); // c₀ c₁ of rows 0 and 2
-        const Doubles<4> low13 = __builtin_shufflevector(q1, q3, 0, 1, 4, 5);
-        const Doubles<4> high02 = __builtin_shufflevector(q0, q2, 2, 3, 6, 7); // c₂ c₃
-        const Doubles<4> high13 = __builtin_shufflevector(q1, q3, 2, 3, 6, 7);
-        return {__builtin_shufflevector(low02, low13, 0, 4, 2, 6), __builtin_shufflevector(low02, low13, 1, 5, 3, 7),
-                __builtin_shufflevector(high02, high13, 0, 4, 2, 6), __builtin_shufflevector(high02, high13, 1, 5, 3, 7)};
+        return transposed({q0, q1, q2, q3});
     }
 }
+
+// The inverse of loadQuads: lane i of register c to rows[i][c].
+template <int width>
+[[gnu::always_inline]] inline void storeQuads(const std::array<Doubles<width>, 4>& lanes,
+                                              const std::array<unsigned char*, width>& rows)
+{
+    if constexpr (width == 2) {
+        const auto [low0, low1] = interleaved<2>(lanes[0], lanes[1]);
+        const auto [high0, high1] = interleaved<2>(lanes[2], lanes[3]);
+        std::memcpy(rows[0], &low0, sizeof low0);
+        std::memcpy(rows[0] + sizeof low0, &high0, sizeof high0);
+        std::memcpy(rows[1], &low1, sizeof low1);
+        std::memcpy(rows[1] + sizeof low1, &high1, sizeof high1);
+    } else {
+        const auto [q0, q1, q2, q3] = transposed(lanes);
+        std::memcpy(rows[0], &q0, sizeof q0);
+        std::memcpy(rows[1], &q1, sizeof q1);
+        std::memcpy(rows[2], &q2, sizeof q2);
+        std::memcpy(rows[3], &q3, sizeof q3);
+    }
+}
+
+// A pose's coefficients as two quads: its quaternion x, y, z, w, and its position x, y, z with the
+// 8 bytes of padding that end a Pose. The batch moves whole quads only of the poses in its callers'
+// spans and its own scratch arrays, elements of arrays, whose padding belongs to them alone: a load's
+// padding lane is never used, and a store writes z there again.
+static_assert(std::is_standard_layout_v<Pose> && sizeof(Pose) == 8 * sizeof(double)
+              && offsetof(Pose, orientation) == 0 && offsetof(Pose, position) == 4 * sizeof(double));
+constexpr std::size_t kOrientationQuad = offsetof(Pose, orientation);
+constexpr std::size_t kPositionQuad = offsetof(Pose, position);
 
 // The quads at `offset` of `width` poses as registers of lanes.
 template <int width>
-[[gnu::always_inline]] inline std::array<Doubles<width>, 4> loadQuads(const Pose* poses, std::size_t offset)
+[[gnu::always_inline]] inline std::array<Doubles<width>, 4> loadPoseQuads(const Pose* poses, std::size_t offset)
 {
     std::array<const unsigned char*, width> rows;
     for (int i = 0; i < width; ++i)
-        rows[i] = quadAt(poses[i], offset);
-    return transposeQuads<width>(rows);
+        rows[i] = reinterpret_cast<const unsigned char*>(&poses[i]) + offset;
+    return loadQuads<width>(rows);
 }
-
-// The inverse of loadQuads: coefficient c of lane i to the quad at `offset` of out[i].
-template <int width>
-[[gnu::always_inline]] inline void storeQuads(const std::array<Doubles<width>, 4>& c, Pose* out, std::size_t offset)
-{
-    if constexpr (width == 2) {
-        const Doubles<2> low0 = __builtin_shufflevector(c[0], c[1], 0, 2);
-        const Doubles<2> low1 = __builtin_shufflevector(c[0], c[1], 1, 3);
-        const Doubles<2> high0 = __builtin_shufflevector(c[2], c[3], 0, 2);
-        const Doubles<2> high1 = __builtin_shufflevector(c[2], c[3], 1, 3);
-        std::memcpy(quadAt(out[0], offset), &low0, sizeof low0);
-        std::memcpy(quadAt(out[0], offset) + sizeof low0, &high0, sizeof high0);
-        std::memcpy(quadAt(out[1], offset), &low1, sizeof low1);
-        std::memcpy(quadAt(out[1], offset) + sizeof low1, &high1, sizeof high1);
-    } else {
-        const Doubles<4> low02 = __builtin_shufflevector(c[0], c[1], 0, 4, 2, 6); // c₀ c₁ of lanes 0 and 2
-        const Doubles<4> low13 = __builtin_shufflevector(c[0], c[1], 1, 5, 3, 7);
-        const Doubles<4> high02 = __builtin_shufflevector(c[2], c[3], 0, 4, 2, 6);
-        const Doubles<4> high13 = __builtin_shufflevector(c[2], c[3], 1, 5, 3, 7);
-        const Quad q0 = __builtin_shufflevector(low02, high02, 0, 1, 4, 5);
-        const Quad q1 = __builtin_shufflevector(low13, high13, 0, 1, 4, 5);
-        const Quad q2 = __builtin_shufflevector(low02, high02, 2, 3, 6, 7);
-        const Quad q3 = __builtin_shufflevector(low13, high13, 2, 3, 6, 7);
-        std::memcpy(quadAt(out[0], offset), &q0, sizeof q0);
-        std::memcpy(quadAt(out[1], offset), &q1, sizeof q1);
-        std::memcpy(quadAt(out[2], offset), &q2, sizeof q2);
-        std::memcpy(quadAt(out[3], offset), &q3, sizeof q3);
-    }
-}
-
-constexpr std::size_t kOrientationQuad = 0;
-constexpr std::size_t kPositionQuad = offsetof(Pose, position);
 
 // The orientations of `width` poses in lanes: x, y, z, w.
 template <int width>
 [[gnu::always_inline]] inline std::array<Doubles<width>, 4> loadOrientations(const Pose* poses)
 {
-    return loadQuads<width>(poses, kOrientationQuad);
+    return loadPoseQuads<width>(poses, kOrientationQuad);
 }
 
 // The positions of `width` poses in lanes: x, y, z.
 template <int width>
 [[gnu::always_inline]] inline std::array<Doubles<width>, 3> loadPositions(const Pose* poses)
 {
-    const std::array<Doubles<width>, 4> quads = loadQuads<width>(poses, kPositionQuad);
-    return {quads[0], quads[1], quads[2]};
+    const auto [x, y, z, padding] = loadPoseQuads<width>(poses, kPositionQuad);
+    return {x, y, z};
 }
 
 // out[i] = the pose of lane i, its seven coefficients as loadOrientations and loadPositions give them;
@@ -238,8 +241,14 @@ template <int width>
 template <int width>
 [[gnu::always_inline]] inline void storePoses(const std::array<Doubles<width>, 7>& c, Pose* out)
 {
-    storeQuads<width>({c[0], c[1], c[2], c[3]}, out, kOrientationQuad);
-    storeQuads<width>({c[4], c[5], c[6], c[6]}, out, kPositionQuad);
+    std::array<unsigned char*, width> orientations;
+    std::array<unsigned char*, width> positions;
+    for (int i = 0; i < width; ++i) {
+        orientations[i] = reinterpret_cast<unsigned char*>(&out[i]) + kOrientationQuad;
+        positions[i] = reinterpret_cast<unsigned char*>(&out[i]) + kPositionQuad;
+    }
+    storeQuads<width>({c[0], c[1], c[2], c[3]}, orientations);
+    storeQuads<width>({c[4], c[5], c[6], c[6]}, positions);
 }
 
 // The product qb·conj(qa) of register v's pairs, in the order of Eigen's SSE2 product (Geometry_SIMD.h),
@@ -337,15 +346,15 @@ template <int width>
 {
     using D = Doubles<width>;
     const D cosine = block.cosHalfAngle[v], sine = block.sinHalfAngle[v];
-    std::array<const unsigned char*, width> rows;
+    std::array<const unsigned char*, width> entries;
     for (int i = 0; i < width; ++i)
-        rows[i] = reinterpret_cast<const unsigned char*>(&kAngleTable[static_cast<std::size_t>(block.rows[v * width + i])]);
-    const std::array<D, 4> below = transposeQuads<width>(rows); // TableAngle's angle, sin, cos, unused
-    const D angle = below[0] + arcsineSeries(sine * below[2] - cosine * below[1]);
+        entries[i] = reinterpret_cast<const unsigned char*>(&kAngleTable[static_cast<std::size_t>(block.rows[v * width + i])]);
+    const auto [angleBelow, sinBelow, cosBelow, padding] = loadQuads<width>(entries);
+    const D angle = angleBelow + arcsineSeries(sine * cosBelow - cosine * sinBelow);
     block.halfAngle[v] = sine == 0.0 ? D{} + std::numeric_limits<double>::quiet_NaN() : angle;
 }
 
-// Screw(from[l], to[l]) for the kLanes pairs, with its angle only if `withAngle`.
+// Screw(from[l], to[l]) for the kLanes<width> pairs, with its angle only if `withAngle`.
 template <int width, bool withAngle>
 [[gnu::always_inline]] inline void buildBlock(const Pose* from, const Pose* to, Block<width>& block)
 {
@@ -394,10 +403,10 @@ template <int width>
     }
     for (std::size_t v = 0; v < kRegisters<width>; ++v) {
         const SinCosOf<D> ofRemainder = sinCosSeries(turn.remainder[v]);
-        std::array<const unsigned char*, width> steps;
+        std::array<const unsigned char*, width> entries;
         for (int i = 0; i < width; ++i)
-            steps[i] = reinterpret_cast<const unsigned char*>(&kSinCosTable[static_cast<std::size_t>(turn.steps[v * width + i])]);
-        const auto [sinK, cosK] = transposePairs<width>(steps);
+            entries[i] = reinterpret_cast<const unsigned char*>(&kSinCosTable[static_cast<std::size_t>(turn.steps[v * width + i])]);
+        const auto [sinK, cosK] = loadPairs<width>(entries);
         const D sinT = sinK * ofRemainder.cos + cosK * ofRemainder.sin;
         const D cosT = cosK * ofRemainder.cos - sinK * ofRemainder.sin;
         turn.sin[v] = sinT;
