@@ -27,11 +27,11 @@
 // latency has to be broken: the square root and the division, and each table read with the series
 // after it. Each loop of a block is short and its registers independent, so that the processor
 // overlaps them, and the loop with the square root and the division also loads the positions, work
-// that waits on neither. A pose's quaternion and position, and a table entry, are loaded and stored
-// whole, four doubles (two for a sine table entry) with AVX2 and two with SSE2, and transposed in
-// registers: where GCC stored each coefficient alone, it took a store for each. The table rows are worked out in one loop and
-// read in the next, their indices loaded from memory as integers: moving an index from a SIMD
-// register to a general one costs more than storing it and loading it.
+// that waits on neither. A pose's quaternion and position, and a table entry, are each loaded and
+// stored whole, in one instruction with AVX2 and one for every two doubles with SSE2, and transposed
+// in registers: stored a coefficient at a time, as GCC had done, they took a store for each. The table
+// rows are worked out in one loop and read in the next, their indices loaded from memory as integers:
+// moving an index from a SIMD register to a general one costs more than storing it and loading it.
 
 namespace gyre {
 
@@ -39,7 +39,7 @@ namespace {
 
 using namespace fast_trig_detail;
 
-// Screws a block: eight registers, each loop's independent chains. Four or sixteen registers were slower.
+// Screws a block: eight registers, each loop's independent chains. Four or sixteen were slower.
 template <int width>
 constexpr std::size_t kLanes = 8 * width;
 
