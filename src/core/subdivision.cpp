@@ -1,6 +1,7 @@
 #include "core/subdivision.h"
 
 #include "core/quaternion_math.h"
+#include "core/screw.h"
 #include "core/screw_batch.h"
 
 #include <array>
@@ -37,9 +38,11 @@ private:
     Eigen::Vector3d log_;
 };
 
-// A scheme's two-pose primitive on many pairs at once, with screw_batch.h's interface: the screw, or
-// the decoupled slerp and line.
+// A scheme's two-pose primitive on many pairs at once, with screw_batch.h's interface, and on one pair:
+// the screw, or the decoupled slerp and line.
 struct ScrewPrimitive {
+    // One pair alone: the batch would fill a whole block of lanes for it.
+    static Pose single(const Pose& from, double t, const Pose& to) { return screwInterpolate(from, t, to); }
     static void at(std::span<const Pose> from, std::span<const Pose> to, std::span<const double> times,
                    std::span<Pose> out)
     {
@@ -52,6 +55,7 @@ struct ScrewPrimitive {
 };
 
 struct DecoupledPrimitive {
+    static Pose single(const Pose& from, double t, const Pose& to) { return DecoupledSegment(from, to).at(t); }
     static void at(std::span<const Pose> from, std::span<const Pose> to, std::span<const double> times,
                    std::span<Pose> out)
     {
@@ -94,12 +98,6 @@ void splitAndTweak(const std::vector<Pose>& in, SubdivisionScratch& scratch, std
         out = in;
         return;
     }
-    // s(from, t, to) for one pair.
-    const auto single = [](const Pose& from, double t, const Pose& to) {
-        Pose result;
-        Primitive::at({&from, 1}, {&to, 1}, {&t, 1}, {&result, 1});
-        return result;
-    };
     // extended[i + 1] = in[i], with the neighbours the rules reach past either end: the wrapped poses
     // of a cycle, or the ghost poses of the dummy screws of an open sequence.
     std::vector<Pose>& extended = scratch.extended;
@@ -110,9 +108,9 @@ void splitAndTweak(const std::vector<Pose>& in, SubdivisionScratch& scratch, std
         extended.push_back(in[0]);
         extended.push_back(in[1 % n]);
     } else {
-        extended.push_back(single(in[1], 2.0, in[0]));
+        extended.push_back(Primitive::single(in[1], 2.0, in[0]));
         extended.insert(extended.end(), in.begin(), in.end());
-        extended.push_back(single(in[n - 2], 2.0, in[n - 1]));
+        extended.push_back(Primitive::single(in[n - 2], 2.0, in[n - 1]));
     }
 
     out.resize(cyclic ? 2 * n : 2 * n - 1);

@@ -322,23 +322,27 @@ void BM_SquadSample(benchmark::State& state)
 BENCHMARK(BM_SquadSample);
 
 // Each scheme on 64 cyclic control poses to 5 levels (2048 poses), reusing the subdivider's buffers
-// as the app does while a pose is dragged.
-void BM_Subdivide(benchmark::State& state, gyre::SubdivisionScheme scheme, bool decoupled)
+// as the app does while a pose is dragged; `jarek_open`, the same poses as an open sequence, whose
+// every level also makes a ghost pose past each end.
+void BM_Subdivide(benchmark::State& state, gyre::SubdivisionScheme scheme, bool decoupled, bool cyclic = true)
 {
     const std::vector<Pose> control = cyclicControlPoses(64);
     gyre::PolyscrewSubdivider subdivider;
-    const gyre::SubdivisionSettings settings{scheme, 5, true, decoupled};
+    const gyre::SubdivisionSettings settings{scheme, 5, cyclic, decoupled};
+    std::size_t posesMade = 0;
     for (auto _ : state) {
         const std::vector<Pose>& poses = subdivider.subdivide(control, settings);
         benchmark::DoNotOptimize(poses.data());
+        posesMade = poses.size();
     }
-    state.SetItemsProcessed(state.iterations() * 64 * 32);
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(posesMade));
 }
 BENCHMARK_CAPTURE(BM_Subdivide, four_point, gyre::SubdivisionScheme::FourPoint, false)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Subdivide, four_point_b, gyre::SubdivisionScheme::FourPointB, false)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Subdivide, bspline, gyre::SubdivisionScheme::BSpline, false)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Subdivide, jarek, gyre::SubdivisionScheme::Jarek, false)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Subdivide, jarek_decoupled, gyre::SubdivisionScheme::Jarek, true)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Subdivide, jarek_open, gyre::SubdivisionScheme::Jarek, false, false)->Unit(benchmark::kMicrosecond);
 
 // The sketch-editing paper's Top: keys every 5 frames at 24 fps of a top that only spins and precesses
 // (the paper's "simple circular motion"), and as the target the angular velocity of the same top
