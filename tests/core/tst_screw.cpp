@@ -45,7 +45,7 @@ void checkAgainstGeodesic(const Pose& a, const Pose& b, double tolerance, const 
         const Pose got = screw.at(t);
         const Eigen::Matrix4d expected = ma * se3Exp(t * xi); // the geodesic La·exp(t·log(La⁻¹Lb))
         const double error = poseMatrixDistance(got, expected);
-        // screwInterpolate is a separate one-shot implementation of the same motion.
+        // screwInterpolate, the one-shot entry point the subdivision's ghost poses use.
         const Pose oneShot = screwInterpolate(a, t, b);
         const double oneShotError = poseMatrixDistance(oneShot, expected);
         if (largest)
