@@ -12,15 +12,17 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 
 // The lanes are written with GCC's and Clang's vector extension: a register of `width` doubles takes
 // +, −, ×, ÷, comparisons (64-bit masks of all ones or zeros) and selects (mask ? a : b), which compile
-// to packed instructions, SSE2's at width 2 and AVX's at width 4 inside the AVX2 functions below. The
-// file is built with -fno-math-errno and -fno-trapping-math (src/core/CMakeLists.txt), so that the
-// square root of a register is one packed instruction. Every helper that takes or returns a register
-// is forced inline, in a Debug build too: a register of four doubles passed to a function built
-// without AVX would cross a calling convention that differs.
+// to packed instructions, SSE2's at width 2, AVX's at width 4 inside the AVX2 functions below, and
+// AVX-512's at width 8 inside the AVX-512 ones. The file is built with -fno-math-errno and
+// -fno-trapping-math (src/core/CMakeLists.txt), so that the square root of a register is one packed
+// instruction. Every helper that takes or returns a register is forced inline, in a Debug build too: a
+// register of four or eight doubles passed to a function built without AVX would cross a calling
+// convention that differs.
 //
 // What shapes the loops (perf, llvm-mca, and throwaway loops timed on the development machine's AMD
 // EPYC): it stores one register a cycle, and its loads, stores and shuffles limit the screw as much as
@@ -29,20 +31,17 @@
 // after it. Each loop of a block is short and its registers independent, so that the processor
 // overlaps them, and the loop with the square root and the division also loads the positions, work
 // that waits on neither. A pose's quaternion and position, and a table entry, are each loaded and
-// stored whole, in one instruction with AVX2 and one for every two doubles with SSE2, and transposed
-// in registers: stored a coefficient at a time, as GCC had done, they took a store for each. The table
-// rows are worked out in one loop and read in the next, their indices loaded from memory as integers:
-// moving an index from a SIMD register to a general one costs more than storing it and loading it.
+// stored whole, in one instruction with AVX2 or AVX-512 and one for every two doubles with SSE2, and
+// transposed in registers: stored a coefficient at a time, as GCC had done, they took a store for
+// each. The table rows are worked out in one loop and read in the next, their indices loaded from
+// memory as integers: moving an index from a SIMD register to a general one costs more than storing it
+// and loading it. (AVX-512's gathers would read the rows from the register, but took 14 cycles each.)
 
 namespace gyre {
 
 namespace {
 
 using namespace fast_trig_detail;
-
-// Screws a block: eight registers, each loop's independent chains. Four or sixteen were slower.
-template <int width>
-constexpr std::size_t kLanes = 8 * width;
 
 // A register of `width` doubles, of the 64-bit masks (all ones or zeros) its comparisons give, and
 // `width` 32-bit integers, a conversion's result.
@@ -60,6 +59,12 @@ struct Registers<4> {
     using Mask = std::int64_t __attribute__((vector_size(32)));
     using Int32s = std::int32_t __attribute__((vector_size(16)));
 };
+template <>
+struct Registers<8> {
+    using Doubles = double __attribute__((vector_size(64)));
+    using Mask = std::int64_t __attribute__((vector_size(64)));
+    using Int32s = std::int32_t __attribute__((vector_size(32)));
+};
 template <int width>
 using Doubles = typename Registers<width>::Doubles;
 template <int width>
@@ -67,8 +72,14 @@ using Mask = typename Registers<width>::Mask;
 template <int width>
 using Int32s = typename Registers<width>::Int32s;
 
+// Registers a block, each loop's independent chains: eight of two or four doubles (four or sixteen of
+// four were slower), four of eight, 32 lanes as with AVX2 (eight of eight were no faster, and would
+// double a partial block's scratch).
 template <int width>
-constexpr std::size_t kRegisters = kLanes<width> / width;
+constexpr std::size_t kRegisters = width == 8 ? 4 : 8;
+
+template <int width>
+constexpr std::size_t kLanes = kRegisters<width> * width;
 
 template <int width>
 using Lanes = std::array<Doubles<width>, kRegisters<width>>;
@@ -127,20 +138,46 @@ template <int width>
 {
     if constexpr (width == 2)
         return {__builtin_shufflevector(a, b, 0, 2), __builtin_shufflevector(a, b, 1, 3)};
-    else
+    else if constexpr (width == 4)
         return {__builtin_shufflevector(a, b, 0, 4, 2, 6), __builtin_shufflevector(a, b, 1, 5, 3, 7)};
+    else
+        return {__builtin_shufflevector(a, b, 0, 8, 2, 10, 4, 12, 6, 14),
+                __builtin_shufflevector(a, b, 1, 9, 3, 11, 5, 13, 7, 15)};
 }
 
-// The transpose of the 4 × 4 matrix whose rows are the four registers: halves exchanged between
-// registers, then pairs interleaved. A transpose is its own inverse, so this one takes four quads
-// just loaded to lanes, and lanes to four quads to store.
-[[gnu::always_inline]] inline std::array<Doubles<4>, 4> transposed(const std::array<Doubles<4>, 4>& rows)
+// Within each quad of lanes (the whole register of four, each half of a register of eight), the
+// first pairs of a's and b's quads, and the second pairs.
+template <int width>
+[[gnu::always_inline]] inline std::array<Doubles<width>, 2> pairsOfQuads(Doubles<width> a, Doubles<width> b)
 {
-    const auto [c0, c1] = interleaved<4>(__builtin_shufflevector(rows[0], rows[2], 0, 1, 4, 5),
-                                         __builtin_shufflevector(rows[1], rows[3], 0, 1, 4, 5));
-    const auto [c2, c3] = interleaved<4>(__builtin_shufflevector(rows[0], rows[2], 2, 3, 6, 7),
-                                         __builtin_shufflevector(rows[1], rows[3], 2, 3, 6, 7));
+    if constexpr (width == 4)
+        return {__builtin_shufflevector(a, b, 0, 1, 4, 5), __builtin_shufflevector(a, b, 2, 3, 6, 7)};
+    else
+        return {__builtin_shufflevector(a, b, 0, 1, 8, 9, 4, 5, 12, 13),
+                __builtin_shufflevector(a, b, 2, 3, 10, 11, 6, 7, 14, 15)};
+}
+
+// Within each quad of lanes, the transpose of the 4 × 4 matrix whose rows are the four registers'
+// quads: pairs exchanged between registers, then interleaved. A transpose is its own inverse, so this
+// one takes quads just loaded to lanes, and lanes to quads to store.
+template <int width>
+[[gnu::always_inline]] inline std::array<Doubles<width>, 4> transposed(const std::array<Doubles<width>, 4>& rows)
+{
+    const auto [first02, second02] = pairsOfQuads<width>(rows[0], rows[2]);
+    const auto [first13, second13] = pairsOfQuads<width>(rows[1], rows[3]);
+    const auto [c0, c1] = interleaved<width>(first02, first13);
+    const auto [c2, c3] = interleaved<width>(second02, second13);
     return {c0, c1, c2, c3};
+}
+
+// The register of eight doubles whose halves are `low` and `high`, and the inverse.
+[[gnu::always_inline]] inline Doubles<8> joined(Doubles<4> low, Doubles<4> high)
+{
+    return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
+}
+[[gnu::always_inline]] inline std::array<Doubles<4>, 2> halves(Doubles<8> value)
+{
+    return {__builtin_shufflevector(value, value, 0, 1, 2, 3), __builtin_shufflevector(value, value, 4, 5, 6, 7)};
 }
 
 // `width` rows of two doubles in memory as two registers of lanes: lane i of register c holds
@@ -159,12 +196,24 @@ template <int width>
         Doubles<2> p2, p3;
         std::memcpy(&p2, rows[2], sizeof p2);
         std::memcpy(&p3, rows[3], sizeof p3);
-        return interleaved<4>(__builtin_shufflevector(p0, p2, 0, 1, 2, 3), __builtin_shufflevector(p1, p3, 0, 1, 2, 3));
+        const Doubles<4> even = __builtin_shufflevector(p0, p2, 0, 1, 2, 3);
+        const Doubles<4> odd = __builtin_shufflevector(p1, p3, 0, 1, 2, 3);
+        if constexpr (width == 4) {
+            return interleaved<4>(even, odd);
+        } else {
+            Doubles<2> p4, p5, p6, p7;
+            std::memcpy(&p4, rows[4], sizeof p4);
+            std::memcpy(&p5, rows[5], sizeof p5);
+            std::memcpy(&p6, rows[6], sizeof p6);
+            std::memcpy(&p7, rows[7], sizeof p7);
+            return interleaved<8>(joined(even, __builtin_shufflevector(p4, p6, 0, 1, 2, 3)),
+                                  joined(odd, __builtin_shufflevector(p5, p7, 0, 1, 2, 3)));
+        }
     }
 }
 
 // `width` quads, rows of four doubles in memory, as four registers of lanes: lane i of register c
-// holds rows[i][c]. A quad is one load with AVX2, two with SSE2.
+// holds rows[i][c]. A quad is one load with AVX2 or AVX-512, two with SSE2.
 template <int width>
 [[gnu::always_inline]] inline std::array<Doubles<width>, 4> loadQuads(const std::array<const unsigned char*, width>& rows)
 {
@@ -178,7 +227,16 @@ template <int width>
         std::memcpy(&q1, rows[1], sizeof q1);
         std::memcpy(&q2, rows[2], sizeof q2);
         std::memcpy(&q3, rows[3], sizeof q3);
-        return transposed({q0, q1, q2, q3});
+        if constexpr (width == 4) {
+            return transposed<4>({q0, q1, q2, q3});
+        } else {
+            Doubles<4> q4, q5, q6, q7;
+            std::memcpy(&q4, rows[4], sizeof q4);
+            std::memcpy(&q5, rows[5], sizeof q5);
+            std::memcpy(&q6, rows[6], sizeof q6);
+            std::memcpy(&q7, rows[7], sizeof q7);
+            return transposed<8>({joined(q0, q4), joined(q1, q5), joined(q2, q6), joined(q3, q7)});
+        }
     }
 }
 
@@ -194,12 +252,26 @@ template <int width>
         std::memcpy(rows[0] + sizeof low0, &high0, sizeof high0);
         std::memcpy(rows[1], &low1, sizeof low1);
         std::memcpy(rows[1] + sizeof low1, &high1, sizeof high1);
-    } else {
-        const auto [q0, q1, q2, q3] = transposed(lanes);
+    } else if constexpr (width == 4) {
+        const auto [q0, q1, q2, q3] = transposed<4>(lanes);
         std::memcpy(rows[0], &q0, sizeof q0);
         std::memcpy(rows[1], &q1, sizeof q1);
         std::memcpy(rows[2], &q2, sizeof q2);
         std::memcpy(rows[3], &q3, sizeof q3);
+    } else {
+        const auto [h0, h1, h2, h3] = transposed<8>(lanes);
+        const auto [q0, q4] = halves(h0);
+        const auto [q1, q5] = halves(h1);
+        const auto [q2, q6] = halves(h2);
+        const auto [q3, q7] = halves(h3);
+        std::memcpy(rows[0], &q0, sizeof q0);
+        std::memcpy(rows[1], &q1, sizeof q1);
+        std::memcpy(rows[2], &q2, sizeof q2);
+        std::memcpy(rows[3], &q3, sizeof q3);
+        std::memcpy(rows[4], &q4, sizeof q4);
+        std::memcpy(rows[5], &q5, sizeof q5);
+        std::memcpy(rows[6], &q6, sizeof q6);
+        std::memcpy(rows[7], &q7, sizeof q7);
     }
 }
 
@@ -555,42 +627,89 @@ template <int width>
     }
 }
 
-// The same lanes for AVX2, four doubles a register, without FMA: fused products would round
-// differently from the single screw.
-[[gnu::target("avx2")]] void screwsAtAvx2(std::span<const Pose> from, std::span<const Pose> to,
-                                          std::span<const double> times, std::span<Pose> out)
+// One call of screwsAt (the times given) or of screwMidpoints.
+struct BatchCall {
+    std::span<const Pose> from;
+    std::span<const Pose> to;
+    std::optional<std::span<const double>> times; // none for the midpoints
+    std::span<Pose> out;
+};
+
+template <int width>
+[[gnu::always_inline]] inline void runLanes(const BatchCall& call)
 {
-    screwsAtLanes<4>(from, to, times, out);
+    if (call.times)
+        screwsAtLanes<width>(call.from, call.to, *call.times, call.out);
+    else
+        screwMidpointsLanes<width>(call.from, call.to, call.out);
 }
 
-[[gnu::target("avx2")]] void screwMidpointsAvx2(std::span<const Pose> from, std::span<const Pose> to,
-                                                std::span<Pose> out)
+// The same lanes for AVX2 and AVX-512, without FMA: fused products would round differently from the
+// single screw. AVX-512's vector-length extension (VL) gives the lanes of eight its 32 registers for
+// their loads and stores of quads; without it they were 5% slower.
+[[gnu::target("avx2")]] void runAvx2(const BatchCall& call)
 {
-    screwMidpointsLanes<4>(from, to, out);
+    runLanes<4>(call);
 }
 
-bool hasAvx2()
+[[gnu::target("avx512f,avx512vl")]] void runAvx512(const BatchCall& call)
 {
-    static const bool has = [] {
-        __builtin_cpu_init();
-        return __builtin_cpu_supports("avx2") != 0;
+    runLanes<8>(call);
+}
+
+using screw_batch_detail::InstructionSet;
+
+InstructionSet widestInstructionSet()
+{
+    static const InstructionSet widest = [] {
+        __builtin_cpu_init(); // its checks include the system's support for each set's registers
+        if (__builtin_cpu_supports("avx512f") != 0 && __builtin_cpu_supports("avx512vl") != 0)
+            return InstructionSet::Avx512;
+        if (__builtin_cpu_supports("avx2") != 0)
+            return InstructionSet::Avx2;
+        return InstructionSet::Sse2;
     }();
-    return has;
+    return widest;
+}
+
+void run(InstructionSet set, const BatchCall& call)
+{
+    if (!screw_batch_detail::processorHas(set))
+        throw std::invalid_argument(std::string(call.times ? "screwsAt" : "screwMidpoints")
+                                    + ": this processor lacks the instructions of the lanes asked for");
+    switch (set) {
+    case InstructionSet::Sse2:
+        runLanes<2>(call);
+        return;
+    case InstructionSet::Avx2:
+        runAvx2(call);
+        return;
+    case InstructionSet::Avx512:
+        runAvx512(call);
+        return;
+    }
 }
 
 } // namespace
 
 namespace screw_batch_detail {
 
-void screwsAtPortable(std::span<const Pose> from, std::span<const Pose> to, std::span<const double> times,
-                      std::span<Pose> out)
+bool processorHas(InstructionSet set)
 {
-    screwsAtLanes<2>(from, to, times, out);
+    // Each set's processors have the narrower ones.
+    return static_cast<int>(set) <= static_cast<int>(widestInstructionSet());
 }
 
-void screwMidpointsPortable(std::span<const Pose> from, std::span<const Pose> to, std::span<Pose> out)
+void screwsAtWith(InstructionSet set, std::span<const Pose> from, std::span<const Pose> to,
+                  std::span<const double> times, std::span<Pose> out)
 {
-    screwMidpointsLanes<2>(from, to, out);
+    run(set, {from, to, times, out});
+}
+
+void screwMidpointsWith(InstructionSet set, std::span<const Pose> from, std::span<const Pose> to,
+                        std::span<Pose> out)
+{
+    run(set, {from, to, std::nullopt, out});
 }
 
 } // namespace screw_batch_detail
@@ -598,18 +717,12 @@ void screwMidpointsPortable(std::span<const Pose> from, std::span<const Pose> to
 void screwsAt(std::span<const Pose> from, std::span<const Pose> to, std::span<const double> times,
               std::span<Pose> out)
 {
-    if (hasAvx2())
-        screwsAtAvx2(from, to, times, out);
-    else
-        screw_batch_detail::screwsAtPortable(from, to, times, out);
+    screw_batch_detail::screwsAtWith(widestInstructionSet(), from, to, times, out);
 }
 
 void screwMidpoints(std::span<const Pose> from, std::span<const Pose> to, std::span<Pose> out)
 {
-    if (hasAvx2())
-        screwMidpointsAvx2(from, to, out);
-    else
-        screw_batch_detail::screwMidpointsPortable(from, to, out);
+    screw_batch_detail::screwMidpointsWith(widestInstructionSet(), from, to, out);
 }
 
 } // namespace gyre

@@ -1,9 +1,9 @@
 #pragma once
 // Many screws at once: Screw (screw.h) for a list of pose pairs, computed in blocks of lanes held as
 // SIMD registers per component (structure of arrays), each step done on several screws at once: two
-// doubles a register at the project's flags (SSE2), four in the AVX2 version chosen at run time on
-// processors that have it. The subdivision evaluates each level's screws this way, and with it
-// ScrewBender's trail, which is the subdivided polyscrew.
+// doubles a register at the project's flags (SSE2), four or eight in the AVX2 and AVX-512 versions,
+// the widest the processor has chosen at run time. The subdivision evaluates each level's screws this
+// way, and with it ScrewBender's trail, which is the subdivided polyscrew.
 //
 // Each lane does Screw's own operations in Screw's order (Eigen's quaternion product included) and
 // no multiply-add is fused, so each result is the one Screw gives, to the bit. The lanes of a block
@@ -27,11 +27,19 @@ void screwMidpoints(std::span<const Pose> from, std::span<const Pose> to, std::s
 
 namespace screw_batch_detail {
 
-// The portable lanes, whatever the processor: two doubles a register. Tests call them to check this
-// version on a processor where screwsAt and screwMidpoints choose the AVX2 one.
-void screwsAtPortable(std::span<const Pose> from, std::span<const Pose> to, std::span<const double> times,
-                      std::span<Pose> out);
-void screwMidpointsPortable(std::span<const Pose> from, std::span<const Pose> to, std::span<Pose> out);
+// The versions of the lanes, by the instructions they need: two doubles a register with SSE2, which
+// every x86-64 processor has; four with AVX2; eight with AVX-512 (its foundation and vector-length
+// extensions). screwsAt and screwMidpoints run the widest this processor has; tests and gyre-bench
+// run each one it has.
+enum class InstructionSet { Sse2, Avx2, Avx512 };
+
+bool processorHas(InstructionSet set);
+
+// screwsAt and screwMidpoints with the lanes of `set`: std::invalid_argument if this processor lacks it.
+void screwsAtWith(InstructionSet set, std::span<const Pose> from, std::span<const Pose> to,
+                  std::span<const double> times, std::span<Pose> out);
+void screwMidpointsWith(InstructionSet set, std::span<const Pose> from, std::span<const Pose> to,
+                        std::span<Pose> out);
 
 } // namespace screw_batch_detail
 

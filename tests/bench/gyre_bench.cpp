@@ -124,17 +124,37 @@ void screwBatchBenchmark(benchmark::State& state, Batch batch)
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kPairs));
 }
 
-// The version this processor runs (AVX2 where it has it).
+// The version this processor runs: the widest lanes it has (AVX-512's, AVX2's or SSE2's).
 void BM_ScrewBatch(benchmark::State& state)
 {
     screwBatchBenchmark(state, gyre::screwsAt);
 }
 BENCHMARK(BM_ScrewBatch);
 
-// The portable version, two doubles a register (SSE2), which a processor without AVX2 runs.
+// Each narrower version, which a processor without the wider instructions runs; skipped on one
+// without its own.
+template <gyre::screw_batch_detail::InstructionSet set>
+void screwBatchWithBenchmark(benchmark::State& state)
+{
+    if (!gyre::screw_batch_detail::processorHas(set)) {
+        state.SkipWithError("this processor lacks the instructions of these lanes");
+        return;
+    }
+    screwBatchBenchmark(state, [](std::span<const Pose> from, std::span<const Pose> to, std::span<const double> times,
+                                  std::span<Pose> out) { gyre::screw_batch_detail::screwsAtWith(set, from, to, times, out); });
+}
+
+// Four doubles a register (AVX2).
+void BM_ScrewBatchAvx2(benchmark::State& state)
+{
+    screwBatchWithBenchmark<gyre::screw_batch_detail::InstructionSet::Avx2>(state);
+}
+BENCHMARK(BM_ScrewBatchAvx2);
+
+// Two doubles a register (SSE2), which every x86-64 processor has.
 void BM_ScrewBatchPortable(benchmark::State& state)
 {
-    screwBatchBenchmark(state, gyre::screw_batch_detail::screwsAtPortable);
+    screwBatchWithBenchmark<gyre::screw_batch_detail::InstructionSet::Sse2>(state);
 }
 BENCHMARK(BM_ScrewBatchPortable);
 
@@ -157,7 +177,8 @@ BENCHMARK(BM_ScrewEvaluate);
 // matrices (tests/core/core_test_support.h, the tests' independent construction): BM_Screw's Eigen row.
 // BM_Screw's floors (README): its 95 multiplies, 65 additions, square root and division, on two
 // multiply pipes that the square root and division share for ~12.5 cycles: ~54 cycles, 15 ns at
-// 3.6 GHz, one screw at a time; 7.5 ns a screw with SSE2's two lanes, 3.7 ns with AVX2's four.
+// 3.6 GHz, one screw at a time; 7.5 ns a screw with SSE2's two lanes, 3.7 ns with AVX2's four or
+// AVX-512's eight.
 void BM_ScrewEigen(benchmark::State& state)
 {
     const PosePairs pairs = randomPairs();

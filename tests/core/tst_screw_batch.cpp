@@ -1,7 +1,7 @@
 // The batch screw (screw_batch.h) against the single screw (screw.h), to the bit as it promises, and
 // against the SE(3) geodesic La·exp(t·log(La⁻¹Lb)) written in the test with 4×4 matrices, within a
-// tolerance; in both versions: the lanes this
-// processor runs (AVX2 where it has them) and the portable ones. The pairs mix random poses with the
+// tolerance; in every version this processor has: the lanes screwsAt chooses (the widest), and each
+// of SSE2's, AVX2's and AVX-512's on its own. The pairs mix random poses with the
 // cases the lanes hand to the single screw or meet at the edge of their formulas (identical poses,
 // pure translations, rotations tending to zero, rotations near a half turn, large translations, t·a
 // beyond the fast sine's range), so that one block holds lanes of every kind; and every batch length
@@ -100,13 +100,34 @@ QString bitwiseDifference(const Pose& got, const Pose& expected)
     return {};
 }
 
+template <screw_batch_detail::InstructionSet set>
+void screwsWith(std::span<const Pose> from, std::span<const Pose> to, std::span<const double> times, std::span<Pose> out)
+{
+    screw_batch_detail::screwsAtWith(set, from, to, times, out);
+}
+
+template <screw_batch_detail::InstructionSet set>
+void midpointsWith(std::span<const Pose> from, std::span<const Pose> to, std::span<Pose> out)
+{
+    screw_batch_detail::screwMidpointsWith(set, from, to, out);
+}
+
+template <screw_batch_detail::InstructionSet set>
+void addVersion(const char* name)
+{
+    if (screw_batch_detail::processorHas(set))
+        QTest::newRow(name) << ScrewsAt(screwsWith<set>) << Midpoints(midpointsWith<set>);
+}
+
 void addVersions()
 {
+    using screw_batch_detail::InstructionSet;
     QTest::addColumn<ScrewsAt>("screws");
     QTest::addColumn<Midpoints>("midpoints");
     QTest::newRow("this processor's") << ScrewsAt(screwsAt) << Midpoints(screwMidpoints);
-    QTest::newRow("portable") << ScrewsAt(screw_batch_detail::screwsAtPortable)
-                              << Midpoints(screw_batch_detail::screwMidpointsPortable);
+    addVersion<InstructionSet::Sse2>("SSE2");
+    addVersion<InstructionSet::Avx2>("AVX2");
+    addVersion<InstructionSet::Avx512>("AVX-512");
 }
 
 } // namespace
@@ -185,8 +206,8 @@ void TestScrewBatch::everyLength()
     QFETCH(ScrewsAt, screws);
     QFETCH(Midpoints, midpoints);
     Random random(2112);
-    // Past two blocks of the widest lanes (32 pairs with AVX2, 16 with SSE2), so that full blocks, each
-    // written in place, and partial ones, written through copies, both meet the guard.
+    // Past two blocks of the widest lanes (32 pairs with AVX2 or AVX-512, 16 with SSE2), so that full
+    // blocks, each written in place, and partial ones, written through copies, both meet the guard.
     for (std::size_t n = 0; n <= 66; ++n) {
         Pairs pairs;
         for (std::size_t i = 0; i < n; ++i) {
