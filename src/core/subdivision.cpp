@@ -100,7 +100,7 @@ void splitAndTweak(const std::vector<Pose>& in, SubdivisionScratch& scratch, std
     }
     // extended[i + 1] = in[i], with the neighbours the rules reach past either end: the wrapped poses
     // of a cycle, or the ghost poses of the dummy screws of an open sequence.
-    std::vector<Pose>& extended = scratch.extended;
+    PoseBuffer& extended = scratch.extended;
     extended.clear();
     if (cyclic) {
         extended.push_back(in[n - 1]);
@@ -128,7 +128,7 @@ void splitAndTweak(const std::vector<Pose>& in, SubdivisionScratch& scratch, std
     const auto row = [&](std::size_t k, std::size_t first) {
         return std::span<const Pose>(scratch.edgePoses).subspan(k * edges + first, newPoses);
     };
-    std::vector<Pose>& tweaked = scratch.tweaked;
+    PoseBuffer& tweaked = scratch.tweaked;
     tweaked.resize(newPoses);
     const auto midpoints = [&](std::span<const Pose> from, std::span<const Pose> to, std::size_t parity) {
         Primitive::midpoints(from, to, tweaked);
@@ -142,7 +142,7 @@ void splitAndTweak(const std::vector<Pose>& in, SubdivisionScratch& scratch, std
         break;
     case SubdivisionScheme::FourPointB: { // s(s(La, 1/2, Ld), 9/8, s(Lb, 1/2, Lc))
         interleave(std::span(in).first(newPoses), 0, out);
-        std::vector<Pose>& outer = scratch.outer;
+        PoseBuffer& outer = scratch.outer;
         outer.resize(newPoses);
         Primitive::midpoints(poses.first(newPoses), poses.subspan(3, newPoses), outer);
         evaluateEdges(kHalfTime);

@@ -15,6 +15,7 @@
 #include "core/name_table.h"
 #include "core/pose.h"
 #include "core/screw.h"
+#include "core/screw_batch.h"
 
 #include <cstddef>
 #include <optional>
@@ -55,12 +56,12 @@ struct SubdivisionSettings {
 std::optional<std::size_t> subdividedPoseCount(std::size_t controlPoses, int levels, bool cyclic);
 
 // The poses a level computes on its way, kept by PolyscrewSubdivider so that they allocate only as
-// they grow.
+// they grow; in PoseBuffers, which the batch screw reads and writes fastest.
 struct SubdivisionScratch {
-    std::vector<Pose> extended;  // the level's poses with the neighbours the rules reach past either end
-    std::vector<Pose> edgePoses; // every edge's screw at the scheme's times
-    std::vector<Pose> outer;     // FourPointB's midpoints of the outer poses
-    std::vector<Pose> tweaked;   // one rule's new poses
+    PoseBuffer extended;  // the level's poses with the neighbours the rules reach past either end
+    PoseBuffer edgePoses; // every edge's screw at the scheme's times
+    PoseBuffer outer;     // FourPointB's midpoints of the outer poses
+    PoseBuffer tweaked;   // one rule's new poses
 };
 
 // Subdivides repeatedly into buffers it keeps, so that re-subdividing while the artist drags a pose

@@ -108,15 +108,18 @@ void BM_Screw(benchmark::State& state)
 BENCHMARK(BM_Screw);
 
 // BM_Screw's work on all kPairs pairs at once (screw_batch.h): every screw built and evaluated at one
-// t, which changes from one iteration to the next. Per screw: items are screws.
+// t, which changes from one iteration to the next. Per screw: items are screws. The poses are in
+// PoseBuffers, as the subdivision holds them.
 template <class Batch>
 void screwBatchBenchmark(benchmark::State& state, Batch batch)
 {
     const PosePairs pairs = randomPairs();
-    std::vector<Pose> out(kPairs);
+    const gyre::PoseBuffer from(pairs.from.begin(), pairs.from.end());
+    const gyre::PoseBuffer to(pairs.to.begin(), pairs.to.end());
+    gyre::PoseBuffer out(kPairs);
     std::size_t i = 0;
     for (auto _ : state) {
-        batch(pairs.from, pairs.to, std::span(&pairs.t[i], 1), out);
+        batch(from, to, std::span(&pairs.t[i], 1), out);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
         i = (i + 1) & (kPairs - 1);

@@ -1,11 +1,11 @@
 // The batch screw (screw_batch.h) against the single screw (screw.h), to the bit as it promises, and
 // against the SE(3) geodesic La·exp(t·log(La⁻¹Lb)) written in the test with 4×4 matrices, within a
-// tolerance; in every version this processor has: the lanes screwsAt chooses (the widest), and each
-// of SSE2's, AVX2's and AVX-512's on its own. The pairs mix random poses with the
-// cases the lanes hand to the single screw or meet at the edge of their formulas (identical poses,
-// pure translations, rotations tending to zero, rotations near a half turn, large translations, t·a
-// beyond the fast sine's range), so that one block holds lanes of every kind; and every batch length
-// up to past two blocks.
+// tolerance; in every version this processor has: the lanes screwsAt chooses (the widest), and each of
+// SSE2's, AVX2's and AVX-512's on its own. The pairs mix random poses with the cases the lanes hand to
+// the single screw or meet at the edge of their formulas (identical poses, pure translations, rotations
+// tending to zero, rotations near a half turn, large translations, t·a beyond the fast sine's range),
+// so that one block holds lanes of every kind; and every batch length up to past two blocks. And the
+// PoseBuffers the batch reads fastest start on cache lines.
 
 #include "core/screw.h"
 #include "core/screw_batch.h"
@@ -18,6 +18,7 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -150,6 +151,7 @@ private slots:
     void beyondTheFastSineRange_data() { addVersions(); }
     void beyondTheFastSineRange();
     void refusesSpansOfDifferentLengths();
+    void poseBuffersStartOnCacheLines();
 };
 
 void TestScrewBatch::matchesTheSingleScrew()
@@ -260,6 +262,23 @@ void TestScrewBatch::refusesSpansOfDifferentLengths()
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, screwsAt(three, three, times, std::span(out).first(2)));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, screwMidpoints(three, two, out));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, screwMidpoints(three, three, std::span(out).first(2)));
+}
+
+void TestScrewBatch::poseBuffersStartOnCacheLines()
+{
+    // Several buffers alive at once, of sizes whose ordinary allocations land at different offsets.
+    std::vector<PoseBuffer> buffers;
+    for (std::size_t n : {1, 2, 3, 5, 17, 100, 1000, 5000})
+        buffers.emplace_back(n);
+    for (const PoseBuffer& buffer : buffers)
+        QCOMPARE(reinterpret_cast<std::uintptr_t>(buffer.data()) % 64, std::uintptr_t{0});
+    PoseBuffer grown;
+    for (int i = 0; i < 300; ++i) {
+        grown.push_back(Pose{});
+        QCOMPARE(reinterpret_cast<std::uintptr_t>(grown.data()) % 64, std::uintptr_t{0});
+    }
+    CacheLineAllocator<Pose> allocator;
+    QVERIFY_THROWS_EXCEPTION(std::bad_array_new_length, (void)allocator.allocate(std::numeric_limits<std::size_t>::max() / 2));
 }
 
 QTEST_APPLESS_MAIN(TestScrewBatch)
