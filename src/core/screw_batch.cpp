@@ -180,35 +180,41 @@ template <int width>
     return {__builtin_shufflevector(value, value, 0, 1, 2, 3), __builtin_shufflevector(value, value, 4, 5, 6, 7)};
 }
 
+// A register of doubles loaded from `row`, or stored to it, whatever its alignment. Each register of a
+// row is loaded on its own, not in a loop over an array of them, which GCC copies through the stack.
+template <class Register>
+[[gnu::always_inline]] inline Register loaded(const unsigned char* row)
+{
+    Register value;
+    std::memcpy(&value, row, sizeof value);
+    return value;
+}
+template <class Register>
+[[gnu::always_inline]] inline void store(unsigned char* row, Register value)
+{
+    std::memcpy(row, &value, sizeof value);
+}
+
+// The pairs of doubles at `first` and `second` in one register of four.
+[[gnu::always_inline]] inline Doubles<4> loadedPairs(const unsigned char* first, const unsigned char* second)
+{
+    return __builtin_shufflevector(loaded<Doubles<2>>(first), loaded<Doubles<2>>(second), 0, 1, 2, 3);
+}
+
 // `width` rows of two doubles in memory as two registers of lanes: lane i of register c holds
 // rows[i][c]. A row is one load.
 template <int width>
 [[gnu::always_inline]] inline std::array<Doubles<width>, 2> loadPairs(const std::array<const unsigned char*, width>& rows)
 {
-    // Named registers, each loaded on its own: GCC copies an array of them loaded in a loop through the
-    // stack.
-    Doubles<2> p0, p1;
-    std::memcpy(&p0, rows[0], sizeof p0);
-    std::memcpy(&p1, rows[1], sizeof p1);
     if constexpr (width == 2) {
-        return interleaved<2>(p0, p1);
+        return interleaved<2>(loaded<Doubles<2>>(rows[0]), loaded<Doubles<2>>(rows[1]));
     } else {
-        Doubles<2> p2, p3;
-        std::memcpy(&p2, rows[2], sizeof p2);
-        std::memcpy(&p3, rows[3], sizeof p3);
-        const Doubles<4> even = __builtin_shufflevector(p0, p2, 0, 1, 2, 3);
-        const Doubles<4> odd = __builtin_shufflevector(p1, p3, 0, 1, 2, 3);
-        if constexpr (width == 4) {
+        const Doubles<4> even = loadedPairs(rows[0], rows[2]);
+        const Doubles<4> odd = loadedPairs(rows[1], rows[3]);
+        if constexpr (width == 4)
             return interleaved<4>(even, odd);
-        } else {
-            Doubles<2> p4, p5, p6, p7;
-            std::memcpy(&p4, rows[4], sizeof p4);
-            std::memcpy(&p5, rows[5], sizeof p5);
-            std::memcpy(&p6, rows[6], sizeof p6);
-            std::memcpy(&p7, rows[7], sizeof p7);
-            return interleaved<8>(joined(even, __builtin_shufflevector(p4, p6, 0, 1, 2, 3)),
-                                  joined(odd, __builtin_shufflevector(p5, p7, 0, 1, 2, 3)));
-        }
+        else
+            return interleaved<8>(joined(even, loadedPairs(rows[4], rows[6])), joined(odd, loadedPairs(rows[5], rows[7])));
     }
 }
 
@@ -217,26 +223,18 @@ template <int width>
 template <int width>
 [[gnu::always_inline]] inline std::array<Doubles<width>, 4> loadQuads(const std::array<const unsigned char*, width>& rows)
 {
+    using Quad = Doubles<4>;
     if constexpr (width == 2) {
         const auto [c0, c1] = loadPairs<2>(rows);
         const auto [c2, c3] = loadPairs<2>({rows[0] + 2 * sizeof(double), rows[1] + 2 * sizeof(double)});
         return {c0, c1, c2, c3};
+    } else if constexpr (width == 4) {
+        return transposed<4>({loaded<Quad>(rows[0]), loaded<Quad>(rows[1]), loaded<Quad>(rows[2]), loaded<Quad>(rows[3])});
     } else {
-        Doubles<4> q0, q1, q2, q3; // named, as in loadPairs
-        std::memcpy(&q0, rows[0], sizeof q0);
-        std::memcpy(&q1, rows[1], sizeof q1);
-        std::memcpy(&q2, rows[2], sizeof q2);
-        std::memcpy(&q3, rows[3], sizeof q3);
-        if constexpr (width == 4) {
-            return transposed<4>({q0, q1, q2, q3});
-        } else {
-            Doubles<4> q4, q5, q6, q7;
-            std::memcpy(&q4, rows[4], sizeof q4);
-            std::memcpy(&q5, rows[5], sizeof q5);
-            std::memcpy(&q6, rows[6], sizeof q6);
-            std::memcpy(&q7, rows[7], sizeof q7);
-            return transposed<8>({joined(q0, q4), joined(q1, q5), joined(q2, q6), joined(q3, q7)});
-        }
+        return transposed<8>({joined(loaded<Quad>(rows[0]), loaded<Quad>(rows[4])),
+                              joined(loaded<Quad>(rows[1]), loaded<Quad>(rows[5])),
+                              joined(loaded<Quad>(rows[2]), loaded<Quad>(rows[6])),
+                              joined(loaded<Quad>(rows[3]), loaded<Quad>(rows[7]))});
     }
 }
 
@@ -248,30 +246,23 @@ template <int width>
     if constexpr (width == 2) {
         const auto [low0, low1] = interleaved<2>(lanes[0], lanes[1]);
         const auto [high0, high1] = interleaved<2>(lanes[2], lanes[3]);
-        std::memcpy(rows[0], &low0, sizeof low0);
-        std::memcpy(rows[0] + sizeof low0, &high0, sizeof high0);
-        std::memcpy(rows[1], &low1, sizeof low1);
-        std::memcpy(rows[1] + sizeof low1, &high1, sizeof high1);
+        store(rows[0], low0);
+        store(rows[0] + sizeof low0, high0);
+        store(rows[1], low1);
+        store(rows[1] + sizeof low1, high1);
     } else if constexpr (width == 4) {
         const auto [q0, q1, q2, q3] = transposed<4>(lanes);
-        std::memcpy(rows[0], &q0, sizeof q0);
-        std::memcpy(rows[1], &q1, sizeof q1);
-        std::memcpy(rows[2], &q2, sizeof q2);
-        std::memcpy(rows[3], &q3, sizeof q3);
+        store(rows[0], q0);
+        store(rows[1], q1);
+        store(rows[2], q2);
+        store(rows[3], q3);
     } else {
-        const auto [h0, h1, h2, h3] = transposed<8>(lanes);
-        const auto [q0, q4] = halves(h0);
-        const auto [q1, q5] = halves(h1);
-        const auto [q2, q6] = halves(h2);
-        const auto [q3, q7] = halves(h3);
-        std::memcpy(rows[0], &q0, sizeof q0);
-        std::memcpy(rows[1], &q1, sizeof q1);
-        std::memcpy(rows[2], &q2, sizeof q2);
-        std::memcpy(rows[3], &q3, sizeof q3);
-        std::memcpy(rows[4], &q4, sizeof q4);
-        std::memcpy(rows[5], &q5, sizeof q5);
-        std::memcpy(rows[6], &q6, sizeof q6);
-        std::memcpy(rows[7], &q7, sizeof q7);
+        const std::array<Doubles<8>, 4> transpose = transposed<8>(lanes);
+        for (int c = 0; c < 4; ++c) {
+            const auto [low, high] = halves(transpose[c]);
+            store(rows[c], low);
+            store(rows[c + 4], high);
+        }
     }
 }
 
