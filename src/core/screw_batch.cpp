@@ -17,8 +17,8 @@
 
 // The lanes are written with GCC's and Clang's vector extension: a register of `width` doubles takes
 // +, −, ×, ÷, comparisons (64-bit masks of all ones or zeros) and selects (mask ? a : b), which compile
-// to packed instructions, SSE2's at width 2, AVX's at width 4 inside the AVX2 functions below, and
-// AVX-512's at width 8 inside the AVX-512 ones. The file is built with -fno-math-errno and
+// to packed instructions, SSE2's at width 2, AVX's at width 4 inside runAvx2 below, and AVX-512's at
+// width 8 inside runAvx512. The file is built with -fno-math-errno and
 // -fno-trapping-math (src/core/CMakeLists.txt), so that the square root of a register is one packed
 // instruction. Every helper that takes or returns a register is forced inline, in a Debug build too: a
 // register of four or eight doubles passed to a function built without AVX would cross a calling
@@ -175,13 +175,13 @@ template <int width>
 {
     return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
 }
-[[gnu::always_inline]] inline std::array<Doubles<4>, 2> halves(Doubles<8> value)
+[[gnu::always_inline]] inline std::array<Doubles<4>, 2> lowAndHigh(Doubles<8> value)
 {
     return {__builtin_shufflevector(value, value, 0, 1, 2, 3), __builtin_shufflevector(value, value, 4, 5, 6, 7)};
 }
 
-// A register of doubles loaded from `row`, or stored to it, whatever its alignment. Each register of a
-// row is loaded on its own, not in a loop over an array of them, which GCC copies through the stack.
+// A register of doubles loaded from `row`, or stored to it, whatever its alignment. The loads below are
+// each written out, not made in a loop into an array of registers, which GCC copies through the stack.
 template <class Register>
 [[gnu::always_inline]] inline Register loaded(const unsigned char* row)
 {
@@ -259,7 +259,7 @@ template <int width>
     } else {
         const std::array<Doubles<8>, 4> transpose = transposed<8>(lanes);
         for (int c = 0; c < 4; ++c) {
-            const auto [low, high] = halves(transpose[c]);
+            const auto [low, high] = lowAndHigh(transpose[c]);
             store(rows[c], low);
             store(rows[c + 4], high);
         }
@@ -635,9 +635,10 @@ template <int width>
         screwMidpointsLanes<width>(call.from, call.to, call.out);
 }
 
-// The same lanes for AVX2 and AVX-512, without FMA: fused products would round differently from the
-// single screw. AVX-512's vector-length extension (VL) gives the lanes of eight its 32 registers for
-// their loads and stores of quads; without it they were 5% slower.
+// The same lanes for AVX2 and AVX-512. AVX-512 has fused multiply-adds, which would round differently
+// from the single screw: -ffp-contract=off (src/core/CMakeLists.txt) keeps GCC from forming them.
+// AVX-512's vector-length extension (VL) gives the lanes of eight its 32 registers for their loads and
+// stores of quads; without it they were 5% slower.
 [[gnu::target("avx2")]] void runAvx2(const BatchCall& call)
 {
     runLanes<4>(call);
@@ -654,20 +655,21 @@ InstructionSet widestInstructionSet()
 {
     static const InstructionSet widest = [] {
         __builtin_cpu_init(); // its checks include the system's support for each set's registers
+        if (__builtin_cpu_supports("avx2") == 0)
+            return InstructionSet::Sse2;
+        // AVX-512's lanes hold AVX2's instructions too: the compiler takes AVX-512 to include AVX2.
         if (__builtin_cpu_supports("avx512f") != 0 && __builtin_cpu_supports("avx512vl") != 0)
             return InstructionSet::Avx512;
-        if (__builtin_cpu_supports("avx2") != 0)
-            return InstructionSet::Avx2;
-        return InstructionSet::Sse2;
+        return InstructionSet::Avx2;
     }();
     return widest;
 }
 
 void run(InstructionSet set, const BatchCall& call)
 {
+    const std::string function = call.times ? "screwsAtWith" : "screwMidpointsWith";
     if (!screw_batch_detail::processorHas(set))
-        throw std::invalid_argument(std::string(call.times ? "screwsAt" : "screwMidpoints")
-                                    + ": this processor lacks the instructions of the lanes asked for");
+        throw std::invalid_argument(function + ": this processor lacks " + screw_batch_detail::instructionSetName(set));
     switch (set) {
     case InstructionSet::Sse2:
         runLanes<2>(call);
@@ -687,8 +689,29 @@ namespace screw_batch_detail {
 
 bool processorHas(InstructionSet set)
 {
-    // Each set's processors have the narrower ones.
-    return static_cast<int>(set) <= static_cast<int>(widestInstructionSet());
+    const InstructionSet widest = widestInstructionSet();
+    switch (set) {
+    case InstructionSet::Sse2:
+        return true;
+    case InstructionSet::Avx2:
+        return widest != InstructionSet::Sse2;
+    case InstructionSet::Avx512:
+        return widest == InstructionSet::Avx512;
+    }
+    return false; // not one of the sets
+}
+
+std::string instructionSetName(InstructionSet set)
+{
+    switch (set) {
+    case InstructionSet::Sse2:
+        return "SSE2";
+    case InstructionSet::Avx2:
+        return "AVX2";
+    case InstructionSet::Avx512:
+        return "AVX-512";
+    }
+    return "an unknown instruction set";
 }
 
 void screwsAtWith(InstructionSet set, std::span<const Pose> from, std::span<const Pose> to,

@@ -17,6 +17,7 @@
 #include <limits>
 #include <new>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace gyre {
@@ -26,6 +27,7 @@ template <class T>
 struct CacheLineAllocator {
     using value_type = T;
     static constexpr std::align_val_t kAlignment{64};
+    static_assert(alignof(T) <= 64);
 
     CacheLineAllocator() = default;
     template <class U>
@@ -67,9 +69,11 @@ namespace screw_batch_detail {
 // run each one it has.
 enum class InstructionSet { Sse2, Avx2, Avx512 };
 
-bool processorHas(InstructionSet set);
+bool processorHas(InstructionSet set); // false for a value that is not one of the sets
+std::string instructionSetName(InstructionSet set);
 
-// screwsAt and screwMidpoints with the lanes of `set`: std::invalid_argument if this processor lacks it.
+// screwsAt and screwMidpoints with the lanes of `set`: std::invalid_argument if this processor lacks it
+// (or it is not one of the sets).
 void screwsAtWith(InstructionSet set, std::span<const Pose> from, std::span<const Pose> to,
                   std::span<const double> times, std::span<Pose> out);
 void screwMidpointsWith(InstructionSet set, std::span<const Pose> from, std::span<const Pose> to,

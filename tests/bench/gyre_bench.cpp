@@ -180,8 +180,8 @@ BENCHMARK(BM_ScrewEvaluate);
 // matrices (tests/core/core_test_support.h, the tests' independent construction): BM_Screw's Eigen row.
 // BM_Screw's floors (README): its 95 multiplies, 65 additions, square root and division, on two
 // multiply pipes that the square root and division share for ~12.5 cycles: ~54 cycles, 15 ns at
-// 3.6 GHz, one screw at a time; 7.5 ns a screw with SSE2's two lanes, 3.7 ns with AVX2's four or
-// AVX-512's eight.
+// 3.6 GHz, one screw at a time; 7.5 ns a screw with SSE2's two lanes, 3.7 ns with AVX2's four (4.0
+// with AVX-512's eight, whose square root and division hold the pipes longer here).
 void BM_ScrewEigen(benchmark::State& state)
 {
     const PosePairs pairs = randomPairs();

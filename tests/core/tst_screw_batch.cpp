@@ -140,6 +140,7 @@ class TestScrewBatch : public QObject {
     Q_OBJECT
 
 private slots:
+    void initTestCase();
     void matchesTheSingleScrew_data() { addVersions(); }
     void matchesTheSingleScrew();
     void midpointsMatchTheSingleScrew_data() { addVersions(); }
@@ -151,8 +152,18 @@ private slots:
     void beyondTheFastSineRange_data() { addVersions(); }
     void beyondTheFastSineRange();
     void refusesSpansOfDifferentLengths();
+    void refusesValuesThatAreNoInstructionSet();
     void poseBuffersStartOnCacheLines();
 };
+
+void TestScrewBatch::initTestCase()
+{
+    // The rows name the versions tested; say which this processor lacks, which no row tests.
+    using screw_batch_detail::InstructionSet;
+    for (InstructionSet set : {InstructionSet::Sse2, InstructionSet::Avx2, InstructionSet::Avx512})
+        if (!screw_batch_detail::processorHas(set))
+            qInfo("This processor lacks %s: its lanes are not tested here.", screw_batch_detail::instructionSetName(set).c_str());
+}
 
 void TestScrewBatch::matchesTheSingleScrew()
 {
@@ -262,6 +273,20 @@ void TestScrewBatch::refusesSpansOfDifferentLengths()
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, screwsAt(three, three, times, std::span(out).first(2)));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, screwMidpoints(three, two, out));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, screwMidpoints(three, three, std::span(out).first(2)));
+}
+
+void TestScrewBatch::refusesValuesThatAreNoInstructionSet()
+{
+    using screw_batch_detail::InstructionSet;
+    const std::vector<Pose> one(1);
+    std::vector<Pose> out(1);
+    const std::vector<double> times = {0.5};
+    for (int value : {-1, 3}) {
+        const auto set = static_cast<InstructionSet>(value);
+        QVERIFY(!screw_batch_detail::processorHas(set));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, screw_batch_detail::screwsAtWith(set, one, one, times, out));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, screw_batch_detail::screwMidpointsWith(set, one, one, out));
+    }
 }
 
 void TestScrewBatch::poseBuffersStartOnCacheLines()
