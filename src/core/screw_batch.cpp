@@ -18,11 +18,10 @@
 // The lanes are written with GCC's and Clang's vector extension: a register of `width` doubles takes
 // +, −, ×, ÷, comparisons (64-bit masks of all ones or zeros) and selects (mask ? a : b), which compile
 // to packed instructions, SSE2's at width 2, AVX's at width 4 inside runAvx2 below, and AVX-512's at
-// width 8 inside runAvx512. The file is built with -fno-math-errno and
-// -fno-trapping-math (src/core/CMakeLists.txt), so that the square root of a register is one packed
-// instruction. Every helper that takes or returns a register is forced inline, in a Debug build too: a
-// register of four or eight doubles passed to a function built without AVX would cross a calling
-// convention that differs.
+// width 8 inside runAvx512. The file is built with -fno-math-errno and -fno-trapping-math
+// (src/core/CMakeLists.txt), so that the square root of a register is one packed instruction. Every
+// helper that takes or returns a register is forced inline, in a Debug build too: a register of four or
+// eight doubles passed to a function built without AVX would cross a calling convention that differs.
 //
 // What shapes the loops (perf, llvm-mca, and throwaway loops timed on the development machine's AMD
 // EPYC): it stores one register a cycle, and its loads, stores and shuffles limit the screw as much as
@@ -667,9 +666,9 @@ InstructionSet widestInstructionSet()
 
 void run(InstructionSet set, const BatchCall& call)
 {
-    const std::string function = call.times ? "screwsAtWith" : "screwMidpointsWith";
     if (!screw_batch_detail::processorHas(set))
-        throw std::invalid_argument(function + ": this processor lacks " + screw_batch_detail::instructionSetName(set));
+        throw std::invalid_argument(std::string(call.times ? "screwsAtWith" : "screwMidpointsWith")
+                                    + ": this processor lacks " + screw_batch_detail::instructionSetName(set));
     switch (set) {
     case InstructionSet::Sse2:
         runLanes<2>(call);
